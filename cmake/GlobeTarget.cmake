@@ -1,0 +1,20 @@
+# The one function that configures every globe target: language level, warnings, and the
+# definitions that keep double -> float narrowing explicit.
+function(globe_configure_target target)
+  target_compile_features(${target} PUBLIC cxx_std_20)
+  set_target_properties(${target} PROPERTIES CXX_EXTENSIONS OFF)
+  target_compile_definitions(${target} PUBLIC GLM_FORCE_EXPLICIT_CTOR GLM_FORCE_XYZW_ONLY
+                                              GLM_FORCE_RADIANS GLM_FORCE_DEPTH_ZERO_TO_ONE)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wconversion -Wshadow -Wpedantic
+                                           -Wno-missing-field-initializers)
+  # No -ffast-math anywhere: planet-scale geodesy needs IEEE double semantics.
+  target_compile_options(${target} PRIVATE -fno-fast-math -ffp-contract=off)
+  if(GLOBE_WERROR)
+    target_compile_options(${target} PRIVATE -Werror)
+  endif()
+  if(GLOBE_SANITIZE)
+    target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer
+                                             -fno-sanitize-recover=undefined)
+    target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+  endif()
+endfunction()

@@ -1,0 +1,47 @@
+#pragma once
+// Errors for bad input data (files, command-line values, camera positions). Bad data returns an
+// Error naming where it came from; programmer mistakes are asserts. Nothing here throws.
+#include <string>
+#include <utility>
+#include <variant>
+
+namespace globe {
+
+struct Error {
+  std::string file;     // path of the offending file, or "" when the input is not a file
+  int line = 0;         // 1-based line, 0 when unknown
+  int column = 0;       // 1-based column, 0 when unknown
+  std::string field;    // offending field / option / key, "" when not applicable
+  std::string message;  // what is wrong, lower case, no trailing period
+
+  // "file:line:column: field: message", omitting the parts that are empty or zero. One line.
+  std::string format() const;
+};
+
+// A value or an Error. Small on purpose: std::expected is C++23.
+template <class T>
+class Result {
+ public:
+  Result(T value) : v_(std::move(value)) {}      // NOLINT(google-explicit-constructor)
+  Result(Error error) : v_(std::move(error)) {}  // NOLINT(google-explicit-constructor)
+
+  bool ok() const { return v_.index() == 0; }
+  explicit operator bool() const { return ok(); }
+  T& value() & { return std::get<0>(v_); }
+  const T& value() const& { return std::get<0>(v_); }
+  T&& value() && { return std::get<0>(std::move(v_)); }
+  const Error& error() const { return std::get<1>(v_); }
+  T* operator->() { return &value(); }
+  const T* operator->() const { return &value(); }
+  T& operator*() & { return value(); }
+  const T& operator*() const& { return value(); }
+
+ private:
+  std::variant<T, Error> v_;
+};
+
+// For operations that produce no value.
+struct Ok {};
+using Status = Result<Ok>;
+
+}  // namespace globe

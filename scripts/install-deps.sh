@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Installs every Debian package globe needs to build, run and test. Idempotent: only
+# missing packages are installed. `--list` prints the list (one per line) and exits.
+# tests/deps_test.sh checks that every library the binaries link and every tool the
+# tests run comes from a package on this list.
+set -euo pipefail
+
+PACKAGES=(
+  # toolchain
+  build-essential cmake ninja-build pkg-config git dpkg
+  # graphics: Vulkan loader/headers, lavapipe, validation layers, shader compiler, windowing
+  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools libglfw3-dev
+  # maths and geodesy
+  libglm-dev libgeographiclib-dev
+  # file formats and command line
+  libopenexr-dev libstb-dev libtomlplusplus-dev libcli11-dev libfmt-dev nlohmann-json3-dev
+  # overlay of the windowed viewer
+  libimgui-dev
+  # tests and benchmarks (libnoise is the benchmark's comparison peer)
+  libgtest-dev libgmock-dev libbenchmark-dev libnoise-dev xvfb xauth
+)
+
+if [[ "${1:-}" == "--list" ]]; then
+  printf '%s\n' "${PACKAGES[@]}"
+  exit 0
+fi
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if ((${#missing[@]} == 0)); then
+  echo "install-deps: all ${#PACKAGES[@]} packages present"
+  exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}"
+SUDO=""
+if [[ $(id -u) -ne 0 ]]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
