@@ -1,0 +1,117 @@
+#pragma once
+// 3-D gradient noise (Perlin 2002, "Improving Noise": quintic fade, 12 edge gradients) with an
+// integer hash of the lattice coordinates instead of a permutation table. The table lookups bound
+// the kernel on lavapipe; the hash was 2.7x faster there (BRIEF §4).
+//
+// The same function is written in GLSL in shaders/include/elevation.glsl and must give bit-identical
+// doubles: only + - * , floor and integer operations are used, in the order written here (the build
+// uses -ffp-contract=off, the shader marks the arithmetic `precise`). Change both or neither.
+//
+// Range: |noise| <= kGradientNoiseBound for every input (the exact supremum over all gradient
+// assignments is 1.03635, found by search over the cell; tests/planet/elevation_noise_test.cpp).
+#include <cmath>
+#include <cstdint>
+
+namespace globe {
+
+// Upper bound of |gradientNoise| (dimensionless). Used by the conservative elevation bounds.
+inline constexpr double kGradientNoiseBound = 1.04;
+
+// 32-bit avalanche ("lowbias32", C. Wellons, hash-prospector): every input bit flips each output bit
+// with probability ~1/2. 32-bit on purpose: 64-bit multiplies are emulated on most GPUs and in
+// lavapipe's AVX2 code.
+constexpr std::uint32_t hashMix32(std::uint32_t x) {
+  x ^= x >> 16;
+  x *= 0x7feb352dU;
+  x ^= x >> 15;
+  x *= 0x846ca68bU;
+  x ^= x >> 16;
+  return x;
+}
+
+// Folds a 64-bit lattice coordinate into a 32-bit key: identity for |i| < 2^31 (the low word),
+// the high word mixed in for larger or negative coordinates so distinct words don't alias simply.
+constexpr std::uint32_t latticeKey(std::int64_t i) {
+  const auto u = static_cast<std::uint64_t>(i);
+  const auto lo = static_cast<std::uint32_t>(u & 0xffffffffULL);
+  const auto hi = static_cast<std::uint32_t>(u >> 32);
+  return lo ^ (hi * 0x9e3779b9U);
+}
+
+// Gradient g(h) . (x, y, z) for one of Perlin's 16 gradient indices (the 12 cube edges, four of them
+// twice); the index is the hash's top four bits. Only sign flips and additions: exact.
+template <class Real>
+inline Real gradientDot(std::uint32_t hash, Real x, Real y, Real z) {
+  const std::uint32_t h = hash >> 28;
+  const Real u = h < 8U ? x : y;
+  const Real v = h < 4U ? y : ((h == 12U || h == 14U) ? x : z);
+  const Real a = (h & 1U) == 0U ? u : -u;
+  const Real b = (h & 2U) == 0U ? v : -v;
+  return a + b;
+}
+
+// Quintic fade 6t^5 - 15t^4 + 10t^3, written in this Horner order on both sides.
+template <class Real>
+inline Real noiseFade(Real t) {
+  return t * t * t * (t * (t * Real(6) - Real(15)) + Real(10));
+}
+
+template <class Real>
+inline Real noiseLerp(Real a, Real b, Real t) {
+  return a + t * (b - a);
+}
+
+// Gradient noise at (x, y, z) in lattice units (cycles), for one 32-bit seed. Continuous with
+// continuous first and second derivatives; zero on the lattice points. Coordinates must satisfy
+// |x|, |y|, |z| < 2^62 (the planet validator keeps them below 2^40); Real is double (the reference)
+// or float (only to measure float's error).
+template <class Real>
+inline Real gradientNoise(Real x, Real y, Real z, std::uint32_t seed) {
+  const Real fx = std::floor(x);
+  const Real fy = std::floor(y);
+  const Real fz = std::floor(z);
+  const auto ix = static_cast<std::int64_t>(fx);
+  const auto iy = static_cast<std::int64_t>(fy);
+  const auto iz = static_cast<std::int64_t>(fz);
+  // Offsets from the cell's lower corner, in [0, 1].
+  const Real x0 = x - fx;
+  const Real y0 = y - fy;
+  const Real z0 = z - fz;
+  const Real x1 = x0 - Real(1);
+  const Real y1 = y0 - Real(1);
+  const Real z1 = z0 - Real(1);
+
+  // Nested hash, like perm[perm[perm[x] + y] + z] but with no table.
+  const std::uint32_t hx0 = hashMix32(latticeKey(ix) + seed);
+  const std::uint32_t hx1 = hashMix32(latticeKey(ix + 1) + seed);
+  const std::uint32_t ky0 = latticeKey(iy);
+  const std::uint32_t ky1 = latticeKey(iy + 1);
+  const std::uint32_t kz0 = latticeKey(iz);
+  const std::uint32_t kz1 = latticeKey(iz + 1);
+  const std::uint32_t h00 = hashMix32(hx0 + ky0);
+  const std::uint32_t h10 = hashMix32(hx1 + ky0);
+  const std::uint32_t h01 = hashMix32(hx0 + ky1);
+  const std::uint32_t h11 = hashMix32(hx1 + ky1);
+
+  const Real g000 = gradientDot(hashMix32(h00 + kz0), x0, y0, z0);
+  const Real g100 = gradientDot(hashMix32(h10 + kz0), x1, y0, z0);
+  const Real g010 = gradientDot(hashMix32(h01 + kz0), x0, y1, z0);
+  const Real g110 = gradientDot(hashMix32(h11 + kz0), x1, y1, z0);
+  const Real g001 = gradientDot(hashMix32(h00 + kz1), x0, y0, z1);
+  const Real g101 = gradientDot(hashMix32(h10 + kz1), x1, y0, z1);
+  const Real g011 = gradientDot(hashMix32(h01 + kz1), x0, y1, z1);
+  const Real g111 = gradientDot(hashMix32(h11 + kz1), x1, y1, z1);
+
+  const Real u = noiseFade(x0);
+  const Real v = noiseFade(y0);
+  const Real w = noiseFade(z0);
+  const Real a00 = noiseLerp(g000, g100, u);
+  const Real a10 = noiseLerp(g010, g110, u);
+  const Real a01 = noiseLerp(g001, g101, u);
+  const Real a11 = noiseLerp(g011, g111, u);
+  const Real b0 = noiseLerp(a00, a10, v);
+  const Real b1 = noiseLerp(a01, a11, v);
+  return noiseLerp(b0, b1, w);
+}
+
+}  // namespace globe

@@ -1,0 +1,145 @@
+#include "planet/planet_description.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "planet/gradient_noise.h"
+
+namespace globe {
+
+std::string_view layerKindName(LayerKind kind) {
+  switch (kind) {
+    case LayerKind::Fbm: return "fbm";
+    case LayerKind::Ridged: return "ridged";
+    case LayerKind::Billow: return "billow";
+  }
+  return "unknown";
+}
+
+double finestWavelength_m(const ElevationLayer& layer) {
+  double wavelength = layer.wavelength_m;
+  for (int i = 1; i < layer.octaves; ++i) wavelength /= layer.lacunarity;
+  return wavelength;
+}
+
+namespace {
+
+// Sum of the octave amplitudes, metres (amplitude_m * (1 + gain + gain^2 + ...)).
+double amplitudeSum(const ElevationLayer& layer) {
+  double sum = 0.0;
+  double amplitude = layer.amplitude_m;
+  for (int i = 0; i < layer.octaves; ++i) {
+    sum += std::abs(amplitude);
+    amplitude *= layer.gain;
+  }
+  return sum;
+}
+
+}  // namespace
+
+ElevationRange elevationBounds(const PlanetDescription& planet) {
+  ElevationRange total;
+  for (const ElevationLayer& layer : planet.layers) {
+    const double sum = amplitudeSum(layer);
+    double lo = 0.0;
+    double hi = 0.0;
+    switch (layer.kind) {
+      case LayerKind::Fbm:
+        lo = -sum * kGradientNoiseBound;
+        hi = sum * kGradientNoiseBound;
+        break;
+      case LayerKind::Ridged:  // (1 - |n|)^2 <= max(1, (1 - bound)^2) = 1
+        hi = sum;
+        break;
+      case LayerKind::Billow:
+        hi = sum * kGradientNoiseBound;
+        break;
+    }
+    if (layer.modulated_by >= 0) {  // scale in [floor, 1]
+      const double f = layer.modulation_floor;
+      lo = std::min(lo, lo * f);
+      hi = std::max(hi, hi * f);
+    }
+    total.min_m += lo + layer.offset_m;
+    total.max_m += hi + layer.offset_m;
+  }
+  // Margin for the rounding of the evaluation itself (~1e-12 relative).
+  const double margin = 1e-9 * (std::abs(total.min_m) + std::abs(total.max_m)) + 1e-6;
+  total.min_m -= margin;
+  total.max_m += margin;
+  return total;
+}
+
+namespace {
+
+bool inRange(double v, double lo, double hi) { return std::isfinite(v) && v >= lo && v <= hi; }
+
+Error fieldError(std::string field, std::string message) {
+  return Error{"", 0, 0, std::move(field), std::move(message)};
+}
+
+}  // namespace
+
+Status validatePlanet(const PlanetDescription& planet) {
+  if (!(std::isfinite(planet.radius_m) && planet.radius_m > 0.0 && planet.radius_m <= kMaxRadius_m)) {
+    return fieldError("radius_m", fmt::format("must be > 0 and <= {:g} m", kMaxRadius_m));
+  }
+  if (!inRange(planet.sea_level_m, -1e6, 1e6)) {
+    return fieldError("sea_level_m", "must be finite and within [-1e6, 1e6] m");
+  }
+  if (planet.layers.empty() || planet.layers.size() > static_cast<std::size_t>(kMaxElevationLayers)) {
+    return fieldError("layers", fmt::format("need 1 to {} layers", kMaxElevationLayers));
+  }
+  for (std::size_t i = 0; i < planet.layers.size(); ++i) {
+    const ElevationLayer& l = planet.layers[i];
+    const std::string p = fmt::format("layers[{}].", i);
+    if (l.octaves < 1 || l.octaves > kMaxOctavesPerLayer) {
+      return fieldError(p + "octaves", fmt::format("must be in [1, {}]", kMaxOctavesPerLayer));
+    }
+    if (!(std::isfinite(l.wavelength_m) && l.wavelength_m > 0.0)) {
+      return fieldError(p + "wavelength_m", "must be finite and > 0");
+    }
+    if (!(std::isfinite(l.lacunarity) && l.lacunarity > 1.0 && l.lacunarity <= 16.0)) {
+      return fieldError(p + "lacunarity", "must be > 1 and <= 16");
+    }
+    if (!(std::isfinite(l.gain) && l.gain > 0.0 && l.gain <= 1.0)) {
+      return fieldError(p + "gain", "must be > 0 and <= 1");
+    }
+    if (!inRange(l.amplitude_m, 0.0, 1e6)) {
+      return fieldError(p + "amplitude_m", "must be within [0, 1e6] m");
+    }
+    if (!inRange(l.offset_m, -1e6, 1e6)) {
+      return fieldError(p + "offset_m", "must be within [-1e6, 1e6] m");
+    }
+    if (l.modulated_by >= static_cast<int>(i) || l.modulated_by < -1) {
+      return fieldError(p + "modulated_by", "must name an earlier layer");
+    }
+    if (l.modulated_by >= 0) {
+      if (!inRange(l.modulation_low_m, -1e7, 1e7)) {
+        return fieldError(p + "modulation_low_m", "must be within [-1e7, 1e7] m");
+      }
+      if (!inRange(l.modulation_high_m, -1e7, 1e7) || !(l.modulation_high_m > l.modulation_low_m)) {
+        return fieldError(p + "modulation_high_m", "must be > modulation_low_m and within [-1e7, 1e7] m");
+      }
+      if (!inRange(l.modulation_floor, 0.0, 1.0)) {
+        return fieldError(p + "modulation_floor", "must be within [0, 1]");
+      }
+    }
+    const double finest = finestWavelength_m(l);
+    if (!(planet.radius_m / finest <= kMaxLatticeCoordinate)) {
+      return fieldError(p + "octaves",
+                        fmt::format("too many octaves for double precision at this radius: finest "
+                                    "wavelength {:g} m, radius / wavelength must be <= 2^40",
+                                    finest));
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      if (planet.layers[j].name == l.name) {
+        return fieldError(p + "name", fmt::format("duplicate layer name '{}'", l.name));
+      }
+    }
+  }
+  return Ok{};
+}
+
+}  // namespace globe
