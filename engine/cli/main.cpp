@@ -1,14 +1,49 @@
-#include <CLI/CLI.hpp>
+// globe: the user-facing command line.
+#include "commands.h"
 
-#include <iostream>
+#include <cstdio>
+#include <exception>
+
+namespace globe::cli {
+
+void printError(const std::string& message) {
+  std::string line = message;
+  for (char& c : line)
+    if (c == '\n' || c == '\r') c = ' ';
+  std::fprintf(stderr, "globe: error: %s\n", line.c_str());
+}
+
+}  // namespace globe::cli
 
 int main(int argc, char** argv) {
-  CLI::App app{"globe: a planetary-scale globe engine (Vulkan)"};
+  using namespace globe::cli;
+  CLI::App app{"globe: a planetary-scale globe engine (Vulkan).\n"
+               "Set GLOBE_DEVICE=NAME (or --device) to force a Vulkan device by name."};
   app.set_version_flag("--version", std::string("globe ") + GLOBE_VERSION);
   app.require_subcommand(0, 1);
-  CLI11_PARSE(app, argc, argv);
-  if (app.get_subcommands().empty()) {
-    std::cout << app.help();
+  Runner run;
+  addRenderCommand(app, run);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    printError(e.what());
+    return kExitUsage;
   }
-  return 0;
+  if (!run) {
+    std::fputs(app.help().c_str(), stdout);
+    return kExitOk;
+  }
+  try {
+    return run();
+  } catch (const std::exception& e) {
+    printError(e.what());
+    return kExitFailure;
+  }
 }

@@ -1,0 +1,23 @@
+#pragma once
+// The subcommands of `globe`. Each registers its options on the CLI11 app and, when selected,
+// sets `run` to the function that carries it out (returning the process exit code).
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <string>
+
+namespace globe::cli {
+
+using Runner = std::function<int()>;
+
+void addRenderCommand(CLI::App& app, Runner& run);
+
+// Exit codes shared by every command.
+constexpr int kExitOk = 0;
+constexpr int kExitFailure = 1;   // the command could not do its job (device, I/O, ...)
+constexpr int kExitUsage = 2;     // bad command-line values or input files
+
+// Prints "globe: error: MESSAGE" on one line to stderr.
+void printError(const std::string& message);
+
+}  // namespace globe::cli

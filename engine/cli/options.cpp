@@ -1,0 +1,55 @@
+#include "options.h"
+
+#include "commands.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+
+namespace globe::cli {
+
+Result<ImageSize> parseSize(const std::string& text, const std::string& field) {
+  unsigned w = 0, h = 0;
+  char x = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%u%c%u%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') ||
+      text.find_first_not_of("0123456789xX") != std::string::npos)
+    return Error{"", 0, 0, field, "expected WxH (for example 1280x720), got '" + text + "'"};
+  if (w < 16 || h < 16 || w > 16384 || h > 16384)
+    return Error{"", 0, 0, field, "width and height must be within [16, 16384] pixels, got '" + text + "'"};
+  return ImageSize{w, h};
+}
+
+Status checkImageExtension(const std::string& path, const std::string& field) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if (ext != ".png" && ext != ".exr") return Error{"", 0, 0, field, "'" + path + "' must end in .png or .exr"};
+  return Ok{};
+}
+
+void addDeviceFlags(CLI::App& cmd, DeviceFlags& flags) {
+  cmd.add_option("--device", flags.name, "Force the Vulkan device whose name contains NAME (default: $GLOBE_DEVICE, "
+                                         "else a discrete GPU, else lavapipe)");
+  cmd.add_flag("--validate", flags.validation, "Enable the Vulkan validation layers; any message fails the command");
+}
+
+vk::DeviceOptions deviceOptions(const DeviceFlags& flags) {
+  vk::DeviceOptions o;
+  o.deviceName = flags.name.empty() ? vk::deviceNameFromEnvironment() : flags.name;
+  const char* env = std::getenv("GLOBE_VALIDATION");
+  o.validation = flags.validation || (env && std::string(env) == "1");
+  return o;
+}
+
+int validationExitCode(vk::Device& device) {
+  size_t n = device.validation().count();
+  if (n == 0) return kExitOk;
+  for (const auto& m : device.validation().messages()) printError("vulkan validation " + m);
+  return kExitFailure;
+}
+
+int usageError(const Error& error) {
+  printError(error.format());
+  return kExitUsage;
+}
+
+}  // namespace globe::cli

@@ -1,0 +1,36 @@
+#pragma once
+// Option parsing shared by the subcommands: sizes, device selection, error reporting.
+#include "engine/device.h"
+#include "planet/error.h"
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace globe::cli {
+
+struct ImageSize {
+  uint32_t width = 0;
+  uint32_t height = 0;
+};
+
+// "WxH" with 16 <= W, H <= 16384.
+Result<ImageSize> parseSize(const std::string& text, const std::string& field);
+
+// Output files must end in .png or .exr.
+Status checkImageExtension(const std::string& path, const std::string& field);
+
+struct DeviceFlags {
+  std::string name;        // --device, else $GLOBE_DEVICE
+  bool validation = false; // --validate, or $GLOBE_VALIDATION=1
+};
+void addDeviceFlags(CLI::App& cmd, DeviceFlags& flags);
+vk::DeviceOptions deviceOptions(const DeviceFlags& flags);
+
+// With validation on, any message makes the command fail after it has reported them.
+int validationExitCode(vk::Device& device);
+
+// Prints the error and returns kExitUsage.
+int usageError(const Error& error);
+
+}  // namespace globe::cli

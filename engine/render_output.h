@@ -1,0 +1,15 @@
+#pragma once
+// Turns a read-back frame into an image file's content: linear colour plus the per-pixel
+// distance along the view ray in metres (+inf where nothing was drawn).
+#include "engine/image_io.h"
+#include "engine/offscreen_target.h"
+#include "planet/camera.h"
+
+namespace globe {
+
+// Distance (metres) along the ray through pixel centre (x, y) for reversed-Z device depth `depth`.
+double rayDistanceFromDepth(const Camera& camera, uint32_t width, uint32_t height, double x, double y, float depth);
+
+ImageRgba toImage(const vk::ReadbackImage& frame, const Camera& camera);
+
+}  // namespace globe
