@@ -1,2 +1,63 @@
 #!/usr/bin/env bash
-exit 0
+# Bad input to the command line: one clear line on stderr, a non-zero exit, no crash, and no
+# output file. Usage: bad_input_test.sh GLOBE WORKDIR
+set -uo pipefail
+GLOBE="$1"
+WORK="$2"
+rm -rf "$WORK" && mkdir -p "$WORK"
+failures=0
+
+# expect CODE PATTERN OUTFILE -- ARGS...: exit code CODE, stderr one line matching PATTERN, OUTFILE absent.
+expect() {
+  local code="$1" pattern="$2" outfile="$3"
+  shift 4
+  local err="$WORK/stderr"
+  "$@" >"$WORK/stdout" 2>"$err"
+  local got=$?
+  local lines
+  lines=$(wc -l <"$err")
+  if [[ $got -ne $code ]]; then
+    echo "FAIL: '$*' exited $got, expected $code"; cat "$err"; failures=$((failures + 1)); return
+  fi
+  if [[ $lines -ne 1 ]] || ! grep -qE "^globe: error: .*$pattern" "$err"; then
+    echo "FAIL: '$*' stderr is not one line matching '$pattern':"; cat "$err"; failures=$((failures + 1)); return
+  fi
+  if [[ -n "$outfile" && -e "$outfile" ]]; then
+    echo "FAIL: '$*' left $outfile behind"; failures=$((failures + 1)); return
+  fi
+  if ls -A "$WORK" | grep -q '\.tmp'; then
+    echo "FAIL: '$*' left a temporary file"; failures=$((failures + 1)); return
+  fi
+  echo "ok: $* -> $(cat "$err")"
+}
+
+O="$WORK/out.png"
+# Device problems: a forced device that does not exist (also how a device without fp64 is refused).
+expect 1 "no Vulkan device matches 'no-such-gpu'" "$O" -- "$GLOBE" render --device no-such-gpu --out "$O" --size 64x64
+expect 1 "no Vulkan device matches 'no-such-gpu'" "$O" -- env GLOBE_DEVICE=no-such-gpu "$GLOBE" render --out "$O" --size 64x64
+# Missing shader files.
+expect 1 "shader file '/nonexistent/.*\.spv' not found" "$O" -- env GLOBE_SHADER_DIR=/nonexistent "$GLOBE" render --out "$O" --size 64x64
+# Unwritable or unsupported output paths.
+expect 2 "--out: directory '/nonexistent-dir' does not exist" "" -- "$GLOBE" render --out /nonexistent-dir/x.png --size 64x64
+expect 2 "--out: '.*out.jpg' must end in .png or .exr" "$WORK/out.jpg" -- "$GLOBE" render --out "$WORK/out.jpg" --size 64x64
+expect 2 "--out: '.*' is a directory" "" -- "$GLOBE" render --out "$WORK/" --size 64x64
+# Bad values.
+expect 2 "--size: expected WxH" "$O" -- "$GLOBE" render --size abc --out "$O"
+expect 2 "--size: width and height must be within" "$O" -- "$GLOBE" render --size 8x8 --out "$O"
+expect 2 "--size: expected WxH" "$O" -- "$GLOBE" render --size 64x-64 --out "$O"
+expect 2 "--at: latitude must be within \[-90, 90\] degrees" "$O" -- "$GLOBE" render --at 91,0,100 --out "$O" --size 64x64
+expect 2 "--at: height must be within" "$O" -- "$GLOBE" render --at 0,0,-1 --out "$O" --size 64x64
+expect 2 "--at: latitude must be finite" "$O" -- "$GLOBE" render --at nan,0,10 --out "$O" --size 64x64
+expect 2 "--at: longitude must be finite" "$O" -- "$GLOBE" render --at 0,inf,10 --out "$O" --size 64x64
+expect 2 "--at: expected LAT,LON,HEIGHT" "$O" -- "$GLOBE" render --at 1,2 --out "$O" --size 64x64
+# Unknown options and subcommands.
+expect 2 "bogus" "" -- "$GLOBE" render --bogus
+expect 2 "frobnicate" "" -- "$GLOBE" frobnicate
+
+# And the good case works, leaving exactly the output.
+if ! "$GLOBE" render --size 64x48 --out "$WORK/good.exr" >/dev/null 2>"$WORK/stderr" || [[ ! -s "$WORK/good.exr" ]]; then
+  echo "FAIL: good render"; cat "$WORK/stderr"; failures=$((failures + 1))
+fi
+
+echo "bad input: $failures failure(s)"
+exit $((failures > 0))

@@ -1,2 +1,76 @@
 #!/usr/bin/env bash
-exit 0
+# Every package the build or the tests use must be installed by scripts/install-deps.sh, so a
+# forgotten package fails here and not on a user's first run. Checks, through dpkg -S:
+#  - each shared library the binaries link directly (ELF NEEDED, resolved by ldd),
+#  - each file and tool the build found (paths in CMakeCache.txt) and each tool the tests run,
+#  - the Vulkan driver (lavapipe) and validation-layer manifests.
+# A file passes when its package is on the list or is a dependency (recursively) of a listed one.
+# Usage: deps_test.sh SOURCE_DIR BINARY...
+set -uo pipefail
+SRC="$1"
+shift
+BUILD_DIR="$(dirname "$(dirname "$1")")"
+mapfile -t LISTED < <("$SRC/scripts/install-deps.sh" --list)
+
+# Closure of the listed packages under Depends/Pre-Depends (installed packages only).
+declare -A CLOSURE=()
+queue=("${LISTED[@]}")
+while ((${#queue[@]})); do
+  p="${queue[0]}"
+  queue=("${queue[@]:1}")
+  p="${p%%:*}"
+  [[ -n "${CLOSURE[$p]:-}" ]] && continue
+  CLOSURE[$p]=1
+  deps=$(dpkg-query -W -f='${Depends}, ${Pre-Depends}' "$p" 2>/dev/null) || continue
+  while read -r d; do
+    [[ -n "$d" ]] && queue+=("$d")
+  done < <(echo "$deps" | tr ',|' '\n\n' | sed -E 's/\(.*\)//; s/^ +//; s/ +$//; s/:any$//' | grep -v '^$')
+done
+
+failures=0
+check_file() {  # check_file PATH WHY
+  local path="$1" why="$2" real pkg
+  real=$(readlink -f "$path")
+  pkg=$(dpkg -S "$real" 2>/dev/null | head -1 | cut -d: -f1)
+  [[ -z "$pkg" ]] && pkg=$(dpkg -S "$path" 2>/dev/null | head -1 | cut -d: -f1)
+  if [[ -z "$pkg" ]]; then
+    case "$path" in /usr/local/* | /root/* | /opt/*) echo "FAIL: $why: $path is not from a Debian package"; failures=$((failures + 1)) ;; esac
+    return
+  fi
+  pkg="${pkg%%,*}"
+  if [[ -z "${CLOSURE[$pkg]:-}" ]]; then
+    echo "FAIL: $why: $path comes from Debian package '$pkg', which scripts/install-deps.sh does not install"
+    failures=$((failures + 1))
+  fi
+}
+
+checked=0
+for bin in "$@"; do
+  while read -r lib path; do
+    [[ "$path" == /* ]] && check_file "$path" "$(basename "$bin") links $lib" && checked=$((checked + 1))
+  done < <(ldd "$bin" | awk '/=>/ {print $1, $3}')
+done
+
+# Files and tools found at configure time.
+if [[ -f "$BUILD_DIR/CMakeCache.txt" ]]; then
+  while read -r path; do
+    [[ -e "$path" ]] && check_file "$path" "CMake found" && checked=$((checked + 1))
+  done < <(grep -E '^[A-Za-z0-9_]+(_DIR|_LIBRARY|_LIBRARIES|_INCLUDE_DIR|_EXECUTABLE|_PROGRAM|_COMMAND)?:[A-Z]+=/usr/' \
+             "$BUILD_DIR/CMakeCache.txt" | cut -d= -f2- | tr ';' '\n' | grep '^/usr/' | sort -u)
+fi
+
+# Tools the build and the tests run.
+for tool in glslangValidator cmake ctest ninja c++ pkg-config Xvfb xauth bash dpkg; do
+  p=$(command -v "$tool") || { echo "FAIL: tool $tool not found"; failures=$((failures + 1)); continue; }
+  check_file "$p" "tool $tool"
+  checked=$((checked + 1))
+done
+
+# Runtime manifests: the CPU Vulkan driver and the validation layer.
+for f in /usr/share/vulkan/icd.d/lvp_icd.*.json /usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json; do
+  if [[ -e "$f" ]]; then check_file "$f" "Vulkan manifest"; else echo "FAIL: $f missing"; failures=$((failures + 1)); fi
+  checked=$((checked + 1))
+done
+
+echo "deps: checked $checked files, $failures not covered by scripts/install-deps.sh"
+exit $((failures > 0))
