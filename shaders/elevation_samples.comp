@@ -1,0 +1,22 @@
+#version 450
+// Elevation at a batch of unit directions, in double: the GPU side of the CPU-reference test and
+// of the samples-per-second benchmark (engine/elevation_sampler.h).
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+
+layout(local_size_x = 64) in;
+
+#include "include/elevation_params.h"
+layout(std430, binding = 0) readonly buffer Elevation { ElevationParams elevation; };
+layout(std430, binding = 1) readonly buffer Directions { dvec4 directions[]; };  // xyz unit, w unused
+layout(std430, binding = 2) writeonly buffer Heights { double heights[]; };      // metres
+layout(push_constant) uniform Push { uint count; } push;
+
+#define GLOBE_ELEVATION_PARAMS elevation
+#include "include/elevation.glsl"
+
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i >= push.count) return;
+  heights[i] = globeElevation(directions[i].xyz);
+}
