@@ -1,8 +1,8 @@
 #include "planet/planet_description.h"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "planet/gradient_noise.h"
 
@@ -10,9 +10,12 @@ namespace globe {
 
 std::string_view layerKindName(LayerKind kind) {
   switch (kind) {
-    case LayerKind::Fbm: return "fbm";
-    case LayerKind::Ridged: return "ridged";
-    case LayerKind::Billow: return "billow";
+    case LayerKind::Fbm:
+      return "fbm";
+    case LayerKind::Ridged:
+      return "ridged";
+    case LayerKind::Billow:
+      return "billow";
   }
   return "unknown";
 }
@@ -128,10 +131,9 @@ Status validatePlanet(const PlanetDescription& planet) {
     }
     const double finest = finestWavelength_m(l);
     if (!(planet.radius_m / finest <= kMaxLatticeCoordinate)) {
-      return fieldError(p + "octaves",
-                        fmt::format("too many octaves for double precision at this radius: finest "
-                                    "wavelength {:g} m, radius / wavelength must be <= 2^40",
-                                    finest));
+      return fieldError(p + "octaves", fmt::format("too many octaves for double precision at this radius: finest "
+                                                   "wavelength {:g} m, radius / wavelength must be <= 2^40",
+                                                   finest));
     }
     for (std::size_t j = 0; j < i; ++j) {
       if (planet.layers[j].name == l.name) {

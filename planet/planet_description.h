@@ -28,7 +28,7 @@ std::string_view layerKindName(LayerKind kind);
 // One layer: `octaves` octaves of gradient noise; octave i has wavelength wavelength_m / lacunarity^i
 // and amplitude amplitude_m * gain^i.
 struct ElevationLayer {
-  std::string name;             // unique within the planet, used by modulated_by
+  std::string name;  // unique within the planet, used by modulated_by
   LayerKind kind = LayerKind::Fbm;
   int octaves = 1;              // 1 .. kMaxOctavesPerLayer
   double wavelength_m = 1.0e6;  // wavelength of the first octave, metres (> 0)
@@ -39,23 +39,23 @@ struct ElevationLayer {
   int modulated_by = -1;        // index of an earlier layer, or -1 (not modulated)
   // Mask m = smoothstep((value(modulated_by) - low) / (high - low)); the octave sum is scaled by
   // floor + (1 - floor) * m. Ignored when modulated_by < 0.
-  double modulation_low_m = 0.0;     // modulator value (m) where the mask is 0
+  double modulation_low_m = 0.0;      // modulator value (m) where the mask is 0
   double modulation_high_m = 1000.0;  // modulator value (m) where the mask is 1 (> low)
-  double modulation_floor = 0.0;     // scale where the mask is 0, [0, 1]
+  double modulation_floor = 0.0;      // scale where the mask is 0, [0, 1]
 };
 
-inline constexpr int kMaxElevationLayers = 8;    // = GLOBE_MAX_ELEVATION_LAYERS (GPU struct size)
+inline constexpr int kMaxElevationLayers = 8;  // = GLOBE_MAX_ELEVATION_LAYERS (GPU struct size)
 inline constexpr int kMaxOctavesPerLayer = 24;
-inline constexpr double kMaxRadius_m = 1.0e9;    // 7e7 m (a gas giant) is the largest preset
+inline constexpr double kMaxRadius_m = 1.0e9;  // 7e7 m (a gas giant) is the largest preset
 // Largest lattice coordinate (radius * finest frequency) allowed: keeps the noise's cell offset
 // exact to 2^-12 cells in double and the 64-bit lattice index far from overflow.
 inline constexpr double kMaxLatticeCoordinate = 1099511627776.0;  // 2^40
 
 struct PlanetDescription {
   std::string name = "unnamed";
-  double radius_m = 6371000.0;  // sphere radius (elevation 0), metres, (0, kMaxRadius_m]
-  std::uint64_t seed = 0;       // noise seed; every layer derives its own from it
-  double sea_level_m = 0.0;     // elevation of the sea surface, metres (for rendering and stats)
+  double radius_m = 6371000.0;         // sphere radius (elevation 0), metres, (0, kMaxRadius_m]
+  std::uint64_t seed = 0;              // noise seed; every layer derives its own from it
+  double sea_level_m = 0.0;            // elevation of the sea surface, metres (for rendering and stats)
   std::vector<ElevationLayer> layers;  // 1 .. kMaxElevationLayers, evaluated in order
 };
 

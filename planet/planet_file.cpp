@@ -1,14 +1,14 @@
 #include "planet/planet_file.h"
 
+#include <fmt/format.h>
+#include <toml++/toml.h>
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fmt/format.h>
 #include <fstream>
 #include <map>
 #include <optional>
 #include <sstream>
-#include <toml++/toml.h>
 #include <vector>
 
 namespace globe {
@@ -16,22 +16,31 @@ namespace {
 
 constexpr std::string_view kTopKeys[] = {"name", "radius_m", "seed", "sea_level_m", "layers"};
 constexpr std::string_view kLayerKeys[] = {
-    "name",        "kind",     "octaves",      "wavelength_m",  "frequency_per_m",
-    "lacunarity",  "gain",     "amplitude_m",  "offset_m",      "modulated_by",
-    "modulation_low_m", "modulation_high_m", "modulation_floor"};
+    "name",        "kind",     "octaves",      "wavelength_m",     "frequency_per_m",   "lacunarity",      "gain",
+    "amplitude_m", "offset_m", "modulated_by", "modulation_low_m", "modulation_high_m", "modulation_floor"};
 
 std::string_view typeName(toml::node_type t) {
   switch (t) {
-    case toml::node_type::none: return "nothing";
-    case toml::node_type::table: return "a table";
-    case toml::node_type::array: return "an array";
-    case toml::node_type::string: return "a string";
-    case toml::node_type::integer: return "an integer";
-    case toml::node_type::floating_point: return "a float";
-    case toml::node_type::boolean: return "a boolean";
-    case toml::node_type::date: return "a date";
-    case toml::node_type::time: return "a time";
-    case toml::node_type::date_time: return "a date-time";
+    case toml::node_type::none:
+      return "nothing";
+    case toml::node_type::table:
+      return "a table";
+    case toml::node_type::array:
+      return "an array";
+    case toml::node_type::string:
+      return "a string";
+    case toml::node_type::integer:
+      return "an integer";
+    case toml::node_type::floating_point:
+      return "a float";
+    case toml::node_type::boolean:
+      return "a boolean";
+    case toml::node_type::date:
+      return "a date";
+    case toml::node_type::time:
+      return "a time";
+    case toml::node_type::date_time:
+      return "a date-time";
   }
   return "a value";
 }
@@ -84,8 +93,8 @@ class Reader {
 
   void fail(const toml::source_region& where, std::string field, std::string message) {
     if (error_) return;
-    error_ = Error{file_, static_cast<int>(where.begin.line), static_cast<int>(where.begin.column),
-                   std::move(field), std::move(message)};
+    error_ = Error{file_, static_cast<int>(where.begin.line), static_cast<int>(where.begin.column), std::move(field),
+                   std::move(message)};
   }
 
   void remember(const std::string& field, const toml::source_region& where) { where_[field] = where; }
@@ -278,8 +287,7 @@ Result<PlanetDescription> readPlanet(const toml::table& root, std::string_view s
         break;
       }
       if (layers->size() > static_cast<std::size_t>(kMaxElevationLayers)) {
-        r.fail((*layers)[kMaxElevationLayers].source(), k,
-               fmt::format("at most {} layers", kMaxElevationLayers));
+        r.fail((*layers)[kMaxElevationLayers].source(), k, fmt::format("at most {} layers", kMaxElevationLayers));
         break;
       }
       for (std::size_t i = 0; i < layers->size() && !r.failed(); ++i) {
