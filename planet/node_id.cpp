@@ -10,17 +10,6 @@ bool NodeId::isValid() const {
   return face < kFaceCount && level <= kMaxNodeLevel && x < cellsPerSide() && y < cellsPerSide();
 }
 
-NodeId NodeId::parent() const {
-  assert(level > 0);
-  return {face, static_cast<uint8_t>(level - 1), x >> 1, y >> 1};
-}
-
-NodeId NodeId::child(int q) const {
-  assert(level < kMaxNodeLevel && q >= 0 && q < 4);
-  return {face, static_cast<uint8_t>(level + 1), (x << 1) | static_cast<uint32_t>(q & 1),
-          (y << 1) | static_cast<uint32_t>((q >> 1) & 1)};
-}
-
 NodeId NodeId::ancestor(int atLevel) const {
   assert(atLevel >= 0 && atLevel <= level);
   const int shift = level - atLevel;
@@ -53,18 +42,30 @@ NodeId edgeNeighbour(const NodeId& node, int edge) {
   // (corner e -> corner e+1); the neighbour runs the other way, so its index is last - k.
   uint32_t k = 0;
   switch (edge) {
-    case kEdgeMinusV: k = node.x; break;
-    case kEdgePlusU: k = node.y; break;
-    case kEdgePlusV: k = last - node.x; break;
-    default: k = last - node.y; break;
+    case kEdgeMinusV:
+      k = node.x;
+      break;
+    case kEdgePlusU:
+      k = node.y;
+      break;
+    case kEdgePlusV:
+      k = last - node.x;
+      break;
+    default:
+      k = last - node.y;
+      break;
   }
   const FaceEdgeNeighbour& n = Triacontahedron::get().face(node.face).neighbour[static_cast<size_t>(edge)];
   const uint32_t j = n.reversed ? last - k : k;
   switch (n.edge) {
-    case kEdgeMinusV: return {n.face, node.level, j, 0};
-    case kEdgePlusU: return {n.face, node.level, last, j};
-    case kEdgePlusV: return {n.face, node.level, last - j, last};
-    default: return {n.face, node.level, 0, last - j};
+    case kEdgeMinusV:
+      return {n.face, node.level, j, 0};
+    case kEdgePlusU:
+      return {n.face, node.level, last, j};
+    case kEdgePlusV:
+      return {n.face, node.level, last - j, last};
+    default:
+      return {n.face, node.level, 0, last - j};
   }
 }
 

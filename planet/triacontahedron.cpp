@@ -12,7 +12,7 @@ namespace {
 // Ring vertex at latitude ±atan(1/2) and a longitude that is a multiple of 36° (degrees). The
 // multiples of 180° are exact so that the ±180° vertex has y == 0.
 glm::dvec3 ringVertex(int longitudeDeg, bool north) {
-  const double z = 1.0 / std::sqrt(5.0);  // sin(atan(1/2))
+  const double z = 1.0 / std::sqrt(5.0);    // sin(atan(1/2))
   const double rho = 2.0 / std::sqrt(5.0);  // cos(atan(1/2))
   double c = 0.0;
   double s = 0.0;
@@ -35,9 +35,7 @@ const Triacontahedron& Triacontahedron::get() {
   return instance;
 }
 
-glm::dvec3 Triacontahedron::vertexDirection(int index) const {
-  return glm::normalize(vertex(index));
-}
+glm::dvec3 Triacontahedron::vertexDirection(int index) const { return glm::normalize(vertex(index)); }
 
 Triacontahedron::Triacontahedron() {
   // Five-fold vertices: the icosahedron with a vertex at each pole and one at longitude 0.
@@ -68,9 +66,9 @@ Triacontahedron::Triacontahedron() {
   {
     const auto& t = triangles[0];
     const glm::dvec3 m = 0.5 * (vertices_[static_cast<size_t>(t[0])] + vertices_[static_cast<size_t>(t[1])]);
-    const glm::dvec3 centre = glm::normalize(vertices_[static_cast<size_t>(t[0])] +
-                                             vertices_[static_cast<size_t>(t[1])] +
-                                             vertices_[static_cast<size_t>(t[2])]);
+    const glm::dvec3 centre =
+        glm::normalize(vertices_[static_cast<size_t>(t[0])] + vertices_[static_cast<size_t>(t[1])] +
+                       vertices_[static_cast<size_t>(t[2])]);
     threeFoldRadius_ = glm::dot(m, m) / glm::dot(centre, m);
   }
   for (size_t i = 0; i < 20; ++i) {
@@ -116,8 +114,8 @@ Triacontahedron::Triacontahedron() {
           const int r = faces_[static_cast<size_t>(g)].vertex[static_cast<size_t>(h)];
           const int s = faces_[static_cast<size_t>(g)].vertex[static_cast<size_t>((h + 1) % 4)];
           if ((r == p && s == q) || (r == q && s == p)) {
-            faces_[static_cast<size_t>(f)].neighbour[static_cast<size_t>(e)] = {
-                static_cast<uint8_t>(g), static_cast<uint8_t>(h), r == q};
+            faces_[static_cast<size_t>(f)].neighbour[static_cast<size_t>(e)] = {static_cast<uint8_t>(g),
+                                                                                static_cast<uint8_t>(h), r == q};
           }
         }
       }

@@ -1,0 +1,88 @@
+// CDLOD selection cost (docs/lod.md): nodes visited, nodes selected and time per visited node at
+// camera altitudes 1 m .. 1e8 m over a 6371 km planet, max depth 20, all nodes resident with known
+// (tightened) radius ranges from a synthetic terrain. "Frustum": 60° vertical, 16:9, looking at the
+// horizon; "All": no frustum culling (horizon culling only).
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <numbers>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "planet/selection.h"
+
+namespace globe {
+namespace {
+
+constexpr double kRadius_m = 6371000.0;
+
+// Terrain relief shrinking with the node (5 % of its width, at most 8 km), like real payload ranges.
+class ResidentTerrain final : public NodeResidency {
+ public:
+  bool isResident(const NodeId&) const override { return true; }
+  void request(const NodeId&, RequestPriority, double) override {}
+  std::optional<RadiusRange> knownRadiusRange(const NodeId& id) const override {
+    const double a = std::min(8000.0, 0.05 * nominalNodeWidth(id.level, kRadius_m));
+    return RadiusRange{kRadius_m - a, kRadius_m + a};
+  }
+};
+
+void selection(benchmark::State& state, double altitude_m, bool withFrustum) {
+  LodConfig config;
+  config.radius_m = kRadius_m;
+  config.minElevation_m = -8000.0;
+  config.maxElevation_m = 8000.0;
+  config.ranges.maxDepth = 20;
+  auto selector = LodSelector::create(config);
+  if (!selector) {
+    state.SkipWithError(selector.error().format().c_str());
+    return;
+  }
+  const double lat = 46.5 * std::numbers::pi / 180.0;
+  const double lon = 7.5 * std::numbers::pi / 180.0;
+  const glm::dvec3 up(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
+  const glm::dvec3 eye = up * (kRadius_m + altitude_m);
+  const glm::dvec3 north = glm::normalize(glm::dvec3(0, 0, 1) - up * up.z);
+  // Look at the horizon (or straight down from far away, where the horizon is below the view).
+  const double dip = std::acos(std::min(1.0, kRadius_m / (kRadius_m + altitude_m)));
+  const glm::dvec3 forward = altitude_m > 1e6 ? -up : glm::normalize(north * std::cos(dip) - up * std::sin(dip));
+  const glm::dmat4 viewProjection = glm::perspective(std::numbers::pi / 3.0, 16.0 / 9.0, 0.01, 1e12) *
+                                    glm::lookAt(eye, eye + forward, altitude_m > 1e6 ? north : up);
+  const auto frustum = Frustum::fromViewProjection(viewProjection);
+  const SelectionCamera camera{eye, withFrustum ? &frustum.value() : nullptr};
+  ResidentTerrain residency;
+  Selection out;
+  (void)selector->select(camera, residency, out);  // warm-up: ranges settle, the buffer grows once
+  for (auto _ : state) {
+    const Status s = selector->select(camera, residency, out);
+    benchmark::DoNotOptimize(s.ok());
+    benchmark::DoNotOptimize(out.nodes.data());
+  }
+  const double visited = out.stats.visited;
+  state.counters["visited"] = visited;
+  state.counters["selected"] = static_cast<double>(out.stats.selected);
+  state.counters["partial"] = static_cast<double>(out.stats.partial);
+  state.counters["passes"] = static_cast<double>(out.stats.passes);
+  // Seconds per visited node (shown with an SI prefix, e.g. "60n" = 60 ns).
+  state.counters["t_per_visited"] =
+      benchmark::Counter(visited, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+void registerAll() {
+  for (bool frustum : {true, false}) {
+    for (double altitude : {1.0, 100.0, 1e4, 1e6, 1e8}) {
+      const std::string name = std::string("Selection/") + (frustum ? "Frustum" : "All") + "/altitude_m:" +
+                               (altitude < 1e4 ? std::to_string(static_cast<int>(altitude))
+                                               : (altitude == 1e4   ? "1e4"
+                                                  : altitude == 1e6 ? "1e6"
+                                                                    : "1e8"));
+      benchmark::RegisterBenchmark(name.c_str(), selection, altitude, frustum)->Unit(benchmark::kMicrosecond);
+    }
+  }
+}
+
+const int kRegistered = (registerAll(), 0);
+
+}  // namespace
+}  // namespace globe

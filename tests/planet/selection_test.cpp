@@ -1,0 +1,305 @@
+#include "planet/selection.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <unordered_set>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "lod_test_util.h"
+
+namespace globe {
+namespace {
+
+using testing::AllResident;
+using testing::kEarthRadius_m;
+using testing::PartlyResident;
+using testing::SyntheticTerrain;
+
+LodSelector makeSelector(int maxDepth = 20, bool horizon = true) {
+  LodConfig c;
+  c.ranges.maxDepth = maxDepth;
+  c.minElevation_m = -8000.0;
+  c.maxElevation_m = 8000.0;
+  c.horizonCulling = horizon;
+  auto s = LodSelector::create(c);
+  EXPECT_TRUE(s.ok());
+  return std::move(s.value());
+}
+
+// Every pair of edge-adjacent selected nodes differs by at most one level (across seams too): from
+// each node, look across each edge for the selected node covering the same-level neighbour.
+int countRestrictionViolations(const Selection& s) {
+  std::unordered_set<uint64_t> keys;
+  for (const SelectedNode& n : s.nodes) keys.insert(n.id.key());
+  int violations = 0;
+  for (const SelectedNode& n : s.nodes) {
+    for (int e = 0; e < 4; ++e) {
+      const NodeId nb = edgeNeighbour(n.id, e);
+      for (int k = nb.level; k >= 0; --k) {
+        if (keys.count(nb.ancestor(k).key()) != 0) {
+          if (n.id.level - k > 1) ++violations;
+          break;
+        }
+      }
+    }
+  }
+  return violations;
+}
+
+// Selected nodes are pairwise disjoint (no node and its ancestor) and cover the sphere.
+void expectTiling(const Selection& s) {
+  std::unordered_set<uint64_t> keys;
+  for (const SelectedNode& n : s.nodes) keys.insert(n.id.key());
+  ASSERT_EQ(keys.size(), s.nodes.size()) << "duplicates";
+  double area = 0.0;
+  for (const SelectedNode& n : s.nodes) {
+    for (int k = 0; k < n.id.level; ++k) ASSERT_EQ(keys.count(n.id.ancestor(k).key()), 0u) << "overlap";
+    area += testing::nodeSolidAngle(n.id);
+  }
+  EXPECT_NEAR(area, 4.0 * std::numbers::pi, 1e-9);
+}
+
+glm::dmat4 lookingAt(const glm::dvec3& eye, const glm::dvec3& forward) {
+  const glm::dvec3 up =
+      std::abs(glm::dot(glm::normalize(eye), forward)) < 0.99 ? glm::normalize(eye) : glm::dvec3(0.6, 0.0, 0.8);
+  return glm::perspective(1.2, 16.0 / 9.0, 0.01, 1e12) * glm::lookAt(eye, eye + forward, up);
+}
+
+std::vector<glm::dvec3> specialDirections() {
+  std::vector<glm::dvec3> d = {testing::fromLatLon(90, 0), testing::fromLatLon(-90, 0), testing::fromLatLon(0, 180),
+                               testing::fromLatLon(0, -180), testing::fromLatLon(45, 179.99999999)};
+  for (int v = 0; v < kVertexCount; ++v) d.push_back(Triacontahedron::get().vertexDirection(v));
+  for (int f = 0; f < kFaceCount; f += 3) d.push_back(RhombusFaceMapping::get().unitPoint(f, 0.375, 0.0));
+  return d;
+}
+
+TEST(Selection, RestrictedQuadtreeOverRandomCameras) {
+  LodSelector selector = makeSelector();
+  AllResident residency{SyntheticTerrain{}};
+  Selection out;
+  std::mt19937_64 rng(99);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<glm::dvec3> directions = specialDirections();
+  while (directions.size() < 160) directions.push_back(testing::randomDirection(rng));
+  size_t total = 0;
+  for (size_t i = 0; i < directions.size(); ++i) {
+    const double altitude = std::pow(10.0, -3.0 + 11.0 * unit(rng));  // 1 mm .. 1e8 m
+    const glm::dvec3 eye = directions[i] * (kEarthRadius_m + altitude);
+    const auto frustum =
+        Frustum::fromViewProjection(lookingAt(eye, glm::normalize(testing::randomDirection(rng) - directions[i])));
+    ASSERT_TRUE(frustum.ok());
+    for (bool culling : {false, true}) {
+      SelectionCamera camera{eye, culling ? &frustum.value() : nullptr};
+      ASSERT_TRUE(selector.select(camera, residency, out).ok());
+      EXPECT_EQ(countRestrictionViolations(out), 0) << "camera " << i << " altitude " << altitude;
+      EXPECT_EQ(out.stats.selected, out.nodes.size());
+      total += out.nodes.size();
+    }
+  }
+  EXPECT_GT(total, 10000u);
+}
+
+TEST(Selection, TilesTheSphereWithoutCulling) {
+  LodSelector selector = makeSelector(20, false);
+  AllResident residency{SyntheticTerrain{}};
+  Selection out;
+  for (const glm::dvec3& d : specialDirections()) {
+    for (double altitude : {1e-3, 1e3, 1e7, 1e11}) {
+      ASSERT_TRUE(selector.select({d * (kEarthRadius_m + altitude), nullptr}, residency, out).ok());
+      expectTiling(out);
+      EXPECT_EQ(countRestrictionViolations(out), 0);
+    }
+  }
+}
+
+TEST(Selection, SmoothSphereReachesMaxDepthNearTheGround) {
+  for (int maxDepth : {20, 24}) {
+    LodSelector selector = makeSelector(maxDepth, false);
+    AllResident residency{SyntheticTerrain{kEarthRadius_m, 0.0, 0.0}};
+    Selection out;
+    const glm::dvec3 eye = testing::fromLatLon(12.5, -60) * (kEarthRadius_m + 1e-3);
+    ASSERT_TRUE(selector.select({eye, nullptr}, residency, out).ok());
+    int deepest = 0;
+    for (const SelectedNode& n : out.nodes) deepest = std::max(deepest, int(n.id.level));
+    EXPECT_EQ(deepest, maxDepth);
+    expectTiling(out);
+    EXPECT_EQ(countRestrictionViolations(out), 0);
+  }
+}
+
+TEST(Selection, PartialResidencyDrawsParentsAndRequestsChildren) {
+  LodSelector selector = makeSelector(20, true);
+  PartlyResident residency(6, SyntheticTerrain{});
+  Selection out;
+  const glm::dvec3 eye = testing::fromLatLon(-33, 151) * (kEarthRadius_m + 300.0);
+  LodConfig noHorizon = selector.config();
+  noHorizon.horizonCulling = false;
+  auto full = LodSelector::create(noHorizon);
+  ASSERT_TRUE(full.ok());
+  ASSERT_TRUE(full->select({eye, nullptr}, residency, out).ok());
+  expectTiling(out);  // never a hole
+  EXPECT_GT(out.stats.fallbacks, 0u);
+  EXPECT_EQ(residency.requested.size(), out.stats.requests);
+  ASSERT_FALSE(residency.requested.empty());
+  for (const NodeId& id : residency.requested) EXPECT_FALSE(residency.isResident(id));
+  for (double d : residency.distances) EXPECT_GE(d, 0.0);
+  for (const SelectedNode& n : out.nodes) EXPECT_TRUE(residency.isResident(n.id));
+}
+
+TEST(Selection, NonResidentRootsAreRequestedNotDrawn) {
+  class NothingResident : public NodeResidency {
+   public:
+    bool isResident(const NodeId&) const override { return false; }
+    void request(const NodeId& id, RequestPriority p, double) override {
+      EXPECT_EQ(id.level, 0);
+      EXPECT_EQ(p, RequestPriority::kRoot);
+      ++count;
+    }
+    int count = 0;
+  } residency;
+  LodSelector selector = makeSelector(20, false);
+  Selection out;
+  ASSERT_TRUE(selector.select({glm::dvec3(1e8, 0, 0), nullptr}, residency, out).ok());
+  EXPECT_TRUE(out.nodes.empty());
+  EXPECT_EQ(residency.count, 30);
+}
+
+TEST(Selection, PartialNodesQuadrantsAndMorphBands) {
+  LodSelector selector = makeSelector();
+  AllResident residency{SyntheticTerrain{}};
+  Selection out;
+  const glm::dvec3 eye = testing::fromLatLon(27, 86.9) * (kEarthRadius_m + 8000.0);
+  ASSERT_TRUE(selector.select({eye, nullptr}, residency, out).ok());
+  EXPECT_GT(out.stats.partial, 0u);
+  for (const SelectedNode& n : out.nodes) {
+    EXPECT_EQ(n.quadrant, n.id.level > 0 ? n.id.quadrant() : 0);
+    const int band = n.partial ? n.id.level - 1 : n.id.level;
+    const MorphRange expected = selector.ranges().morph(band);
+    if (band == 0) {
+      EXPECT_TRUE(std::isinf(n.morph.start_m));
+      continue;
+    }
+    EXPECT_EQ(n.morph.start_m, expected.start_m);
+    EXPECT_EQ(n.morph.end_m, expected.end_m);
+    EXPECT_LT(n.morph.start_m, n.morph.end_m);
+    // Morphing over the last half (default) of the band.
+    const double bandStart = band < 20 ? selector.ranges().refineRange(band) : 0.0;
+    EXPECT_NEAR(n.morph.end_m - n.morph.start_m, 0.5 * (n.morph.end_m - bandStart), 1e-6 * n.morph.end_m);
+    if (n.partial) {
+      EXPECT_GT(n.id.level, 0);
+    }
+  }
+}
+
+TEST(Selection, ExtremeAndInvalidCameras) {
+  LodSelector selector = makeSelector();
+  AllResident residency{SyntheticTerrain{}};
+  Selection out;
+  const double nan = std::nan("");
+  for (const glm::dvec3& bad : {glm::dvec3(nan, 0, 0), glm::dvec3(0, INFINITY, 0), glm::dvec3(0, 0, -INFINITY)}) {
+    const Status s = selector.select({bad, nullptr}, residency, out);
+    ASSERT_FALSE(s.ok());
+    EXPECT_EQ(s.error().field, "camera");
+    EXPECT_TRUE(out.nodes.empty());
+  }
+  // Inside the planet (centre, half radius, just under the minimum elevation): defined, tiles.
+  for (double r : {0.0, 0.5 * kEarthRadius_m, kEarthRadius_m - 9000.0}) {
+    ASSERT_TRUE(selector.select({glm::dvec3(0, r, 0), nullptr}, residency, out).ok());
+    expectTiling(out);
+    EXPECT_EQ(out.stats.horizonCulled, 0u);
+  }
+  // 1e11 m away: the 30 roots.
+  ASSERT_TRUE(selector.select({glm::dvec3(0, 0, 1e11), nullptr}, residency, out).ok());
+  EXPECT_EQ(out.nodes.size(), 30u);
+}
+
+TEST(Selection, NoAllocationAfterWarmUp) {
+  LodSelector selector = makeSelector();
+  AllResident residency{SyntheticTerrain{}};
+  Selection out;
+  const glm::dvec3 eye = testing::fromLatLon(46, 7) * (kEarthRadius_m + 2.0);
+  ASSERT_TRUE(selector.select({eye, nullptr}, residency, out).ok());
+  const SelectedNode* data = out.nodes.data();
+  const size_t capacity = out.nodes.capacity();
+  for (int i = 0; i < 5; ++i) {
+    ASSERT_TRUE(selector.select({eye + glm::dvec3(0.001 * i, 0, 0), nullptr}, residency, out).ok());
+    EXPECT_EQ(out.nodes.data(), data);
+    EXPECT_EQ(out.nodes.capacity(), capacity);
+  }
+  EXPECT_EQ(out.stats.passes, 1u);  // ranges settled: one pass per frame
+}
+
+TEST(Selection, RejectsBadConfig) {
+  struct Case {
+    const char* field;
+    void (*edit)(LodConfig&);
+  };
+  const Case cases[] = {
+      {"radius", [](LodConfig& c) { c.radius_m = 0; }},
+      {"radius", [](LodConfig& c) { c.radius_m = std::nan(""); }},
+      {"elevation",
+       [](LodConfig& c) {
+         c.minElevation_m = 10;
+         c.maxElevation_m = 0;
+       }},
+      {"minElevation", [](LodConfig& c) { c.minElevation_m = -1e9; }},
+      {"maxDepth", [](LodConfig& c) { c.ranges.maxDepth = 27; }},
+      {"maxDepth", [](LodConfig& c) { c.ranges.maxDepth = -1; }},
+      {"rangeRatio", [](LodConfig& c) { c.ranges.rangeRatio = 0.5; }},
+      {"morphFraction", [](LodConfig& c) { c.ranges.morphFraction = 0; }},
+      {"distanceMultiplier", [](LodConfig& c) { c.ranges.distanceMultiplier = -1; }},
+      {"baseRange", [](LodConfig& c) { c.ranges.baseRange_m = INFINITY; }},
+  };
+  for (const Case& c : cases) {
+    LodConfig config;
+    c.edit(config);
+    const auto s = LodSelector::create(config);
+    ASSERT_FALSE(s.ok()) << c.field;
+    EXPECT_EQ(s.error().field, c.field);
+  }
+}
+
+TEST(LodRanges, MetresPerSample) {
+  struct Row {
+    int depth, cells;
+    double radius_m, expected_m, tolerance_m;
+  };
+  const Row rows[] = {
+      {20, 128, 6371e3, 0.031, 0.0005},                          // the source's "≈ 3 cm"
+      {0, 1, 6371e3, 4156.1e3, 0.1e3},                           // a whole rhombus edge
+      {20, 1, 6371e3, 3.964, 0.001},                             // a depth-20 node
+      {10, 64, 1737.4e3, 1737.4e3 * 0.65235 / 1024 / 64, 1e-3},  // the Moon
+      {26, 128, 6371e3, 0.031 / 64, 1e-5},
+  };
+  for (const Row& r : rows) EXPECT_NEAR(metresPerSample(r.depth, r.cells, r.radius_m), r.expected_m, r.tolerance_m);
+}
+
+TEST(LodRanges, GrowthKeepsRestrictionInequality) {
+  auto r = LodRanges::create({}, kEarthRadius_m);
+  ASSERT_TRUE(r.ok());
+  for (int d = 0; d + 1 < 20; ++d) EXPECT_NEAR(r->refineRange(d) / r->refineRange(d + 1), 2.0, 1e-12);
+  EXPECT_NEAR(r->refineRange(19), kAutoBaseRangeInNodeWidths * nominalNodeWidth(20, kEarthRadius_m), 1e-9);
+  EXPECT_TRUE(r->observeDiagonal(12, 50e3));  // a tall mountain node
+  EXPECT_FALSE(r->observeDiagonal(12, 40e3));
+  for (int d = 0; d + 1 < 20; ++d) {
+    EXPECT_GE(r->refineRange(d), r->refineRange(d + 1) + r->maxDiagonal(d + 1)) << d;
+  }
+  EXPECT_GE(r->refineRange(11), 50e3);
+  r->resetObservedDiagonals();
+  EXPECT_NEAR(r->refineRange(11) / r->refineRange(12), 2.0, 1e-12);
+}
+
+TEST(LodRanges, MorphFactor) {
+  const MorphRange m{100.0, 200.0};
+  EXPECT_EQ(morphFactor(m, 50.0), 0.0);
+  EXPECT_EQ(morphFactor(m, 150.0), 0.5);
+  EXPECT_EQ(morphFactor(m, 250.0), 1.0);
+  EXPECT_EQ(morphFactor({INFINITY, INFINITY}, 1e300), 0.0);
+}
+
+}  // namespace
+}  // namespace globe
