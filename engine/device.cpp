@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <stdexcept>
 
 namespace globe::vk {
@@ -64,6 +65,26 @@ std::string missingRequiredFeature(VkPhysicalDevice physical) {
   return "";
 }
 
+// The first queue family with graphics and compute that, when `surface` is set, can present to it.
+std::optional<uint32_t> graphicsComputeFamily(VkPhysicalDevice physical, VkSurfaceKHR surface) {
+  uint32_t familyCount = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(physical, &familyCount, nullptr);
+  std::vector<VkQueueFamilyProperties> families(familyCount);
+  vkGetPhysicalDeviceQueueFamilyProperties(physical, &familyCount, families.data());
+  for (uint32_t i = 0; i < familyCount; ++i) {
+    if ((families[i].queueFlags & (VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT)) !=
+        (VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT))
+      continue;
+    if (surface != VK_NULL_HANDLE) {
+      VkBool32 presents = VK_FALSE;
+      GLOBE_VK_CHECK(vkGetPhysicalDeviceSurfaceSupportKHR(physical, i, surface, &presents));
+      if (!presents) continue;
+    }
+    return i;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::string deviceNameFromEnvironment() {
@@ -114,6 +135,10 @@ Device::Device(const DeviceOptions& options) {
       setObjectName_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
           vkGetInstanceProcAddr(instance_, "vkSetDebugUtilsObjectNameEXT"));
     }
+    if (options.createSurface) {
+      surface_ = options.createSurface(instance_);
+      if (surface_ == VK_NULL_HANDLE) throw std::runtime_error("could not create a Vulkan surface for the window");
+    }
 
     // Physical device: forced by name, else the best type that has what globe needs.
     uint32_t count = 0;
@@ -150,6 +175,8 @@ Device::Device(const DeviceOptions& options) {
       std::string missing = missingRequiredFeature(p);
       if (missing.empty() && !hasDeviceExtension(p, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME))
         missing = VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME;
+      if (missing.empty() && surface_ != VK_NULL_HANDLE && !graphicsComputeFamily(p, surface_))
+        missing = "a queue that presents to the window";
       if (missing.empty() && props.apiVersion >= VK_API_VERSION_1_3) {
         physical_ = p;
         properties_ = props;
@@ -162,21 +189,11 @@ Device::Device(const DeviceOptions& options) {
       throw std::runtime_error("Vulkan device '" + lastName + "' lacks " + lastMissing + ", which globe requires");
     vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
 
-    // One queue that does graphics and compute (every Vulkan implementation has one).
-    uint32_t familyCount = 0;
-    vkGetPhysicalDeviceQueueFamilyProperties(physical_, &familyCount, nullptr);
-    std::vector<VkQueueFamilyProperties> families(familyCount);
-    vkGetPhysicalDeviceQueueFamilyProperties(physical_, &familyCount, families.data());
-    bool found = false;
-    for (uint32_t i = 0; i < familyCount; ++i) {
-      if ((families[i].queueFlags & (VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT)) ==
-          (VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT)) {
-        queueFamily_ = i;
-        found = true;
-        break;
-      }
-    }
-    if (!found) throw std::runtime_error(name() + " has no graphics+compute queue");
+    // One queue that does graphics and compute (every Vulkan implementation has one), and
+    // presents when there is a window.
+    std::optional<uint32_t> family = graphicsComputeFamily(physical_, surface_);
+    if (!family) throw std::runtime_error(name() + " has no graphics+compute queue");
+    queueFamily_ = *family;
 
     // Optional features are enabled when present; required ones were checked above.
     VkPhysicalDeviceFeatures supported{};
@@ -236,6 +253,10 @@ void Device::destroy() {
     oneShotPool_.reset();
     vkDestroyDevice(device_, nullptr);
     device_ = VK_NULL_HANDLE;
+  }
+  if (surface_ != VK_NULL_HANDLE) {
+    vkDestroySurfaceKHR(instance_, surface_, nullptr);
+    surface_ = VK_NULL_HANDLE;
   }
   if (messenger_ != VK_NULL_HANDLE) {
     auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(

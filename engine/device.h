@@ -17,6 +17,9 @@ struct DeviceOptions {
   std::string deviceName;                          // substring of the device name to force ("" = pick)
   std::vector<std::string> instanceExtensions;     // e.g. from glfwGetRequiredInstanceExtensions
   bool swapchain = false;                          // enable VK_KHR_swapchain on the device
+  // Windowed use: creates the window's surface once the instance exists. The Device then owns the
+  // surface (it must die before the instance) and only accepts a queue family that presents to it.
+  std::function<VkSurfaceKHR(VkInstance)> createSurface;
 };
 
 // Device name to force: the GLOBE_DEVICE environment variable, or "" when unset.
@@ -35,6 +38,7 @@ class Device {
   VkDevice device() const { return device_; }
   VkQueue queue() const { return queue_; }
   uint32_t queueFamily() const { return queueFamily_; }
+  VkSurfaceKHR surface() const { return surface_; }  // VK_NULL_HANDLE when headless
   const VkPhysicalDeviceProperties& properties() const { return properties_; }
   std::string name() const { return properties_.deviceName; }
   ValidationRecorder& validation() { return recorder_; }
@@ -55,6 +59,7 @@ class Device {
 
   VkInstance instance_ = VK_NULL_HANDLE;
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+  VkSurfaceKHR surface_ = VK_NULL_HANDLE;
   VkPhysicalDevice physical_ = VK_NULL_HANDLE;
   VkDevice device_ = VK_NULL_HANDLE;
   VkQueue queue_ = VK_NULL_HANDLE;

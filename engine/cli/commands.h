@@ -11,6 +11,7 @@ namespace globe::cli {
 using Runner = std::function<int()>;
 
 void addRenderCommand(CLI::App& app, Runner& run);
+void addViewCommand(CLI::App& app, Runner& run);
 
 // Exit codes shared by every command.
 constexpr int kExitOk = 0;

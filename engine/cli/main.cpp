@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(0, 1);
   Runner run;
   addRenderCommand(app, run);
+  addViewCommand(app, run);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,25 @@
+#pragma once
+// What one frame cost and what it did: filled by the frame loop (and, once the terrain renderer
+// lands, by selection, drawing and streaming), shown by the viewer's overlay and written by the
+// benchmark. Plain data; zero means "not measured / nothing happened".
+#include <cstdint>
+
+namespace globe {
+
+struct FrameStats {
+  double frame_ms = 0;          // wall time since the previous frame (milliseconds)
+  double select_ms = 0;         // CPU time of LOD selection (milliseconds)
+  double gpu_ms = 0;            // GPU time of the frame's work (milliseconds)
+  uint32_t nodes_selected = 0;  // quadtree nodes drawn
+  uint32_t nodes_partial = 0;   // of those, drawn at half resolution (payload still generating)
+  uint64_t triangles = 0;       // triangles submitted
+  uint32_t draw_calls = 0;      // draw commands recorded
+  uint32_t gen_dispatched = 0;  // payload generation jobs dispatched this frame
+  uint32_t gen_in_flight = 0;   // generation jobs on the GPU, not yet complete
+  uint32_t gen_completed = 0;   // generation jobs that completed this frame
+  uint32_t evicted = 0;         // payloads evicted this frame
+  double resident_mib = 0;      // payload memory resident on the GPU (MiB)
+  uint32_t queue_length = 0;    // generation requests waiting
+};
+
+}  // namespace globe

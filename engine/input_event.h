@@ -1,0 +1,22 @@
+#pragma once
+// One input event of the windowed viewer, from GLFW or from a test script: the same stream, so
+// scripted runs exercise exactly the code that real keyboard and mouse input does.
+#include <cstdint>
+
+namespace globe {
+
+struct InputEvent {
+  enum class Type : uint8_t {
+    Key,          // `code` is a GLFW_KEY_* value
+    MouseButton,  // `code` is a GLFW_MOUSE_BUTTON_* value
+    MouseMove,    // cursor position (x, y) in window pixels, origin top-left
+    Resize,       // request a window size (x, y) in pixels (scripts only)
+  };
+  Type type = Type::Key;
+  int code = 0;
+  bool down = false;  // Key / MouseButton: pressed (true) or released (false)
+  double x = 0;
+  double y = 0;
+};
+
+}  // namespace globe

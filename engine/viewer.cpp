@@ -1,0 +1,274 @@
+#include "engine/viewer.h"
+
+#include "engine/deferred_release_queue.h"
+#include "engine/fly_camera.h"
+#include "engine/frame_ring.h"
+#include "engine/frame_stats.h"
+#include "engine/image_io.h"
+#include "engine/offscreen_target.h"
+#include "engine/overlay.h"
+#include "engine/render_output.h"
+#include "engine/sphere_grid.h"
+#include "engine/sphere_preview.h"
+#include "engine/swapchain.h"
+#include "engine/vk_check.h"
+#include "engine/window.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <unordered_set>
+
+namespace globe {
+
+namespace {
+
+constexpr double kFixedStep_s = 1.0 / 60.0;
+constexpr float kSpaceColour[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+
+// Keyboard and mouse state built from the event stream (window and script alike).
+struct InputState {
+  std::unordered_set<int> keysDown;
+  bool dragging = false;  // left button held
+  bool haveCursor = false;
+  double cursorX = 0, cursorY = 0;
+  double dragX_px = 0, dragY_px = 0;  // accumulated this frame
+
+  bool down(int key) const { return keysDown.count(key) != 0; }
+  double axis(int positive, int negative) const { return (down(positive) ? 1.0 : 0.0) - (down(negative) ? 1.0 : 0.0); }
+};
+
+}  // namespace
+
+struct Viewer::State {
+  State(Window& w, vk::Device& d, ViewerOptions o)
+      : window(w),
+        device(d),
+        options(std::move(o)),
+        swapchain(d, w.framebufferExtent(), options.vsync),
+        ring(d),
+        target(std::make_unique<vk::OffscreenTarget>(d, swapchain.extent())),
+        preview(d),
+        grid(d),
+        overlay(std::make_unique<Overlay>(d, w, swapchain)),
+        camera(options.pose, options.radius_m) {}
+
+  void handle(const InputEvent& e);
+  bool recreateSwapchain();
+  void renderFrame(uint32_t image, VkCommandBuffer cmd, const Camera& cam);
+  Status saveScreenshot(const std::string& path, const Camera& cam);
+
+  Window& window;
+  vk::Device& device;
+  ViewerOptions options;
+  vk::DeferredReleaseQueue releases;  // first member: destroyed last, after everything it may hold
+  vk::Swapchain swapchain;
+  vk::FrameRing ring;
+  std::unique_ptr<vk::OffscreenTarget> target;  // swapchain-sized HDR colour + reversed-Z depth
+  SpherePreview preview;
+  SphereGrid grid;
+  std::unique_ptr<Overlay> overlay;
+  FlyCamera camera;
+
+  InputState input;
+  uint64_t frame = 0;  // frames submitted so far = number of the next frame
+  bool quit = false;
+  bool debugView = false;
+  bool screenshotRequested = false;
+  bool swapchainStale = false;
+  std::string message;  // shown in the overlay
+  FrameStats stats;
+};
+
+void Viewer::State::handle(const InputEvent& e) {
+  switch (e.type) {
+    case InputEvent::Type::Key:
+      if (e.down) {
+        input.keysDown.insert(e.code);
+        if (e.code == GLFW_KEY_ESCAPE) quit = true;
+        if (e.code == GLFW_KEY_F12 || e.code == GLFW_KEY_P) screenshotRequested = true;
+        if (e.code == GLFW_KEY_F1 || e.code == GLFW_KEY_L) debugView = !debugView;
+      } else {
+        input.keysDown.erase(e.code);
+      }
+      break;
+    case InputEvent::Type::MouseButton:
+      if (e.code == GLFW_MOUSE_BUTTON_LEFT)
+        input.dragging = e.down && !overlay->wantsMouse();  // drags on the overlay are its own
+      break;
+    case InputEvent::Type::MouseMove:
+      if (input.haveCursor && input.dragging) {
+        input.dragX_px += e.x - input.cursorX;
+        input.dragY_px += e.y - input.cursorY;
+      }
+      input.cursorX = e.x;
+      input.cursorY = e.y;
+      input.haveCursor = true;
+      break;
+    case InputEvent::Type::Resize:
+      window.setSize(uint32_t(e.x), uint32_t(e.y));
+      break;
+  }
+}
+
+bool Viewer::State::recreateSwapchain() {
+  VkExtent2D extent = window.framebufferExtent();
+  if (extent.width == 0 || extent.height == 0) return false;  // minimised: nothing to present to
+  // Everything below may still be in use by frames up to frame - 1; `frame` is the conservative key.
+  overlay->retireFramebuffers(releases, frame);
+  swapchain.recreate(extent, releases, frame);
+  overlay->attach(swapchain);
+  VkExtent2D size = swapchain.extent();
+  if (size.width != target->extent().width || size.height != target->extent().height) {
+    releases.retire(frame, std::move(target));
+    target = std::make_unique<vk::OffscreenTarget>(device, size);
+  }
+  swapchainStale = false;
+  return true;
+}
+
+void Viewer::State::renderFrame(uint32_t image, VkCommandBuffer cmd, const Camera& cam) {
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  GLOBE_VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
+
+  // Scene: HDR colour and reversed-Z depth (the terrain renderer draws here too).
+  const glm::dvec3 sun = glm::normalize(glm::dvec3(1.0, 0.6, 0.4));
+  target->begin(cmd, kSpaceColour);
+  preview.record(cmd, cam, options.radius_m, sun);
+  uint32_t draws = 1;
+  if (debugView) {
+    grid.record(cmd, cam, options.radius_m);
+    ++draws;
+  }
+  target->end(cmd);  // colour is now TRANSFER_SRC_OPTIMAL
+  stats.draw_calls = draws;
+
+  // Blit into the swapchain image; the sRGB format encodes gamma and clamps HDR to [0, 1].
+  VkImage swapImage = swapchain.image(image);
+  vk::transitionImage(cmd, swapImage, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+  VkExtent2D e = target->extent();
+  VkImageBlit blit{};
+  blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  blit.srcOffsets[1] = {int32_t(e.width), int32_t(e.height), 1};
+  blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  blit.dstOffsets[1] = blit.srcOffsets[1];
+  vkCmdBlitImage(cmd, target->colour().handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, swapImage,
+                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_NEAREST);
+  vk::transitionImage(cmd, swapImage, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+  overlay->record(cmd, image);  // leaves the image in PRESENT_SRC_KHR
+  GLOBE_VK_CHECK(vkEndCommandBuffer(cmd));
+}
+
+Status Viewer::State::saveScreenshot(const std::string& path, const Camera& cam) {
+  // The last submitted frame must be complete before its target is read; screenshots are rare.
+  GLOBE_VK_CHECK(vkQueueWaitIdle(device.queue()));
+  vk::ReadbackImage frameImage = target->readback();
+  ImageRgba image = toImage(frameImage, cam);
+  return writeImage(path, image, "screenshot");
+}
+
+Viewer::Viewer(Window& window, vk::Device& device, ViewerOptions options)
+    : s_(std::make_unique<State>(window, device, std::move(options))) {}
+
+Viewer::~Viewer() {
+  // Nothing may be destroyed while the GPU still uses it; a failed wait leaves nothing to wait for.
+  (void)vkDeviceWaitIdle(s_->device.device());
+}
+
+uint64_t Viewer::framesRendered() const { return s_->frame; }
+
+Status Viewer::run() {
+  State& s = *s_;
+  using Clock = std::chrono::steady_clock;
+  Clock::time_point previous = Clock::now();
+  Camera lastCamera = s.camera.camera(double(s.target->extent().width) / s.target->extent().height);
+
+  while (!s.quit && !(s.options.frames && s.frame >= s.options.frames)) {
+    // Input: the window's events, then the script's for this frame.
+    for (const InputEvent& e : s.window.pollEvents()) s.handle(e);
+    for (const InputEvent& e : s.options.script.take(s.frame)) s.handle(e);
+    if (s.window.shouldClose()) s.quit = true;
+    if (s.quit) break;
+
+    Clock::time_point now = Clock::now();
+    double wall_s = std::chrono::duration<double>(now - previous).count();
+    previous = now;
+    s.stats.frame_ms = wall_s * 1000.0;
+
+    vk::FrameRing::Slot slot = s.ring.begin(s.frame);
+    if (s.frame >= vk::kFramesInFlight) s.releases.collect(s.frame - vk::kFramesInFlight);
+
+    if (s.window.takeResized() || s.swapchainStale) {
+      if (!s.recreateSwapchain()) {
+        glfwWaitEventsTimeout(0.05);  // minimised: sleep until something changes
+        continue;
+      }
+    }
+    std::optional<uint32_t> image = s.swapchain.acquire(slot.imageAcquired);
+    if (!image) {  // out of date: rebuild and try again next iteration
+      s.swapchainStale = true;
+      continue;
+    }
+
+    // Camera: keys move, left-drag turns.
+    FlyControls controls;
+    controls.forward = s.input.axis(GLFW_KEY_W, GLFW_KEY_S);
+    controls.right = s.input.axis(GLFW_KEY_D, GLFW_KEY_A);
+    controls.up = s.input.axis(GLFW_KEY_E, GLFW_KEY_Q);
+    controls.boost = s.input.down(GLFW_KEY_LEFT_SHIFT) || s.input.down(GLFW_KEY_RIGHT_SHIFT);
+    controls.turnRight_px = s.input.dragX_px;
+    controls.turnUp_px = -s.input.dragY_px;
+    s.input.dragX_px = s.input.dragY_px = 0;
+    s.camera.update(controls, s.options.fixedStep ? kFixedStep_s : std::min(wall_s, 0.25));
+    VkExtent2D extent = s.target->extent();
+    Camera cam = s.camera.camera(double(extent.width) / double(extent.height));
+
+    OverlayView view;
+    view.stats = s.stats;
+    view.altitude_m = s.camera.altitude_m();
+    glm::dvec2 latLon = s.camera.latLon_deg();
+    view.latitude_deg = latLon.x;
+    view.longitude_deg = latLon.y;
+    view.speed_mps = s.camera.speed_mps();
+    view.debugView = s.debugView;
+    view.deviceName = s.device.name();
+    view.message = s.message;
+    s.overlay->build(view);
+
+    s.renderFrame(*image, slot.cmd, cam);
+    s.ring.submit(s.frame, s.swapchain.renderFinished(*image));
+    if (!s.swapchain.present(*image)) s.swapchainStale = true;
+    lastCamera = cam;
+    ++s.frame;
+
+    if (s.screenshotRequested) {
+      s.screenshotRequested = false;
+      char name[64];
+      std::snprintf(name, sizeof name, "globe-frame%06llu.png", static_cast<unsigned long long>(s.frame - 1));
+      std::string path = (std::filesystem::path(s.options.screenshotDirectory) / name).string();
+      if (Status st = s.saveScreenshot(path, cam); st) {
+        s.message = "saved " + path;
+        std::printf("screenshot %s\n", path.c_str());
+      } else {
+        s.message = st.error().format();
+        std::fprintf(stderr, "globe: warning: %s\n", s.message.c_str());
+      }
+    }
+  }
+
+  GLOBE_VK_CHECK(vkDeviceWaitIdle(s.device.device()));
+  s.releases.releaseAll();
+  if (!s.options.screenshotPath.empty()) {
+    if (s.frame == 0) return Error{"", 0, 0, "--screenshot", "no frame was rendered"};
+    return s.saveScreenshot(s.options.screenshotPath, lastCamera);
+  }
+  return Ok{};
+}
+
+}  // namespace globe
