@@ -1,0 +1,78 @@
+// Layout of one node payload and of a generation job, shared by C++ (engine/payload_generator.*,
+// the terrain renderer) and GLSL (shaders/payload_generate.comp, shaders/terrain.vert).
+// Compiles as both: C++ sees namespace globe::gpu, GLSL plain declarations.
+//
+// A node with N grid cells per side (N a power of two, 16..256) has V = N + 1 vertices per side and
+// S = N + 3 samples per side: the vertices plus one extra ring all around, so that normals and
+// bilinear sampling at the node's border see the neighbour's samples (across face seams too: ring
+// samples beyond a face edge are evaluated on the neighbouring face, bit-identically to the
+// neighbour's own interior samples).
+//
+// Sample (i, j), i, j in [-1, N + 1] (i along the node's u axis, j along v), lives at index
+//   (j + 1) * S + (i + 1).
+// One payload slot is an array of vec4 (16 bytes each) in the payload buffer:
+//   [0, S*S)              position: xyz = sample position minus the node centre, metres, float,
+//                         quantised to multiples of the level's quantum (see below); w = elevation
+//                         above the planet radius, metres
+//   [S*S, S*S + S*S)      normal: xyz = unit surface normal, planet-fixed, from double-precision
+//                         positions (central differences); w = 0. Ring samples hold the normal of the
+//                         nearest vertex (there are no samples beyond the ring).
+// Quantum: positions and node centres are multiples of q(level) = 2^(ceil(log2(node width)) - 20)
+// metres, so that centre + position is the same double from every node of a level that holds the
+// sample, and stays exact in float relative to a floating origin snapped to the coarsest quantum.
+#ifndef GLOBE_PAYLOAD_LAYOUT_H
+#define GLOBE_PAYLOAD_LAYOUT_H
+
+#ifdef __cplusplus
+#include <cstdint>
+namespace globe::gpu {
+using uint = std::uint32_t;
+struct dvec4_ {
+  double x, y, z, w;
+};
+struct uvec4_ {
+  uint x, y, z, w;
+};
+#define GLOBE_DVEC4 dvec4_
+#define GLOBE_UVEC4 uvec4_
+#else
+#define GLOBE_DVEC4 dvec4
+#define GLOBE_UVEC4 uvec4
+#endif
+
+// Samples per side including the ring.
+#define GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells) ((cells) + 3u)
+// vec4 entries in one slot: positions then normals.
+#define GLOBE_PAYLOAD_VEC4_PER_SLOT(cells) (2u * GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells) * GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells))
+// Most jobs one generation dispatch takes.
+#define GLOBE_PAYLOAD_MAX_BATCH 64u
+// Threads per generation workgroup (one workgroup per node).
+#define GLOBE_PAYLOAD_WORKGROUP 128u
+
+// One node to generate (std430, 96 bytes).
+struct PayloadJob {
+  GLOBE_DVEC4 centre;      //  0: xyz node centre, planet-fixed metres, multiple of w; w = quantum (m)
+  GLOBE_DVEC4 uv;          // 32: x = uMin, y = vMin, z = node size in face (u, v) units, w = 0
+  uint face;               // 64: 0..29
+  uint slot;               // 68: payload slot to fill
+  uint level;              // 72: quadtree level
+  uint pad0;               // 76
+  GLOBE_UVEC4 neighbour;   // 80: across face edge e: neighbour face | (its edge << 8)
+};
+
+// What a job reports back (std430, 16 bytes): the min/max radius (metres from the planet centre)
+// of the node's vertices (the ring excluded).
+struct PayloadResult {
+  double minRadius_m;
+  double maxRadius_m;
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(PayloadJob) == 96);
+static_assert(sizeof(PayloadResult) == 16);
+}  // namespace globe::gpu
+#endif
+#undef GLOBE_DVEC4
+#undef GLOBE_UVEC4
+
+#endif  // GLOBE_PAYLOAD_LAYOUT_H
