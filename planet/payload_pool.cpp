@@ -143,8 +143,19 @@ void PayloadPool::adjustParentCount(const NodeId& node, int delta) {
 bool PayloadPool::isResident(const NodeId& node) const {
   int64_t i = find(node.key());
   if (i < 0) return false;
-  table_[size_t(i)].lastWantedFrame = frame_;
-  return table_[size_t(i)].state == State::kResident;
+  const NodeRecord& r = table_[size_t(i)];
+  r.lastWantedFrame = frame_;
+  if (r.state != State::kResident) return false;
+  if (r.prefetchedUnused) {
+    r.prefetchedUnused = false;
+    ++prefetchHits_;
+  }
+  return true;
+}
+
+bool PayloadPool::isResidentForPrefetch(const NodeId& node) const {
+  int64_t i = find(node.key());
+  return i >= 0 && table_[size_t(i)].state == State::kResident;
 }
 
 std::optional<uint32_t> PayloadPool::slotOf(const NodeId& node) const {
@@ -160,10 +171,12 @@ std::optional<RadiusRange> PayloadPool::knownRadiusRange(const NodeId& node) con
 }
 
 void PayloadPool::request(const NodeId& node, RequestPriority priority, double distance_m) {
+  const bool prefetch = priority == RequestPriority::kPrefetch;
   int64_t i = find(node.key());
   if (i < 0) {
     i = insert(node);
     if (i < 0) {
+      if (prefetch) return;  // look-ahead is optional: no warning, no stat
       ++stats_.starvedByPool;
       setWarning("node pool full (" + std::to_string(nodeCapacity_) +
                  " nodes): drawing coarser terrain; raise the RAM budget");
@@ -171,18 +184,25 @@ void PayloadPool::request(const NodeId& node, RequestPriority priority, double d
     }
     NodeRecord& r = table_[size_t(i)];
     r.state = State::kQueued;
-    r.firstRequestFrame = frame_;
     adjustParentCount(node, +1);
     pending_.push_back(i);
   }
   NodeRecord& r = table_[size_t(i)];
-  if (r.state != State::kQueued) return;  // already in flight or resident
+  if (r.state == State::kResident) return;
+  if (!prefetch && !r.visibleRequested) {
+    // Latency is what the view waits: from its first request, even when a prefetch came earlier.
+    r.visibleRequested = true;
+    r.firstRequestFrame = frame_;
+  }
+  if (r.state != State::kQueued) return;  // already in flight
   if (r.lastRequestFrame != frame_) {
     r.lastRequestFrame = frame_;
     r.priority = priority;
     r.distance_m = distance_m;
     ++stats_.requested;
+    if (prefetch) ++stats_.prefetchRequested;
   } else {
+    if (r.priority == RequestPriority::kPrefetch && !prefetch) --stats_.prefetchRequested;
     r.priority = std::min(r.priority, priority);
     r.distance_m = std::min(r.distance_m, distance_m);
   }
@@ -231,8 +251,13 @@ void PayloadPool::beginFrame(uint64_t frame, const glm::dvec3& camera_m, uint64_
     r.state = State::kResident;
     r.radius = done.radius;
     r.lastUsedFrame = 0;
-    uint64_t frames = frame_ - r.firstRequestFrame;
-    ++latency_[std::min<size_t>(frames, kLatencyBuckets - 1)];
+    if (r.visibleRequested) {
+      uint64_t frames = frame_ - r.firstRequestFrame;
+      ++latency_[std::min<size_t>(frames, kLatencyBuckets - 1)];
+    } else {
+      r.prefetchedUnused = true;
+      ++prefetchCompleted_;
+    }
     ++stats_.completed;
   }
 }
@@ -245,12 +270,18 @@ void PayloadPool::markUsed(std::span<const SelectedNode> nodes) {
   }
 }
 
-uint32_t PayloadPool::evict(uint32_t count) {
+int PayloadPool::distanceBucket(const NodeRecord& r) const {
+  double ratio = glm::length(camera_m_ - r.centre_m) / nominalNodeWidth(r.level, radius_m_);
+  return int(std::floor(2.0 * std::log2(std::max(ratio, 1e-6))));
+}
+
+void PayloadPool::gatherCandidates(size_t count) {
   // Victims: the resident nodes farthest from the camera in units of their own width (deep nodes go
   // before coarse ones at the same distance), least recently used among equals. Nodes the GPU may
-  // still read, nodes with active children (the resident set stays closed under parents) and the
-  // roots are kept. Distance, not view direction, decides: what is just behind the camera survives.
-  // One pass over the slots, then a partial sort: O(slots) per frame that evicts.
+  // still read, nodes with active children (the resident set stays closed under parents), nodes the
+  // current frame draws or waits for, and the roots are kept. Distance, not view direction, decides:
+  // what is just behind the camera survives. One pass over the slots, then a partial sort: O(slots)
+  // per frame that evicts.
   candidates_.clear();
   for (uint32_t slot = 0; slot < slotCapacity_; ++slot) {
     if (slotOwner_[slot] == kEmptyKey) continue;
@@ -259,28 +290,28 @@ uint32_t PayloadPool::evict(uint32_t count) {
     const NodeRecord& r = table_[size_t(i)];
     if (r.state != State::kResident || r.level == 0 || r.activeChildren > 0) continue;
     if (r.lastUsedFrame > completedFrame_ || r.lastUsedFrame == frame_ || r.lastWantedFrame == frame_) continue;
-    double ratio = glm::length(camera_m_ - r.centre_m) / nominalNodeWidth(r.level, radius_m_);
-    candidates_.push_back({int(std::floor(2.0 * std::log2(std::max(ratio, 1e-6)))), r.lastUsedFrame, r.key});
+    candidates_.push_back({distanceBucket(r), r.lastUsedFrame, r.key});
   }
   auto worse = [](const EvictionCandidate& a, const EvictionCandidate& b) {
     if (a.bucket != b.bucket) return a.bucket > b.bucket;
     if (a.lastUsed != b.lastUsed) return a.lastUsed < b.lastUsed;
     return a.key < b.key;
   };
-  size_t n = std::min<size_t>(count, candidates_.size());
+  size_t n = std::min(count, candidates_.size());
   std::partial_sort(candidates_.begin(), candidates_.begin() + std::ptrdiff_t(n), candidates_.end(), worse);
-  uint32_t freed = 0;
-  for (size_t k = 0; k < n; ++k) {
-    int64_t i = find(candidates_[k].key);
-    // A parent may have gained its last active child's eviction in this loop: still a valid victim.
-    uint32_t slot = table_[size_t(i)].slot;
-    slotOwner_[slot] = kEmptyKey;
-    freeSlots_.push_back(slot);
-    erase(i);
-    ++stats_.evicted;
-    ++freed;
-  }
-  return freed;
+  candidates_.resize(n);
+}
+
+void PayloadPool::evictCandidate(size_t index) {
+  // A parent whose last active child was evicted earlier in this dispatch was not a candidate when
+  // gathered, so every candidate is still a leaf of the resident set.
+  int64_t i = find(candidates_[index].key);
+  NodeRecord& r = table_[size_t(i)];
+  if (r.prefetchedUnused) r.prefetchedUnused = false;
+  slotOwner_[r.slot] = kEmptyKey;
+  freeSlots_.push_back(r.slot);
+  erase(i);
+  ++stats_.evicted;
 }
 
 void PayloadPool::dispatch() {
@@ -305,19 +336,42 @@ void PayloadPool::dispatch() {
   });
 
   jobs_.clear();
-  uint32_t room = std::min<uint32_t>(config_.dispatchBudget, config_.maxInFlight - std::min(config_.maxInFlight, inFlight_));
+  const uint32_t budget = config_.dispatchBudget;
+  const uint32_t maxInFlight = config_.maxInFlight;
+  // Prefetch leaves one frame's dispatch budget of in-flight room to the next frame's visible
+  // requests (at least half of the cap stays usable by prefetch when the budget is that large).
+  const uint32_t prefetchInFlightCap = std::max(maxInFlight / 2, maxInFlight - std::min(maxInFlight, budget));
+  uint32_t room = std::min<uint32_t>(budget, maxInFlight - std::min(maxInFlight, inFlight_));
   uint32_t want = std::min<uint32_t>(room, uint32_t(pending_.size()));
-  if (want > freeSlots_.size()) evict(want - uint32_t(freeSlots_.size()));
+  uint32_t urgent = 0;
+  for (uint32_t k = 0; k < want; ++k)
+    if (table_[size_t(pending_[k])].priority != RequestPriority::kPrefetch) ++urgent;
+  size_t nextVictim = 0;
+  if (want > freeSlots_.size()) {
+    // One pass for this dispatch: the worst `want` victims, worst first. Urgent requests take them
+    // unconditionally; prefetch only those farther (in node widths) than what it fetches.
+    gatherCandidates(want - freeSlots_.size());
+    uint32_t urgentNeed = urgent > freeSlots_.size() ? urgent - uint32_t(freeSlots_.size()) : 0;
+    for (; nextVictim < std::min<size_t>(urgentNeed, candidates_.size()); ++nextVictim) evictCandidate(nextVictim);
+  }
   size_t taken = 0;
   for (; taken < pending_.size(); ++taken) {
-    if (jobs_.size() >= config_.dispatchBudget || inFlight_ >= config_.maxInFlight) break;
-    if (freeSlots_.empty()) {
+    if (jobs_.size() >= budget || inFlight_ >= maxInFlight) break;
+    NodeRecord& r = table_[size_t(pending_[taken])];
+    if (r.priority == RequestPriority::kPrefetch) {
+      // Sorted: everything from here on is prefetch.
+      if (inFlight_ >= prefetchInFlightCap) break;
+      if (freeSlots_.empty()) {
+        if (nextVictim >= candidates_.size() || candidates_[nextVictim].bucket <= distanceBucket(r)) break;
+        evictCandidate(nextVictim++);
+      }
+      ++stats_.prefetchDispatched;
+    } else if (freeSlots_.empty()) {
       ++stats_.starvedByPool;
       setWarning("payload pool exhausted (" + std::to_string(slotCapacity_) +
                  " slots): drawing coarser terrain; raise the VRAM budget");
       break;
     }
-    NodeRecord& r = table_[size_t(pending_[taken])];
     r.slot = freeSlots_.back();
     freeSlots_.pop_back();
     slotOwner_[r.slot] = r.key;
@@ -326,6 +380,7 @@ void PayloadPool::dispatch() {
     ++inFlight_;
     jobs_.push_back({NodeId::fromKey(r.key), r.slot});
   }
+  candidates_.clear();
   pending_.erase(pending_.begin(), pending_.begin() + std::ptrdiff_t(taken));
   if (!jobs_.empty()) generator_.generate(jobs_);
 

@@ -13,6 +13,13 @@
 //    handed to a generation job;
 //  - after warm-up nothing allocates: tables, queue and scratch vectors have fixed capacity.
 //
+// Prefetch (RequestPriority::kPrefetch, docs/streaming.md) is strictly lower than what the view
+// waits for: it sorts last, only uses dispatch budget the view left over, starts only while at most
+// maxInFlight - dispatchBudget generations are in flight (one frame's budget stays free for the
+// next frame's visible requests), never marks nodes as wanted (isResidentForPrefetch), only takes
+// free slots or evicts a node farther away in its own widths than the prefetched one (no churn), and
+// never warns about exhaustion.
+//
 // Per frame:   beginFrame(frame, camera, completedFrame)   collect finished generations
 //              selector.select(camera, pool, selection)    isResident / request
 //              markUsed(selection)                          pins the frame's slots
@@ -54,6 +61,7 @@ class PayloadPool final : public NodeResidency {
   // NodeResidency (called by the selection). isResident also notes that the current frame wants
   // the node: a node the selection is waiting to refine into is not evicted for another request.
   bool isResident(const NodeId& node) const override;
+  bool isResidentForPrefetch(const NodeId& node) const override;
   void request(const NodeId& node, RequestPriority priority, double distance_m) override;
   std::optional<RadiusRange> knownRadiusRange(const NodeId& node) const override;
 
@@ -70,9 +78,15 @@ class PayloadPool final : public NodeResidency {
   const StreamingStats& stats() const { return stats_; }
   uint32_t slotCapacity() const { return slotCapacity_; }
   uint32_t nodeCapacity() const { return nodeCapacity_; }
-  // Frames from first request to resident, over the pool's life: latencyHistogram()[k] counts k
-  // frames (the last bucket collects everything longer).
+  // Frames from the first visible (kVisible/kRoot) request to resident, over the pool's life:
+  // latencyHistogram()[k] counts k frames (the last bucket collects everything longer). A node
+  // prefetched before the view asked for it is not counted (its wait was 0 frames from the view's
+  // side: it was never drawn coarser); see prefetchHits().
   std::span<const uint64_t> latencyHistogram() const { return latency_; }
+  // Completed generations nobody but the prefetch had asked for when they finished, over the pool's
+  // life; and how many of those the view later asked for (isResident) while still resident.
+  uint64_t prefetchCompleted() const { return prefetchCompleted_; }
+  uint64_t prefetchHits() const { return prefetchHits_; }
   // Frames at or below which `fraction` (0..1] of completed requests became resident.
   uint32_t latencyPercentile(double fraction) const;
   // Set once, when the pool first had to skip a request because no slot could be freed.
@@ -92,7 +106,9 @@ class PayloadPool final : public NodeResidency {
     uint16_t activeChildren = 0;     // children queued-for-generation, in flight or resident
     uint32_t slot = kNoSlot;
     uint32_t generation = 0;         // bumped by invalidateAll; stale results are dropped
-    uint64_t firstRequestFrame = 0;
+    uint64_t firstRequestFrame = 0;  // first visible (non-prefetch) request
+    bool visibleRequested = false;   // a kVisible/kRoot request arrived before resident
+    mutable bool prefetchedUnused = false;  // resident from prefetch alone, not yet asked for by the view
     uint64_t lastUsedFrame = 0;      // last frame that drew this node's slot
     mutable uint64_t lastWantedFrame = 0;  // last frame the selection asked whether it is resident
     uint64_t lastRequestFrame = 0;
@@ -110,8 +126,12 @@ class PayloadPool final : public NodeResidency {
   int64_t insert(const NodeId& node);
   void erase(int64_t index);
   void adjustParentCount(const NodeId& node, int delta);
-  // Frees up to `count` slots by eviction; returns how many were freed.
-  uint32_t evict(uint32_t count);
+  // Fills candidates_ with the evictable resident nodes and sorts the worst `count` first.
+  void gatherCandidates(size_t count);
+  // Evicts candidates_[index] (gathered this dispatch; still a valid victim).
+  void evictCandidate(size_t index);
+  // floor(2 log2(distance / node width)): larger buckets are evicted first.
+  int distanceBucket(const NodeRecord& r) const;
   void setWarning(const std::string& message);
   void rehash();
   void releaseSlot(uint32_t slot, uint64_t lastUsedFrame);
@@ -144,6 +164,8 @@ class PayloadPool final : public NodeResidency {
   uint64_t completedFrame_ = 0;
   uint32_t generation_ = 0;
   uint32_t inFlight_ = 0;
+  mutable uint64_t prefetchHits_ = 0;
+  uint64_t prefetchCompleted_ = 0;
   glm::dvec3 camera_m_{0.0};
   StreamingStats stats_;
   std::string exhaustionWarning_;

@@ -32,6 +32,12 @@ Result<LodSelector> LodSelector::create(const LodConfig& c, const FaceMapping& m
   }
   if (c.minElevation_m > c.maxElevation_m) return bad("elevation", "min elevation is above max elevation");
   if (c.radius_m + c.minElevation_m < 0.0) return bad("minElevation", "reaches below the planet centre");
+  if (!(std::isfinite(c.prefetch.nextLevelRangeFactor) && c.prefetch.nextLevelRangeFactor >= 1.0)) {
+    return bad("prefetch.nextLevelRangeFactor", "must be finite and >= 1");
+  }
+  if (!(c.prefetch.ringRangeFactor >= 0.0 && c.prefetch.ringRangeFactor <= 1.0)) {
+    return bad("prefetch.ringRangeFactor", "must be in [0, 1]");
+  }
   Result<LodRanges> ranges = LodRanges::create(c.ranges, c.radius_m);
   if (!ranges) return ranges.error();
   return LodSelector(c, mapping, std::move(ranges.value()));
@@ -92,6 +98,7 @@ void LodSelector::visit(const NodeId& id, const NodeBounds& b, bool knownRange, 
     const Containment c = ctx.frustum->classify(b);
     if (c == Containment::kOutside) {
       ++stats.frustumCulled;
+      if (config_.prefetch.enabled && config_.prefetch.ringRangeFactor > 0.0) prefetchVisit(id, b, fullyVisible, ctx);
       return;
     }
     insideFrustum = c == Containment::kInside;
@@ -125,6 +132,11 @@ void LodSelector::visit(const NodeId& id, const NodeBounds& b, bool knownRange, 
   const double range = depth < ranges_.maxDepth() ? ranges_.refineRange(depth) : 0.0;
   if (depth >= ranges_.maxDepth() || !intersectsSphere(b, ctx.camera, range)) {
     add(false);
+    // Look-ahead (a): the camera is about to come within this node's refine range.
+    if (depth < ranges_.maxDepth() && config_.prefetch.enabled && config_.prefetch.nextLevelRangeFactor > 1.0 &&
+        intersectsSphere(b, ctx.camera, range * config_.prefetch.nextLevelRangeFactor)) {
+      prefetchChildren(id, distanceToBounds(b, ctx.camera), ctx);
+    }
     return;
   }
   std::array<NodeId, 4> children;
@@ -156,6 +168,47 @@ void LodSelector::visit(const NodeId& id, const NodeBounds& b, bool knownRange, 
     const bool inRange = intersectsSphere(bounds[q], ctx.camera, range);
     visit(children[q], bounds[q], known[q].has_value(), !inRange, insideFrustum, fullyVisible, ctx);
   }
+}
+
+bool LodSelector::prefetchChildren(const NodeId& id, double distance_m, Context& ctx) {
+  bool allResident = true;
+  for (int q = 0; q < 4; ++q) {
+    const NodeId child = id.child(q);
+    if (ctx.residency->isResidentForPrefetch(child)) continue;
+    allResident = false;
+    ctx.residency->request(child, RequestPriority::kPrefetch, distance_m);
+    ++ctx.out->stats.prefetchRequests;
+  }
+  return allResident;
+}
+
+void LodSelector::prefetchVisit(const NodeId& id, const NodeBounds& b, bool fullyVisible, Context& ctx) {
+  // The selection's refinement rule with scaled ranges, minus everything about drawing: no partial
+  // nodes, no restriction bookkeeping (nothing here is drawn), no diagonals observed (the ranges
+  // stay a function of what is drawn). The horizon test stays: turning does not reveal what it hides.
+  SelectionStats& stats = ctx.out->stats;
+  ++stats.prefetchVisited;
+  if (!fullyVisible) {
+    const HorizonVisibility h = ctx.horizon.classify(b);
+    if (h == HorizonVisibility::kHidden) return;
+    fullyVisible = h == HorizonVisibility::kFullyVisible;
+  }
+  const int depth = id.level;
+  if (depth == 0 && !ctx.residency->isResidentForPrefetch(id)) {
+    ctx.residency->request(id, RequestPriority::kPrefetch, distanceToBounds(b, ctx.camera));
+    ++stats.prefetchRequests;
+    return;
+  }
+  if (depth >= ranges_.maxDepth()) return;
+  const double range = ranges_.refineRange(depth) * config_.prefetch.ringRangeFactor;
+  if (!intersectsSphere(b, ctx.camera, range)) return;
+  if (!prefetchChildren(id, distanceToBounds(b, ctx.camera), ctx)) return;
+  std::array<RadiusRange, 4> childRadius;
+  for (size_t q = 0; q < 4; ++q) {
+    childRadius[q] = ctx.residency->knownRadiusRange(id.child(static_cast<int>(q))).value_or(defaultRange_);
+  }
+  const std::array<NodeBounds, 4> bounds = childBounds(*mapping_, id, b, childRadius);
+  for (size_t q = 0; q < 4; ++q) prefetchVisit(id.child(static_cast<int>(q)), bounds[q], fullyVisible, ctx);
 }
 
 }  // namespace globe

@@ -9,6 +9,13 @@
 // No allocation per frame: results go to a caller-owned Selection whose vector keeps its capacity;
 // node bounds are built on the fly from the parent's (children share its side planes and corners).
 //
+// Prefetch (docs/streaming.md): besides what it draws, the selection asks for what the view will
+// probably need soon, with RequestPriority::kPrefetch and through isResidentForPrefetch() (which does
+// not pin nodes): (a) the next level below a drawn node once the camera is within
+// nextLevelRangeFactor × its refine range, so descending does not wait for generation; (b) a ring of
+// frustum-culled (not horizon-culled) nodes, refined as if visible out to ringRangeFactor × the
+// refine ranges, so turning the head finds them ready. Prefetch never changes the selection itself.
+//
 // Camera inside the planet (or below the minimum elevation): horizon culling is off for that frame,
 // frustum culling and range tests work as usual (nodes nearest the camera are refined). A non-finite
 // camera position is an Error and leaves `out` empty.
@@ -28,12 +35,24 @@
 
 namespace globe {
 
+struct PrefetchConfig {
+  bool enabled = true;
+  // (a) next level: children of a drawn node are prefetched when the camera is within this factor of
+  // the node's refine range (>= 1; 1 = off). Each 0.1 adds roughly a quarter of a level's nodes.
+  double nextLevelRangeFactor = 1.25;
+  // (b) ring: frustum-culled nodes are refined (prefetch only) as if visible, with refine ranges
+  // scaled by this factor ([0, 1]; 0 = no ring, 1 = the whole 360° view at full detail; 0.5 = one
+  // level coarser than the view would need, a quarter of the nodes).
+  double ringRangeFactor = 0.5;
+};
+
 struct LodConfig {
   double radius_m = 6371000.0;       // planet radius (metres)
   double minElevation_m = -11000.0;  // default node bounds until a payload's real range is known;
   double maxElevation_m = 9000.0;    // minElevation also sets the horizon occluder (R + min)
   LodRangeConfig ranges;
   bool horizonCulling = true;
+  PrefetchConfig prefetch;
 };
 
 struct SelectedNode {
@@ -50,7 +69,9 @@ struct SelectionStats {
   uint32_t frustumCulled = 0;
   uint32_t horizonCulled = 0;
   uint32_t fallbacks = 0;  // nodes drawn in place of children that are not resident
-  uint32_t requests = 0;
+  uint32_t requests = 0;          // kVisible and kRoot requests
+  uint32_t prefetchRequests = 0;  // kPrefetch requests
+  uint32_t prefetchVisited = 0;   // frustum-culled nodes walked by the ring prefetch
   uint32_t passes = 0;  // > 1 when an observed diagonal grew the ranges mid-selection
 };
 
@@ -84,6 +105,10 @@ class LodSelector {
   struct Context;
   void visit(const NodeId& id, const NodeBounds& bounds, bool knownRange, bool partial, bool insideFrustum,
              bool fullyVisible, Context& ctx);
+  // Walks a frustum-culled node for the ring prefetch: requests, never selects.
+  void prefetchVisit(const NodeId& id, const NodeBounds& bounds, bool fullyVisible, Context& ctx);
+  // Requests the children of `id` that are not resident, as prefetch; true when all are resident.
+  bool prefetchChildren(const NodeId& id, double distance_m, Context& ctx);
   void selectOnce(Context& ctx);
 
   LodConfig config_;

@@ -64,6 +64,8 @@ void selection(benchmark::State& state, double altitude_m, bool withFrustum) {
   state.counters["selected"] = static_cast<double>(out.stats.selected);
   state.counters["partial"] = static_cast<double>(out.stats.partial);
   state.counters["passes"] = static_cast<double>(out.stats.passes);
+  // Frustum-culled nodes the ring prefetch walked (not in `visited`; their time is in the total).
+  state.counters["ring_visited"] = static_cast<double>(out.stats.prefetchVisited);
   // Seconds per visited node (shown with an SI prefix, e.g. "60n" = 60 ns).
   state.counters["t_per_visited"] =
       benchmark::Counter(visited, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);

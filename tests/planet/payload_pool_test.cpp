@@ -39,21 +39,25 @@ struct Flight {
 };
 
 struct Harness {
-  FakePayloadGenerator generator{64 * 1024, kR, {kR - 11000, kR + 9000}};
+  FakePayloadGenerator generator;
   std::unique_ptr<PayloadPool> pool;
-  LodSelector selector = *LodSelector::create(LodConfig{});
-  LodSelector unculled = *LodSelector::create([] {
-    LodConfig c;
-    c.horizonCulling = false;
-    return c;
-  }());
+  LodSelector selector;
+  LodSelector unculled;
   Selection selection;
   std::vector<uint64_t> slotLastUse;  // last frame that drew each slot
   uint64_t frame = 0;
   uint64_t overwrites = 0;
 
-  explicit Harness(StreamingConfig config = {}) {
-    auto p = PayloadPool::create(config, generator, kR);
+  // `lod.radius_m` is the planet radius; its elevation range is the fake terrain's.
+  explicit Harness(StreamingConfig config = {}, const LodConfig& lod = {})
+      : generator(64 * 1024, lod.radius_m, {lod.radius_m + lod.minElevation_m, lod.radius_m + lod.maxElevation_m}),
+        selector(*LodSelector::create(lod)),
+        unculled(*LodSelector::create([&] {
+          LodConfig c = lod;
+          c.horizonCulling = false;
+          return c;
+        }())) {
+    auto p = PayloadPool::create(config, generator, lod.radius_m);
     EXPECT_TRUE(p.ok()) << p.error().format();
     pool = std::move(*p);
     slotLastUse.assign(pool->slotCapacity(), 0);
@@ -190,13 +194,14 @@ TEST(PayloadPool, NothingIsGeneratedWithoutARequest) {
   EXPECT_LE(h.generator.generatedTotal(), 30u);
 }
 
-// Runs frames at `cam` until the selection is fully refined and nothing is in flight.
+// Runs frames at `cam` until the selection is fully refined and the pool is idle (nothing in flight,
+// nothing started: prefetch requests that cannot get a slot may stay queued).
 int converge(Harness& h, const Camera& cam, int maxFrames = 5000) {
   int frames = 0;
   do {
     h.run(cam);
     ++frames;
-  } while ((h.selection.stats.fallbacks > 0 || h.pool->stats().inFlight > 0 || h.pool->stats().queueLength > 0) &&
+  } while ((h.selection.stats.fallbacks > 0 || h.pool->stats().inFlight > 0 || h.pool->stats().dispatched > 0) &&
            frames < maxFrames);
   return frames;
 }
@@ -214,6 +219,111 @@ TEST(PayloadPool, BehindTheCameraSurvivesATurn) {
   std::printf("[ info ] 360 turn at 2 m: %llu generations the first time, %llu the second (%u slots)\n",
               (unsigned long long)first, (unsigned long long)second, h.pool->slotCapacity());
   EXPECT_LE(second, first / 50);
+}
+
+// Converges looking north at 2 m, then turns 90 degrees at once. Quality of the first frame after
+// the turn: for each node the converged view draws, how many levels coarser the first frame draws it
+// (0 = exact); and frames until refined again. (Counting fallback nodes would mislead: a coarse
+// fallback covering much is one node, a deep one covering little is one too.)
+struct TurnResult {
+  double meanDeficit = 0.0;
+  int maxDeficit = 0;
+  int frames = 0;
+  double residentMiB = 0.0;
+};
+TurnResult turnAfterConverging(double ringRangeFactor) {
+  LodConfig lod;
+  lod.prefetch.ringRangeFactor = ringRangeFactor;
+  Harness h({}, lod);
+  auto at = [&](double heading) { return cameraFromPose({-12, 130, 2, heading, -10, 0}, kR, kR, 16.0 / 9.0); };
+  converge(h, at(0));
+  TurnResult r;
+  r.residentMiB = h.pool->stats().residentMiB;
+  h.run(at(90));
+  std::unordered_set<uint64_t> first;
+  for (const auto& n : h.selection.nodes) first.insert(n.id.key());
+  r.frames = 1 + converge(h, at(90));
+  double sum = 0.0;
+  for (const auto& n : h.selection.nodes) {
+    int deficit = 0;
+    while (deficit < n.id.level && first.count(n.id.ancestor(n.id.level - deficit).key()) == 0) ++deficit;
+    sum += deficit;
+    r.maxDeficit = std::max(r.maxDeficit, deficit);
+  }
+  r.meanDeficit = sum / double(h.selection.nodes.size());
+  EXPECT_EQ(h.overwrites, 0u);
+  return r;
+}
+
+TEST(PayloadPool, RingPrefetchMakesTurningCheap) {
+  TurnResult off = turnAfterConverging(0.0), half = turnAfterConverging(0.5), full = turnAfterConverging(1.0);
+  std::printf("[ info ] 90 degree turn at 2 m, first frame levels too coarse (mean, max), frames to refine, "
+              "resident MiB before:\n"
+              "[ info ]   ring 0: %.2f, %d, %d, %.0f; ring 0.5: %.2f, %d, %d, %.0f; ring 1: %.2f, %d, %d, %.0f\n",
+              off.meanDeficit, off.maxDeficit, off.frames, off.residentMiB, half.meanDeficit, half.maxDeficit,
+              half.frames, half.residentMiB, full.meanDeficit, full.maxDeficit, full.frames, full.residentMiB);
+  EXPECT_LT(half.meanDeficit, off.meanDeficit);
+  EXPECT_LE(half.maxDeficit, 2);
+  EXPECT_LT(half.frames, off.frames);
+  EXPECT_LT(full.meanDeficit, 0.1);
+}
+
+TEST(PayloadPool, PrefetchNeverEvictsWhatTheViewNeeds) {
+  // A pool that holds the view (measured with prefetch off) plus 10 %, not the ring: the view still
+  // converges, stays converged (no prefetch churn: once idle, nothing is generated), none of its
+  // nodes is evicted, and no exhaustion warning (prefetch never warns).
+  Camera cam = cameraFromPose({40, -3, 2, 200, -10, 0}, kR, kR, 16.0 / 9.0);
+  LodConfig noPrefetch;
+  noPrefetch.prefetch.enabled = false;
+  Harness plain({}, noPrefetch);
+  converge(plain, cam);
+  StreamingConfig config;
+  config.maxSlots = plain.pool->stats().residentNodes * 11 / 10;
+  Harness h(config);
+  int frames = converge(h, cam);
+  EXPECT_LT(frames, 1000);
+  EXPECT_EQ(h.selection.stats.fallbacks, 0u);
+  uint64_t generated = h.generator.generatedTotal();
+  for (int f = 0; f < 100; ++f) {
+    h.run(cam);
+    EXPECT_EQ(h.selection.stats.fallbacks, 0u);
+    EXPECT_EQ(h.pool->stats().evicted, 0u);
+  }
+  EXPECT_EQ(h.generator.generatedTotal(), generated) << "prefetch keeps regenerating in a full pool";
+  EXPECT_TRUE(h.pool->exhaustionWarning().empty()) << h.pool->exhaustionWarning();
+  std::printf("[ info ] %u-slot pool at 2 m (view alone: %u): converged in %d frames (alone: %llu generations), "
+              "%u queued prefetch requests wait\n",
+              config.maxSlots, plain.pool->stats().residentNodes, frames,
+              (unsigned long long)plain.generator.generatedTotal(), h.pool->stats().queueLength);
+}
+
+TEST(PayloadPool, ResidentMemoryIsScaleIndependent) {
+  // 2 m above a planet of radius 637 km, 6371 km and 63 710 km: same node grid (fake slot size),
+  // screen and max depth; the elevation range scales with the radius (the same planet shape, so the
+  // horizon, which the minimum elevation sets, is the same in node widths). Resident payload memory
+  // once the view has converged stays within 1.2x.
+  const auto measure = [](double radius, bool scaledElevation) {
+    LodConfig lod;
+    lod.radius_m = radius;
+    if (scaledElevation) {
+      lod.minElevation_m = -11000.0 * radius / kR;
+      lod.maxElevation_m = 9000.0 * radius / kR;
+    }
+    Harness h({}, lod);
+    converge(h, cameraFromPose({27, 86, 2, 120, -10, 0}, radius, radius, 16.0 / 9.0));
+    return h.pool->stats().residentMiB;
+  };
+  const double radii[3] = {637100.0, 6371000.0, 63710000.0};
+  double mib[3], fixed[3];
+  for (int k = 0; k < 3; ++k) {
+    mib[k] = measure(radii[k], true);
+    fixed[k] = measure(radii[k], false);  // for docs/streaming.md: Earth's -11/+9 km on every radius
+  }
+  std::printf("[ info ] resident MiB at 2 m, elevation scaled with R: R = 637 km %.1f, 6371 km %.1f, 63710 km "
+              "%.1f; elevation fixed -11/+9 km: %.1f, %.1f, %.1f\n",
+              mib[0], mib[1], mib[2], fixed[0], fixed[1], fixed[2]);
+  double lo = std::min({mib[0], mib[1], mib[2]}), hi = std::max({mib[0], mib[1], mib[2]});
+  EXPECT_LE(hi, 1.2 * lo);
 }
 
 TEST(PayloadPool, InvalidateAllRegeneratesWithoutLeakingSlots) {

@@ -143,11 +143,134 @@ TEST(Selection, PartialResidencyDrawsParentsAndRequestsChildren) {
   ASSERT_TRUE(full->select({eye, nullptr}, residency, out).ok());
   expectTiling(out);  // never a hole
   EXPECT_GT(out.stats.fallbacks, 0u);
-  EXPECT_EQ(residency.requested.size(), out.stats.requests);
+  EXPECT_EQ(residency.requested.size(), out.stats.requests + out.stats.prefetchRequests);
   ASSERT_FALSE(residency.requested.empty());
   for (const NodeId& id : residency.requested) EXPECT_FALSE(residency.isResident(id));
   for (double d : residency.distances) EXPECT_GE(d, 0.0);
   for (const SelectedNode& n : out.nodes) EXPECT_TRUE(residency.isResident(n.id));
+}
+
+// Records which question was asked for which node, and the requests with their priorities.
+class RecordingResidency : public NodeResidency {
+ public:
+  explicit RecordingResidency(int fullLevel) : inner_(fullLevel, SyntheticTerrain{}) {}
+  bool isResident(const NodeId& id) const override {
+    wanted.insert(id.key());
+    return inner_.isResident(id);
+  }
+  bool isResidentForPrefetch(const NodeId& id) const override {
+    peeked.insert(id.key());
+    return inner_.isResident(id);
+  }
+  void request(const NodeId& id, RequestPriority p, double distance_m) override {
+    EXPECT_GE(distance_m, 0.0);
+    EXPECT_FALSE(inner_.isResident(id)) << "requested a resident node";
+    (p == RequestPriority::kPrefetch ? prefetched : requested).push_back(id);
+  }
+  std::optional<RadiusRange> knownRadiusRange(const NodeId& id) const override { return inner_.knownRadiusRange(id); }
+  mutable std::unordered_set<uint64_t> wanted, peeked;
+  std::vector<NodeId> requested, prefetched;
+
+ private:
+  PartlyResident inner_;
+};
+
+TEST(Selection, PrefetchNeverChangesTheSelectionNorMarksNodesWanted) {
+  // Prefetch on and off over random cameras: identical selections, identical isResident() queries
+  // (what the pool keeps), identical visible requests; prefetch only adds kPrefetch requests.
+  std::mt19937_64 rng(7);
+  LodConfig on = makeSelector().config();
+  LodConfig off = on;
+  off.prefetch.enabled = false;
+  auto withPrefetch = LodSelector::create(on);
+  auto without = LodSelector::create(off);
+  ASSERT_TRUE(withPrefetch.ok() && without.ok());
+  uint64_t prefetches = 0, ringVisited = 0;
+  for (int k = 0; k < 40; ++k) {
+    const glm::dvec3 d = testing::randomDirection(rng);
+    const double altitude = std::pow(10.0, std::uniform_real_distribution<double>(0.0, 6.5)(rng));
+    const glm::dvec3 eye = d * (kEarthRadius_m + altitude);
+    const glm::dvec3 forward = glm::normalize(glm::cross(d, testing::randomDirection(rng)) - 0.3 * d);
+    const auto frustum = Frustum::fromViewProjection(lookingAt(eye, forward));
+    ASSERT_TRUE(frustum.ok());
+    RecordingResidency a(k % 8 + 4), b(k % 8 + 4);
+    Selection sa, sb;
+    ASSERT_TRUE(withPrefetch->select({eye, &*frustum}, a, sa).ok());
+    ASSERT_TRUE(without->select({eye, &*frustum}, b, sb).ok());
+    ASSERT_EQ(sa.nodes.size(), sb.nodes.size());
+    for (size_t i = 0; i < sa.nodes.size(); ++i) EXPECT_EQ(sa.nodes[i].id, sb.nodes[i].id);
+    EXPECT_EQ(a.wanted, b.wanted);
+    EXPECT_EQ(a.requested.size(), b.requested.size());
+    EXPECT_EQ(sa.stats.requests, sb.stats.requests);
+    EXPECT_EQ(a.prefetched.size(), sa.stats.prefetchRequests);
+    EXPECT_TRUE(b.prefetched.empty());
+    EXPECT_TRUE(b.peeked.empty());
+    // A prefetched node is a look-ahead: never one the view is already waiting for this frame.
+    std::unordered_set<uint64_t> visible;
+    for (const NodeId& id : a.requested) visible.insert(id.key());
+    for (const NodeId& id : a.prefetched) EXPECT_EQ(visible.count(id.key()), 0u);
+    prefetches += a.prefetched.size();
+    ringVisited += sa.stats.prefetchVisited;
+  }
+  EXPECT_GT(prefetches, 0u);
+  EXPECT_GT(ringVisited, 0u);
+}
+
+TEST(Selection, NextLevelIsPrefetchedBeforeTheCameraArrives) {
+  // Everything resident: a node drawn just outside its refine range has its (resident) children
+  // looked at via isResidentForPrefetch; with nothing below level 8 resident, the next level of the
+  // nodes within 1.25 R(d) is requested as prefetch, none of them beyond that.
+  LodSelector selector = makeSelector(20, false);
+  const glm::dvec3 eye = testing::fromLatLon(10, 20) * (kEarthRadius_m + 1000.0);
+  RecordingResidency residency(8);
+  Selection out;
+  ASSERT_TRUE(selector.select({eye, nullptr}, residency, out).ok());
+  ASSERT_FALSE(residency.prefetched.empty());
+  std::unordered_set<uint64_t> drawn;
+  for (const SelectedNode& n : out.nodes) drawn.insert(n.id.key());
+  for (const NodeId& id : residency.prefetched) {
+    ASSERT_GT(id.level, 0);
+    EXPECT_EQ(drawn.count(id.parent().key()), 1u) << "prefetched a node whose parent is not drawn";
+    const NodeBounds b = selector.boundsFor(id.parent(), residency);
+    const double range = selector.ranges().refineRange(id.level - 1);
+    EXPECT_FALSE(intersectsSphere(b, eye, range) && id.level - 1 < 8) << "should have been a visible request";
+    EXPECT_TRUE(intersectsSphere(b, eye, range * selector.config().prefetch.nextLevelRangeFactor));
+  }
+}
+
+TEST(Selection, RingPrefetchesBehindTheCamera) {
+  // Looking straight up from 100 m: the ground is frustum-culled (only coarse nodes, whose bounds
+  // reach 8 km up, meet the frustum), so what is asked for near the camera is a ring prefetch, about
+  // one level coarser than a downward view would draw (ring factor 0.5), and never marked wanted.
+  LodSelector selector = makeSelector(20, true);
+  const glm::dvec3 up = testing::fromLatLon(-20, 60);
+  const glm::dvec3 eye = up * (kEarthRadius_m + 100.0);
+  const auto frustum = Frustum::fromViewProjection(lookingAt(eye, up));
+  const auto down = Frustum::fromViewProjection(lookingAt(eye, -up));
+  ASSERT_TRUE(frustum.ok() && down.ok());
+  AllResident all;
+  Selection out, view;
+  ASSERT_TRUE(selector.select({eye, &*frustum}, all, out).ok());
+  EXPECT_GT(out.stats.prefetchVisited, 100u);
+  EXPECT_EQ(all.requests, 0);  // everything resident: nothing asked for
+  ASSERT_TRUE(selector.select({eye, &*down}, all, view).ok());
+  int viewDepth = 0, ringDepth = 0, visibleDepth = 0;
+  for (const SelectedNode& n : view.nodes) viewDepth = std::max(viewDepth, int(n.id.level));
+
+  RecordingResidency partial(4);  // levels <= 4 resident, a fifth of every deeper level missing
+  ASSERT_TRUE(selector.select({eye, &*frustum}, partial, out).ok());
+  ASSERT_FALSE(partial.prefetched.empty());
+  for (const NodeId& id : partial.prefetched)
+    EXPECT_EQ(partial.wanted.count(id.key()), 0u) << "the ring must not mark anything as wanted";
+  // Depth reached: everything resident, the deepest node each kind of query looked at.
+  RecordingResidency everything(30);
+  ASSERT_TRUE(selector.select({eye, &*frustum}, everything, out).ok());
+  for (uint64_t key : everything.peeked) ringDepth = std::max(ringDepth, int(NodeId::fromKey(key).level));
+  for (uint64_t key : everything.wanted) visibleDepth = std::max(visibleDepth, int(NodeId::fromKey(key).level));
+  EXPECT_GE(viewDepth, 17);
+  EXPECT_LE(ringDepth, viewDepth);
+  EXPECT_GE(ringDepth, viewDepth - 2);
+  EXPECT_LT(visibleDepth, ringDepth - 3);  // the up-looking view itself only wants coarse nodes
 }
 
 TEST(Selection, NonResidentRootsAreRequestedNotDrawn) {
@@ -253,6 +376,9 @@ TEST(Selection, RejectsBadConfig) {
       {"morphFraction", [](LodConfig& c) { c.ranges.morphFraction = 0; }},
       {"distanceMultiplier", [](LodConfig& c) { c.ranges.distanceMultiplier = -1; }},
       {"baseRange", [](LodConfig& c) { c.ranges.baseRange_m = INFINITY; }},
+      {"prefetch.nextLevelRangeFactor", [](LodConfig& c) { c.prefetch.nextLevelRangeFactor = 0.9; }},
+      {"prefetch.ringRangeFactor", [](LodConfig& c) { c.prefetch.ringRangeFactor = 1.5; }},
+      {"prefetch.ringRangeFactor", [](LodConfig& c) { c.prefetch.ringRangeFactor = std::nan(""); }},
   };
   for (const Case& c : cases) {
     LodConfig config;
