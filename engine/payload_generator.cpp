@@ -75,6 +75,7 @@ void GpuPayloadGenerator::reserveSlots(uint32_t slots) {
   payloads_ = vk::Buffer(device_, VkDeviceSize(slots) * slotBytes(),
                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                          vk::MemoryUse::DeviceLocal, "payload slots");
+  slotCentres_.assign(slots, glm::dvec3(0.0));
 }
 
 GpuPayloadGenerator::Batch& GpuPayloadGenerator::freeBatch() {
@@ -94,8 +95,10 @@ void GpuPayloadGenerator::generate(std::span<const GenerationJob> jobs) {
     Batch& batch = freeBatch();
     auto* gpuJobs = static_cast<gpu::PayloadJob*>(batch.jobs.mapped());
     batch.submitted.assign(jobs.begin() + std::ptrdiff_t(first), jobs.begin() + std::ptrdiff_t(first + count));
-    for (size_t k = 0; k < count; ++k)
+    for (size_t k = 0; k < count; ++k) {
       gpuJobs[k] = makePayloadJob(batch.submitted[k].node, batch.submitted[k].slot, model_);
+      slotCentres_[batch.submitted[k].slot] = {gpuJobs[k].centre.x, gpuJobs[k].centre.y, gpuJobs[k].centre.z};
+    }
 
     GLOBE_VK_CHECK(vkResetCommandBuffer(batch.cmd, 0));
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};

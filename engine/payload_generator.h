@@ -36,6 +36,8 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   void waitIdle();
 
   uint32_t cells() const { return cells_; }
+  // Node centre (metres) the payload in `slot` is relative to (the job's snapped centre).
+  const glm::dvec3& slotCentre(uint32_t slot) const { return slotCentres_[slot]; }
   const vk::Buffer& payloads() const { return payloads_; }
   // Device time of all finished batches so far (ms) and how many nodes they held.
   double gpuTime_ms() const { return gpuTime_ms_; }
@@ -67,6 +69,7 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   vk::UniqueQueryPool queries_;
   double timestampPeriod_ns_ = 1.0;
   std::vector<Batch> batches_;
+  std::vector<glm::dvec3> slotCentres_;
   std::deque<uint32_t> order_;  // busy batches, oldest first
   double gpuTime_ms_ = 0.0;
   uint64_t nodesGenerated_ = 0;

@@ -71,7 +71,16 @@ bool LodRanges::recompute() {
   for (int d = 1; d <= config_.maxDepth; ++d) {
     const double end = range_[static_cast<size_t>(d - 1)];
     const double start = d < config_.maxDepth ? range_[static_cast<size_t>(d)] : 0.0;
-    morph_[static_cast<size_t>(d)] = {end - config_.morphFraction * (end - start), end};
+    MorphRange band{end - config_.morphFraction * (end - start), end};
+    // Crack-freedom: where a depth-d node meets a finer neighbour (at most R(d) + D(d) from the
+    // camera, D = largest depth-d diagonal seen) it must not have started morphing yet, or its
+    // edge would leave the finer node's unmorphed vertices. The band may narrow, never invert.
+    const double diagonal = d < config_.maxDepth ? maxDiagonal_[static_cast<size_t>(d)] : 0.0;
+    if (diagonal > 0.0) {
+      const double unmorphedUntil = (start + diagonal) * (1.0 + kRestrictionSlack) + kRestrictionPad_m;
+      band.start_m = std::min(band.end_m, std::max(band.start_m, unmorphedUntil));
+    }
+    morph_[static_cast<size_t>(d)] = band;
   }
   return changed;
 }

@@ -8,10 +8,12 @@
 // its octave sum is scaled by a smooth mask of the modulator's value (mountains only where the
 // continents are high) — the primary source's 4 continent octaves modulating 8 detail octaves.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "planet/colour_ramp.h"
 #include "planet/error.h"
 
 namespace globe {
@@ -24,6 +26,13 @@ enum class LayerKind : std::uint32_t {
 
 // "fbm", "ridged", "billow".
 std::string_view layerKindName(LayerKind kind);
+
+// The speed/accuracy trade a planet is meant to be viewed at by default (the renderer and
+// `globe trade` interpret it; stored and validated here).
+enum class QualityPreset : std::uint32_t { Fast = 0, Balanced = 1, Exact = 2 };
+
+// "fast", "balanced", "exact".
+std::string_view qualityPresetName(QualityPreset preset);
 
 // One layer: `octaves` octaves of gradient noise; octave i has wavelength wavelength_m / lacunarity^i
 // and amplitude amplitude_m * gain^i.
@@ -42,6 +51,8 @@ struct ElevationLayer {
   double modulation_low_m = 0.0;      // modulator value (m) where the mask is 0
   double modulation_high_m = 1000.0;  // modulator value (m) where the mask is 1 (> low)
   double modulation_floor = 0.0;      // scale where the mask is 0, [0, 1]
+
+  bool operator==(const ElevationLayer&) const = default;
 };
 
 inline constexpr int kMaxElevationLayers = 8;  // = GLOBE_MAX_ELEVATION_LAYERS (GPU struct size)
@@ -57,6 +68,10 @@ struct PlanetDescription {
   std::uint64_t seed = 0;              // noise seed; every layer derives its own from it
   double sea_level_m = 0.0;            // elevation of the sea surface, metres (for rendering and stats)
   std::vector<ElevationLayer> layers;  // 1 .. kMaxElevationLayers, evaluated in order
+  QualityPreset default_quality = QualityPreset::Balanced;
+  ColourRamp colour_ramp;                   // surface colour by elevation and slope
+
+  bool operator==(const PlanetDescription&) const = default;
 };
 
 // Conservative elevation range, metres: every elevation the model can produce lies in [min_m, max_m]
@@ -70,9 +85,22 @@ ElevationRange elevationBounds(const PlanetDescription& planet);
 // Wavelength of a layer's last (finest) octave, metres.
 double finestWavelength_m(const ElevationLayer& layer);
 
+// Most octaves `layer` may have at `radius_m` under the precision rule (radius / finest wavelength
+// <= kMaxLatticeCoordinate), capped at kMaxOctavesPerLayer; 0 when even the first is too fine.
+int maxOctavesForPrecision(double radius_m, const ElevationLayer& layer);
+
 // Checks every value's range and the cross-field rules (modulator earlier than the layer, precision
-// limit radius / finest wavelength <= kMaxLatticeCoordinate). The Error has field set (e.g.
-// "layers[1].gain") but no file position; the planet file loader reports positions itself.
+// limit radius / finest wavelength <= kMaxLatticeCoordinate, colour ramp stops increasing). Each
+// Error has field set (e.g. "layers[1].gain") but no file position; the planet file loader adds
+// positions itself. Returns every problem, in field order; empty when the planet is valid.
+std::vector<Error> validatePlanetAll(const PlanetDescription& planet);
+
+// The first problem of validatePlanetAll, or Ok.
 Status validatePlanet(const PlanetDescription& planet);
+
+// An authoring rule, checked by the planet file loader but not by validatePlanet (numerical tests
+// deliberately put Earth's layers on a 1 km sphere): the conservative low bound must stay above
+// -radius_m, or the surface would pass through the centre. `planet` must be valid.
+std::optional<Error> terrainReachesCentre(const PlanetDescription& planet);
 
 }  // namespace globe

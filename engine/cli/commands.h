@@ -12,6 +12,9 @@ using Runner = std::function<int()>;
 
 void addRenderCommand(CLI::App& app, Runner& run);
 void addViewCommand(CLI::App& app, Runner& run);
+void addPlanetCommand(CLI::App& app, Runner& run);  // globe planet check|stats|sample|export
+// `commandLine`: the whole invocation, recorded in the benchmark report.
+void addBenchCommand(CLI::App& app, Runner& run, const std::string& commandLine);
 
 // Exit codes shared by every command.
 constexpr int kExitOk = 0;

@@ -24,6 +24,10 @@ int main(int argc, char** argv) {
   Runner run;
   addRenderCommand(app, run);
   addViewCommand(app, run);
+  addPlanetCommand(app, run);
+  std::string commandLine;
+  for (int i = 0; i < argc; ++i) commandLine += (i ? " " : "") + std::string(argv[i]);
+  addBenchCommand(app, run, commandLine);
 
   try {
     app.parse(argc, argv);

@@ -43,13 +43,27 @@ vk::DeviceOptions deviceOptions(const DeviceFlags& flags) {
 int validationExitCode(vk::Device& device) {
   size_t n = device.validation().count();
   if (n == 0) return kExitOk;
-  for (const auto& m : device.validation().messages()) printError("vulkan validation " + m);
+  // One line: the first message and how many followed.
+  std::string first = device.validation().messages().front();
+  printError("vulkan validation " + first + (n > 1 ? " (and " + std::to_string(n - 1) + " more)" : ""));
   return kExitFailure;
 }
 
 int usageError(const Error& error) {
   printError(error.format());
   return kExitUsage;
+}
+
+std::string defaultPlanetPath() {
+  const char* env = std::getenv("GLOBE_ASSET_DIR");
+  const std::string dir = (env != nullptr && *env != '\0') ? std::string(env) : std::string(GLOBE_ASSET_DIR);
+  return dir + "/planets/earthlike.toml";
+}
+
+std::string defaultAssetPath(const std::string& relative) {
+  const char* env = std::getenv("GLOBE_ASSET_DIR");
+  const std::string dir = (env != nullptr && *env != '\0') ? std::string(env) : std::string(GLOBE_ASSET_DIR);
+  return dir + "/" + relative;
 }
 
 }  // namespace globe::cli

@@ -33,4 +33,11 @@ int validationExitCode(vk::Device& device);
 // Prints the error and returns kExitUsage.
 int usageError(const Error& error);
 
+// The planet every command uses without --planet: $GLOBE_ASSET_DIR/planets/earthlike.toml when
+// the variable is set, else the source tree's assets/planets/earthlike.toml (GLOBE_ASSET_DIR,
+// fixed at build time), so `globe` works from any working directory.
+std::string defaultPlanetPath();
+// A file under the asset directory ($GLOBE_ASSET_DIR, else the source tree's assets/).
+std::string defaultAssetPath(const std::string& relative);
+
 }  // namespace globe::cli

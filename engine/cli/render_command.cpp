@@ -1,12 +1,13 @@
-// globe render: one headless frame written as PNG or EXR.
+// globe render: one headless frame of the terrain (or the reference sphere) written as PNG or EXR.
 #include "commands.h"
 #include "engine/device.h"
-#include "engine/offscreen_target.h"
+#include "engine/headless_renderer.h"
 #include "engine/render_output.h"
 #include "engine/sphere_preview.h"
 #include "options.h"
 #include "planet/atomic_file.h"
 #include "planet/camera.h"
+#include "planet/planet_file.h"
 
 #include <cstdio>
 
@@ -16,10 +17,12 @@ namespace {
 
 struct RenderOptions {
   DeviceFlags device;
+  std::string planet;
   std::string at = "20,10,2000000";
   std::string size = "1280x720";
   std::string out = "out/render.png";
-  double radius_m = 6371000.0;
+  std::string mode = "terrain";
+  uint32_t gridCells = 32;
 };
 
 int runRender(const RenderOptions& o) {
@@ -29,20 +32,45 @@ int runRender(const RenderOptions& o) {
   if (!size) return usageError(size.error());
   if (auto s = checkWritable(o.out, "--out"); !s) return usageError(s.error());
   if (auto s = checkImageExtension(o.out, "--out"); !s) return usageError(s.error());
+  auto planet = loadPlanetFile(o.planet);
+  if (!planet) return usageError(planet.error());
+  TerrainSettings settings;
+  settings.gridCells = o.gridCells;
+  if (auto s = validateTerrainSettings(settings); !s) {
+    Error e = s.error();
+    if (e.field == "grid_cells") e.field = "--grid";
+    return usageError(e);
+  }
+
+  ElevationModel model(*planet);
+  double aspect = double(size->width) / double(size->height);
+  glm::dvec3 down = directionFromLatLon(pose->latitude_deg, pose->longitude_deg);
+  double ground = model.radius_m() + model.elevation_m(down);
+  Camera camera = cameraFromPose(*pose, ground, model.radius_m(), aspect);
 
   vk::Device device(deviceOptions(o.device));
-  vk::OffscreenTarget target(device, {size->width, size->height});
-  SpherePreview preview(device);
-  double aspect = double(size->width) / double(size->height);
-  Camera camera = cameraFromPose(*pose, o.radius_m, o.radius_m, aspect);
-  const glm::dvec3 sun = glm::normalize(glm::dvec3(1.0, 0.6, 0.4));
-  const float clear[4] = {0, 0, 0, 1};
-  device.submitAndWait([&](VkCommandBuffer cmd) {
-    target.begin(cmd, clear);
-    preview.record(cmd, camera, o.radius_m, sun);
-    target.end(cmd);
-  });
-  ImageRgba image = toImage(target.readback(), camera);
+  ImageRgba image;
+  if (o.mode == "sphere") {
+    vk::OffscreenTarget target(device, {size->width, size->height});
+    SpherePreview preview(device);
+    const float clear[4] = {0, 0, 0, 1};
+    device.submitAndWait([&](VkCommandBuffer cmd) {
+      target.begin(cmd, clear);
+      preview.record(cmd, camera, model.radius_m(), glm::normalize(glm::dvec3(1.0, 0.6, 0.4)));
+      target.end(cmd);
+    });
+    image = toImage(target.readback(), camera);
+  } else {
+    auto terrain = Terrain::create(device, model, settings);
+    if (!terrain) return usageError(terrain.error());
+    HeadlessRenderer renderer(device, {size->width, size->height});
+    // Waits until every node the view needs is resident before drawing the frame it writes.
+    FrameStats stats = renderer.renderFrame(**terrain, camera, true);
+    image = toImage(renderer.readback(), camera);
+    std::printf("%u nodes (%u partial), %llu triangles, %u payloads resident (%.1f MiB)\n", stats.nodes_selected,
+                stats.nodes_partial, (unsigned long long)stats.triangles, (*terrain)->pool().stats().residentNodes,
+                stats.resident_mib);
+  }
   if (auto s = writeImage(o.out, image, "--out"); !s) {
     printError(s.error().format());
     return kExitFailure;
@@ -56,15 +84,21 @@ int runRender(const RenderOptions& o) {
 
 void addRenderCommand(CLI::App& app, Runner& run) {
   auto opts = std::make_shared<RenderOptions>();
+  opts->planet = defaultPlanetPath();
   CLI::App* cmd = app.add_subcommand("render", "Render one frame headless to a PNG or OpenEXR file");
+  cmd->add_option("--planet", opts->planet, "Planet file (TOML)")->capture_default_str();
   cmd->add_option("--at", opts->at,
-                  "Camera: LAT,LON,HEIGHT[,HEADING,PITCH,ROLL] in degrees and metres above the surface; "
+                  "Camera: LAT,LON,HEIGHT[,HEADING,PITCH,ROLL] in degrees and metres above the terrain; "
                   "heading clockwise from north, pitch 0 horizontal and -90 down; without the angles the "
                   "camera looks at the horizon")
       ->capture_default_str();
   cmd->add_option("--size", opts->size, "Image size WxH in pixels")->capture_default_str();
   cmd->add_option("--out", opts->out, "Output file: .png (8-bit sRGB) or .exr (half RGB + float Z, metres)")
       ->capture_default_str();
+  cmd->add_option("--mode", opts->mode, "terrain (the planet) or sphere (its reference sphere, analytic)")
+      ->check(CLI::IsMember({"terrain", "sphere"}))
+      ->capture_default_str();
+  cmd->add_option("--grid", opts->gridCells, "Grid cells per node side (power of two, 16..256)")->capture_default_str();
   addDeviceFlags(*cmd, opts->device);
   cmd->callback([opts, &run] { run = [opts] { return runRender(*opts); }; });
 }

@@ -1,0 +1,149 @@
+// globe bench: deterministic replay of a camera path, headless, with per-frame metrics, key-frame
+// images and a report (docs/benchmark.md).
+#include "commands.h"
+#include "engine/bench_report.h"
+#include "engine/device.h"
+#include "engine/headless_renderer.h"
+#include "engine/image_io.h"
+#include "engine/render_output.h"
+#include "options.h"
+#include "progress_bar.h"
+#include "planet/camera_path_file.h"
+#include "planet/planet_file.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+namespace globe::cli {
+
+namespace {
+
+struct BenchOptions {
+  DeviceFlags device;
+  std::string planet;
+  std::string path;
+  std::string out = "out/bench";
+  std::string mode = "budgeted";
+  std::string size = "1280x720";
+  std::string keyFrames = "0,7,12,18";
+  double rate_hz = 60.0;
+  uint32_t gridCells = 32;
+  std::string commandLine;
+};
+
+Result<std::vector<double>> parseTimes(const std::string& text, const std::string& field) {
+  std::vector<double> times;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    char* end = nullptr;
+    double t = std::strtod(item.c_str(), &end);
+    if (item.empty() || *end != '\0' || !std::isfinite(t) || t < 0)
+      return Error{"", 0, 0, field, "expected times in seconds >= 0 separated by commas, got '" + text + "'"};
+    times.push_back(t);
+  }
+  return times;
+}
+
+int runBench(const BenchOptions& o) {
+  // Everything is checked before DIR is touched: bad input writes nothing.
+  auto planet = loadPlanetFile(o.planet);
+  if (!planet) return usageError(planet.error());
+  auto path = loadCameraPath(o.path);
+  if (!path) return usageError(path.error());
+  auto size = parseSize(o.size, "--size");
+  if (!size) return usageError(size.error());
+  auto keyTimes = parseTimes(o.keyFrames, "--keyframes");
+  if (!keyTimes) return usageError(keyTimes.error());
+  if (!(o.rate_hz >= 1 && o.rate_hz <= 1000)) return usageError({"", 0, 0, "--rate", "must be within [1, 1000] Hz"});
+  TerrainSettings settings;
+  settings.gridCells = o.gridCells;
+  if (auto s = validateTerrainSettings(settings); !s) return usageError({"", 0, 0, "--grid", s.error().message});
+  std::filesystem::path dir(o.out);
+  std::error_code ec;
+  if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
+    return usageError({"", 0, 0, "--out", "'" + o.out + "' exists and is not a directory"});
+  std::filesystem::path parent = dir.has_parent_path() ? dir.parent_path() : std::filesystem::path(".");
+  if (!std::filesystem::is_directory(parent, ec))
+    return usageError({"", 0, 0, "--out", "directory '" + parent.string() + "' does not exist"});
+
+  ElevationModel model(*planet);
+  vk::Device device(deviceOptions(o.device));
+  auto terrain = Terrain::create(device, model, settings);
+  if (!terrain) return usageError(terrain.error());
+  HeadlessRenderer renderer(device, {size->width, size->height});
+  const double aspect = double(size->width) / double(size->height);
+  GroundRadiusFn ground = [&](const glm::dvec3& d) { return (*terrain)->groundRadius(d); };
+  const bool converge = o.mode == "converged";
+
+  std::filesystem::create_directories(dir, ec);
+  if (ec) return usageError({"", 0, 0, "--out", "cannot create '" + o.out + "': " + ec.message()});
+
+  // Fixed time step in path time: frame k shows t = start + k / rate.
+  const uint64_t frames = uint64_t(std::floor(path->duration_s() * o.rate_hz + 1e-9)) + 1;
+  std::vector<BenchFrame> rows;
+  rows.reserve(frames);
+  std::vector<BenchKeyFrame> keys;
+  ProgressBar progress("bench " + std::filesystem::path(o.path).filename().string());
+  for (uint64_t k = 0; k < frames; ++k) {
+    double t = path->startTime_s() + double(k) / o.rate_hz;
+    Camera camera = path->cameraAt(t, model.radius_m(), aspect, ground);
+    FrameStats stats = renderer.renderFrame(**terrain, camera, converge);
+    double altitude = glm::length(camera.position_m) - ground(glm::normalize(camera.position_m));
+    rows.push_back({k, t, altitude, stats});
+    for (double kt : *keyTimes) {
+      // The frame nearest to each key time (times outside the path are skipped).
+      if (kt < path->startTime_s() || kt > path->endTime_s()) continue;
+      if (std::llround((kt - path->startTime_s()) * o.rate_hz) != int64_t(k)) continue;
+      char name[64];
+      std::snprintf(name, sizeof(name), "keyframe_%05.2fs.png", kt);
+      ImageRgba image = toImage(renderer.readback(), camera);
+      if (auto s = writePng((dir / name).string(), image); !s) {
+        printError(s.error().format());
+        return kExitFailure;
+      }
+      keys.push_back({kt, name});
+    }
+    progress.update(double(k + 1) / double(frames));
+  }
+
+  BenchRunInfo info{o.planet, o.path, o.mode, device.name(), o.size, o.gridCells, o.commandLine,
+                    std::string(GLOBE_VERSION)};
+  if (auto s = writeBenchReport(o.out, info, rows, keys); !s) {
+    printError(s.error().format());
+    return kExitFailure;
+  }
+  if (int code = validationExitCode(device); code != kExitOk) return code;
+  std::printf("%llu frames of %s (%s) written to %s/report.html\n", (unsigned long long)frames, o.path.c_str(),
+              o.mode.c_str(), o.out.c_str());
+  return kExitOk;
+}
+
+}  // namespace
+
+void addBenchCommand(CLI::App& app, Runner& run, const std::string& commandLine) {
+  auto opts = std::make_shared<BenchOptions>();
+  opts->planet = defaultPlanetPath();
+  opts->path = defaultAssetPath("paths/flyover.path");
+  opts->commandLine = commandLine;
+  CLI::App* cmd = app.add_subcommand("bench", "Replay a camera path headless and write per-frame metrics and a report");
+  cmd->add_option("--planet", opts->planet, "Planet file (TOML)")->capture_default_str();
+  cmd->add_option("--path", opts->path, "Camera path file (docs/camera-paths.md)")->capture_default_str();
+  cmd->add_option("--out", opts->out, "Output directory (frames.csv, summary.json, timeline.svg, report.html)")
+      ->capture_default_str();
+  cmd->add_option("--mode", opts->mode,
+                  "budgeted: normal use, generation budget per frame; converged: wait each frame until every "
+                  "payload the view needs is resident (render cost alone)")
+      ->check(CLI::IsMember({"budgeted", "converged"}))
+      ->capture_default_str();
+  cmd->add_option("--size", opts->size, "Image size WxH in pixels")->capture_default_str();
+  cmd->add_option("--keyframes", opts->keyFrames, "Path times (s) whose frames are saved as PNG")->capture_default_str();
+  cmd->add_option("--rate", opts->rate_hz, "Frames per second of path time (fixed step)")->capture_default_str();
+  cmd->add_option("--grid", opts->gridCells, "Grid cells per node side (power of two, 16..256)")->capture_default_str();
+  addDeviceFlags(*cmd, opts->device);
+  cmd->callback([opts, &run] { run = [opts] { return runBench(*opts); }; });
+}
+
+}  // namespace globe::cli

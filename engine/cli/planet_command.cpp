@@ -1,0 +1,181 @@
+// globe planet: check, stats, sample (and export, planet_export_command.cpp) for planet files.
+#include "commands.h"
+#include "options.h"
+#include "planet/camera.h"
+#include "planet/elevation.h"
+#include "planet/planet_file.h"
+#include "planet/sphere_sampling.h"
+#include "planet_commands.h"
+#include "progress_bar.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <thread>
+
+namespace globe::cli {
+
+std::optional<PlanetDescription> loadPlanetForCommand(const std::string& path) {
+  PlanetFileCheck check = checkPlanetFile(path);
+  if (check.ok()) return std::move(check.planet);
+  std::string message = check.errors.front().format();
+  if (check.errors.size() > 1) {
+    message += fmt::format(" (and {} more: globe planet check {})", check.errors.size() - 1, path);
+  }
+  printError(message);
+  return std::nullopt;
+}
+
+unsigned defaultThreads() { return std::max(1U, std::thread::hardware_concurrency()); }
+
+void addThreadsOption(CLI::App& cmd, unsigned& threads) {
+  threads = defaultThreads();
+  cmd.add_option("--threads", threads, "Worker threads (default: every hardware thread)")
+      ->check(CLI::Range(1U, 256U))
+      ->capture_default_str();
+}
+
+namespace {
+
+// ---- check ----
+
+int runCheck(const std::vector<std::string>& files) {
+  int code = kExitOk;
+  for (const std::string& file : files) {
+    const PlanetFileCheck check = checkPlanetFile(file);
+    if (check.ok()) {
+      std::printf("%s: ok\n", file.c_str());
+      continue;
+    }
+    for (const Error& e : check.errors) std::fprintf(stderr, "%s\n", e.format().c_str());
+    std::fprintf(stderr, "%s: %zu problem%s\n", file.c_str(), check.errors.size(),
+                 check.errors.size() == 1 ? "" : "s");
+    code = kExitUsage;
+  }
+  std::fflush(stdout);
+  return code;
+}
+
+// ---- stats ----
+
+struct StatsOptions {
+  std::string file;
+  std::uint64_t samples = 1000000;
+  int bins = 20;
+  unsigned threads = 1;
+};
+
+int runStats(const StatsOptions& o) {
+  const auto planet = loadPlanetForCommand(o.file);
+  if (!planet) return kExitUsage;
+  const ElevationModel model(*planet);
+  const auto start = std::chrono::steady_clock::now();
+  ElevationStats s;
+  {
+    ProgressBar bar("sampling");
+    s = computeElevationStats(model, o.samples, o.bins, o.threads, [&bar](double f) { bar.update(f); });
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const ElevationRange bounds = model.bounds();
+  std::string out;
+  auto line = std::back_inserter(out);
+  fmt::format_to(line, "planet {}: radius {} m, sea level {} m, default quality {}\n", planet->name,
+                 planet->radius_m, planet->sea_level_m, qualityPresetName(planet->default_quality));
+  fmt::format_to(line, "samples: {} uniform directions (Fibonacci sphere), {} threads, {:.2f} s ({:.2f} M/s)\n",
+                 s.samples, o.threads, seconds, static_cast<double>(s.samples) / seconds * 1e-6);
+  fmt::format_to(line, "elevation: min {:.1f} m, max {:.1f} m, mean {:.1f} m\n", s.min_m, s.max_m, s.mean_m);
+  fmt::format_to(line, "percentiles: 1% {:.1f} m, median {:.1f} m, 99% {:.1f} m\n", s.p01_m, s.median_m, s.p99_m);
+  fmt::format_to(line, "below sea level: {:.2f} % of the surface\n", 100.0 * s.below_sea_fraction);
+  fmt::format_to(line, "conservative bounds: {:.1f} .. {:.1f} m\n", bounds.min_m, bounds.max_m);
+  fmt::format_to(line, "hypsometry (area of each elevation band; area at or above the band's floor):\n");
+  double above = 1.0;
+  double largest = 0.0;
+  for (double f : s.histogram) largest = std::max(largest, f);
+  const double band = (s.max_m - s.min_m) / static_cast<double>(s.histogram.size());
+  for (std::size_t i = 0; i < s.histogram.size(); ++i) {
+    const double lo = s.min_m + band * static_cast<double>(i);
+    const double f = s.histogram[i];
+    const auto bar = static_cast<std::size_t>(std::lround(largest > 0.0 ? 40.0 * f / largest : 0.0));
+    fmt::format_to(line, "  {:>12.1f} .. {:>12.1f} m {:>7.2f} % {:>7.2f} %  {}\n", lo, lo + band, 100.0 * f,
+                   100.0 * std::max(above, 0.0), std::string(bar, '#'));
+    above -= f;
+  }
+  std::fputs(out.c_str(), stdout);
+  return kExitOk;
+}
+
+// ---- sample ----
+
+Result<glm::dvec2> parseLatLon(const std::string& text) {
+  double lat = 0.0;
+  double lon = 0.0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%lf,%lf%c", &lat, &lon, &extra) != 2) {
+    return Error{"", 0, 0, "--at", "expected LAT,LON in degrees (for example 27.99,86.93), got '" + text + "'"};
+  }
+  if (!std::isfinite(lat) || !std::isfinite(lon)) return Error{"", 0, 0, "--at", "latitude and longitude must be finite"};
+  if (lat < -90.0 || lat > 90.0) return Error{"", 0, 0, "--at", "latitude must be within [-90, 90] degrees"};
+  return glm::dvec2(lat, lon);
+}
+
+int runSample(const std::string& file, const std::vector<std::string>& at) {
+  std::vector<glm::dvec2> points;
+  for (const std::string& a : at) {
+    auto p = parseLatLon(a);
+    if (!p) return usageError(p.error());
+    points.push_back(*p);
+  }
+  const auto planet = loadPlanetForCommand(file);
+  if (!planet) return kExitUsage;
+  const ElevationModel model(*planet);
+  for (const glm::dvec2& p : points) {
+    const double h = model.elevation_m(directionFromLatLon(p.x, p.y));
+    std::printf("%.9g,%.9g %.6f\n", p.x, p.y, h);
+  }
+  return kExitOk;
+}
+
+void addFileArgument(CLI::App& cmd, std::string& file) {
+  file = defaultPlanetPath();
+  cmd.add_option("FILE", file, "Planet file (default: the earthlike preset)");
+}
+
+}  // namespace
+
+void addPlanetCommand(CLI::App& app, Runner& run) {
+  CLI::App* planet = app.add_subcommand("planet", "Author planet files: check, stats, sample, export");
+  planet->require_subcommand(1);
+
+  auto files = std::make_shared<std::vector<std::string>>();
+  CLI::App* check = planet->add_subcommand(
+      "check", "Report every problem of planet files as FILE:LINE:COLUMN: KEY: MESSAGE; exit 0 only if all are valid");
+  check->add_option("FILE", *files, "Planet files (default: the earthlike preset)");
+  check->callback([files, &run] {
+    if (files->empty()) files->push_back(defaultPlanetPath());
+    run = [files] { return runCheck(*files); };
+  });
+
+  auto stats = std::make_shared<StatsOptions>();
+  CLI::App* stats_cmd = planet->add_subcommand(
+      "stats", "Elevation statistics over uniform directions: min/max/mean, percentiles, hypsometry, area below sea");
+  addFileArgument(*stats_cmd, stats->file);
+  stats_cmd->add_option("--samples", stats->samples, "Directions sampled (Fibonacci sphere)")
+      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{100000000}))
+      ->capture_default_str();
+  stats_cmd->add_option("--bins", stats->bins, "Hypsometry bands")->check(CLI::Range(1, 200))->capture_default_str();
+  addThreadsOption(*stats_cmd, stats->threads);
+  stats_cmd->callback([stats, &run] { run = [stats] { return runStats(*stats); }; });
+
+  auto sample_file = std::make_shared<std::string>();
+  auto sample_at = std::make_shared<std::vector<std::string>>();
+  CLI::App* sample = planet->add_subcommand("sample", "Print the elevation (metres above radius_m) at points");
+  addFileArgument(*sample, *sample_file);
+  sample->add_option("--at", *sample_at, "LAT,LON in degrees; repeat for more points")->required()->allow_extra_args(false);
+  sample->callback([sample_file, sample_at, &run] { run = [sample_file, sample_at] { return runSample(*sample_file, *sample_at); }; });
+
+  addPlanetExportCommand(*planet, run);
+}
+
+}  // namespace globe::cli

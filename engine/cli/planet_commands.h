@@ -1,0 +1,22 @@
+#pragma once
+// Shared by the `globe planet` subcommands (planet_command.cpp, planet_export_command.cpp).
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+
+#include "planet/planet_description.h"
+
+namespace globe::cli {
+
+// Loads a planet file for a command that needs a valid planet; on failure prints one line (the first
+// problem, with a hint when there are more) and returns nothing.
+std::optional<PlanetDescription> loadPlanetForCommand(const std::string& path);
+
+// The worker threads of a command: --threads, default every hardware thread.
+void addThreadsOption(CLI::App& cmd, unsigned& threads);
+unsigned defaultThreads();
+
+void addPlanetExportCommand(CLI::App& planet, std::function<int()>& run);
+
+}  // namespace globe::cli

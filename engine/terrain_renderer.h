@@ -1,0 +1,114 @@
+#pragma once
+// The terrain draw (CDLOD, Strugar 2009; primary source §3.3): every selected node is one instance of
+// ONE shared grid index buffer, its vertices pulled by the vertex shader from the node's payload slot
+// (shaders/include/payload_layout.h). Two instanced draws per frame: full nodes (N x N cells) and
+// partial nodes (the N/2 grid over their own payload's every other sample = their parent's LOD).
+// Per-vertex morphing towards the parent's mesh from the distance to the camera, a floating origin
+// (every float the GPU sees is relative to it, computed in double on the CPU first), reversed-Z with
+// an infinite far plane, and flared skirts that fill sub-pixel gaps between nodes. See
+// docs/rendering.md.
+//
+// Frames in flight: per-frame data (constants + one record per node) lives in one host-visible
+// buffer per frame index, preallocated and grown only when a frame has more nodes than ever before.
+// The caller must have waited for the previous use of `frameIndex` before record().
+#include "engine/graphics_pipeline.h"
+#include "planet/camera.h"
+#include "planet/colour_ramp.h"
+#include "planet/lod_ranges.h"
+#include "planet/node_id.h"
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <span>
+
+namespace globe {
+
+enum class TerrainDebugView {
+  kShaded,      // lit colour ramp (normal use)
+  kLodColours,  // one flat colour per drawn level
+  kWireframe,   // LOD-coloured lines (falls back to kLodColours without fillModeNonSolid)
+};
+
+struct TerrainStyle {
+  double radius_m = 6371000.0;            // planet radius (metres): local vertical, altitude for the sky
+  ColourRamp ramp;                        // colour by elevation and slope (a planet file's ramp)
+  glm::dvec3 sunDirection{1.0, 0.4, 0.6};  // towards the sun, planet-fixed (normalised here)
+  float ambient = 0.08f;                  // light on faces turned away from the sun, [0, 1]
+  bool sky = true;                        // draw the sky gradient behind the terrain
+  double atmosphereHeight_m = 100000.0;   // above it the background is black space (> 0)
+  glm::vec3 zenithColour{0.20f, 0.38f, 0.80f};   // linear RGB
+  glm::vec3 horizonColour{0.62f, 0.74f, 0.92f};  // linear RGB
+  TerrainDebugView debug = TerrainDebugView::kShaded;
+  // Skirt flare, in drawn cells: outward under the neighbour and down. 0 = no skirts (cracks of a
+  // fraction of a pixel may then show between nodes of different levels).
+  float skirtOutward = 0.25f;
+  float skirtDrop = 0.5f;
+};
+
+// One node to draw; the caller builds these from the selection and the payload pool.
+struct DrawNode {
+  NodeId id;
+  uint32_t slot = 0;          // payload slot holding the node's samples
+  MorphRange morph;           // metres from the camera (SelectedNode::morph)
+  bool partial = false;       // drawn at half resolution (the parent's LOD) over its own quadrant
+  glm::dvec3 centre_m{0.0};   // node centre the payload was generated with (PayloadJob::centre)
+};
+
+struct DrawStats {
+  uint64_t triangles = 0;  // submitted, including skirts and the degenerate ones of morphed cells
+  uint32_t drawCalls = 0;
+  uint32_t nodes = 0;
+  uint32_t partialNodes = 0;
+};
+
+class TerrainRenderer {
+ public:
+  static constexpr uint32_t kFramesInFlight = 2;
+
+  // gridCells: payload grid cells per node side, a power of two in [16, 256]. initialNodes: per-frame
+  // capacity allocated up front (grows when exceeded). Pipelines target OffscreenTarget's formats
+  // unless `colourFormat` says otherwise (e.g. a swapchain's).
+  TerrainRenderer(vk::Device& device, uint32_t gridCells, const TerrainStyle& style = {},
+                  uint32_t initialNodes = 1024, VkFormat colourFormat = VK_FORMAT_R16G16B16A16_SFLOAT);
+  ~TerrainRenderer();
+  TerrainRenderer(const TerrainRenderer&) = delete;
+  TerrainRenderer& operator=(const TerrainRenderer&) = delete;
+
+  // Records the sky (if enabled) and the terrain into the current dynamic-rendering pass (viewport and
+  // scissor already set). `origin_m`: the floating origin (FloatingOrigin); `payloads`: the buffer
+  // whose slot s starts at vec4 s * GLOBE_PAYLOAD_VEC4_PER_SLOT(gridCells). frameIndex < kFramesInFlight.
+  DrawStats record(VkCommandBuffer cmd, const Camera& camera, const glm::dvec3& origin_m,
+                   std::span<const DrawNode> nodes, const vk::Buffer& payloads, uint32_t frameIndex);
+
+  const TerrainStyle& style() const { return style_; }
+  void setStyle(const TerrainStyle& style) { style_ = style; }
+  void setDebugView(TerrainDebugView view) { style_.debug = view; }
+  bool wireframeSupported() const { return wireframe_ != nullptr; }
+  uint32_t gridCells() const { return cells_; }
+  // Index counts of the full and the half-resolution grid ranges (with skirts).
+  uint32_t fullIndexCount() const { return fullIndices_; }
+  uint32_t halfIndexCount() const { return halfIndices_; }
+  // The per-frame buffer of `frameIndex` (TerrainFrame + instances), for tests.
+  const vk::Buffer& frameBuffer(uint32_t frameIndex) const { return frames_[frameIndex]; }
+
+ private:
+  void ensureCapacity(uint32_t frameIndex, uint32_t nodes);
+  void recordSky(VkCommandBuffer cmd, const Camera& camera) const;
+
+  vk::Device& device_;
+  uint32_t cells_;
+  TerrainStyle style_;
+  vk::GraphicsPipeline solid_;
+  std::unique_ptr<vk::GraphicsPipeline> wireframe_;
+  vk::GraphicsPipeline sky_;
+  vk::Buffer indices_;
+  uint32_t fullIndices_ = 0;   // full grid + its skirts
+  uint32_t fullGridIndices_ = 0;  // full grid alone
+  uint32_t halfIndices_ = 0;
+  uint32_t halfGridIndices_ = 0;
+  std::array<vk::Buffer, kFramesInFlight> frames_;
+  std::array<uint32_t, kFramesInFlight> capacity_{};
+};
+
+}  // namespace globe

@@ -1,0 +1,75 @@
+// Per-frame data of the terrain renderer (engine/terrain_renderer.*, shaders/terrain.vert|frag),
+// shared by C++ and GLSL like payload_layout.h: C++ sees namespace globe::gpu, GLSL plain structs.
+//
+// One host-visible storage buffer per frame in flight holds a TerrainFrame followed by one
+// TerrainInstance per drawn node (full nodes first, then partial ones); gl_InstanceIndex (which
+// includes the draw's firstInstance) indexes the instances. Every position in here is relative to
+// the floating origin and small: the shaders never see planet-scale numbers.
+#ifndef GLOBE_TERRAIN_LAYOUT_H
+#define GLOBE_TERRAIN_LAYOUT_H
+
+#include "colour_ramp.h"
+
+#ifdef __cplusplus
+#include <cstdint>
+namespace globe::gpu {
+using uint = std::uint32_t;
+struct TerrainVec4 {
+  float x, y, z, w;
+};
+struct TerrainUvec4 {
+  uint x, y, z, w;
+};
+struct TerrainMat4 {
+  float m[16];  // column-major, like GLSL
+};
+#define GLOBE_VEC4 TerrainVec4
+#define GLOBE_UVEC4 TerrainUvec4
+#define GLOBE_MAT4 TerrainMat4
+#else
+#define GLOBE_VEC4 vec4
+#define GLOBE_UVEC4 uvec4
+#define GLOBE_MAT4 mat4
+#endif
+
+// Debug views (TerrainFrame.options.y).
+#define GLOBE_TERRAIN_SHADED 0u
+#define GLOBE_TERRAIN_LOD_COLOURS 1u
+#define GLOBE_TERRAIN_WIREFRAME 2u
+
+// Constants of one frame (std430, 480 bytes).
+struct TerrainFrame {
+  GLOBE_MAT4 clipFromCamera;  //   0: projection * view rotation: camera-centred planet-fixed axes -> clip
+  GLOBE_VEC4 cameraHigh;      //  64: xyz = float(camera - origin), metres
+  GLOBE_VEC4 cameraLow;       //  80: xyz = float((camera - origin) - cameraHigh), metres (rounding residue)
+  GLOBE_VEC4 planetCentre;    //  96: xyz = float(planet centre - origin), metres; w = planet radius, metres
+  GLOBE_VEC4 sun;             // 112: xyz = unit direction towards the sun (planet-fixed); w = ambient light
+  GLOBE_UVEC4 options;        // 128: x = payload grid cells N, y = debug view, z = 1 when skirts are drawn
+  GLOBE_VEC4 skirt;           // 144: x = outward offset, y = drop, both in drawn cells
+  ColourRampParams ramp;      // 160: colours by elevation and slope (320 bytes)
+};
+
+// One drawn node (std430, 48 bytes).
+struct TerrainInstance {
+  GLOBE_VEC4 offset;  //  0: xyz = float(node centre - origin), metres: exact (multiples of the quantum)
+  GLOBE_VEC4 morph;   // 16: x = morph start, y = morph end (metres from the camera); z, w unused
+  GLOBE_UVEC4 info;   // 32: x = first vec4 of the node's payload slot, y = sample stride (1 full, 2 partial),
+                      //     z = level the node is drawn at (id.level - partial), w = 0
+};
+
+// Push constants of one draw (8 bytes): which grid the index buffer range is.
+struct TerrainDrawPush {
+  uint drawnCells;  // cells per side of the drawn grid: N (full nodes) or N / 2 (partial nodes)
+  uint pad0;
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(TerrainFrame) == 480);
+static_assert(sizeof(TerrainInstance) == 48);
+}  // namespace globe::gpu
+#endif
+#undef GLOBE_VEC4
+#undef GLOBE_UVEC4
+#undef GLOBE_MAT4
+
+#endif  // GLOBE_TERRAIN_LAYOUT_H

@@ -1,0 +1,126 @@
+// The terrain renderer's vertex computation, shared by shaders/terrain.vert and the test kernel
+// shaders/test_terrain_vertex.comp (which reads back exactly what the vertex shader computes).
+// Requires: GL_GOOGLE_include_directive; the includer declares nothing at bindings 0 and 1.
+//
+// Grid: the drawn grid has n cells per side (N for full nodes, N / 2 for partial ones, which read
+// every other payload sample: their parent's resolution over their own quadrant). Vertex indices
+// [0, (n+1)^2) are grid vertices i + j * (n+1); [(n+1)^2, (n+1)^2 + 4 (n+1)) are skirt vertices,
+// edge e (0: j = 0, 1: i = n, 2: j = n, 3: i = 0) at position t along it. Every cell is split along
+// the diagonal (i, j)-(i+1, j+1), at every level, so a parent cell's diagonal is the union of its
+// children's diagonals.
+//
+// Morph (CDLOD): k from the vertex's distance to the camera; an odd vertex slides to the midpoint of
+// its even neighbours along its row/column, an odd-odd vertex to the midpoint of the parent cell's
+// diagonal (i-1, j-1)-(i+1, j+1): at k = 1 the node is its parent's mesh.
+//
+// Precision: payload positions and node offsets are multiples of the level's quantum, so
+// offset + position is exact in float and identical for every node holding the sample; the camera
+// is subtracted as a float pair (high + low), so the camera-relative position is accurate to float
+// precision of the (small) camera distance, whatever the origin.
+#ifndef GLOBE_TERRAIN_VERTEX_GLSL
+#define GLOBE_TERRAIN_VERTEX_GLSL
+
+#include "payload_layout.h"
+#include "terrain_layout.h"
+
+layout(std430, set = 0, binding = 0) readonly buffer TerrainFrameBuffer {
+  TerrainFrame frame;
+  TerrainInstance instances[];
+};
+layout(std430, set = 0, binding = 1) readonly buffer PayloadBuffer { vec4 payload[]; };
+
+// Finishes the morph a little inside both ends of the band so that float rounding of the distance
+// cannot leave k just below 1 where a coarser neighbour needs it exactly 1 (or just above 0).
+const float kMorphMargin = 1.0e-3;
+
+struct TerrainVertex {
+  vec4 clip;        // clip-space position
+  vec3 relative;    // position minus camera, metres (planet-fixed axes)
+  vec3 normal;      // planet-fixed unit normal (morphed, renormalised by the fragment shader)
+  vec3 up;          // planet-fixed radial unit vector at the vertex
+  float elevation;  // metres above the planet radius (morphed)
+  float morph;      // k in [0, 1]
+};
+
+float terrainMorphFactor(float distance_m, vec2 band) {
+  if (!(band.y > band.x)) return distance_m >= band.y ? 1.0 : 0.0;  // empty band; FLT_MAX = never
+  float t = (distance_m - band.x) / (band.y - band.x);
+  return clamp(t * (1.0 + 2.0 * kMorphMargin) - kMorphMargin, 0.0, 1.0);
+}
+
+uint terrainSample(uint slotBase, uint cells, int i, int j) {
+  return slotBase + uint(j + 1) * (cells + 3u) + uint(i + 1);
+}
+
+TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCells) {
+  TerrainInstance inst = instances[instanceIndex];
+  uint cells = frame.options.x;
+  uint stride = inst.info.y;
+  uint side = drawnCells + 1u;
+  uint gi, gj;
+  ivec2 outward = ivec2(0);
+  bool skirt = vertexIndex >= side * side;
+  if (!skirt) {
+    gi = vertexIndex % side;
+    gj = vertexIndex / side;
+  } else {
+    uint s = vertexIndex - side * side;
+    uint edge = s / side, t = s % side;
+    if (edge == 0u) { gi = t; gj = 0u; outward = ivec2(0, -1); }
+    else if (edge == 1u) { gi = drawnCells; gj = t; outward = ivec2(1, 0); }
+    else if (edge == 2u) { gi = t; gj = drawnCells; outward = ivec2(0, 1); }
+    else { gi = 0u; gj = t; outward = ivec2(-1, 0); }
+  }
+  uint base = inst.info.x;
+  uint normals = (cells + 3u) * (cells + 3u);
+  int si = int(gi * stride), sj = int(gj * stride);
+  vec4 sample0 = payload[terrainSample(base, cells, si, sj)];
+  precise vec3 world = inst.offset.xyz + sample0.xyz;
+  precise vec3 rel0 = (world - frame.cameraHigh.xyz) - frame.cameraLow.xyz;
+  float k = terrainMorphFactor(length(rel0), inst.morph.xy);
+
+  vec3 position = world;
+  vec3 normal = payload[terrainSample(base, cells, si, sj) + normals].xyz;
+  float elevation = sample0.w;
+  bool oddI = (gi & 1u) != 0u, oddJ = (gj & 1u) != 0u;
+  if (k > 0.0 && (oddI || oddJ)) {
+    // Even neighbours whose midpoint the vertex slides to (never outside the drawn grid: the
+    // border vertices 0 and n are even).
+    uvec2 a = uvec2(oddI ? gi - 1u : gi, oddJ ? gj - 1u : gj);
+    uvec2 b = uvec2(oddI ? gi + 1u : gi, oddJ ? gj + 1u : gj);
+    uint ia = terrainSample(base, cells, int(a.x * stride), int(a.y * stride));
+    uint ib = terrainSample(base, cells, int(b.x * stride), int(b.y * stride));
+    vec4 sa = payload[ia], sb = payload[ib];
+    precise vec3 wa = inst.offset.xyz + sa.xyz;
+    precise vec3 wb = inst.offset.xyz + sb.xyz;
+    precise vec3 mid = (wa + wb) * 0.5;
+    precise vec3 morphed = world + (mid - world) * k;
+    position = morphed;
+    normal = mix(normal, payload[ia + normals].xyz + payload[ib + normals].xyz, k);
+    elevation = mix(elevation, 0.5 * (sa.w + sb.w), k);
+  }
+
+  vec3 up = normalize(world - frame.planetCentre.xyz);
+  if (skirt) {
+    // Flared skirt: a little beyond the edge (towards the neighbour, along the ring sample) and
+    // below it. Hidden under the neighbour's surface; it only shows through sub-pixel gaps
+    // between nodes (float rounding, quantum differences between levels, T-junctions at morphed
+    // edges), which it fills with this node's colour.
+    vec3 ring = payload[terrainSample(base, cells, si + outward.x, sj + outward.y)].xyz;
+    vec3 out_m = (ring - sample0.xyz) * float(stride);
+    precise vec3 flared = position + out_m * frame.skirt.x - up * (length(out_m) * frame.skirt.y);
+    position = flared;
+  }
+
+  TerrainVertex v;
+  precise vec3 rel = (position - frame.cameraHigh.xyz) - frame.cameraLow.xyz;
+  v.relative = rel;
+  v.clip = frame.clipFromCamera * vec4(rel, 1.0);
+  v.normal = normal;
+  v.up = up;
+  v.elevation = elevation;
+  v.morph = k;
+  return v;
+}
+
+#endif  // GLOBE_TERRAIN_VERTEX_GLSL

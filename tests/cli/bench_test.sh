@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# globe bench end to end: outputs exist and parse, two replays are identical except for timings,
+# and malformed inputs write nothing. Usage: bench_test.sh GLOBE SOURCE_DIR WORKDIR
+set -uo pipefail
+GLOBE="$1"
+SRC="$2"
+WORK="$3"
+rm -rf "$WORK" && mkdir -p "$WORK"
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+run() {  # run DIR: a short replay at a small size
+  "$GLOBE" bench --path "$SRC/tests/data/short.path" --out "$1" --size 96x64 --keyframes 0,0.25 --rate 20 \
+    --validate >"$WORK/stdout" 2>"$WORK/stderr"
+}
+
+run "$WORK/a" || { fail "bench run a"; cat "$WORK/stderr"; }
+run "$WORK/b" || { fail "bench run b"; cat "$WORK/stderr"; }
+for f in frames.csv summary.json timeline.svg report.html keyframe_00.00s.png keyframe_00.25s.png; do
+  [[ -s "$WORK/a/$f" ]] || fail "missing $f"
+done
+header=$(head -1 "$WORK/a/frames.csv")
+expected="frame,t,altitude_m,frame_ms,select_ms,gpu_ms,nodes_selected,nodes_partial,triangles,draw_calls,gen_dispatched,gen_in_flight,gen_completed,evicted,resident_mib"
+[[ "$header" == "$expected" ]] || fail "frames.csv header: $header"
+rows=$(($(wc -l <"$WORK/a/frames.csv") - 1))
+[[ $rows -eq 11 ]] || fail "frames.csv has $rows rows, expected 11 (0.5 s at 20 Hz)"
+for key in '"frame_ms"' '"jank_ms"' '"p99"' '"median"' '"nodes_selected"'; do
+  grep -q "$key" "$WORK/a/summary.json" || fail "summary.json lacks $key"
+done
+grep -q '<svg' "$WORK/a/timeline.svg" || fail "timeline.svg is not SVG"
+grep -q '</html>' "$WORK/a/report.html" || fail "report.html is incomplete"
+# Determinism: everything but the timing columns (frame_ms, select_ms, gpu_ms) is identical.
+cut -d, -f1-3,7-15 "$WORK/a/frames.csv" >"$WORK/a.cols"
+cut -d, -f1-3,7-15 "$WORK/b/frames.csv" >"$WORK/b.cols"
+cmp -s "$WORK/a.cols" "$WORK/b.cols" || { fail "replays differ"; diff "$WORK/a.cols" "$WORK/b.cols" | head; }
+for f in keyframe_00.00s.png keyframe_00.25s.png; do cmp -s "$WORK/a/$f" "$WORK/b/$f" || fail "$f differs between replays"; done
+
+# Malformed paths: file:line: message, non-zero exit, nothing written.
+bad() {  # bad NAME CONTENT PATTERN
+  printf '%b' "$2" >"$WORK/$1.path"
+  "$GLOBE" bench --path "$WORK/$1.path" --out "$WORK/out-$1" --size 96x64 >/dev/null 2>"$WORK/err"
+  local code=$?
+  [[ $code -ne 0 ]] || fail "$1: exit 0"
+  [[ $(wc -l <"$WORK/err") -eq 1 ]] && grep -qE "^globe: error: .*$3" "$WORK/err" || { fail "$1: $(cat "$WORK/err")"; }
+  [[ ! -e "$WORK/out-$1" ]] || fail "$1: wrote $WORK/out-$1"
+}
+H='t_s lat_deg lon_deg height_m heading_deg pitch_deg roll_deg\n'
+bad empty "" "empty.path: .*"
+bad badnumber "${H}0 1 2 3 4 5 6\n1 x 2 3 4 5 6\n" "badnumber.path:3: "
+bad time "${H}0 1 2 3 4 5 6\n0 1 2 3 4 5 6\n" "time.path:3: "
+bad lat "${H}0 1 2 3 4 5 6\n1 91 2 3 4 5 6\n" "lat.path:3: "
+bad missing "${H}0 1 2 3 4 5 6\n1 1 2 3 4 5\n" "missing.path:3: "
+"$GLOBE" bench --path "$WORK/nonexistent.path" --out "$WORK/out-none" >/dev/null 2>"$WORK/err" && fail "missing file: exit 0"
+[[ ! -e "$WORK/out-none" ]] || fail "missing file: wrote output"
+
+echo "bench: $failures failure(s)"
+exit $((failures > 0))
