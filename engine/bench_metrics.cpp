@@ -86,8 +86,8 @@ double jankMs(std::span<const BenchFrame> frames) {
 }
 
 uint64_t framesOverBudget(std::span<const BenchFrame> frames) {
-  return static_cast<uint64_t>(
-      std::count_if(frames.begin(), frames.end(), [](const BenchFrame& f) { return f.stats.frame_ms > kFrameBudgetMs; }));
+  return static_cast<uint64_t>(std::count_if(frames.begin(), frames.end(),
+                                             [](const BenchFrame& f) { return f.stats.frame_ms > kFrameBudgetMs; }));
 }
 
 std::string formatFixed(double value, int decimals) {

@@ -20,7 +20,7 @@ struct BenchMetric {
   const char* unit;         // for people: "ms", "m", "MiB", "" for counts
   const char* description;  // one line, for the report and docs
   MetricKind kind;
-  int decimals;             // fixed decimals in the CSV (0 for integers)
+  int decimals;  // fixed decimals in the CSV (0 for integers)
   double (*value)(const BenchFrame&);
 };
 

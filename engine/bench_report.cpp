@@ -29,8 +29,9 @@ Status validateFrames(std::span<const BenchFrame> frames) {
     const std::string where = "frames[" + std::to_string(i) + "]";
     if (!std::isfinite(frames[i].t_s)) return Error{"", 0, 0, where + ".t_s", "not a finite number"};
     if (i > 0 && frames[i].t_s < frames[i - 1].t_s) {
-      return Error{"", 0, 0, where + ".t_s", "time goes backwards (" + formatFixed(frames[i].t_s, kTimeDecimals) +
-                                                 " s after " + formatFixed(frames[i - 1].t_s, kTimeDecimals) + " s)"};
+      return Error{"", 0, 0, where + ".t_s",
+                   "time goes backwards (" + formatFixed(frames[i].t_s, kTimeDecimals) + " s after " +
+                       formatFixed(frames[i - 1].t_s, kTimeDecimals) + " s)"};
     }
     for (const BenchMetric& m : benchMetrics()) {
       if (!std::isfinite(m.value(frames[i]))) return Error{"", 0, 0, where + "." + m.name, "not a finite number"};
@@ -48,10 +49,13 @@ Status validateKeyFrames(const std::string& dir, std::span<const BenchKeyFrame> 
     // The report links it by this name, so it has to stay inside the report directory.
     bool escapes = file.empty() || file.is_absolute();
     for (const auto& part : file) escapes = escapes || part == "..";
-    if (escapes) return Error{"", 0, 0, where + ".imageFile", "'" + k.imageFile + "' is not a file name inside the report directory"};
+    if (escapes)
+      return Error{"", 0, 0, where + ".imageFile",
+                   "'" + k.imageFile + "' is not a file name inside the report directory"};
     std::error_code ec;
     const fs::path full = fs::path(dir) / file;
-    if (!fs::is_regular_file(full, ec)) return Error{full.string(), 0, 0, where + ".imageFile", "key-frame image does not exist"};
+    if (!fs::is_regular_file(full, ec))
+      return Error{full.string(), 0, 0, where + ".imageFile", "key-frame image does not exist"};
   }
   return Ok{};
 }
@@ -83,9 +87,14 @@ nlohmann::ordered_json statValue(double v, const BenchMetric& m) {
 std::string summaryJson(const BenchRunInfo& info, std::span<const BenchFrame> frames,
                         std::span<const BenchKeyFrame> keyFrames) {
   using Json = nlohmann::ordered_json;  // keys in the order written: readable, and stable bytes
-  Json run = {{"planet_file", info.planetFile},   {"path_file", info.pathFile},         {"mode", info.mode},
-              {"device", info.device},            {"size", info.size},                  {"grid_cells", info.gridCells},
-              {"command_line", info.commandLine}, {"globe_version", info.globeVersion}};
+  Json run = {{"planet_file", info.planetFile},
+              {"path_file", info.pathFile},
+              {"mode", info.mode},
+              {"device", info.device},
+              {"size", info.size},
+              {"grid_cells", info.gridCells},
+              {"command_line", info.commandLine},
+              {"globe_version", info.globeVersion}};
   Json metrics = Json::object();
   for (const BenchMetric& m : benchMetrics()) {
     const MetricSummary s = summarizeMetric(frames, m);
@@ -99,16 +108,11 @@ std::string summaryJson(const BenchRunInfo& info, std::span<const BenchFrame> fr
   }
   Json keys = Json::array();
   for (const BenchKeyFrame& k : keyFrames) keys.push_back({{"t_s", k.t_s}, {"image_file", k.imageFile}});
-  Json summary = {{"schema", "globe-bench-summary/1"},
-                  {"run", std::move(run)},
-                  {"frame_count", frames.size()},
-                  {"t_first_s", frames.front().t_s},
-                  {"t_last_s", frames.back().t_s},
-                  {"frame_budget_ms", kFrameBudgetMs},
-                  {"jank_ms", jankMs(frames)},
-                  {"frames_over_33ms", framesOverBudget(frames)},
-                  {"percentile_method", "nearest-rank"},
-                  {"metrics", std::move(metrics)},
+  Json summary = {{"schema", "globe-bench-summary/1"},   {"run", std::move(run)},
+                  {"frame_count", frames.size()},        {"t_first_s", frames.front().t_s},
+                  {"t_last_s", frames.back().t_s},       {"frame_budget_ms", kFrameBudgetMs},
+                  {"jank_ms", jankMs(frames)},           {"frames_over_33ms", framesOverBudget(frames)},
+                  {"percentile_method", "nearest-rank"}, {"metrics", std::move(metrics)},
                   {"key_frames", std::move(keys)}};
   // Invalid UTF-8 in a file name or command line would make dump() throw; replace it instead.
   return summary.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";

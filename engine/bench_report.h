@@ -13,26 +13,26 @@ namespace globe {
 
 // One replayed frame.
 struct BenchFrame {
-  uint64_t frame = 0;      // index in the replay, from 0
-  double t_s = 0;          // path time of the frame (seconds)
-  double altitude_m = 0;   // camera height above the ground below it (metres)
+  uint64_t frame = 0;     // index in the replay, from 0
+  double t_s = 0;         // path time of the frame (seconds)
+  double altitude_m = 0;  // camera height above the ground below it (metres)
   FrameStats stats;
 };
 
 // A key-frame image the caller already wrote into the report directory.
 struct BenchKeyFrame {
-  double t_s = 0;          // path time the image shows (seconds)
-  std::string imageFile;   // PNG file name relative to the report directory, e.g. "frame_t07.png"
+  double t_s = 0;         // path time the image shows (seconds)
+  std::string imageFile;  // PNG file name relative to the report directory, e.g. "frame_t07.png"
 };
 
 // How the run was made, echoed into summary.json and the report so a number can be traced back.
 struct BenchRunInfo {
   std::string planetFile;
   std::string pathFile;
-  std::string mode;           // "budgeted" or "converged"
-  std::string device;         // Vulkan device name
-  std::string size;           // "WxH" in pixels
-  uint32_t gridCells = 0;     // node grid (cells per node side)
+  std::string mode;        // "budgeted" or "converged"
+  std::string device;      // Vulkan device name
+  std::string size;        // "WxH" in pixels
+  uint32_t gridCells = 0;  // node grid (cells per node side)
   std::string commandLine;
   std::string globeVersion;
 };

@@ -62,8 +62,9 @@ std::string benchReportHtml(const BenchRunInfo& info, std::span<const BenchFrame
   out += infoRow("path time", formatFixed(duration_s, 2) + " s");
   out += infoRow("jank (Σ max(0, frame_ms − 33.3))", formatFixed(jankMs(frames), 1) + " ms");
   out += infoRow("frames over 33.3 ms", std::to_string(framesOverBudget(frames)));
-  out += "</table>\n<table>\n<tr><th>metric</th><th>unit</th><th>min</th><th>median</th><th>p95</th><th>p99</th>"
-         "<th>max</th><th>mean</th><th>meaning</th></tr>\n";
+  out +=
+      "</table>\n<table>\n<tr><th>metric</th><th>unit</th><th>min</th><th>median</th><th>p95</th><th>p99</th>"
+      "<th>max</th><th>mean</th><th>meaning</th></tr>\n";
   for (const BenchMetric& m : benchMetrics()) {
     const MetricSummary s = summarizeMetric(frames, m);
     out += "<tr><th><code>" + escapeMarkup(m.name) + "</code></th>" + cell(m.unit);
@@ -71,10 +72,11 @@ std::string benchReportHtml(const BenchRunInfo& info, std::span<const BenchFrame
     out += "<td class=\"n\">" + display(s.mean, m, true) + "</td>" + cell(m.description) + "</tr>\n";
   }
   out += "</table>\n";
-  out += "<p>Percentiles are nearest-rank over all frames: p<var>k</var> is the value at rank ⌈<var>k</var>/100 · "
-         "<var>n</var>⌉ of the <var>n</var> sorted values (the median is p50, the lower middle value for even "
-         "<var>n</var>). The same numbers, unrounded, are in <a href=\"summary.json\">summary.json</a>; every "
-         "frame is in <a href=\"frames.csv\">frames.csv</a>.</p>\n";
+  out +=
+      "<p>Percentiles are nearest-rank over all frames: p<var>k</var> is the value at rank ⌈<var>k</var>/100 · "
+      "<var>n</var>⌉ of the <var>n</var> sorted values (the median is p50, the lower middle value for even "
+      "<var>n</var>). The same numbers, unrounded, are in <a href=\"summary.json\">summary.json</a>; every "
+      "frame is in <a href=\"frames.csv\">frames.csv</a>.</p>\n";
 
   out += "<h2>Timeline</h2>\n<p><a href=\"timeline.svg\">timeline.svg</a></p>\n";
   out += "<div class=\"timeline\">\n" + timelineSvg + "</div>\n";

@@ -14,15 +14,16 @@ namespace {
 
 // Layout in SVG user units (pixels at 100 %).
 constexpr double kWidth = 960;
-constexpr double kLeft = 72;    // room for y tick labels
+constexpr double kLeft = 72;  // room for y tick labels
 constexpr double kRight = 16;
 constexpr double kPlotWidth = kWidth - kLeft - kRight;
 constexpr double kTitleHeight = 40;
 constexpr double kPanelHeader = 24;  // panel title and legend
 constexpr double kPlotHeight = 96;
 constexpr double kPanelGap = 10;
-constexpr double kAxisHeight = 40;  // x tick labels and the axis title under the last panel
-constexpr double kCharWidth = 6.2;  // rough width of one 11-px sans-serif character, for legend layout
+constexpr double kAxisHeight = 40;      // x tick labels and the axis title under the last panel
+constexpr double kCharWidth = 6.2;      // rough width of one 11-px sans-serif character, for legend layout
+constexpr double kBoldCharWidth = 7.0;  // the same, bold (panel titles)
 
 struct Series {
   const char* label;
@@ -52,8 +53,7 @@ std::vector<Panel> timelinePanels() {
        {{"nodes_selected", "#1f77b4", [](const BenchFrame& f) { return metricValue("nodes_selected", f); }},
         {"nodes_partial", "#d62728", [](const BenchFrame& f) { return metricValue("nodes_partial", f); }},
         {"draw_calls", "#7f7f7f", [](const BenchFrame& f) { return metricValue("draw_calls", f); }}}},
-      {"Triangles",
-       {{"triangles", "#9467bd", [](const BenchFrame& f) { return metricValue("triangles", f); }}}},
+      {"Triangles", {{"triangles", "#9467bd", [](const BenchFrame& f) { return metricValue("triangles", f); }}}},
       {"Generation per frame",
        {{"gen_dispatched", "#1f77b4", [](const BenchFrame& f) { return metricValue("gen_dispatched", f); }},
         {"gen_completed", "#2ca02c", [](const BenchFrame& f) { return metricValue("gen_completed", f); }},
@@ -61,8 +61,7 @@ std::vector<Panel> timelinePanels() {
       {"Generation in flight and queued",
        {{"gen_in_flight", "#ff7f0e", [](const BenchFrame& f) { return metricValue("gen_in_flight", f); }},
         // Not a CSV column (the column list is fixed by the issue), but it is what makes dispatches wait.
-        {"queue_length", "#8c564b",
-         [](const BenchFrame& f) { return static_cast<double>(f.stats.queue_length); }}}},
+        {"queue_length", "#8c564b", [](const BenchFrame& f) { return static_cast<double>(f.stats.queue_length); }}}},
       {"Resident payload memory (MiB)",
        {{"resident_mib", "#17becf", [](const BenchFrame& f) { return metricValue("resident_mib", f); }}}},
       {"Altitude (m, log scale)",
@@ -87,6 +86,7 @@ int decimalsFor(double step) { return std::max(0, static_cast<int>(-std::floor(s
 
 // Tick label with k/M suffixes so large counts stay short; the step sets the decimals.
 std::string tickLabel(double value, double step) {
+  if (value == 0) return "0";
   if (step >= 1e6) return formatFixed(value / 1e6, decimalsFor(step / 1e6)) + "M";
   if (step >= 1e3) return formatFixed(value / 1e3, decimalsFor(step / 1e3)) + "k";
   return formatFixed(value, decimalsFor(step));
@@ -150,20 +150,22 @@ class PanelWriter {
       for (const BenchFrame& f : frames_) values[s].push_back(panel.series[s].value(f));
     }
     std::string note;
-    const auto y = panel.logScale ? logAxis(values, plotTop, plotBottom) : linearAxis(panel, values, plotTop, plotBottom, note);
+    const auto y =
+        panel.logScale ? logAxis(values, plotTop, plotBottom) : linearAxis(panel, values, plotTop, plotBottom, note);
 
     const std::string clipId = "globe-timeline-clip-" + std::to_string(index);
     out_ += "<clipPath id=\"" + clipId + "\"><rect x=\"" + num(kLeft) + "\" y=\"" + num(plotTop) + "\" width=\"" +
             num(kPlotWidth) + "\" height=\"" + num(kPlotHeight) + "\"/></clipPath>\n";
     verticalGrid(plotTop, plotBottom, labelKeyFrames);
-    if (panel.budgetLine) {
+    for (std::size_t s = 0; s < panel.series.size(); ++s) series(panel.series[s], values[s], y, clipId);
+    if (panel.budgetLine) {  // over the series, and its label on a white halo, so both stay readable
       const double yb = y(kFrameBudgetMs);
       out_ += "<line x1=\"" + num(kLeft) + "\" y1=\"" + num(yb) + "\" x2=\"" + num(kLeft + kPlotWidth) + "\" y2=\"" +
               num(yb) + "\" stroke=\"#d62728\" stroke-width=\"1\" stroke-dasharray=\"6 3\"/>\n";
       out_ += "<text x=\"" + num(kLeft + kPlotWidth - 4) + "\" y=\"" + num(yb - 3) +
-              "\" text-anchor=\"end\" fill=\"#d62728\" font-size=\"10\">33.3 ms (30 fps)</text>\n";
+              "\" text-anchor=\"end\" fill=\"#d62728\" font-size=\"10\" stroke=\"#ffffff\" stroke-width=\"3\" "
+              "paint-order=\"stroke\">33.3 ms (30 fps)</text>\n";
     }
-    for (std::size_t s = 0; s < panel.series.size(); ++s) series(panel.series[s], values[s], y, clipId);
     out_ += "<rect x=\"" + num(kLeft) + "\" y=\"" + num(plotTop) + "\" width=\"" + num(kPlotWidth) + "\" height=\"" +
             num(kPlotHeight) + "\" fill=\"none\" stroke=\"#444\" stroke-width=\"1\"/>\n";
     header(panel, top, note);
@@ -172,8 +174,8 @@ class PanelWriter {
  private:
   using YMap = std::function<double(double)>;
 
-  YMap linearAxis(const Panel& panel, const std::vector<std::vector<double>>& values, double plotTop,
-                  double plotBottom, std::string& note) {
+  YMap linearAxis(const Panel& panel, const std::vector<std::vector<double>>& values, double plotTop, double plotBottom,
+                  std::string& note) {
     // One first-frame shader compile can be 100x a normal frame; scaling the axis to it would flatten
     // everything else, so the axis stops at 1.5 x the largest p99 and says what it clipped.
     double top = 0;
@@ -276,7 +278,7 @@ class PanelWriter {
     const double baseline = top + kPanelHeader - 8;
     out_ += "<text x=\"" + num(kLeft) + "\" y=\"" + num(baseline) + "\" font-weight=\"bold\">" +
             escapeMarkup(panel.title) + "</text>\n";
-    double x = kLeft + (static_cast<double>(std::string(panel.title).size()) + 3) * kCharWidth;
+    double x = kLeft + static_cast<double>(std::string(panel.title).size()) * kBoldCharWidth + 3 * kCharWidth;
     for (const Series& s : panel.series) {
       out_ += "<line x1=\"" + num(x) + "\" y1=\"" + num(baseline - 4) + "\" x2=\"" + num(x + 16) + "\" y2=\"" +
               num(baseline - 4) + "\" stroke=\"" + s.colour + "\" stroke-width=\"2\"/>\n";

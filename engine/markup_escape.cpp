@@ -57,15 +57,29 @@ std::string escapeMarkup(std::string_view text) {
       continue;
     }
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
       case '\t':
       case '\n':
-      case '\r': out += c; break;
-      default: out += (u < 0x20 || u == 0x7F) ? '?' : c; break;
+      case '\r':
+        out += c;
+        break;
+      default:
+        out += (u < 0x20 || u == 0x7F) ? '?' : c;
+        break;
     }
     ++i;
   }
@@ -77,8 +91,8 @@ std::string percentEncodePath(std::string_view path) {
   std::string out;
   for (const char c : path) {
     const auto u = static_cast<uint8_t>(c);
-    const bool unreserved = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
-                            c == '-' || c == '.' || c == '_' || c == '~' || c == '/';
+    const bool unreserved = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' ||
+                            c == '.' || c == '_' || c == '~' || c == '/';
     if (unreserved) {
       out += c;
     } else {

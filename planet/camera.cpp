@@ -59,6 +59,16 @@ Status validatePose(const GeodeticPose& pose, const std::string& field) {
   return Ok{};
 }
 
+glm::dvec3 defaultSunDirection(const glm::dvec3& position_m) {
+  glm::dvec2 ll = latLonFromPosition(position_m);
+  double lat = ll.x * kDeg, lon = ll.y * kDeg;
+  glm::dvec3 up{std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
+  glm::dvec3 east{-std::sin(lon), std::cos(lon), 0.0};
+  glm::dvec3 north = glm::cross(up, east);
+  double towardsEquator = ll.x >= 0 ? -1.0 : 1.0;
+  return glm::normalize(0.5 * east + 0.5 * towardsEquator * north + 1.0 * up);
+}
+
 double horizonPitch_deg(double height_m, double radius_m) {
   // The horizon lies acos(R / (R + h)) below the local horizontal.
   double ratio = radius_m / (radius_m + std::max(height_m, 0.0));

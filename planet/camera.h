@@ -55,6 +55,11 @@ glm::dvec2 latLonFromPosition(const glm::dvec3& position_m);
 // Unit planet-fixed direction of a latitude/longitude (degrees).
 glm::dvec3 directionFromLatLon(double latitude_deg, double longitude_deg);
 
+// A planet-fixed unit direction towards the sun that lights `position_m` from about 45 degrees
+// above its local horizon, from the south-east (north-east in the southern hemisphere): the default
+// light of headless renders and benchmarks, so their views are lit wherever they are.
+glm::dvec3 defaultSunDirection(const glm::dvec3& position_m);
+
 // Pitch (degrees) that looks at the geometric horizon from height h above a sphere of radius R.
 double horizonPitch_deg(double height_m, double radius_m);
 

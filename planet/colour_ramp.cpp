@@ -50,9 +50,9 @@ void appendColourRampErrors(const ColourRamp& ramp, std::vector<Error>& errors) 
     if (!inRange(s.elevation_m, -1e7, 1e7)) {
       errors.push_back(Error{"", 0, 0, p + "elevation_m", "must be within [-1e7, 1e7] m"});
     } else if (i > 0 && !(s.elevation_m > ramp.stops[i - 1].elevation_m)) {
-      errors.push_back(Error{"", 0, 0, p + "elevation_m",
-                             fmt::format("must be greater than the previous stop's ({:g} m)",
-                                         ramp.stops[i - 1].elevation_m)});
+      errors.push_back(
+          Error{"", 0, 0, p + "elevation_m",
+                fmt::format("must be greater than the previous stop's ({:g} m)", ramp.stops[i - 1].elevation_m)});
     }
     checkColour(s.colour, p + "colour", errors);
   }

@@ -16,7 +16,7 @@ namespace globe {
 inline constexpr int kMaxColourStops = GLOBE_MAX_COLOUR_STOPS;
 
 struct ColourRampStop {
-  double elevation_m = 0.0;          // elevation above radius_m, metres, [-1e7, 1e7]
+  double elevation_m = 0.0;         // elevation above radius_m, metres, [-1e7, 1e7]
   glm::vec3 colour = glm::vec3(0);  // linear RGB, each in [0, 1]
 
   bool operator==(const ColourRampStop&) const = default;

@@ -44,14 +44,13 @@ std::string formatPlanetToml(const PlanetDescription& planet) {
                    number(l.gain), number(l.amplitude_m), number(l.offset_m));
     if (l.modulated_by >= 0) {
       fmt::format_to(line, "modulated_by = {}\nmodulation_low_m = {}\nmodulation_high_m = {}\nmodulation_floor = {}\n",
-                     quoted(planet.layers[static_cast<std::size_t>(l.modulated_by)].name),
-                     number(l.modulation_low_m), number(l.modulation_high_m), number(l.modulation_floor));
+                     quoted(planet.layers[static_cast<std::size_t>(l.modulated_by)].name), number(l.modulation_low_m),
+                     number(l.modulation_high_m), number(l.modulation_floor));
     }
   }
   const ColourRamp& ramp = planet.colour_ramp;
   for (const ColourRampStop& s : ramp.stops) {
-    fmt::format_to(line, "\n[[colour_ramp]]\nelevation_m = {}\ncolour = {}\n", number(s.elevation_m),
-                   colour(s.colour));
+    fmt::format_to(line, "\n[[colour_ramp]]\nelevation_m = {}\ncolour = {}\n", number(s.elevation_m), colour(s.colour));
   }
   fmt::format_to(line, "\n[rock]\nslope_deg = {}\nblend_deg = {}\ncolour = {}\n", number(ramp.rock_slope_deg),
                  number(ramp.rock_blend_deg), colour(ramp.rock_colour));

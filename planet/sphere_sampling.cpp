@@ -43,15 +43,16 @@ void parallelFor(std::size_t count, std::size_t chunk, unsigned threads,
     }
   };
   std::vector<std::thread> helpers;
-  const unsigned n = std::max(1U, std::min<unsigned>(threads, static_cast<unsigned>(std::min<std::size_t>(chunks, 256))));
+  const unsigned n =
+      std::max(1U, std::min<unsigned>(threads, static_cast<unsigned>(std::min<std::size_t>(chunks, 256))));
   for (unsigned t = 1; t < n; ++t) helpers.emplace_back(work, false);
   work(true);
   for (std::thread& t : helpers) t.join();
   if (progress) progress(1.0);
 }
 
-void sampleEquirectRows(const ElevationModel& model, std::uint32_t width, std::uint32_t height,
-                        std::uint32_t first_row, std::span<float> out, unsigned threads, const ProgressFn& progress) {
+void sampleEquirectRows(const ElevationModel& model, std::uint32_t width, std::uint32_t height, std::uint32_t first_row,
+                        std::span<float> out, unsigned threads, const ProgressFn& progress) {
   assert(out.size() % width == 0);
   parallelFor(
       out.size(), width, threads,

@@ -33,9 +33,8 @@ void parallelFor(std::size_t count, std::size_t chunk, unsigned threads,
 
 // Elevations (metres, rounded to float) of rows [first_row, first_row + out.size() / width) of a
 // width x height equirectangular map, row-major into `out`.
-void sampleEquirectRows(const ElevationModel& model, std::uint32_t width, std::uint32_t height,
-                        std::uint32_t first_row, std::span<float> out, unsigned threads,
-                        const ProgressFn& progress = {});
+void sampleEquirectRows(const ElevationModel& model, std::uint32_t width, std::uint32_t height, std::uint32_t first_row,
+                        std::span<float> out, unsigned threads, const ProgressFn& progress = {});
 
 struct ElevationStats {
   std::uint64_t samples = 0;

@@ -70,6 +70,11 @@ int runBench(const BenchOptions& o) {
     return usageError({"", 0, 0, "--out", "directory '" + parent.string() + "' does not exist"});
 
   ElevationModel model(*planet);
+  // One sun for the whole flight, lighting the region of the path's first keyframe.
+  settings.style.sunDirection = defaultSunDirection(path->positionAt(path->startTime_s(), [&](const glm::dvec3& d) {
+    return model.radius_m() + model.elevation_m(d);
+  }));
+  settings.style.ramp = planet->colour_ramp;
   vk::Device device(deviceOptions(o.device));
   auto terrain = Terrain::create(device, model, settings);
   if (!terrain) return usageError(terrain.error());

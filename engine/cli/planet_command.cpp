@@ -50,8 +50,7 @@ int runCheck(const std::vector<std::string>& files) {
       continue;
     }
     for (const Error& e : check.errors) std::fprintf(stderr, "%s\n", e.format().c_str());
-    std::fprintf(stderr, "%s: %zu problem%s\n", file.c_str(), check.errors.size(),
-                 check.errors.size() == 1 ? "" : "s");
+    std::fprintf(stderr, "%s: %zu problem%s\n", file.c_str(), check.errors.size(), check.errors.size() == 1 ? "" : "s");
     code = kExitUsage;
   }
   std::fflush(stdout);
@@ -81,8 +80,8 @@ int runStats(const StatsOptions& o) {
   const ElevationRange bounds = model.bounds();
   std::string out;
   auto line = std::back_inserter(out);
-  fmt::format_to(line, "planet {}: radius {} m, sea level {} m, default quality {}\n", planet->name,
-                 planet->radius_m, planet->sea_level_m, qualityPresetName(planet->default_quality));
+  fmt::format_to(line, "planet {}: radius {} m, sea level {} m, default quality {}\n", planet->name, planet->radius_m,
+                 planet->sea_level_m, qualityPresetName(planet->default_quality));
   fmt::format_to(line, "samples: {} uniform directions (Fibonacci sphere), {} threads, {:.2f} s ({:.2f} M/s)\n",
                  s.samples, o.threads, seconds, static_cast<double>(s.samples) / seconds * 1e-6);
   fmt::format_to(line, "elevation: min {:.1f} m, max {:.1f} m, mean {:.1f} m\n", s.min_m, s.max_m, s.mean_m);
@@ -115,7 +114,8 @@ Result<glm::dvec2> parseLatLon(const std::string& text) {
   if (std::sscanf(text.c_str(), "%lf,%lf%c", &lat, &lon, &extra) != 2) {
     return Error{"", 0, 0, "--at", "expected LAT,LON in degrees (for example 27.99,86.93), got '" + text + "'"};
   }
-  if (!std::isfinite(lat) || !std::isfinite(lon)) return Error{"", 0, 0, "--at", "latitude and longitude must be finite"};
+  if (!std::isfinite(lat) || !std::isfinite(lon))
+    return Error{"", 0, 0, "--at", "latitude and longitude must be finite"};
   if (lat < -90.0 || lat > 90.0) return Error{"", 0, 0, "--at", "latitude must be within [-90, 90] degrees"};
   return glm::dvec2(lat, lon);
 }
@@ -172,8 +172,12 @@ void addPlanetCommand(CLI::App& app, Runner& run) {
   auto sample_at = std::make_shared<std::vector<std::string>>();
   CLI::App* sample = planet->add_subcommand("sample", "Print the elevation (metres above radius_m) at points");
   addFileArgument(*sample, *sample_file);
-  sample->add_option("--at", *sample_at, "LAT,LON in degrees; repeat for more points")->required()->allow_extra_args(false);
-  sample->callback([sample_file, sample_at, &run] { run = [sample_file, sample_at] { return runSample(*sample_file, *sample_at); }; });
+  sample->add_option("--at", *sample_at, "LAT,LON in degrees; repeat for more points")
+      ->required()
+      ->allow_extra_args(false);
+  sample->callback([sample_file, sample_at, &run] {
+    run = [sample_file, sample_at] { return runSample(*sample_file, *sample_at); };
+  });
 
   addPlanetExportCommand(*planet, run);
 }

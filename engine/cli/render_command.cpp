@@ -56,11 +56,13 @@ int runRender(const RenderOptions& o) {
     const float clear[4] = {0, 0, 0, 1};
     device.submitAndWait([&](VkCommandBuffer cmd) {
       target.begin(cmd, clear);
-      preview.record(cmd, camera, model.radius_m(), glm::normalize(glm::dvec3(1.0, 0.6, 0.4)));
+      preview.record(cmd, camera, model.radius_m(), defaultSunDirection(camera.position_m));
       target.end(cmd);
     });
     image = toImage(target.readback(), camera);
   } else {
+    settings.style.sunDirection = defaultSunDirection(camera.position_m);
+    settings.style.ramp = planet->colour_ramp;
     auto terrain = Terrain::create(device, model, settings);
     if (!terrain) return usageError(terrain.error());
     HeadlessRenderer renderer(device, {size->width, size->height});
