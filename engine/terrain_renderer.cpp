@@ -1,5 +1,7 @@
 #include "engine/terrain_renderer.h"
 
+#include <meshoptimizer.h>
+
 #include "engine/vk_check.h"
 #include "shaders/include/payload_layout.h"
 #include "shaders/include/terrain_layout.h"
@@ -66,6 +68,12 @@ uint32_t appendGrid(uint32_t n, std::vector<uint32_t>& out) {
       out.insert(out.end(), {g0, g1, s1, g0, s1, s0});
     }
   }
+  // Row-major order re-shades most vertices (a row is longer than a post-transform cache); meshopt
+  // reorders the triangles for cache reuse. Grid and skirts stay separate ranges.
+  const size_t first = out.size() - gridIndices - 24 * size_t(n);
+  const size_t vertices = size_t(side) * side + 4 * size_t(side);
+  meshopt_optimizeVertexCache(&out[first], &out[first], gridIndices, vertices);
+  meshopt_optimizeVertexCache(&out[first + gridIndices], &out[first + gridIndices], 24 * size_t(n), vertices);
   return gridIndices;
 }
 

@@ -77,6 +77,9 @@ Status LodSelector::select(const SelectionCamera& camera, NodeResidency& residen
     out.stats.passes = passes;
     selectOnce(ctx);
   } while (ctx.grew && out.stats.passes < kMaxPasses);
+  // Morph bands also depend on the diagonals observed during the pass (crack-freedom, see
+  // LodRanges); they never change which nodes are selected, so they are written from the final ranges.
+  for (SelectedNode& n : out.nodes) n.morph = ranges_.morph(n.partial ? n.id.level - 1 : n.id.level);
   return Ok{};
 }
 

@@ -14,8 +14,8 @@ PACKAGES=(
   libglm-dev libgeographiclib-dev
   # file formats and command line
   libopenexr-dev libstb-dev libtomlplusplus-dev libcli11-dev libfmt-dev nlohmann-json3-dev
-  # overlay of the windowed viewer
-  libimgui-dev
+  # overlay of the windowed viewer; vertex-cache order of the terrain grid
+  libimgui-dev libmeshoptimizer-dev
   # tests and benchmarks (libnoise is the benchmark's comparison peer)
   libgtest-dev libgmock-dev libbenchmark-dev libnoise-dev xvfb xauth
 )

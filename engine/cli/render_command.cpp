@@ -69,9 +69,9 @@ int runRender(const RenderOptions& o) {
     // Waits until every node the view needs is resident before drawing the frame it writes.
     FrameStats stats = renderer.renderFrame(**terrain, camera, true);
     image = toImage(renderer.readback(), camera);
-    std::printf("%u nodes (%u partial), %llu triangles, %u payloads resident (%.1f MiB)\n", stats.nodes_selected,
+    std::printf("%u nodes (%u partial), %llu triangles, %u payloads resident (%.1f MiB), frame %.1f ms (GPU %.1f ms)\n", stats.nodes_selected,
                 stats.nodes_partial, (unsigned long long)stats.triangles, (*terrain)->pool().stats().residentNodes,
-                stats.resident_mib);
+                stats.resident_mib, stats.frame_ms, stats.gpu_ms);
   }
   if (auto s = writeImage(o.out, image, "--out"); !s) {
     printError(s.error().format());

@@ -5,27 +5,33 @@
 
 #include "colour_ramp.h"
 
-vec3 terrainRampColour(ColourRampParams ramp, float elevation_m, float cosSlope) {
-  uint n = clamp(ramp.stop_count, 1u, uint(GLOBE_MAX_COLOUR_STOPS));
-  ColourStop last = ramp.stops[n - 1u];
-  vec3 base = vec3(ramp.stops[0].r, ramp.stops[0].g, ramp.stops[0].b);
-  if (elevation_m >= last.elevation_m) {
-    base = vec3(last.r, last.g, last.b);
+// GLOBE_RAMP names the ColourRampParams to read (e.g. a storage-buffer member). Not a parameter:
+// passing the 320-byte struct by value copies it per fragment, which made lavapipe ~5x slower.
+#ifndef GLOBE_RAMP
+#error "define GLOBE_RAMP (a ColourRampParams l-value) before including terrain_shading.glsl"
+#endif
+vec3 terrainRampColour(float elevation_m, float cosSlope) {
+  uint n = clamp(GLOBE_RAMP.stop_count, 1u, uint(GLOBE_MAX_COLOUR_STOPS));
+  vec3 base = vec3(GLOBE_RAMP.stops[0].r, GLOBE_RAMP.stops[0].g, GLOBE_RAMP.stops[0].b);
+  if (elevation_m >= GLOBE_RAMP.stops[n - 1u].elevation_m) {
+    base = vec3(GLOBE_RAMP.stops[n - 1u].r, GLOBE_RAMP.stops[n - 1u].g, GLOBE_RAMP.stops[n - 1u].b);
   } else {
     for (uint i = 1u; i < n; ++i) {
-      if (elevation_m < ramp.stops[i].elevation_m) {
-        ColourStop a = ramp.stops[i - 1u], b = ramp.stops[i];
-        float t = clamp((elevation_m - a.elevation_m) / (b.elevation_m - a.elevation_m), 0.0, 1.0);
-        base = mix(vec3(a.r, a.g, a.b), vec3(b.r, b.g, b.b), t);
+      if (elevation_m < GLOBE_RAMP.stops[i].elevation_m) {
+        float e0 = GLOBE_RAMP.stops[i - 1u].elevation_m, e1 = GLOBE_RAMP.stops[i].elevation_m;
+        float t = clamp((elevation_m - e0) / (e1 - e0), 0.0, 1.0);
+        vec3 c0 = vec3(GLOBE_RAMP.stops[i - 1u].r, GLOBE_RAMP.stops[i - 1u].g, GLOBE_RAMP.stops[i - 1u].b);
+        vec3 c1 = vec3(GLOBE_RAMP.stops[i].r, GLOBE_RAMP.stops[i].g, GLOBE_RAMP.stops[i].b);
+        base = mix(c0, c1, t);
         break;
       }
     }
   }
-  float r = clamp((ramp.rock_cos_start - cosSlope) * ramp.rock_inv_range, 0.0, 1.0);
-  vec3 colour = mix(base, vec3(ramp.rock.r, ramp.rock.g, ramp.rock.b), r * r * (3.0 - 2.0 * r));
-  if (ramp.snow_enabled != 0u && cosSlope >= ramp.snow_cos_min) {
-    float s = clamp((elevation_m - ramp.snow_elevation_m) * ramp.snow_inv_blend, 0.0, 1.0);
-    colour = mix(colour, vec3(ramp.snow.r, ramp.snow.g, ramp.snow.b), s);
+  float r = clamp((GLOBE_RAMP.rock_cos_start - cosSlope) * GLOBE_RAMP.rock_inv_range, 0.0, 1.0);
+  vec3 colour = mix(base, vec3(GLOBE_RAMP.rock.r, GLOBE_RAMP.rock.g, GLOBE_RAMP.rock.b), r * r * (3.0 - 2.0 * r));
+  if (GLOBE_RAMP.snow_enabled != 0u && cosSlope >= GLOBE_RAMP.snow_cos_min) {
+    float s = clamp((elevation_m - GLOBE_RAMP.snow_elevation_m) * GLOBE_RAMP.snow_inv_blend, 0.0, 1.0);
+    colour = mix(colour, vec3(GLOBE_RAMP.snow.r, GLOBE_RAMP.snow.g, GLOBE_RAMP.snow.b), s);
   }
   return colour;
 }

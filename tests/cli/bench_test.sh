@@ -45,7 +45,7 @@ bad() {  # bad NAME CONTENT PATTERN
   [[ ! -e "$WORK/out-$1" ]] || fail "$1: wrote $WORK/out-$1"
 }
 H='t_s lat_deg lon_deg height_m heading_deg pitch_deg roll_deg\n'
-bad empty "" "empty.path: .*"
+bad empty "" "empty.path:1: empty camera path"
 bad badnumber "${H}0 1 2 3 4 5 6\n1 x 2 3 4 5 6\n" "badnumber.path:3: "
 bad time "${H}0 1 2 3 4 5 6\n0 1 2 3 4 5 6\n" "time.path:3: "
 bad lat "${H}0 1 2 3 4 5 6\n1 91 2 3 4 5 6\n" "lat.path:3: "

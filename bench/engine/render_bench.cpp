@@ -1,0 +1,90 @@
+// Frame time of the terrain at the five standard cameras (orbit, 100 km, 10 km, 1 km, 2 m), 1280x720,
+// converged (every payload resident: render cost alone), with triangles and draw calls per frame.
+//
+//   build/release/bench/engine_bench --benchmark_filter=TerrainFrame
+// Knobs: GLOBE_BENCH_GRID (cells per node side), GLOBE_BENCH_RANGE (LOD distance multiplier).
+#include "engine/headless_renderer.h"
+#include "planet/planet_file.h"
+
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace globe {
+namespace {
+
+vk::Device& device() {
+  static vk::Device d([] {
+    vk::DeviceOptions o;
+    o.deviceName = vk::deviceNameFromEnvironment();
+    return o;
+  }());
+  return d;
+}
+
+const PlanetDescription& planet() {
+  static const PlanetDescription p = [] {
+    auto r = loadPlanetFile(std::string(GLOBE_SOURCE_DIR) + "/assets/planets/earthlike.toml");
+    if (!r.ok()) {
+      std::fprintf(stderr, "%s\n", r.error().format().c_str());
+      std::abort();
+    }
+    return *r;
+  }();
+  return p;
+}
+
+// The standard cameras: over the earthlike planet's mountains, looking towards the horizon.
+GeodeticPose standardCamera(int index) {
+  switch (index) {
+    case 0: return {20.0, -100.0, 2.0e7, 0, -90, 0};     // orbit: whole planet
+    case 1: return {22.0, -99.0, 1.0e5, 60, -30, 0};      // 100 km
+    case 2: return {22.0, -98.8, 1.0e4, 60, -15, 0};      // 10 km
+    case 3: return {22.05, -98.4, 1.0e3, 60, -8, 0};      // 1 km
+    default: return {22.1, -98.3, 2.0, 60, -2, 0};        // 2 m
+  }
+}
+
+void BM_TerrainFrame(benchmark::State& state) {
+  const int index = int(state.range(0));
+  static const ElevationModel model(planet());
+  TerrainSettings settings;
+  if (const char* g = std::getenv("GLOBE_BENCH_GRID")) settings.gridCells = uint32_t(std::atoi(g));
+  if (const char* r = std::getenv("GLOBE_BENCH_RANGE")) settings.ranges.distanceMultiplier = std::atof(r);
+  GeodeticPose pose = standardCamera(index);
+  glm::dvec3 down = directionFromLatLon(pose.latitude_deg, pose.longitude_deg);
+  Camera camera = cameraFromPose(pose, model.radius_m() + model.elevation_m(down), model.radius_m(), 1280.0 / 720.0);
+  settings.style.sunDirection = defaultSunDirection(camera.position_m);
+  auto terrain = Terrain::create(device(), model, settings);
+  if (!terrain) {
+    state.SkipWithError(terrain.error().format().c_str());
+    return;
+  }
+  HeadlessRenderer renderer(device(), {1280, 720});
+  FrameStats stats = renderer.renderFrame(**terrain, camera, true);  // converge + warm-up
+  double gpu = 0;
+  for (auto _ : state) {
+    stats = renderer.renderFrame(**terrain, camera, true);
+    state.SetIterationTime(stats.frame_ms * 1e-3);
+    gpu += stats.gpu_ms;
+  }
+  state.counters["gpu_ms"] = gpu / double(state.iterations());
+  state.counters["select_ms"] = stats.select_ms;
+  state.counters["nodes"] = stats.nodes_selected;
+  state.counters["triangles"] = double(stats.triangles);
+  state.counters["draw_calls"] = stats.draw_calls;
+  state.counters["resident_MiB"] = stats.resident_mib;
+  state.counters["grid"] = settings.gridCells;
+}
+BENCHMARK(BM_TerrainFrame)
+    ->ArgName("camera")  // 0 orbit, 1 100 km, 2 10 km, 3 1 km, 4 2 m
+    ->DenseRange(0, 4)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(1.0);
+
+}  // namespace
+}  // namespace globe
