@@ -7,9 +7,16 @@
 
 namespace globe::vk {
 
-UniqueDescriptorSetLayout storageBufferSetLayout(Device& device, uint32_t count, VkShaderStageFlags stages) {
+namespace {
+VkDescriptorType bufferType(uint32_t binding, uint32_t uniformMask) {
+  return (uniformMask >> binding) & 1u ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+}
+}  // namespace
+
+UniqueDescriptorSetLayout storageBufferSetLayout(Device& device, uint32_t count, VkShaderStageFlags stages,
+                                                 uint32_t uniformMask) {
   std::vector<VkDescriptorSetLayoutBinding> bindings(count);
-  for (uint32_t i = 0; i < count; ++i) bindings[i] = {i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr};
+  for (uint32_t i = 0; i < count; ++i) bindings[i] = {i, bufferType(i, uniformMask), 1, stages, nullptr};
   VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   info.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
   info.bindingCount = count;
@@ -20,7 +27,8 @@ UniqueDescriptorSetLayout storageBufferSetLayout(Device& device, uint32_t count,
 }
 
 void pushStorageBuffers(PFN_vkCmdPushDescriptorSetKHR push, VkCommandBuffer cmd, VkPipelineBindPoint bindPoint,
-                        VkPipelineLayout layout, std::initializer_list<VkDescriptorBufferInfo> buffers) {
+                        VkPipelineLayout layout, std::initializer_list<VkDescriptorBufferInfo> buffers,
+                        uint32_t uniformMask) {
   std::vector<VkWriteDescriptorSet> writes;
   writes.reserve(buffers.size());
   uint32_t binding = 0;
@@ -28,20 +36,20 @@ void pushStorageBuffers(PFN_vkCmdPushDescriptorSetKHR push, VkCommandBuffer cmd,
     VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     w.dstBinding = binding++;
     w.descriptorCount = 1;
-    w.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    w.descriptorType = bufferType(w.dstBinding, uniformMask);
     w.pBufferInfo = &b;
     writes.push_back(w);
   }
   push(cmd, bindPoint, layout, 0, static_cast<uint32_t>(writes.size()), writes.data());
 }
 
-ComputePipeline::ComputePipeline(Device& device, const std::string& shader, uint32_t storageBuffers,
-                                 uint32_t pushConstantBytes)
-    : device_(device) {
+ComputePipeline::ComputePipeline(Device& device, const std::string& shader, uint32_t buffers,
+                                 uint32_t pushConstantBytes, uint32_t uniformMask)
+    : device_(device), uniformMask_(uniformMask) {
   pushDescriptorSet_ =
       reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(vkGetDeviceProcAddr(device.device(), "vkCmdPushDescriptorSetKHR"));
   if (!pushDescriptorSet_) throw std::runtime_error("vkCmdPushDescriptorSetKHR is not available");
-  setLayout_ = storageBufferSetLayout(device, storageBuffers, VK_SHADER_STAGE_COMPUTE_BIT);
+  setLayout_ = storageBufferSetLayout(device, buffers, VK_SHADER_STAGE_COMPUTE_BIT, uniformMask);
 
   VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes};
   VkDescriptorSetLayout setLayout = setLayout_;
@@ -69,7 +77,7 @@ ComputePipeline::ComputePipeline(Device& device, const std::string& shader, uint
 void ComputePipeline::bind(VkCommandBuffer cmd, std::initializer_list<VkDescriptorBufferInfo> buffers,
                            const void* pushConstants, uint32_t pushConstantBytes) const {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
-  pushStorageBuffers(pushDescriptorSet_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, buffers);
+  pushStorageBuffers(pushDescriptorSet_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, buffers, uniformMask_);
   if (pushConstantBytes)
     vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes, pushConstants);
 }

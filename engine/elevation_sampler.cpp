@@ -1,15 +1,19 @@
 #include "engine/elevation_sampler.h"
 
+#include "engine/vk_check.h"
+
+#include <array>
 #include <cassert>
 #include <cstring>
+#include <stdexcept>
 
 namespace globe {
 
 ElevationSampler::ElevationSampler(vk::Device& device, const gpu::ElevationParams& params, uint32_t capacity)
     : device_(device),
       capacity_(capacity),
-      pipeline_(device, "elevation_samples.comp", 3, sizeof(uint32_t)),
-      params_(device, sizeof(gpu::ElevationParams), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::HostVisible,
+      pipeline_(device, "elevation_samples.comp", 3, sizeof(uint32_t), /*uniformMask=*/1u),
+      params_(device, sizeof(gpu::ElevationParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::HostVisible,
               "elevation params"),
       directions_(device, VkDeviceSize(capacity) * 32, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                   vk::MemoryUse::HostVisible, "sample directions"),

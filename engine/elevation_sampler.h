@@ -1,7 +1,8 @@
 #pragma once
 // Evaluates the elevation function on the GPU, in double, at many directions at once. Used to
 // test the shader against the CPU reference and to measure samples per second; terrain payloads
-// use the same include (shaders/include/elevation.glsl) from their own kernel.
+// use the same include (shaders/include/elevation.glsl) from their own kernel. The parameters are
+// bound as a uniform buffer (binding 0), the directions and heights as storage buffers.
 #include "engine/compute_pipeline.h"
 #include "planet/elevation.h"
 

@@ -16,8 +16,8 @@ GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationMode
       model_(model),
       cells_(cells),
       maxJobs_(std::min<uint32_t>(maxJobsPerSubmit, GLOBE_PAYLOAD_MAX_BATCH)),
-      pipeline_(device, "payload_generate.comp", 6, 2 * sizeof(uint32_t)),
-      elevation_(device, sizeof(gpu::ElevationParams), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+      pipeline_(device, "payload_generate.comp", 6, 2 * sizeof(uint32_t), /*uniformMask=*/1u),
+      elevation_(device, sizeof(gpu::ElevationParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                  vk::MemoryUse::HostVisible, "elevation params"),
       faces_(device, 30 * sizeof(FaceCornersGpu), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::HostVisible,
              "face corners") {

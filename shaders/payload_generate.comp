@@ -14,7 +14,8 @@
 
 layout(local_size_x = GLOBE_PAYLOAD_WORKGROUP) in;
 
-layout(std430, binding = 0) readonly buffer Elevation { ElevationParams elevation; };
+// A uniform block: every invocation reads all of it (see engine/compute_pipeline.h).
+layout(std140, binding = 0) uniform Elevation { ElevationParams elevation; };
 layout(std430, binding = 1) readonly buffer Faces { FaceCorners faces[30]; };
 layout(std430, binding = 2) readonly buffer Jobs { PayloadJob jobs[]; };
 layout(std430, binding = 3) writeonly buffer Payloads { vec4 payloads[]; };

@@ -124,6 +124,19 @@ double globeElevation(dvec3 unit_direction) {
     uint seed = GLOBE_ELEVATION_PARAMS.layers[l].seed;
     uint octaves = GLOBE_ELEVATION_PARAMS.layers[l].octaves;
     uint kind = GLOBE_ELEVATION_PARAMS.layers[l].kind;
+    // Scale first, octaves skipped where it is exactly 0: bit-identical, see elevation.cpp.
+    int modulator = GLOBE_ELEVATION_PARAMS.layers[l].modulator;
+    precise double scale = 1.0LF;
+    if (modulator >= 0) {
+      precise double low = GLOBE_ELEVATION_PARAMS.layers[l].modulation_low_m;
+      precise double inv_range = GLOBE_ELEVATION_PARAMS.layers[l].modulation_inv_range;
+      precise double floor_scale = GLOBE_ELEVATION_PARAMS.layers[l].modulation_floor;
+      precise double m = (values[modulator] - low) * inv_range;
+      m = min(max(m, 0.0LF), 1.0LF);
+      precise double s = m * m * (3.0LF - 2.0LF * m);
+      scale = floor_scale + (1.0LF - floor_scale) * s;
+    }
+    if (scale == 0.0LF) octaves = 0u;
     precise double sum = 0.0LF;
     for (uint o = 0u; o < octaves; ++o) {
       precise double n = globeGradientNoise(px * frequency, py * frequency, pz * frequency, seed);
@@ -139,17 +152,7 @@ double globeElevation(dvec3 unit_direction) {
       amplitude = amplitude * gain;
       seed = seed + 0x9e3779b9u;
     }
-    int modulator = GLOBE_ELEVATION_PARAMS.layers[l].modulator;
-    if (modulator >= 0) {
-      precise double low = GLOBE_ELEVATION_PARAMS.layers[l].modulation_low_m;
-      precise double inv_range = GLOBE_ELEVATION_PARAMS.layers[l].modulation_inv_range;
-      precise double floor_scale = GLOBE_ELEVATION_PARAMS.layers[l].modulation_floor;
-      precise double m = (values[modulator] - low) * inv_range;
-      m = min(max(m, 0.0LF), 1.0LF);
-      precise double s = m * m * (3.0LF - 2.0LF * m);
-      precise double scale = floor_scale + (1.0LF - floor_scale) * s;
-      sum = sum * scale;
-    }
+    if (modulator >= 0) sum = sum * scale;
     precise double value = sum + GLOBE_ELEVATION_PARAMS.layers[l].offset_m;
     values[l] = value;
     total = total + value;
