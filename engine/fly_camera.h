@@ -8,8 +8,9 @@
 
 namespace globe {
 
-// Radius (metres from the planet centre) of the ground below unit direction `direction`. For now
-// the reference sphere, 6371 km; the elevation model's CPU height query replaces it.
+// Radius (metres from the planet centre) of the ground below unit direction `direction` for a
+// camera without terrain: the 6371 km reference sphere. The viewer passes the planet's CPU
+// reference height instead (ViewerScene::groundRadius).
 double groundRadiusBelow(const glm::dvec3& direction);
 
 // One frame's control input.

@@ -11,6 +11,7 @@ struct InputEvent {
     MouseButton,  // `code` is a GLFW_MOUSE_BUTTON_* value
     MouseMove,    // cursor position (x, y) in window pixels, origin top-left
     Resize,       // request a window size (x, y) in pixels (scripts only)
+    WaitReload,   // hold the frame loop until the planet file changes (scripts only: live-reload tests)
   };
   Type type = Type::Key;
   int code = 0;

@@ -114,8 +114,12 @@ Result<InputScript> parseInputScript(const std::string& text, const std::string&
           e.event.y != std::floor(e.event.y))
         return fail("expected 'FRAME RESIZE W H' with whole W, H within [16, 16384] pixels");
       e.event.type = InputEvent::Type::Resize;
+    } else if (verb == "WAIT") {
+      if (w.size() != 3 || upper(w[2]) != "RELOAD") return fail("expected 'FRAME WAIT RELOAD'");
+      e.event.type = InputEvent::Type::WaitReload;
     } else {
-      return fail("unknown event '" + (w.size() > 1 ? w[1] : std::string()) + "' (expected KEY, MOUSE or RESIZE)");
+      return fail("unknown event '" + (w.size() > 1 ? w[1] : std::string()) +
+                  "' (expected KEY, MOUSE, RESIZE or WAIT)");
     }
     script.events.push_back(e);
   }

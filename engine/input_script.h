@@ -7,6 +7,7 @@
 //   FRAME MOUSE MOVE X Y    cursor position in window pixels (origin top-left)
 //   FRAME MOUSE LEFT|RIGHT|MIDDLE down|up
 //   FRAME RESIZE W H        asks the window system for a new window size (pixels)
+//   FRAME WAIT RELOAD       holds the frame loop until the planet file changes (live-reload tests)
 //
 // FRAME is the 0-based frame number.
 #include "engine/input_event.h"

@@ -157,7 +157,10 @@ void Overlay::build(const OverlayView& v) {
   if (ImGui::Begin("globe", nullptr, flags)) {
     const FrameStats& s = v.stats;
     double fps = s.frame_ms > 0 ? 1000.0 / s.frame_ms : 0.0;
-    ImGui::Text("frame %.2f ms (%.0f fps)  select %.2f ms  gpu %.2f ms", s.frame_ms, fps, s.select_ms, s.gpu_ms);
+    if (s.gpu_ms > 0)
+      ImGui::Text("frame %.2f ms (%.0f fps)  select %.2f ms  gpu %.2f ms", s.frame_ms, fps, s.select_ms, s.gpu_ms);
+    else  // not measured
+      ImGui::Text("frame %.2f ms (%.0f fps)  select %.2f ms", s.frame_ms, fps, s.select_ms);
     ImGui::Text("altitude %s  lat %.5f  lon %.5f", formatDistance(v.altitude_m).c_str(), v.latitude_deg,
                 v.longitude_deg);
     ImGui::Text("speed %s/s", formatDistance(v.speed_mps).c_str());
@@ -166,9 +169,16 @@ void Overlay::build(const OverlayView& v) {
     ImGui::Text("generation: queue %u  dispatched %u  in flight %u  done %u", s.queue_length, s.gen_dispatched,
                 s.gen_in_flight, s.gen_completed);
     ImGui::Text("memory %.1f MiB resident  evicted %u", s.resident_mib, s.evicted);
-    ImGui::TextDisabled("%s", v.deviceName.c_str());
-    ImGui::TextDisabled("F1/L grid %s | F12/P screenshot | Esc quit", v.debugView ? "on" : "off");
+    ImGui::TextDisabled("%s | %s", v.planet.c_str(), v.deviceName.c_str());
+    ImGui::TextDisabled("F1/L view: %s | F12/P screenshot | R record path | Esc quit", v.debugView.c_str());
+    if (!v.recording.empty()) ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "%s", v.recording.c_str());
     if (!v.message.empty()) ImGui::TextUnformatted(v.message.c_str());
+    if (!v.errors.empty()) {
+      // Live reload kept the last good planet: say so, then every error as the loader wrote it.
+      const ImVec4 red(1.0f, 0.45f, 0.4f, 1.0f);
+      ImGui::TextColored(red, "planet file has %zu error(s); showing the last good planet:", v.errors.size());
+      for (const std::string& e : v.errors) ImGui::TextColored(red, "%s", e.c_str());
+    }
   }
   ImGui::End();
   ImGui::Render();

@@ -27,10 +27,13 @@ struct OverlayView {
   double altitude_m = 0;  // camera height above the ground below it
   double latitude_deg = 0;
   double longitude_deg = 0;
-  double speed_mps = 0;    // fly speed at this altitude (metres per second)
-  bool debugView = false;  // F1/L toggle state
+  double speed_mps = 0;   // fly speed at this altitude (metres per second)
+  std::string debugView;  // F1/L state: "shaded", "LOD colours", "wireframe" (sphere: "grid"/"sphere")
   std::string deviceName;
-  std::string message;  // e.g. the last screenshot written
+  std::string planet;                // planet name and file
+  std::string recording;             // path recording state; empty when not recording
+  std::string message;               // e.g. the last screenshot or path written
+  std::vector<std::string> errors;   // the planet file's errors (live reload), one per line
 };
 
 class Overlay {

@@ -7,12 +7,13 @@
 #include "engine/image_io.h"
 #include "engine/offscreen_target.h"
 #include "engine/overlay.h"
+#include "engine/path_recorder.h"
 #include "engine/render_output.h"
-#include "engine/sphere_grid.h"
-#include "engine/sphere_preview.h"
 #include "engine/swapchain.h"
 #include "engine/vk_check.h"
 #include "engine/window.h"
+#include "planet/camera_orientation.h"
+#include "planet/camera_path_file.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -20,6 +21,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <thread>
 #include <unordered_set>
 
 namespace globe {
@@ -28,6 +30,7 @@ namespace {
 
 constexpr double kFixedStep_s = 1.0 / 60.0;
 constexpr float kSpaceColour[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+constexpr int kMaxReloadWait_s = 60;  // a script's WAIT RELOAD gives up after this
 
 // Keyboard and mouse state built from the event stream (window and script alike).
 struct InputState {
@@ -41,6 +44,19 @@ struct InputState {
   double axis(int positive, int negative) const { return (down(positive) ? 1.0 : 0.0) - (down(negative) ? 1.0 : 0.0); }
 };
 
+// Lines on stdout are how scripted runs (tests) follow the viewer: flush each one.
+void printLine(const std::string& line) {
+  std::fputs((line + "\n").c_str(), stdout);
+  std::fflush(stdout);
+}
+
+std::unique_ptr<ViewerScene> makeScene(vk::Device& device, ViewerSceneOptions options) {
+  auto scene = ViewerScene::create(device, std::move(options));
+  // The command validated the settings and the planet; what is left is a programming error.
+  if (!scene) throw std::runtime_error(scene.error().format());
+  return std::move(*scene);
+}
+
 }  // namespace
 
 struct Viewer::State {
@@ -51,35 +67,43 @@ struct Viewer::State {
         swapchain(d, w.framebufferExtent(), options.vsync),
         ring(d),
         target(std::make_unique<vk::OffscreenTarget>(d, swapchain.extent())),
-        preview(d),
-        grid(d),
+        scene(makeScene(d, options.scene)),
         overlay(std::make_unique<Overlay>(d, w, swapchain)),
-        camera(options.pose, options.radius_m) {}
+        // The scene outlives the camera (declared earlier), and is never replaced: a reload
+        // swaps the planet inside it, so this query always sees the current ground.
+        camera(options.pose, scene->radius_m(), [this](const glm::dvec3& dir) { return scene->groundRadius(dir); }) {}
 
   void handle(const InputEvent& e);
   bool recreateSwapchain();
   void renderFrame(uint32_t image, VkCommandBuffer cmd, const Camera& cam);
   Status saveScreenshot(const std::string& path, const Camera& cam);
+  void reportReload(const ReloadOutcome& outcome);
+  GeodeticPose currentPose(const Camera& cam) const;
+  void toggleRecording(const Camera& cam);
+  void stopRecording();
+  void waitForReload();
 
   Window& window;
   vk::Device& device;
   ViewerOptions options;
-  vk::DeferredReleaseQueue releases;  // first member: destroyed last, after everything it may hold
+  vk::DeferredReleaseQueue releases;  // destroyed after everything below that it may hold
   vk::Swapchain swapchain;
   vk::FrameRing ring;
   std::unique_ptr<vk::OffscreenTarget> target;  // swapchain-sized HDR colour + reversed-Z depth
-  SpherePreview preview;
-  SphereGrid grid;
+  std::unique_ptr<ViewerScene> scene;
   std::unique_ptr<Overlay> overlay;
   FlyCamera camera;
+  PathRecorder recorder;
 
   InputState input;
   uint64_t frame = 0;  // frames submitted so far = number of the next frame
   bool quit = false;
-  bool debugView = false;
   bool screenshotRequested = false;
+  bool recordToggleRequested = false;
+  bool waitForReloadRequested = false;
   bool swapchainStale = false;
-  std::string message;  // shown in the overlay
+  std::string message;                   // shown in the overlay
+  std::vector<std::string> planetErrors;  // of the planet file on disk, while it is invalid
   FrameStats stats;
 };
 
@@ -90,7 +114,8 @@ void Viewer::State::handle(const InputEvent& e) {
         input.keysDown.insert(e.code);
         if (e.code == GLFW_KEY_ESCAPE) quit = true;
         if (e.code == GLFW_KEY_F12 || e.code == GLFW_KEY_P) screenshotRequested = true;
-        if (e.code == GLFW_KEY_F1 || e.code == GLFW_KEY_L) debugView = !debugView;
+        if (e.code == GLFW_KEY_F1 || e.code == GLFW_KEY_L) scene->cycleDebugView();
+        if (e.code == GLFW_KEY_R) recordToggleRequested = true;
       } else {
         input.keysDown.erase(e.code);
       }
@@ -111,7 +136,27 @@ void Viewer::State::handle(const InputEvent& e) {
     case InputEvent::Type::Resize:
       window.setSize(uint32_t(e.x), uint32_t(e.y));
       break;
+    case InputEvent::Type::WaitReload:
+      waitForReloadRequested = true;
+      break;
   }
+}
+
+void Viewer::State::waitForReload() {
+  // Scripts only: a test edits the planet file while the loop stands still, so the frame numbers
+  // of its screenshots do not depend on how fast this machine renders.
+  using Clock = std::chrono::steady_clock;
+  printLine("waiting for the planet file to change (frame " + std::to_string(frame) + ")");
+  Clock::time_point deadline = Clock::now() + std::chrono::seconds(kMaxReloadWait_s);
+  while (Clock::now() < deadline && !quit) {
+    for (const InputEvent& e : window.pollEvents()) handle(e);
+    if (auto outcome = scene->pollReload(Clock::now())) {
+      reportReload(*outcome);
+      return;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  std::fprintf(stderr, "globe: warning: the planet file did not change within %d s; going on\n", kMaxReloadWait_s);
 }
 
 bool Viewer::State::recreateSwapchain() {
@@ -135,17 +180,11 @@ void Viewer::State::renderFrame(uint32_t image, VkCommandBuffer cmd, const Camer
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   GLOBE_VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
 
-  // Scene: HDR colour and reversed-Z depth (the terrain renderer draws here too).
-  const glm::dvec3 sun = glm::normalize(glm::dvec3(1.0, 0.6, 0.4));
+  // Scene: HDR colour and reversed-Z depth. The terrain's per-frame buffers are indexed by
+  // frame % 2, the FrameRing slot whose fence begin() waited for.
   target->begin(cmd, kSpaceColour);
-  preview.record(cmd, cam, options.radius_m, sun);
-  uint32_t draws = 1;
-  if (debugView) {
-    grid.record(cmd, cam, options.radius_m);
-    ++draws;
-  }
+  scene->record(cmd, cam, uint32_t(frame % vk::kFramesInFlight));
   target->end(cmd);  // colour is now TRANSFER_SRC_OPTIMAL
-  stats.draw_calls = draws;
 
   // Blit into the swapchain image; the sRGB format encodes gamma and clamps HDR to [0, 1].
   VkImage swapImage = swapchain.image(image);
@@ -173,6 +212,63 @@ Status Viewer::State::saveScreenshot(const std::string& path, const Camera& cam)
   return writeImage(path, image, "screenshot");
 }
 
+void Viewer::State::reportReload(const ReloadOutcome& outcome) {
+  const std::string& file = scene->planetPath();
+  std::string when = " (frame " + std::to_string(frame) + ")";
+  if (outcome.errors.empty()) {
+    planetErrors.clear();
+    if (outcome.reloaded) {
+      message = "reloaded " + file;
+      printLine("planet reloaded: " + file + when);
+    } else {
+      printLine("planet unchanged: " + file + when);
+    }
+    return;
+  }
+  // Once per change of the file: the overlay keeps showing them until the next valid save.
+  planetErrors.clear();
+  std::fprintf(stderr, "globe: warning: %s is invalid (%zu error(s)); keeping the last good planet\n", file.c_str(),
+               outcome.errors.size());
+  for (const Error& e : outcome.errors) {
+    planetErrors.push_back(e.format());
+    std::fprintf(stderr, "globe: error: %s\n", planetErrors.back().c_str());
+  }
+  std::fflush(stderr);
+  printLine("planet reload failed: " + file + when);
+}
+
+GeodeticPose Viewer::State::currentPose(const Camera& cam) const {
+  return poseFromCamera(cam, scene->groundRadius(glm::normalize(cam.position_m)));
+}
+
+void Viewer::State::toggleRecording(const Camera& cam) {
+  if (recorder.recording()) {
+    stopRecording();
+    return;
+  }
+  recorder.start(currentPose(cam));
+  printLine("recording path (frame " + std::to_string(frame) + ")");
+}
+
+void Viewer::State::stopRecording() {
+  auto path = recorder.stop();
+  if (!path) {
+    message = "path not saved: " + path.error().format();
+    std::fprintf(stderr, "globe: warning: %s\n", message.c_str());
+    return;
+  }
+  std::string file = options.recordFile.empty() ? timestampedPathFile(options.recordDirectory) : options.recordFile;
+  if (Status st = saveCameraPath(file, *path); !st) {
+    message = "path not saved: " + st.error().format();
+    std::fprintf(stderr, "globe: warning: %s\n", message.c_str());
+    return;
+  }
+  char text[96];
+  std::snprintf(text, sizeof text, " (%zu keyframes, %.2f s)", path->keyframes().size(), path->duration_s());
+  message = "saved path " + file + text;
+  printLine("path " + file + text + " (frame " + std::to_string(frame) + ")");
+}
+
 Viewer::Viewer(Window& window, vk::Device& device, ViewerOptions options)
     : s_(std::make_unique<State>(window, device, std::move(options))) {}
 
@@ -193,13 +289,19 @@ Status Viewer::run() {
     // Input: the window's events, then the script's for this frame.
     for (const InputEvent& e : s.window.pollEvents()) s.handle(e);
     for (const InputEvent& e : s.options.script.take(s.frame)) s.handle(e);
+    if (s.waitForReloadRequested) {
+      s.waitForReloadRequested = false;
+      s.waitForReload();
+    }
     if (s.window.shouldClose()) s.quit = true;
     if (s.quit) break;
 
     Clock::time_point now = Clock::now();
     double wall_s = std::chrono::duration<double>(now - previous).count();
     previous = now;
-    s.stats.frame_ms = wall_s * 1000.0;
+
+    // Live reload, before this frame uses the terrain (a reload may replace it).
+    if (auto outcome = s.scene->pollReload(now)) s.reportReload(*outcome);
 
     vk::FrameRing::Slot slot = s.ring.begin(s.frame);
     if (s.frame >= vk::kFramesInFlight) s.releases.collect(s.frame - vk::kFramesInFlight);
@@ -225,23 +327,47 @@ Status Viewer::run() {
     controls.turnRight_px = s.input.dragX_px;
     controls.turnUp_px = -s.input.dragY_px;
     s.input.dragX_px = s.input.dragY_px = 0;
-    s.camera.update(controls, s.options.fixedStep ? kFixedStep_s : std::min(wall_s, 0.25));
+    double step_s = s.options.fixedStep ? kFixedStep_s : std::min(wall_s, 0.25);
+    s.camera.update(controls, step_s);
     VkExtent2D extent = s.target->extent();
     Camera cam = s.camera.camera(double(extent.width) / double(extent.height));
 
+    // Path recording in camera time: what the camera advanced by is what the replay advances by.
+    if (s.recordToggleRequested) {
+      s.recordToggleRequested = false;
+      s.toggleRecording(cam);
+    } else if (s.recorder.recording()) {
+      s.recorder.advance(step_s, s.currentPose(cam));
+    }
+
+    // FrameRing::begin waited for frame - kFramesInFlight. The terrain counts frames from
+    // kFramesInFlight, so its completed frame (its own numbering) is `s.frame` and never underflows:
+    // terrain frames below kFramesInFlight never existed, so nothing they "used" can be in flight.
+    s.scene->update(s.frame + vk::kFramesInFlight, cam, s.frame);
+
     OverlayView view;
-    view.stats = s.stats;
+    view.stats = s.stats;  // the previous frame's complete statistics (draws are counted in record)
+    view.stats.frame_ms = wall_s * 1000.0;
     view.altitude_m = s.camera.altitude_m();
     glm::dvec2 latLon = s.camera.latLon_deg();
     view.latitude_deg = latLon.x;
     view.longitude_deg = latLon.y;
     view.speed_mps = s.camera.speed_mps();
-    view.debugView = s.debugView;
+    view.debugView = s.scene->debugViewName();
     view.deviceName = s.device.name();
+    view.planet = s.scene->planet().name + " (" + s.scene->planetPath() + ")";
+    if (s.recorder.recording()) {
+      char text[96];
+      std::snprintf(text, sizeof text, "recording... %.1f s, %zu keyframes (R stops)", s.recorder.elapsed_s(),
+                    s.recorder.keyframeCount());
+      view.recording = text;
+    }
     view.message = s.message;
+    view.errors = s.planetErrors;
     s.overlay->build(view);
 
     s.renderFrame(*image, slot.cmd, cam);
+    s.stats = s.scene->stats();
     s.ring.submit(s.frame, s.swapchain.renderFinished(*image));
     if (!s.swapchain.present(*image)) s.swapchainStale = true;
     lastCamera = cam;
@@ -250,11 +376,13 @@ Status Viewer::run() {
     if (s.screenshotRequested) {
       s.screenshotRequested = false;
       char name[64];
-      std::snprintf(name, sizeof name, "globe-frame%06llu.png", static_cast<unsigned long long>(s.frame - 1));
+      std::snprintf(name, sizeof name, "globe-frame%06llu%s", static_cast<unsigned long long>(s.frame - 1),
+                    s.options.screenshotExtension.c_str());
       std::string path = (std::filesystem::path(s.options.screenshotDirectory) / name).string();
       if (Status st = s.saveScreenshot(path, cam); st) {
         s.message = "saved " + path;
-        std::printf("screenshot %s\n", path.c_str());
+        // Tests compare screenshots of still views: say whether the terrain had converged.
+        printLine("screenshot " + path + (s.scene->converged() ? " (converged)" : " (streaming)"));
       } else {
         s.message = st.error().format();
         std::fprintf(stderr, "globe: warning: %s\n", s.message.c_str());
@@ -262,6 +390,8 @@ Status Viewer::run() {
     }
   }
 
+  // Quitting while recording keeps the flight.
+  if (s.recorder.recording()) s.stopRecording();
   GLOBE_VK_CHECK(vkDeviceWaitIdle(s.device.device()));
   s.releases.releaseAll();
   if (!s.options.screenshotPath.empty()) {

@@ -7,6 +7,7 @@
 #include "options.h"
 #include "planet/atomic_file.h"
 #include "planet/camera.h"
+#include "planet/planet_file.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -23,8 +24,22 @@ struct ViewCommandOptions {
   std::string script;
   std::string screenshot;
   std::string screenshotDir = ".";
+  std::string screenshotFormat = "png";
+  std::string planet;
+  std::string mode = "terrain";
+  uint32_t gridCells = 32;
+  std::string recordDir = ".";
+  std::string record;
+  bool noReload = false;
   bool noVsync = false;
 };
+
+// A directory option that must exist.
+Status checkDirectory(const std::string& dir, const std::string& field) {
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir, ec)) return Error{"", 0, 0, field, "'" + dir + "' is not a directory"};
+  return Ok{};
+}
 
 int runView(const ViewCommandOptions& o) {
   auto pose = parsePose(o.at, "--at");
@@ -48,10 +63,37 @@ int runView(const ViewCommandOptions& o) {
     if (auto s = checkImageExtension(o.screenshot, "--screenshot"); !s) return usageError(s.error());
     viewer.screenshotPath = o.screenshot;
   }
-  std::error_code ec;
-  if (!std::filesystem::is_directory(o.screenshotDir, ec))
-    return usageError(Error{"", 0, 0, "--screenshot-dir", "'" + o.screenshotDir + "' is not a directory"});
+  if (auto s = checkDirectory(o.screenshotDir, "--screenshot-dir"); !s) return usageError(s.error());
   viewer.screenshotDirectory = o.screenshotDir;
+  viewer.screenshotExtension = "." + o.screenshotFormat;
+  if (auto s = checkDirectory(o.recordDir, "--record-dir"); !s) return usageError(s.error());
+  viewer.recordDirectory = o.recordDir;
+  if (!o.record.empty()) {
+    if (auto s = checkWritable(o.record, "--record"); !s) return usageError(s.error());
+    viewer.recordFile = o.record;
+  }
+
+  // The planet must be valid to start; later edits of the file are reloaded live (an invalid one
+  // then keeps the planet on screen). Every error at once, like `globe planet check`.
+  PlanetFileCheck planet = checkPlanetFile(o.planet);
+  if (!planet.ok()) {
+    for (size_t i = 1; i < planet.errors.size(); ++i) printError(planet.errors[i - 1].format());
+    return usageError(planet.errors.back());
+  }
+  ViewerSceneOptions& scene = viewer.scene;
+  scene.mode = o.mode == "sphere" ? ViewerMode::kSphere : ViewerMode::kTerrain;
+  scene.planetPath = o.planet;
+  scene.planet = std::move(planet.planet);
+  scene.watch = !o.noReload;
+  scene.terrain.gridCells = o.gridCells;
+  if (auto s = validateTerrainSettings(scene.terrain); !s) {
+    Error e = s.error();
+    if (e.field == "grid_cells") e.field = "--grid";
+    return usageError(e);
+  }
+  // The sun of `globe render` at the starting point (about 45 degrees up): the first view is lit,
+  // and a viewer screenshot matches a render of the same pose.
+  scene.sunDirection = defaultSunDirection(directionFromLatLon(pose->latitude_deg, pose->longitude_deg));
 
   if (!Window::displayAvailable()) {
     printError(
@@ -88,6 +130,7 @@ int runView(const ViewCommandOptions& o) {
 
 void addViewCommand(CLI::App& app, Runner& run) {
   auto opts = std::make_shared<ViewCommandOptions>();
+  opts->planet = defaultPlanetPath();
   CLI::App* cmd = app.add_subcommand("view", "Fly around the planet in a window (needs an X display)");
   cmd->add_option("--at", opts->at,
                   "Starting camera: LAT,LON,HEIGHT[,HEADING,PITCH,ROLL] in degrees and metres above the surface "
@@ -102,6 +145,21 @@ void addViewCommand(CLI::App& app, Runner& run) {
   cmd->add_option("--screenshot", opts->screenshot,
                   "Write the last frame (without the overlay) to FILE.png|.exr at exit");
   cmd->add_option("--screenshot-dir", opts->screenshotDir, "Directory for F12/P screenshots")->capture_default_str();
+  cmd->add_option("--screenshot-format", opts->screenshotFormat,
+                  "Format of F12/P screenshots: png (8-bit sRGB) or exr (half RGB + float depth Z)")
+      ->check(CLI::IsMember({"png", "exr"}))
+      ->capture_default_str();
+  cmd->add_option("--planet", opts->planet, "Planet file (TOML); reloaded when it changes on disk")
+      ->capture_default_str();
+  cmd->add_flag("--no-reload", opts->noReload, "Do not watch the planet file for changes");
+  cmd->add_option("--mode", opts->mode, "terrain (the planet) or sphere (its reference sphere, analytic)")
+      ->check(CLI::IsMember({"terrain", "sphere"}))
+      ->capture_default_str();
+  cmd->add_option("--grid", opts->gridCells, "Grid cells per node side (power of two, 16..256)")->capture_default_str();
+  cmd->add_option("--record-dir", opts->recordDir,
+                  "Directory where R (start/stop recording) writes globe-path-YYYYmmdd-HHMMSS.path")
+      ->capture_default_str();
+  cmd->add_option("--record", opts->record, "Path file R writes instead (overwritten by each recording)");
   cmd->add_flag("--no-vsync", opts->noVsync, "Present without waiting for vertical blank when the surface allows");
   addDeviceFlags(*cmd, opts->device);
   cmd->callback([opts, &run] { run = [opts] { return runView(*opts); }; });

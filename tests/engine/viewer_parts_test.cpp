@@ -67,11 +67,13 @@ TEST(InputScript, ParsesEveryEventKindSortedByFrame) {
       "5 MOUSE MOVE 12.5 40\n"
       "5 MOUSE left down\n"
       "7 RESIZE 400 300\n"
-      "9 KEY F12 down\n",
+      "9 KEY F12 down\n"
+      "11 wait reload\n",
       "s.txt");
   ASSERT_TRUE(s) << s.error().format();
   const auto& e = s->events;
-  ASSERT_EQ(e.size(), 6u);
+  ASSERT_EQ(e.size(), 7u);
+  EXPECT_EQ(e[6].event.type, InputEvent::Type::WaitReload);
   EXPECT_EQ(e[0].frame, 2u);
   EXPECT_EQ(e[0].event.code, GLFW_KEY_ESCAPE);
   EXPECT_FALSE(e[0].event.down);
@@ -88,7 +90,7 @@ TEST(InputScript, ParsesEveryEventKindSortedByFrame) {
   EXPECT_EQ(script.take(1).size(), 0u);
   EXPECT_EQ(script.take(5).size(), 3u);  // frames 2 and 5
   EXPECT_EQ(script.take(5).size(), 0u);  // already taken
-  EXPECT_EQ(script.take(100).size(), 3u);
+  EXPECT_EQ(script.take(100).size(), 4u);
 }
 
 TEST(InputScript, ErrorsNameFileAndLine) {
@@ -105,8 +107,10 @@ TEST(InputScript, ErrorsNameFileAndLine) {
       {"1 MOUSE MOVE nan 1\n", "s.txt:1: expected 'FRAME MOUSE MOVE X Y' with X, Y in pixels"},
       {"1 MOUSE THUMB down\n", "s.txt:1: unknown mouse button 'THUMB'"},
       {"1 RESIZE 8 8\n", "s.txt:1: expected 'FRAME RESIZE W H' with whole W, H within [16, 16384] pixels"},
-      {"1 JUMP\n", "s.txt:1: unknown event 'JUMP' (expected KEY, MOUSE or RESIZE)"},
-      {"1\n", "s.txt:1: unknown event '' (expected KEY, MOUSE or RESIZE)"},
+      {"1 JUMP\n", "s.txt:1: unknown event 'JUMP' (expected KEY, MOUSE, RESIZE or WAIT)"},
+      {"1\n", "s.txt:1: unknown event '' (expected KEY, MOUSE, RESIZE or WAIT)"},
+      {"1 WAIT\n", "s.txt:1: expected 'FRAME WAIT RELOAD'"},
+      {"1 WAIT FOREVER\n", "s.txt:1: expected 'FRAME WAIT RELOAD'"},
   };
   for (const auto& c : cases) {
     auto s = parseInputScript(c.text, "s.txt");

@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# Live reload of `globe view --planet FILE` under a virtual X server (issue 9): the viewer runs a
+# script with a still camera while this test rewrites the planet file at the script's WAIT RELOAD
+# points: first a valid planet with another seed (the image must change), then an invalid one (the
+# errors go to stderr as file:line:column, the image must stay the last good planet's). Vulkan
+# validation is on, so any message (including objects leaked when the old terrain and its payload
+# pool are destroyed) fails the run; the exit must be clean.
+# Usage: viewer_reload_test.sh GLOBE SCREENSHOT_CHECK SCRIPT PLANET WORKDIR
+set -uo pipefail
+GLOBE="$1"
+CHECK="$2"
+SCRIPT="$3"
+PLANET="$4"
+WORK="$5"
+rm -rf "$WORK" && mkdir -p "$WORK"
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+if ! command -v xvfb-run >/dev/null; then
+  echo "FAIL: xvfb-run not found (scripts/install-deps.sh installs the xvfb package)"
+  exit 1
+fi
+XVFB=(xvfb-run -a -n $((100 + RANDOM % 800)) -e "$WORK/xvfb.log" -s "-screen 0 1024x768x24 -nolisten tcp")
+
+cp "$PLANET" "$WORK/planet.toml"
+"${XVFB[@]}" "$GLOBE" view --validate --planet "$WORK/planet.toml" --frames 115 --script "$SCRIPT" --size 320x240 \
+  --screenshot-dir "$WORK" >"$WORK/stdout" 2>"$WORK/stderr" &
+viewer=$!
+
+# wait_for N: until the viewer has printed its N-th "waiting for the planet file" line.
+wait_for() {
+  for _ in $(seq 1 1200); do
+    [[ $(grep -c "waiting for the planet file" "$WORK/stdout") -ge $1 ]] && return 0
+    kill -0 "$viewer" 2>/dev/null || return 1
+    sleep 0.05
+  done
+  return 1
+}
+# An editor's save: write a temporary, rename it over the file.
+save() { cat >"$WORK/planet.toml.tmp" && mv "$WORK/planet.toml.tmp" "$WORK/planet.toml"; }
+
+if wait_for 1; then
+  sed 's/^seed = .*/seed = 4242/' "$WORK/planet.toml" | save
+else
+  fail "the viewer never waited for the first reload"
+fi
+if wait_for 2; then
+  # Two errors: every one is reported, not just the first.
+  sed -e 's/^seed = .*/seed = 7/' -e '0,/^gain = .*/s//gain = -2.0/' "$WORK/planet.toml" | save
+  printf 'no_such_key = 1\n' >>"$WORK/planet.toml"
+else
+  fail "the viewer never waited for the second reload"
+fi
+wait "$viewer"
+code=$?
+cat "$WORK/stdout"
+if [[ $code -ne 0 ]]; then fail "globe view exited $code"; cat "$WORK/stderr"; cat "$WORK/xvfb.log" 2>/dev/null; fi
+if grep -qi "validation" "$WORK/stderr"; then fail "validation messages:"; cat "$WORK/stderr"; fi
+grep -q "viewed 115 frames" "$WORK/stdout" || fail "did not report 115 frames"
+grep -q "^planet reloaded: .*planet.toml (frame 42)" "$WORK/stdout" || fail "no reload at frame 42"
+grep -q "^planet reload failed: .*planet.toml (frame 87)" "$WORK/stdout" || fail "no failed reload at frame 87"
+for f in 40 85 110; do
+  grep -q "^screenshot .*globe-frame$(printf %06d $f).png (converged)" "$WORK/stdout" || fail "frame $f was not a converged screenshot"
+done
+# The errors: once each on stderr, with file, line and column.
+echo "--- stderr:"; cat "$WORK/stderr"
+grep -qE "^globe: error: .*planet\.toml:[0-9]+:[0-9]+: .*gain" "$WORK/stderr" || fail "no file:line:column error for gain"
+grep -qE "^globe: error: .*planet\.toml:[0-9]+:[0-9]+: .*no_such_key" "$WORK/stderr" || fail "no error for the unknown key"
+[[ $(grep -c "no_such_key" "$WORK/stderr") -eq 1 ]] || fail "the unknown key was not reported exactly once"
+# The images: a new planet changes the picture, an invalid file does not.
+"$CHECK" differ "$WORK/globe-frame000040.png" "$WORK/globe-frame000085.png" || fail "the reload did not change the image"
+"$CHECK" same "$WORK/globe-frame000085.png" "$WORK/globe-frame000110.png" || fail "the invalid file changed the image"
+
+echo "viewer reload: $failures failure(s)"
+exit $((failures > 0))
