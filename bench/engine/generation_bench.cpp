@@ -5,6 +5,7 @@
 // Compare with the CPU reference and libnoise: build/release/bench/planet_bench --benchmark_filter='Elevation|Libnoise'
 #include "engine/elevation_sampler.h"
 #include "engine/payload_generator.h"
+#include "bench_support.h"
 #include "planet/planet_file.h"
 
 #include <benchmark/benchmark.h>
@@ -18,26 +19,8 @@
 namespace globe {
 namespace {
 
-vk::Device& device() {
-  static vk::Device d([] {
-    vk::DeviceOptions o;
-    o.deviceName = vk::deviceNameFromEnvironment();
-    return o;
-  }());
-  return d;
-}
-
-const ElevationModel& model() {
-  static const ElevationModel m = [] {
-    auto p = loadPlanetFile(std::string(GLOBE_SOURCE_DIR) + "/assets/planets/earthlike.toml");
-    if (!p.ok()) {
-      std::fprintf(stderr, "%s\n", p.error().format().c_str());
-      std::abort();
-    }
-    return ElevationModel(*p);
-  }();
-  return m;
-}
+using bench::device;
+const ElevationModel& model() { return bench::earthlikeModel(); }
 
 // The same 4096 directions as bench/planet/elevation_bench.cpp, repeated to fill a dispatch.
 std::vector<glm::dvec3> directions(size_t count) {

@@ -4,6 +4,7 @@
 //   build/release/bench/engine_bench --benchmark_filter=TerrainFrame
 // Knobs: GLOBE_BENCH_GRID (cells per node side), GLOBE_BENCH_RANGE (LOD distance multiplier).
 #include "engine/headless_renderer.h"
+#include "bench_support.h"
 #include "planet/planet_file.h"
 
 #include <benchmark/benchmark.h>
@@ -16,26 +17,8 @@
 namespace globe {
 namespace {
 
-vk::Device& device() {
-  static vk::Device d([] {
-    vk::DeviceOptions o;
-    o.deviceName = vk::deviceNameFromEnvironment();
-    return o;
-  }());
-  return d;
-}
-
-const PlanetDescription& planet() {
-  static const PlanetDescription p = [] {
-    auto r = loadPlanetFile(std::string(GLOBE_SOURCE_DIR) + "/assets/planets/earthlike.toml");
-    if (!r.ok()) {
-      std::fprintf(stderr, "%s\n", r.error().format().c_str());
-      std::abort();
-    }
-    return *r;
-  }();
-  return p;
-}
+using bench::device;
+const PlanetDescription& planet() { return bench::earthlike(); }
 
 // The standard cameras: over the earthlike planet's mountains, looking towards the horizon.
 GeodeticPose standardCamera(int index) {
