@@ -53,8 +53,7 @@ FrameStats HeadlessRenderer::renderFrame(Terrain& terrain, const Camera& camera,
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   GLOBE_VK_CHECK(vkBeginCommandBuffer(cmd_, &begin));
   vkCmdWriteTimestamp2(cmd_, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, queries_, 0);
-  const float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-  target_.begin(cmd_, clear);
+  target_.begin(cmd_, clear_.data());
   terrain.record(cmd_, camera, uint32_t(frame_ % 2));
   target_.end(cmd_);
   vkCmdWriteTimestamp2(cmd_, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, queries_, 1);

@@ -5,6 +5,8 @@
 #include "engine/offscreen_target.h"
 #include "engine/terrain.h"
 
+#include <array>
+
 namespace globe {
 
 class HeadlessRenderer {
@@ -17,6 +19,9 @@ class HeadlessRenderer {
   FrameStats renderFrame(Terrain& terrain, const Camera& camera, bool converge);
 
   vk::ReadbackImage readback() { return target_.readback(); }
+  // Colour the target is cleared to before each frame (default opaque black). Tests clear to a
+  // colour the terrain never writes (e.g. magenta with alpha 0) to find holes.
+  void setClearColour(const std::array<float, 4>& rgba) { clear_ = rgba; }
   VkExtent2D extent() const { return target_.extent(); }
   uint64_t frame() const { return frame_; }
 
@@ -28,6 +33,7 @@ class HeadlessRenderer {
   vk::UniqueFence fence_;
   vk::UniqueQueryPool queries_;
   uint64_t frame_ = 0;
+  std::array<float, 4> clear_{0.0f, 0.0f, 0.0f, 1.0f};
 };
 
 }  // namespace globe

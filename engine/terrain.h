@@ -44,8 +44,8 @@ class Terrain {
   // Records the draw of the last update(). `frameIndex`: which per-frame buffers to use (frame % 2).
   void record(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex);
 
-  // True when the last selection drew every node at its wanted level and nothing is queued or being
-  // generated: the view has fully converged.
+  // True when the last selection drew every node at its wanted level and nothing is queued (except
+  // prefetch the full pool declined) or being generated: the view has fully converged.
   bool converged() const;
   // Blocks until every generation submitted so far has finished.
   void waitForGeneration() { generator_->waitIdle(); }
@@ -60,6 +60,14 @@ class Terrain {
   TerrainRenderer& renderer() { return *renderer_; }
   // Ground radius (metres from the centre) below a unit direction, from the CPU reference.
   double groundRadius(const glm::dvec3& unitDirection) const { return model_.radius_m() + model_.elevation_m(unitDirection); }
+  // The radius a camera's height is measured from: the higher of the true ground and the mesh drawn
+  // there at the deepest level (drawnSurfaceRadius). The drawn mesh misses the relief finer than its
+  // samples and can lie metres above the true ground (7e7 m planet, depth 20); a camera placed a
+  // millimetre above the true ground would then be under the mesh and see through the planet.
+  double cameraGroundRadius(const glm::dvec3& unitDirection) const;
+  // The payload generator (its payload buffer and slot centres), for tests and tools.
+  const GpuPayloadGenerator& generator() const { return *generator_; }
+  const TerrainSettings& settings() const { return settings_; }
 
  private:
   Terrain(vk::Device& device, const ElevationModel& model, const TerrainSettings& settings, LodSelector selector);

@@ -125,7 +125,8 @@ std::string ViewerScene::debugViewName() const {
 
 double ViewerScene::groundRadius(const glm::dvec3& unitDirection) const {
   if (!terrain_) return model_->radius_m();
-  return model_->radius_m() + model_->elevation_m(unitDirection);
+  // The drawn mesh can lie centimetres above the true ground: keep the camera above both.
+  return terrain_->cameraGroundRadius(unitDirection);
 }
 
 }  // namespace globe

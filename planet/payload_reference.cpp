@@ -4,7 +4,10 @@
 #include "planet/lod_ranges.h"
 #include "planet/triacontahedron.h"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <limits>
@@ -149,6 +152,34 @@ RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::Payload
     }
   }
   return range;
+}
+
+double drawnSurfaceRadius(const ElevationModel& model, const glm::dvec3& unitDirection, int level, uint32_t cells) {
+  const FacePoint at = RhombusFaceMapping::get().locate(unitDirection);
+  const NodeId node = nodeAt(at, level);
+  const gpu::PayloadJob job = makePayloadJob(node, 0, model);
+  const int n = int(cells);
+  const double fu = (at.u - job.uv.x) / job.uv.z * double(n), fv = (at.v - job.uv.y) / job.uv.z * double(n);
+  const int i = std::clamp(int(std::floor(fu)), 0, n - 1), j = std::clamp(int(std::floor(fv)), 0, n - 1);
+  auto sample = [&](int a, int b) { return model.surfacePosition(payloadSampleDirection(job, cells, a, b)); };
+  const glm::dvec3 p00 = sample(i, j), p10 = sample(i + 1, j), p11 = sample(i + 1, j + 1), p01 = sample(i, j + 1);
+  // Ray from the centre along the direction against the cell's two triangles (Moller-Trumbore); the
+  // (u, v) cell and the flat triangles can disagree by a hair at their edges, hence the fallback.
+  double best = -1.0, fallback = 0.0;
+  for (const auto& [a, b, c] : {std::array{p00, p10, p11}, std::array{p00, p11, p01}}) {
+    const glm::dvec3 e1 = b - a, e2 = c - a, pv = glm::cross(unitDirection, e2);
+    const double det = glm::dot(e1, pv);
+    if (std::abs(det) < 1e-300) continue;
+    const glm::dvec3 tv = -a;
+    const double bu = glm::dot(tv, pv) / det;
+    const glm::dvec3 qv = glm::cross(tv, e1);
+    const double bv = glm::dot(unitDirection, qv) / det;
+    const double t = glm::dot(e2, qv) / det;
+    fallback = std::max(fallback, t);
+    const double slack = 1e-9;
+    if (bu >= -slack && bv >= -slack && bu + bv <= 1.0 + slack) best = std::max(best, t);
+  }
+  return best > 0.0 ? best : fallback;
 }
 
 }  // namespace globe

@@ -44,4 +44,13 @@ RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::Payload
 RadiusRange paddedRadiusRange(const gpu::ElevationParams& params, const RadiusRange& payload, int level,
                               uint32_t cells);
 
+// Radius (metres from the planet centre) of the surface the renderer draws along `unitDirection`
+// where the nodes are at `level` with `cells` cells per side and unmorphed (the view around a ground
+// camera): the flat triangle of the payload grid the direction passes through, each cell split
+// along its (i, j)-(i+1, j+1) diagonal like the renderer. It differs from the true ground
+// (ElevationModel) by the relief finer than the samples (decimetres on Earth at depth 20, metres on
+// a 7e7 m planet), so a camera "1 mm above the ground" must be placed above the higher of the two
+// or it is under the drawn mesh and sees through it (docs/tradeoffs.md, "Stability at the extremes").
+double drawnSurfaceRadius(const ElevationModel& model, const glm::dvec3& unitDirection, int level, uint32_t cells);
+
 }  // namespace globe

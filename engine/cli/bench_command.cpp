@@ -5,6 +5,7 @@
 #include "engine/device.h"
 #include "engine/headless_renderer.h"
 #include "engine/image_io.h"
+#include "engine/quality.h"
 #include "engine/render_output.h"
 #include "options.h"
 #include "progress_bar.h"
@@ -29,7 +30,8 @@ struct BenchOptions {
   std::string size = "1280x720";
   std::string keyFrames = "0,7,12,18";
   double rate_hz = 60.0;
-  uint32_t gridCells = 32;
+  uint32_t gridCells = 0;  // 0 = the quality preset's
+  std::string quality;     // empty = the planet's default_quality
   std::string commandLine;
 };
 
@@ -58,8 +60,10 @@ int runBench(const BenchOptions& o) {
   auto keyTimes = parseTimes(o.keyFrames, "--keyframes");
   if (!keyTimes) return usageError(keyTimes.error());
   if (!(o.rate_hz >= 1 && o.rate_hz <= 1000)) return usageError({"", 0, 0, "--rate", "must be within [1, 1000] Hz"});
-  TerrainSettings settings;
-  settings.gridCells = o.gridCells;
+  auto quality = chooseQualityPreset(o.quality, *planet);
+  if (!quality) return usageError(quality.error());
+  TerrainSettings settings = terrainSettingsFor(*quality);
+  if (o.gridCells) settings.gridCells = o.gridCells;
   if (auto s = validateTerrainSettings(settings); !s) return usageError({"", 0, 0, "--grid", s.error().message});
   std::filesystem::path dir(o.out);
   std::error_code ec;
@@ -80,7 +84,8 @@ int runBench(const BenchOptions& o) {
   if (!terrain) return usageError(terrain.error());
   HeadlessRenderer renderer(device, {size->width, size->height});
   const double aspect = double(size->width) / double(size->height);
-  GroundRadiusFn ground = [&](const glm::dvec3& d) { return (*terrain)->groundRadius(d); };
+  // Heights are above the drawn mesh, like `globe render --at` and the viewer (never under it).
+  GroundRadiusFn ground = [&](const glm::dvec3& d) { return (*terrain)->cameraGroundRadius(d); };
   const bool converge = o.mode == "converged";
 
   std::filesystem::create_directories(dir, ec);
@@ -114,7 +119,7 @@ int runBench(const BenchOptions& o) {
     progress.update(double(k + 1) / double(frames));
   }
 
-  BenchRunInfo info{o.planet, o.path, o.mode, device.name(), o.size, o.gridCells, o.commandLine,
+  BenchRunInfo info{o.planet, o.path, o.mode, device.name(), o.size, settings.gridCells, o.commandLine,
                     std::string(GLOBE_VERSION)};
   if (auto s = writeBenchReport(o.out, info, rows, keys); !s) {
     printError(s.error().format());
@@ -146,7 +151,8 @@ void addBenchCommand(CLI::App& app, Runner& run, const std::string& commandLine)
   cmd->add_option("--size", opts->size, "Image size WxH in pixels")->capture_default_str();
   cmd->add_option("--keyframes", opts->keyFrames, "Path times (s) whose frames are saved as PNG")->capture_default_str();
   cmd->add_option("--rate", opts->rate_hz, "Frames per second of path time (fixed step)")->capture_default_str();
-  cmd->add_option("--grid", opts->gridCells, "Grid cells per node side (power of two, 16..256)")->capture_default_str();
+  cmd->add_option("--grid", opts->gridCells, "Grid cells per node side (power of two, 16..256; default: the quality preset's)");
+  cmd->add_option("--quality", opts->quality, "fast, balanced or exact (docs/tradeoffs.md; default: the planet's default_quality)");
   addDeviceFlags(*cmd, opts->device);
   cmd->callback([opts, &run] { run = [opts] { return runBench(*opts); }; });
 }

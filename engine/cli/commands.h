@@ -15,6 +15,7 @@ void addViewCommand(CLI::App& app, Runner& run);
 void addPlanetCommand(CLI::App& app, Runner& run);  // globe planet check|stats|sample|export
 // `commandLine`: the whole invocation, recorded in the benchmark report.
 void addBenchCommand(CLI::App& app, Runner& run, const std::string& commandLine);
+void addTradeCommand(CLI::App& app, Runner& run);  // globe trade: speed/accuracy sweep
 
 // Exit codes shared by every command.
 constexpr int kExitOk = 0;

@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   std::string commandLine;
   for (int i = 0; i < argc; ++i) commandLine += (i ? " " : "") + std::string(argv[i]);
   addBenchCommand(app, run, commandLine);
+  addTradeCommand(app, run);
 
   try {
     app.parse(argc, argv);

@@ -2,13 +2,16 @@
 #include "commands.h"
 #include "engine/device.h"
 #include "engine/headless_renderer.h"
+#include "engine/quality.h"
 #include "engine/render_output.h"
 #include "engine/sphere_preview.h"
 #include "options.h"
 #include "planet/atomic_file.h"
 #include "planet/camera.h"
+#include "planet/payload_reference.h"
 #include "planet/planet_file.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace globe::cli {
@@ -22,7 +25,8 @@ struct RenderOptions {
   std::string size = "1280x720";
   std::string out = "out/render.png";
   std::string mode = "terrain";
-  uint32_t gridCells = 32;
+  uint32_t gridCells = 0;  // 0 = the quality preset's
+  std::string quality;     // empty = the planet's default_quality
 };
 
 int runRender(const RenderOptions& o) {
@@ -34,8 +38,10 @@ int runRender(const RenderOptions& o) {
   if (auto s = checkImageExtension(o.out, "--out"); !s) return usageError(s.error());
   auto planet = loadPlanetFile(o.planet);
   if (!planet) return usageError(planet.error());
-  TerrainSettings settings;
-  settings.gridCells = o.gridCells;
+  auto quality = chooseQualityPreset(o.quality, *planet);
+  if (!quality) return usageError(quality.error());
+  TerrainSettings settings = terrainSettingsFor(*quality);
+  if (o.gridCells) settings.gridCells = o.gridCells;
   if (auto s = validateTerrainSettings(settings); !s) {
     Error e = s.error();
     if (e.field == "grid_cells") e.field = "--grid";
@@ -45,7 +51,11 @@ int runRender(const RenderOptions& o) {
   ElevationModel model(*planet);
   double aspect = double(size->width) / double(size->height);
   glm::dvec3 down = directionFromLatLon(pose->latitude_deg, pose->longitude_deg);
+  // Heights are above what is drawn: the finest mesh can lie decimetres above the true ground
+  // (Terrain::cameraGroundRadius), and a low camera under it would see through the planet.
   double ground = model.radius_m() + model.elevation_m(down);
+  if (o.mode == "terrain")
+    ground = std::max(ground, drawnSurfaceRadius(model, down, settings.ranges.maxDepth, settings.gridCells));
   Camera camera = cameraFromPose(*pose, ground, model.radius_m(), aspect);
 
   vk::Device device(deviceOptions(o.device));
@@ -100,7 +110,8 @@ void addRenderCommand(CLI::App& app, Runner& run) {
   cmd->add_option("--mode", opts->mode, "terrain (the planet) or sphere (its reference sphere, analytic)")
       ->check(CLI::IsMember({"terrain", "sphere"}))
       ->capture_default_str();
-  cmd->add_option("--grid", opts->gridCells, "Grid cells per node side (power of two, 16..256)")->capture_default_str();
+  cmd->add_option("--grid", opts->gridCells, "Grid cells per node side (power of two, 16..256; default: the quality preset's)");
+  cmd->add_option("--quality", opts->quality, "fast, balanced or exact (docs/tradeoffs.md; default: the planet's default_quality)");
   addDeviceFlags(*cmd, opts->device);
   cmd->callback([opts, &run] { run = [opts] { return runRender(*opts); }; });
 }

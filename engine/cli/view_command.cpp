@@ -2,6 +2,7 @@
 // --frames, --script and --screenshot make a run deterministic and checkable under Xvfb.
 #include "commands.h"
 #include "engine/device.h"
+#include "engine/quality.h"
 #include "engine/viewer.h"
 #include "engine/window.h"
 #include "options.h"
@@ -27,7 +28,8 @@ struct ViewCommandOptions {
   std::string screenshotFormat = "png";
   std::string planet;
   std::string mode = "terrain";
-  uint32_t gridCells = 32;
+  uint32_t gridCells = 0;  // 0 = the quality preset's
+  std::string quality;     // empty = the planet's default_quality
   std::string recordDir = ".";
   std::string record;
   bool noReload = false;
@@ -85,7 +87,10 @@ int runView(const ViewCommandOptions& o) {
   scene.planetPath = o.planet;
   scene.planet = std::move(planet.planet);
   scene.watch = !o.noReload;
-  scene.terrain.gridCells = o.gridCells;
+  auto quality = chooseQualityPreset(o.quality, scene.planet);
+  if (!quality) return usageError(quality.error());
+  scene.terrain = terrainSettingsFor(*quality);
+  if (o.gridCells) scene.terrain.gridCells = o.gridCells;
   if (auto s = validateTerrainSettings(scene.terrain); !s) {
     Error e = s.error();
     if (e.field == "grid_cells") e.field = "--grid";
@@ -155,7 +160,8 @@ void addViewCommand(CLI::App& app, Runner& run) {
   cmd->add_option("--mode", opts->mode, "terrain (the planet) or sphere (its reference sphere, analytic)")
       ->check(CLI::IsMember({"terrain", "sphere"}))
       ->capture_default_str();
-  cmd->add_option("--grid", opts->gridCells, "Grid cells per node side (power of two, 16..256)")->capture_default_str();
+  cmd->add_option("--grid", opts->gridCells, "Grid cells per node side (power of two, 16..256; default: the quality preset's)");
+  cmd->add_option("--quality", opts->quality, "fast, balanced or exact (docs/tradeoffs.md; default: the planet's default_quality)");
   cmd->add_option("--record-dir", opts->recordDir,
                   "Directory where R (start/stop recording) writes globe-path-YYYYmmdd-HHMMSS.path")
       ->capture_default_str();

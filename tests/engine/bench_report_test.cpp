@@ -1,13 +1,13 @@
 // The benchmark report writer: files, formats, statistics, well-formed markup, determinism and
 // errors. No GPU.
-#include "engine/bench_metrics.h"
 #include "engine/bench_report.h"
+#include "engine/bench_metrics.h"
 #include "engine/image_io.h"
 #include "engine/markup_escape.h"
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <unistd.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -179,7 +179,8 @@ class XmlChecker {
           if (!starts("=")) return fail(report, "attribute without '='");
           ++pos_;
           skipSpace();
-          if (pos_ >= doc_.size() || (doc_[pos_] != '"' && doc_[pos_] != '\'')) return fail(report, "unquoted attribute");
+          if (pos_ >= doc_.size() || (doc_[pos_] != '"' && doc_[pos_] != '\''))
+            return fail(report, "unquoted attribute");
           const char quote = doc_[pos_++];
           const std::size_t end = doc_.find(quote, pos_);
           if (end == std::string_view::npos) return fail(report, "unterminated attribute");
@@ -316,17 +317,16 @@ TEST(BenchReport, SummaryJsonHasEveryKey) {
                           "frames_over_33ms", "percentile_method", "metrics", "key_frames"}) {
     EXPECT_TRUE(json.contains(key)) << key;
   }
-  for (const char* key : {"planet_file", "path_file", "mode", "device", "size", "grid_cells", "command_line",
-                          "globe_version"}) {
+  for (const char* key :
+       {"planet_file", "path_file", "mode", "device", "size", "grid_cells", "command_line", "globe_version"}) {
     EXPECT_TRUE(json["run"].contains(key)) << key;
   }
   EXPECT_EQ(json["run"]["grid_cells"], 64);
   EXPECT_EQ(json["frame_count"], 600);
   EXPECT_EQ(json["percentile_method"], "nearest-rank");
-  const std::vector<std::string> columns = {"altitude_m",     "frame_ms",      "select_ms",     "gpu_ms",
-                                            "nodes_selected", "nodes_partial", "triangles",     "draw_calls",
-                                            "gen_dispatched", "gen_in_flight", "gen_completed", "evicted",
-                                            "resident_mib"};
+  const std::vector<std::string> columns = {
+      "altitude_m", "frame_ms",       "select_ms",     "gpu_ms",        "nodes_selected", "nodes_partial", "triangles",
+      "draw_calls", "gen_dispatched", "gen_in_flight", "gen_completed", "evicted",        "resident_mib"};
   ASSERT_EQ(json["metrics"].size(), columns.size());
   for (const auto& c : columns) {
     ASSERT_TRUE(json["metrics"].contains(c)) << c;
@@ -534,10 +534,10 @@ TEST(BenchReport, FailedWriteLeavesThePreviousReportIntact) {
 TEST(BenchReport, MarkupEscaping) {
   EXPECT_EQ(escapeMarkup("a<b>&\"c'"), "a&lt;b&gt;&amp;&quot;c&#39;");
   EXPECT_EQ(escapeMarkup("tab\tok\x01"), "tab\tok?");
-  EXPECT_EQ(escapeMarkup("\xc3\xa9"), "\xc3\xa9");        // é stays
-  EXPECT_EQ(escapeMarkup("\xc3"), "?");                   // truncated sequence
-  EXPECT_EQ(escapeMarkup("\xed\xa0\x80"), "???");         // a surrogate
-  EXPECT_EQ(escapeMarkup("\xc0\xaf"), "??");              // overlong '/'
+  EXPECT_EQ(escapeMarkup("\xc3\xa9"), "\xc3\xa9");  // é stays
+  EXPECT_EQ(escapeMarkup("\xc3"), "?");             // truncated sequence
+  EXPECT_EQ(escapeMarkup("\xed\xa0\x80"), "???");   // a surrogate
+  EXPECT_EQ(escapeMarkup("\xc0\xaf"), "??");        // overlong '/'
   EXPECT_EQ(percentEncodePath("key frames/t 7&.png"), "key%20frames/t%207%26.png");
   EXPECT_EQ(formatFixed(-0.0, 2), "0.00");
   EXPECT_EQ(formatFixed(-0.0001, 2), "0.00");

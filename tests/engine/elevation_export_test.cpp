@@ -42,9 +42,9 @@ TEST(ElevationExport, PixelsEqualTheCpuReference) {
     AtomicFile file(out.string());
     double last_progress = 0.0;
     ASSERT_TRUE(writeElevationExr(model, options, file, [&](double f) {
-      EXPECT_GE(f, last_progress);
-      last_progress = f;
-    }).ok());
+                  EXPECT_GE(f, last_progress);
+                  last_progress = f;
+                }).ok());
     EXPECT_EQ(last_progress, 1.0);
     EXPECT_FALSE(fs::exists(out));  // nothing at the target before commit
     ASSERT_TRUE(file.commit().ok());

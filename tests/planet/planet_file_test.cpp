@@ -140,8 +140,8 @@ const BadCase kBadCases[] = {
      "expected 3 components"},
     {"colour component out of range", "radius_m = 5e6\n" LAYER "[rock]\ncolour = [0.5, 1.5, 0.5]\n", 8, 10,
      "rock.colour", "within [0, 1]"},
-    {"colour component nan", "radius_m = 5e6\n" LAYER "[snow]\nelevation_m = 1\ncolour = [0.5, nan, 0.5]\n", 9,
-     16, "snow.colour", "finite"},
+    {"colour component nan", "radius_m = 5e6\n" LAYER "[snow]\nelevation_m = 1\ncolour = [0.5, nan, 0.5]\n", 9, 16,
+     "snow.colour", "finite"},
     {"stops not increasing",
      "radius_m = 5e6\n" LAYER "[[colour_ramp]]\nelevation_m = 10\ncolour = [0, 0, 0]\n"
      "[[colour_ramp]]\nelevation_m = 10\ncolour = [1, 1, 1]\n",
@@ -153,10 +153,9 @@ const BadCase kBadCases[] = {
     {"rock slope out of range", "radius_m = 5e6\n" LAYER "[rock]\nslope_deg = 95\n", 8, 13, "rock.slope_deg",
      "[0, 90]"},
     {"rock not a table", "radius_m = 5e6\nrock = 3\n" LAYER, 2, 8, "rock", "expected a table ([rock])"},
-    {"snow without elevation", "radius_m = 5e6\n" LAYER "[snow]\nblend_m = 10\n", 7, 1, "snow.elevation_m",
-     "missing"},
-    {"snow negative blend", "radius_m = 5e6\n" LAYER "[snow]\nelevation_m = 1\nblend_m = -1\n", 9, 11,
-     "snow.blend_m", "[0, 1e7]"},
+    {"snow without elevation", "radius_m = 5e6\n" LAYER "[snow]\nblend_m = 10\n", 7, 1, "snow.elevation_m", "missing"},
+    {"snow negative blend", "radius_m = 5e6\n" LAYER "[snow]\nelevation_m = 1\nblend_m = -1\n", 9, 11, "snow.blend_m",
+     "[0, 1e7]"},
 };
 
 TEST(PlanetFile, EveryErrorHasFileLineColumnAndKey) {
@@ -227,12 +226,13 @@ colour = [2, 0, 0]
 }
 
 TEST(PlanetFile, MisspeltKeyIsSuggestedInsideArraysOfTables) {
-  const PlanetFileCheck check = checkPlanetToml(
-      "radius_m = 5e6\n" LAYER "[[colour_ramp]]\nelevation_m = 0\ncolour = [0, 0, 0]\n"
-      "[[colour_ramp]]\nelevation = 1\ncolour = [1, 1, 1]\n",
-      "bad.toml");
+  const PlanetFileCheck check = checkPlanetToml("radius_m = 5e6\n" LAYER
+                                                "[[colour_ramp]]\nelevation_m = 0\ncolour = [0, 0, 0]\n"
+                                                "[[colour_ramp]]\nelevation = 1\ncolour = [1, 1, 1]\n",
+                                                "bad.toml");
   ASSERT_EQ(check.errors.size(), 2U);
-  EXPECT_EQ(check.errors[1].format(), "bad.toml:11:1: colour_ramp[1].elevation: unknown key (did you mean 'elevation_m'?)");
+  EXPECT_EQ(check.errors[1].format(),
+            "bad.toml:11:1: colour_ramp[1].elevation: unknown key (did you mean 'elevation_m'?)");
 }
 
 TEST(PlanetFile, SyntaxErrorIsTheOnlyError) {
@@ -281,13 +281,13 @@ TEST(PlanetFile, ColourRampIsRead) {
   EXPECT_EQ(rampColour(p, -10.0, flat), glm::vec3(0.0f, 0.0f, 1.0f));
   EXPECT_EQ(rampColour(p, -1000.0, flat), glm::vec3(0.0f, 0.0f, 1.0f));
   EXPECT_EQ(rampColour(p, 0.0, flat), glm::vec3(0.0f, 0.5f, 0.5f));
-  EXPECT_EQ(rampColour(p, 0.0, steep), glm::vec3(0.5f, 0.5f, 0.5f));      // rock above 40 degrees
-  EXPECT_EQ(rampColour(p, 100.0, flat), glm::vec3(1.0f, 1.0f, 1.0f));     // snow above 5 + 1 m
-  const glm::vec3 half_snow = rampColour(p, 5.5, flat);  // base (0, 0.775, 0.225), half snow
+  EXPECT_EQ(rampColour(p, 0.0, steep), glm::vec3(0.5f, 0.5f, 0.5f));   // rock above 40 degrees
+  EXPECT_EQ(rampColour(p, 100.0, flat), glm::vec3(1.0f, 1.0f, 1.0f));  // snow above 5 + 1 m
+  const glm::vec3 half_snow = rampColour(p, 5.5, flat);                // base (0, 0.775, 0.225), half snow
   EXPECT_NEAR(half_snow.x, 0.5f, 1e-6f);
   EXPECT_NEAR(half_snow.y, 0.8875f, 1e-6f);
   EXPECT_NEAR(half_snow.z, 0.6125f, 1e-6f);
-  EXPECT_EQ(rampColour(p, 100.0, steep), glm::vec3(0.5f, 0.5f, 0.5f));    // too steep for snow
+  EXPECT_EQ(rampColour(p, 100.0, steep), glm::vec3(0.5f, 0.5f, 0.5f));  // too steep for snow
 }
 
 TEST(PlanetFile, QualityPresetNames) {
@@ -298,9 +298,7 @@ TEST(PlanetFile, QualityPresetNames) {
 
 const char* const kPresets[] = {"earthlike", "marslike", "moonlike", "asteroid", "gasgiant-core"};
 
-std::string presetPath(const char* name) {
-  return std::string(GLOBE_SOURCE_DIR) + "/assets/planets/" + name + ".toml";
-}
+std::string presetPath(const char* name) { return std::string(GLOBE_SOURCE_DIR) + "/assets/planets/" + name + ".toml"; }
 
 TEST(PlanetPresets, EveryPresetLoadsAndRoundTrips) {
   for (const char* name : kPresets) {
@@ -332,8 +330,11 @@ TEST(PlanetPresets, RadiiAndPrecisionMargins) {
     const char* name;
     double radius_m;
   };
-  const Case cases[] = {{"earthlike", 6371000.0}, {"marslike", 3389500.0}, {"moonlike", 1737400.0},
-                        {"asteroid", 1000.0},     {"gasgiant-core", 7.0e7}};
+  const Case cases[] = {{"earthlike", 6371000.0},
+                        {"marslike", 3389500.0},
+                        {"moonlike", 1737400.0},
+                        {"asteroid", 1000.0},
+                        {"gasgiant-core", 7.0e7}};
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
     const Result<PlanetDescription> r = loadPlanetFile(presetPath(c.name));

@@ -1,0 +1,291 @@
+// globe trade: measures the speed/accuracy trade of the terrain settings (docs/tradeoffs.md). Each
+// configuration is rendered converged at each camera; frame time, selection time, triangles, memory
+// and generation cost are recorded, and the read-back depth is compared with the exact planet
+// (engine/screen_error.h). Writes DIR/trade.csv and DIR/pareto.svg.
+#include "commands.h"
+#include "engine/device.h"
+#include "engine/bench_metrics.h"
+#include "engine/headless_renderer.h"
+#include "engine/quality.h"
+#include "engine/screen_error.h"
+#include "engine/trade_report.h"
+#include "options.h"
+#include "progress_bar.h"
+#include "planet/camera_path_file.h"
+#include "planet/planet_file.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+
+namespace globe::cli {
+
+namespace {
+
+struct TradeOptions {
+  DeviceFlags device;
+  std::string planet;
+  std::string out = "out/trade";
+  std::string quality;  // baseline; empty = the planet's default_quality
+  std::string size;     // empty = 1280x720, --quick 320x180
+  std::string path;     // path sampled for extra cameras (full sweep only)
+  std::string cameras;  // comma-separated camera names to keep; empty = all
+  uint32_t frames = 0;  // 0 = 11, --quick 5
+  uint32_t stride = 0;  // 0 = 4
+  uint32_t configs = 0; // 0 = all
+  bool quick = false;
+};
+
+struct TradeConfig {
+  std::string name;
+  TerrainSettings settings;
+};
+
+struct TradeCamera {
+  std::string name;
+  Camera camera;
+};
+
+std::string knobName(const TerrainSettings& s) {
+  char text[96];
+  std::snprintf(text, sizeof(text), "g%u x%g d%d f%g", s.gridCells, s.ranges.distanceMultiplier, s.ranges.maxDepth,
+                s.ranges.morphFraction);
+  return text;
+}
+
+bool sameKnobs(const TerrainSettings& a, const TerrainSettings& b) {
+  return a.gridCells == b.gridCells && a.ranges.distanceMultiplier == b.ranges.distanceMultiplier &&
+         a.ranges.maxDepth == b.ranges.maxDepth && a.ranges.morphFraction == b.ranges.morphFraction;
+}
+
+// One knob at a time around the baseline, then the presets and a few combinations.
+std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::string& baseName, bool quick) {
+  std::vector<TradeConfig> list;
+  auto add = [&](const std::string& label, TerrainSettings s) {
+    for (const TradeConfig& c : list)
+      if (sameKnobs(c.settings, s)) return;
+    list.push_back({label.empty() ? knobName(s) : label + " (" + knobName(s) + ")", s});
+  };
+  add(baseName, base);
+  auto vary = [&](auto set, std::initializer_list<double> values) {
+    for (double v : values) {
+      TerrainSettings s = base;
+      set(s, v);
+      add("", s);
+    }
+  };
+  auto grid = [](TerrainSettings& s, double v) { s.gridCells = uint32_t(v); };
+  auto mult = [](TerrainSettings& s, double v) { s.ranges.distanceMultiplier = v; };
+  auto depth = [](TerrainSettings& s, double v) { s.ranges.maxDepth = int(v); };
+  auto morph = [](TerrainSettings& s, double v) { s.ranges.morphFraction = v; };
+  if (quick) {  // the cheap knobs only: a minute or two on lavapipe
+    vary(grid, {16, 32});
+    vary(mult, {0.5});
+    return list;
+  }
+  // The presets and the knobs that do not change the triangle count much first: --configs N keeps
+  // the first N.
+  for (QualityPreset p : {QualityPreset::Fast, QualityPreset::Balanced, QualityPreset::Exact})
+    add(std::string(qualityPresetName(p)), terrainSettingsFor(p));
+  vary(depth, {16, 20, 24});
+  vary(morph, {0.25, 0.5});
+  vary(grid, {16, 32, 64, 128});
+  vary(mult, {0.5, 1, 2, 4});
+  for (auto [g, m] : {std::pair{16.0, 2.0}, {16.0, 4.0}, {64.0, 0.5}, {64.0, 2.0}, {128.0, 0.5}, {128.0, 1.0}}) {
+    TerrainSettings s = base;
+    grid(s, g);
+    mult(s, m);
+    add("", s);
+  }
+  return list;
+}
+
+// The standard cameras of bench/engine/render_bench.cpp (over the earthlike mountains).
+GeodeticPose standardPose(int index) {
+  switch (index) {
+    case 0: return {20.0, -100.0, 2.0e7, 0, -90, 0};
+    case 1: return {22.0, -99.0, 1.0e5, 60, -30, 0};
+    case 2: return {22.0, -98.8, 1.0e4, 60, -15, 0};
+    case 3: return {22.05, -98.4, 1.0e3, 60, -8, 0};
+    default: return {22.1, -98.3, 2.0, 60, -2, 0};
+  }
+}
+const char* kStandardNames[] = {"orbit", "100km", "10km", "1km", "2m"};
+
+std::string loadAverage() {
+  std::ifstream in("/proc/loadavg");
+  std::string a, b, c;
+  if (in >> a >> b >> c) return a + " " + b + " " + c;
+  return "unknown";
+}
+
+int runTrade(const TradeOptions& o) {
+  // Everything is checked before DIR is touched: bad input writes nothing.
+  auto planet = loadPlanetFile(o.planet);
+  if (!planet) return usageError(planet.error());
+  auto preset = chooseQualityPreset(o.quality, *planet);
+  if (!preset) return usageError(preset.error());
+  auto size = parseSize(o.size.empty() ? (o.quick ? "320x180" : "1280x720") : o.size, "--size");
+  if (!size) return usageError(size.error());
+  const uint32_t frames = o.frames ? o.frames : (o.quick ? 3 : 11);
+  const uint32_t stride = o.stride ? o.stride : 4;
+  if (frames > 1000) return usageError({"", 0, 0, "--frames", "must be within [1, 1000]"});
+  if (stride > 64) return usageError({"", 0, 0, "--stride", "must be within [1, 64]"});
+  std::optional<CameraPath> path;
+  if (!o.quick && !o.path.empty()) {
+    auto p = loadCameraPath(o.path);
+    if (!p) return usageError(p.error());
+    path = std::move(*p);
+  }
+  std::filesystem::path dir(o.out);
+  std::error_code ec;
+  if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
+    return usageError({"", 0, 0, "--out", "'" + o.out + "' exists and is not a directory"});
+  std::filesystem::path parent = dir.has_parent_path() ? dir.parent_path() : std::filesystem::path(".");
+  if (!std::filesystem::is_directory(parent, ec))
+    return usageError({"", 0, 0, "--out", "directory '" + parent.string() + "' does not exist"});
+
+  ElevationModel model(*planet);
+  TerrainSettings base = terrainSettingsFor(*preset);
+  std::vector<TradeConfig> configs = tradeConfigs(base, std::string(qualityPresetName(*preset)), o.quick);
+  if (o.configs) configs.resize(std::min<size_t>(configs.size(), o.configs));
+  const double aspect = double(size->width) / double(size->height);
+  auto ground = [&](const glm::dvec3& d) { return model.radius_m() + model.elevation_m(d); };
+  std::vector<TradeCamera> cameras;
+  for (int i : o.quick ? std::vector<int>{2, 3} : std::vector<int>{0, 1, 2, 3, 4}) {
+    GeodeticPose pose = standardPose(i);
+    cameras.push_back({kStandardNames[i], cameraFromPose(pose, ground(directionFromLatLon(pose.latitude_deg, pose.longitude_deg)),
+                                                          model.radius_m(), aspect)});
+  }
+  if (path)
+    for (double t : {7.0, 12.0})
+      if (t >= path->startTime_s() && t <= path->endTime_s())
+        cameras.push_back({"path@" + formatFixed(t, 0) + "s", path->cameraAt(t, model.radius_m(), aspect, ground)});
+
+  if (!o.cameras.empty()) {
+    std::vector<TradeCamera> kept;
+    std::string list = "," + o.cameras + ",";
+    for (const TradeCamera& c : cameras)
+      if (list.find("," + c.name + ",") != std::string::npos) kept.push_back(c);
+    size_t names = size_t(std::count(o.cameras.begin(), o.cameras.end(), ',')) + 1;
+    if (kept.size() != names) {
+      std::string known;
+      for (const TradeCamera& c : cameras) known += (known.empty() ? "" : ", ") + c.name;
+      return usageError({"", 0, 0, "--cameras", "unknown camera in '" + o.cameras + "' (known: " + known + ")"});
+    }
+    cameras = std::move(kept);
+  }
+  std::printf("globe trade: %zu configurations x %zu cameras at %ux%u, %u frames each, error every %u px; load %s\n",
+              configs.size(), cameras.size(), size->width, size->height, frames, stride, loadAverage().c_str());
+  std::fflush(stdout);
+  auto start = std::chrono::steady_clock::now();
+  // The truth does not depend on the configuration: one CPU ray cast per camera.
+  std::vector<SurfaceTruth> truths;
+  {
+    ProgressBar progress("trade: exact surface");
+    for (size_t i = 0; i < cameras.size(); ++i) {
+      truths.push_back(castSurfaceTruth(model, cameras[i].camera, size->width, size->height, stride));
+      progress.update(double(i + 1) / double(cameras.size()));
+    }
+  }
+  double truth_ms = 0;
+  for (const SurfaceTruth& t : truths) truth_ms += t.cast_ms;
+
+  vk::Device device(deviceOptions(o.device));
+  HeadlessRenderer renderer(device, {size->width, size->height});
+  std::vector<TradeRow> rows;
+  ProgressBar progress("trade: configurations");
+  size_t done = 0;
+  for (const TradeConfig& config : configs) {
+    std::vector<TradeRow> perCamera;
+    for (size_t ci = 0; ci < cameras.size(); ++ci) {
+      const Camera& camera = cameras[ci].camera;
+      TerrainSettings settings = config.settings;
+      settings.style.sunDirection = defaultSunDirection(camera.position_m);
+      settings.style.ramp = planet->colour_ramp;
+      // A fresh terrain per camera: resident memory and generation cost belong to this view alone.
+      auto terrain = Terrain::create(device, model, settings);
+      if (!terrain) return usageError(terrain.error());
+      renderer.renderFrame(**terrain, camera, true);  // converge + warm-up
+      std::vector<double> frame_ms, select_ms;
+      FrameStats stats;
+      for (uint32_t k = 0; k < frames; ++k) {
+        stats = renderer.renderFrame(**terrain, camera, true);
+        frame_ms.push_back(stats.frame_ms);
+        select_ms.push_back(stats.select_ms);
+      }
+      std::sort(frame_ms.begin(), frame_ms.end());
+      std::sort(select_ms.begin(), select_ms.end());
+      TradeRow row;
+      row.config = config.name;
+      row.camera = cameras[ci].name;
+      row.gridCells = settings.gridCells;
+      row.distanceMultiplier = settings.ranges.distanceMultiplier;
+      row.maxDepth = settings.ranges.maxDepth;
+      row.morphFraction = settings.ranges.morphFraction;
+      row.width = size->width;
+      row.height = size->height;
+      row.frameMedian_ms = nearestRankPercentile(frame_ms, 50);
+      row.frameP95_ms = nearestRankPercentile(frame_ms, 95);
+      row.select_ms = nearestRankPercentile(select_ms, 50);
+      row.triangles = stats.triangles;
+      row.nodes = stats.nodes_selected;
+      row.resident_mib = stats.resident_mib;
+      const GpuPayloadGenerator& gen = (*terrain)->generator();
+      row.genPerNode_ms = gen.nodesGenerated() ? gen.gpuTime_ms() / double(gen.nodesGenerated()) : 0.0;
+      row.error = measureScreenError(truths[ci], renderer.readback(), camera);
+      perCamera.push_back(row);
+      progress.update(double(++done) / double(configs.size() * cameras.size()));
+    }
+    rows.insert(rows.end(), perCamera.begin(), perCamera.end());
+    rows.push_back(aggregateTradeRows(perCamera));
+  }
+  double total_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  std::filesystem::create_directories(dir, ec);
+  if (ec) return usageError({"", 0, 0, "--out", "cannot create '" + o.out + "': " + ec.message()});
+  std::string title = "globe trade: " + planet->name + ", " + std::to_string(size->width) + "x" +
+                      std::to_string(size->height) + ", " + device.name() + ", load " + loadAverage();
+  if (auto s = writeTradeReport(o.out, rows, title); !s) {
+    printError(s.error().format());
+    return kExitFailure;
+  }
+  if (int code = validationExitCode(device); code != kExitOk) return code;
+  std::printf("%-34s %9s %9s %9s %9s %9s %7s\n", "config (worst camera)", "median_ms", "p95_ms", "err_p50", "err_p95",
+              "err_max", "triMax");
+  for (const TradeRow& r : rows)
+    if (r.camera == "worst")
+      std::printf("%-34s %9.2f %9.2f %9.3f %9.3f %9.2f %7llu\n", r.config.c_str(), r.frameMedian_ms, r.frameP95_ms,
+                  r.error.p50_px, r.error.p95_px, r.error.max_px, (unsigned long long)r.triangles);
+  std::printf("truth ray casting %.1f s, total %.1f s; wrote %s/trade.csv and %s/pareto.svg\n", truth_ms * 1e-3, total_s,
+              o.out.c_str(), o.out.c_str());
+  return kExitOk;
+}
+
+}  // namespace
+
+void addTradeCommand(CLI::App& app, Runner& run) {
+  auto opts = std::make_shared<TradeOptions>();
+  opts->planet = defaultPlanetPath();
+  opts->path = defaultAssetPath("paths/flyover.path");
+  CLI::App* cmd = app.add_subcommand("trade", "Measure the speed/accuracy trade of the terrain settings (trade.csv, pareto.svg)");
+  cmd->add_option("--planet", opts->planet, "Planet file (TOML)")->capture_default_str();
+  cmd->add_option("--out", opts->out, "Output directory (trade.csv, pareto.svg)")->capture_default_str();
+  cmd->add_flag("--quick", opts->quick, "Few configurations, two cameras, 320x180: about a minute");
+  cmd->add_option("--quality", opts->quality, "Baseline preset: fast, balanced or exact (default: the planet's default_quality)");
+  cmd->add_option("--size", opts->size, "Image size WxH (default 1280x720, --quick 320x180)");
+  cmd->add_option("--frames", opts->frames, "Timed converged frames per configuration and camera (default 11, --quick 3)");
+  cmd->add_option("--stride", opts->stride, "Screen error sampled every N-th pixel in x and y (default 4)");
+  cmd->add_option("--cameras", opts->cameras, "Only these cameras, comma-separated (orbit, 100km, 10km, 1km, 2m, path@7s, path@12s)");
+  cmd->add_option("--configs", opts->configs, "Run only the first N configurations (0 = all)");
+  cmd->add_option("--path", opts->path, "Camera path whose t = 7 s and 12 s views join the standard cameras (full sweep)")
+      ->capture_default_str();
+  addDeviceFlags(*cmd, opts->device);
+  cmd->callback([opts, &run] { run = [opts] { return runTrade(*opts); }; });
+}
+
+}  // namespace globe::cli

@@ -1,0 +1,38 @@
+#include "engine/quality.h"
+
+namespace globe {
+
+TerrainSettings terrainSettingsFor(QualityPreset preset) {
+  TerrainSettings s;
+  // Values from the frontier measured by `globe trade` (docs/tradeoffs.md, "Presets").
+  switch (preset) {
+    case QualityPreset::Fast:  // ~100k triangles at the 1 km camera: the cheapest frontier point
+      s.gridCells = 16;
+      s.ranges.distanceMultiplier = 0.5;
+      break;
+    case QualityPreset::Balanced:  // ~200k triangles at 1 km: the renderer's 33 ms goal on lavapipe
+      s.gridCells = 16;
+      s.ranges.distanceMultiplier = 1.0;
+      break;
+    case QualityPreset::Exact:  // p95 screen error <= 0.5 px at 1280x720 at every standard camera
+      s.gridCells = 64;
+      s.ranges.distanceMultiplier = 2.0;
+      break;
+  }
+  return s;
+}
+
+Result<QualityPreset> parseQualityPreset(const std::string& text, const std::string& field) {
+  if (text == "fast") return QualityPreset::Fast;
+  if (text == "balanced") return QualityPreset::Balanced;
+  if (text == "exact") return QualityPreset::Exact;
+  return Error{"", 0, 0, field, "unknown quality '" + text + "' (fast, balanced, exact)"};
+}
+
+Result<QualityPreset> chooseQualityPreset(const std::string& option, const PlanetDescription& planet,
+                                          const std::string& field) {
+  if (option.empty()) return planet.default_quality;
+  return parseQualityPreset(option, field);
+}
+
+}  // namespace globe

@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# globe trade end to end (quick, one configuration, tiny image): outputs exist, the CSV header, the
+# SVG is complete; bad input is one line, exit 2, nothing written. Usage: trade_test.sh GLOBE WORKDIR
+set -uo pipefail
+GLOBE="$1"
+WORK="$2"
+rm -rf "$WORK" && mkdir -p "$WORK"
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+"$GLOBE" trade --quick --size 96x64 --configs 1 --frames 1 --stride 2 --out "$WORK/t" --validate \
+  >"$WORK/stdout" 2>"$WORK/stderr" || { fail "trade run"; cat "$WORK/stderr"; }
+for f in trade.csv pareto.svg; do [[ -s "$WORK/t/$f" ]] || fail "missing $f"; done
+header=$(head -1 "$WORK/t/trade.csv")
+expected="config,camera,grid_cells,distance_multiplier,max_depth,morph_fraction,width,height,frame_median_ms,frame_p95_ms,select_ms,triangles,nodes,resident_mib,gen_ms_per_node,err_p50_px,err_p95_px,err_max_px,err_p50_m,err_p95_m,err_max_m,silhouette_mismatches,silhouette_max_px,samples,samples_both_hit,truth_unresolved"
+[[ "$header" == "$expected" ]] || fail "trade.csv header: $header"
+rows=$(($(wc -l <"$WORK/t/trade.csv") - 1))
+[[ $rows -eq 3 ]] || fail "trade.csv has $rows rows, expected 3 (two cameras and the worst)"
+grep -q ',worst,' "$WORK/t/trade.csv" || fail "no worst row"
+grep -q '<svg' "$WORK/t/pareto.svg" || fail "pareto.svg has no <svg"
+grep -q '</svg>' "$WORK/t/pareto.svg" || fail "pareto.svg has no </svg>"
+ls -a "$WORK/t" | grep -q '\.tmp' && fail "temporary files left"
+
+bad() {  # bad NAME ARGS...: exit 2, one line on stderr, nothing written
+  local name="$1"; shift
+  "$GLOBE" trade --out "$WORK/bad_$name" "$@" >"$WORK/bad.out" 2>"$WORK/bad.err"
+  local code=$?
+  [[ $code -eq 2 ]] || fail "$name: exit $code, expected 2"
+  [[ $(wc -l <"$WORK/bad.err") -eq 1 ]] || { fail "$name: stderr is not one line"; cat "$WORK/bad.err"; }
+  grep -q '^globe: error: ' "$WORK/bad.err" || fail "$name: stderr: $(cat "$WORK/bad.err")"
+  [[ -e "$WORK/bad_$name" ]] && fail "$name: output written"
+}
+bad quality --quality best
+bad size --size 3x3
+bad planet --planet "$WORK/missing.toml"
+bad frames --frames 5000
+bad unknown --frobnicate
+"$GLOBE" trade --out "$WORK/missing_dir/x" --quick >"$WORK/bad.out" 2>"$WORK/bad.err"
+[[ $? -eq 2 ]] || fail "missing parent directory: not exit 2"
+# --quality on the rendering commands.
+"$GLOBE" render --quality best --out "$WORK/r.png" >"$WORK/bad.out" 2>"$WORK/bad.err"
+[[ $? -eq 2 ]] || fail "render --quality best: not exit 2"
+grep -q "unknown quality 'best'" "$WORK/bad.err" || fail "render --quality: $(cat "$WORK/bad.err")"
+[[ -e "$WORK/r.png" ]] && fail "render wrote a file"
+"$GLOBE" render --quality fast --size 64x48 --out "$WORK/fast.png" >"$WORK/r.out" 2>"$WORK/r.err" || fail "render --quality fast"
+[[ -s "$WORK/fast.png" ]] || fail "render --quality fast wrote nothing"
+
+if [[ $failures -ne 0 ]]; then echo "$failures failure(s)"; exit 1; fi
+echo "trade: all checks passed"
