@@ -11,7 +11,8 @@ GraphicsPipeline::GraphicsPipeline(Device& device, const GraphicsPipelineDesc& d
   pushDescriptorSet_ =
       reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(vkGetDeviceProcAddr(device.device(), "vkCmdPushDescriptorSetKHR"));
   if (!pushDescriptorSet_) throw std::runtime_error("vkCmdPushDescriptorSetKHR is not available");
-  setLayout_ = storageBufferSetLayout(device, desc.storageBuffers, stages_);
+  uniformMask_ = desc.uniformMask;
+  setLayout_ = storageBufferSetLayout(device, desc.storageBuffers, stages_, desc.uniformMask);
   VkPushConstantRange range{stages_, 0, desc.pushConstantBytes};
   VkDescriptorSetLayout setLayout = setLayout_;
   VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
@@ -94,7 +95,8 @@ GraphicsPipeline::GraphicsPipeline(Device& device, const GraphicsPipelineDesc& d
 void GraphicsPipeline::bind(VkCommandBuffer cmd, std::initializer_list<VkDescriptorBufferInfo> buffers,
                             const void* pushConstants, uint32_t pushConstantBytes) const {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
-  if (buffers.size()) pushStorageBuffers(pushDescriptorSet_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, buffers);
+  if (buffers.size())
+    pushStorageBuffers(pushDescriptorSet_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, buffers, uniformMask_);
   if (pushConstantBytes) vkCmdPushConstants(cmd, layout_, stages_, 0, pushConstantBytes, pushConstants);
 }
 

@@ -12,7 +12,8 @@ namespace globe::vk {
 struct GraphicsPipelineDesc {
   std::string vertexShader;    // e.g. "terrain.vert"
   std::string fragmentShader;  // e.g. "terrain.frag"
-  uint32_t storageBuffers = 0;
+  uint32_t storageBuffers = 0;      // buffer bindings 0..n-1 (storage, or uniform per uniformMask)
+  uint32_t uniformMask = 0;         // bit b: binding b is a uniform buffer (see compute_pipeline.h)
   uint32_t pushConstantBytes = 0;
   VkFormat colourFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
   VkFormat depthFormat = VK_FORMAT_D32_SFLOAT;
@@ -38,6 +39,7 @@ class GraphicsPipeline {
   UniquePipelineLayout layout_;
   UniquePipeline pipeline_;
   PFN_vkCmdPushDescriptorSetKHR pushDescriptorSet_ = nullptr;
+  uint32_t uniformMask_ = 0;
   VkShaderStageFlags stages_ = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 };
 

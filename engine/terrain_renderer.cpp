@@ -28,13 +28,17 @@ struct SkyPush {
 };
 static_assert(sizeof(SkyPush) == 96);
 
-constexpr VkDeviceSize kFrameHeaderBytes = sizeof(gpu::TerrainFrame);
+// Per-frame buffer: the TerrainFrame constants, then the instances at an offset every device accepts
+// for a storage-buffer binding (minStorageBufferOffsetAlignment is at most 256).
+constexpr VkDeviceSize kFrameHeaderBytes = 512;
+static_assert(sizeof(gpu::TerrainFrame) <= kFrameHeaderBytes);
 
 vk::GraphicsPipelineDesc terrainDesc(VkFormat colourFormat, bool wireframe) {
   vk::GraphicsPipelineDesc d;
   d.vertexShader = "terrain.vert";
   d.fragmentShader = "terrain.frag";
-  d.storageBuffers = 2;  // 0: frame constants + instances, 1: payloads
+  d.storageBuffers = 3;  // 0: instances, 1: payloads, 2: frame constants (uniform)
+  d.uniformMask = 1u << 2;
   d.pushConstantBytes = sizeof(gpu::TerrainDrawPush);
   d.colourFormat = colourFormat;
   d.wireframe = wireframe;
@@ -133,13 +137,26 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
 
 TerrainRenderer::~TerrainRenderer() = default;
 
+VkDescriptorBufferInfo TerrainRenderer::instanceDescriptor(uint32_t frameIndex) const {
+  const vk::Buffer& b = frames_[frameIndex];
+  return {b.handle(), kFrameHeaderBytes, b.size() - kFrameHeaderBytes};
+}
+
+VkDescriptorBufferInfo TerrainRenderer::constantsDescriptor(uint32_t frameIndex) const {
+  return {frames_[frameIndex].handle(), 0, sizeof(gpu::TerrainFrame)};
+}
+
+const unsigned char* TerrainRenderer::instanceBytes(uint32_t frameIndex) const {
+  return static_cast<const unsigned char*>(frames_[frameIndex].mapped()) + kFrameHeaderBytes;
+}
+
 void TerrainRenderer::ensureCapacity(uint32_t frameIndex, uint32_t nodes) {
   if (nodes <= capacity_[frameIndex]) return;
   // Grow geometrically so a slowly rising node count does not reallocate every frame. The caller
   // waited for this frame index, so the old buffer is idle and can go now.
   const uint32_t capacity = std::max(nodes, capacity_[frameIndex] + capacity_[frameIndex] / 2);
   frames_[frameIndex] = vk::Buffer(device_, kFrameHeaderBytes + VkDeviceSize(capacity) * sizeof(gpu::TerrainInstance),
-                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::HostVisible,
+                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::HostVisible,
                                    frameIndex == 0 ? "terrain frame 0" : "terrain frame 1");
   capacity_[frameIndex] = capacity;
 }
@@ -216,9 +233,9 @@ DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, con
 
   const vk::GraphicsPipeline& pipeline =
       view == TerrainDebugView::kWireframe ? *wireframe_ : solid_;
-  VkDescriptorBufferInfo frameInfo{buffer.handle(), 0, kFrameHeaderBytes + VkDeviceSize(nodes.size()) * sizeof(gpu::TerrainInstance)};
   gpu::TerrainDrawPush push{cells_, 0};
-  pipeline.bind(cmd, {frameInfo, payloads.descriptor()}, &push, sizeof(push));
+  pipeline.bind(cmd, {instanceDescriptor(frameIndex), payloads.descriptor(), constantsDescriptor(frameIndex)}, &push,
+                sizeof(push));
   vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
   const uint32_t fullCount = skirts ? fullIndices_ : fullGridIndices_;
   const uint32_t halfCount = skirts ? halfIndices_ : halfGridIndices_;

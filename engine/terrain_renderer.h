@@ -89,8 +89,12 @@ class TerrainRenderer {
   // Index counts of the full and the half-resolution grid ranges (with skirts).
   uint32_t fullIndexCount() const { return fullIndices_; }
   uint32_t halfIndexCount() const { return halfIndices_; }
-  // The per-frame buffer of `frameIndex` (TerrainFrame + instances), for tests.
+  // The per-frame buffer of `frameIndex`: TerrainFrame constants at offset 0, the drawn nodes'
+  // TerrainInstances from instanceBytes(). Bindings of the terrain shaders (0 instances, 2 constants).
   const vk::Buffer& frameBuffer(uint32_t frameIndex) const { return frames_[frameIndex]; }
+  VkDescriptorBufferInfo instanceDescriptor(uint32_t frameIndex) const;
+  VkDescriptorBufferInfo constantsDescriptor(uint32_t frameIndex) const;
+  const unsigned char* instanceBytes(uint32_t frameIndex) const;
 
  private:
   void ensureCapacity(uint32_t frameIndex, uint32_t nodes);

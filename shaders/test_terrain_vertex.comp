@@ -6,7 +6,7 @@
 #include "include/terrain_vertex.glsl"
 
 layout(local_size_x = 64) in;
-layout(std430, set = 0, binding = 2) writeonly buffer Out { vec4 clip[]; };
+layout(std430, set = 0, binding = 3) writeonly buffer Out { vec4 clip[]; };
 
 layout(push_constant) uniform Push {
   uint drawnCells;

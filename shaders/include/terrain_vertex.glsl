@@ -23,11 +23,11 @@
 #include "payload_layout.h"
 #include "terrain_layout.h"
 
-layout(std430, set = 0, binding = 0) readonly buffer TerrainFrameBuffer {
-  TerrainFrame frame;
-  TerrainInstance instances[];
-};
+// Bindings (engine/terrain_renderer.cpp): 0 the drawn nodes, 1 the payloads, 2 the frame constants —
+// a uniform block, which every vertex reads (lavapipe fetches it once instead of per lane).
+layout(std430, set = 0, binding = 0) readonly buffer TerrainInstances { TerrainInstance instances[]; };
 layout(std430, set = 0, binding = 1) readonly buffer PayloadBuffer { vec4 payload[]; };
+layout(std140, set = 0, binding = 2) uniform TerrainFrameBlock { TerrainFrame frame; };
 
 // Finishes the morph a little inside both ends of the band so that float rounding of the distance
 // cannot leave k just below 1 where a coarser neighbour needs it exactly 1 (or just above 0).

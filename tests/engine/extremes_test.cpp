@@ -260,7 +260,8 @@ class ExtremesTest : public GpuTest {
         bad += std::isfinite(v.x + v.y + v.z + v.w) ? 0 : 1;
       for (size_t k = 0; k < selection.nodes.size(); ++k) {
         gpu::TerrainInstance inst;
-        std::memcpy(&inst, bytes + sizeof(gpu::TerrainFrame) + k * sizeof(inst), sizeof(inst));
+        std::memcpy(&inst, s.terrain->renderer().instanceBytes(uint32_t(s.renderer->frame() % 2)) + k * sizeof(inst),
+                    sizeof(inst));
         bad += std::isfinite(inst.offset.x + inst.offset.y + inst.offset.z + inst.offset.w) ? 0 : 1;
         bad += std::isfinite(inst.morph.x) && std::isfinite(inst.morph.y) && inst.morph.x <= inst.morph.y ? 0 : 1;
       }
@@ -327,7 +328,7 @@ class ExtremesTest : public GpuTest {
     const uint32_t count = (kCells + 1) * (kCells + 1);
     vk::Buffer out(device(), count * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::HostVisible,
                    "extremes vertex readback");
-    vk::ComputePipeline kernel(device(), "test_terrain_vertex.comp", 3, sizeof(Push));
+    vk::ComputePipeline kernel(device(), "test_terrain_vertex.comp", 4, sizeof(Push), /*uniformMask=*/1u << 2);
     vk::OffscreenTarget target(device(), {kWidth, kHeight});
     const glm::dvec3 east = glm::normalize(glm::cross(glm::dvec3(0, 0, 1), direction) + glm::dvec3(1e-9, 0, 0));
     const double scale = kJitterWidth_px * 0.5, scaleY = kJitterWidth_px / start.aspect * 0.5;
@@ -371,8 +372,8 @@ class ExtremesTest : public GpuTest {
         target.end(cmd);
         Push push{kCells, instance, count, 0};
         kernel.bind(cmd,
-                    {s.terrain->renderer().frameBuffer(frameIndex).descriptor(),
-                     s.terrain->generator().payloads().descriptor(), out.descriptor()},
+                    {s.terrain->renderer().instanceDescriptor(frameIndex), s.terrain->generator().payloads().descriptor(),
+                     s.terrain->renderer().constantsDescriptor(frameIndex), out.descriptor()},
                     &push, sizeof(push));
         vkCmdDispatch(cmd, (count + 63) / 64, 1, 1);
         vk::computeWriteBarrier(cmd);

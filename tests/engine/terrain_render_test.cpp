@@ -385,15 +385,16 @@ std::vector<glm::vec4> gpuClipPositions(vk::Device& device, TerrainRenderer& ren
   const uint32_t count = (kCells + 1) * (kCells + 1);
   vk::Buffer out(device, count * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::HostVisible,
                  "terrain vertex readback");
-  vk::ComputePipeline kernel(device, "test_terrain_vertex.comp", 3, sizeof(Push));
+  vk::ComputePipeline kernel(device, "test_terrain_vertex.comp", 4, sizeof(Push), /*uniformMask=*/1u << 2);
   vk::OffscreenTarget target(device, {kWidth, kHeight});
   device.submitAndWait([&](VkCommandBuffer cmd) {
     target.begin(cmd, kBackground);
     renderer.record(cmd, camera, origin_m, std::span(&node, 1), payloads, 0);  // fills frame buffer 0
     target.end(cmd);
     Push push{kCells, 0, count, 0};
-    kernel.bind(cmd, {renderer.frameBuffer(0).descriptor(), payloads.descriptor(), out.descriptor()}, &push,
-                sizeof(push));
+    kernel.bind(cmd,
+                {renderer.instanceDescriptor(0), payloads.descriptor(), renderer.constantsDescriptor(0), out.descriptor()},
+                &push, sizeof(push));
     vkCmdDispatch(cmd, (count + 63) / 64, 1, 1);
     vk::computeWriteBarrier(cmd);
   });
