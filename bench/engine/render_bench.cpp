@@ -2,8 +2,10 @@
 // converged (every payload resident: render cost alone), with triangles and draw calls per frame.
 //
 //   build/release/bench/engine_bench --benchmark_filter=TerrainFrame
-// Knobs: GLOBE_BENCH_GRID (cells per node side), GLOBE_BENCH_RANGE (LOD distance multiplier).
+// Knobs: GLOBE_BENCH_QUALITY (fast|balanced|exact, default balanced), then overrides
+// GLOBE_BENCH_GRID (cells per node side) and GLOBE_BENCH_RANGE (LOD distance multiplier).
 #include "engine/headless_renderer.h"
+#include "engine/quality.h"
 #include "bench_support.h"
 #include "planet/planet_file.h"
 
@@ -34,7 +36,16 @@ GeodeticPose standardCamera(int index) {
 void BM_TerrainFrame(benchmark::State& state) {
   const int index = int(state.range(0));
   static const ElevationModel model(planet());
-  TerrainSettings settings;
+  QualityPreset quality = QualityPreset::Balanced;
+  if (const char* q = std::getenv("GLOBE_BENCH_QUALITY")) {
+    auto parsed = parseQualityPreset(q, "GLOBE_BENCH_QUALITY");
+    if (!parsed) {
+      state.SkipWithError(parsed.error().format().c_str());
+      return;
+    }
+    quality = *parsed;
+  }
+  TerrainSettings settings = terrainSettingsFor(quality);
   if (const char* g = std::getenv("GLOBE_BENCH_GRID")) settings.gridCells = uint32_t(std::atoi(g));
   if (const char* r = std::getenv("GLOBE_BENCH_RANGE")) settings.ranges.distanceMultiplier = std::atof(r);
   GeodeticPose pose = standardCamera(index);
