@@ -6,13 +6,13 @@ TerrainSettings terrainSettingsFor(QualityPreset preset) {
   TerrainSettings s;
   // Values from the frontier measured by `globe trade` (docs/tradeoffs.md, "Presets").
   switch (preset) {
-    case QualityPreset::Fast:  // ~100k triangles at the 1 km camera: the cheapest frontier point
+    case QualityPreset::Fast:  // ~50k triangles at the 1 km camera: the cheapest useful view
+      s.gridCells = 16;
+      s.ranges.distanceMultiplier = 0.25;
+      break;
+    case QualityPreset::Balanced:  // ~100k triangles at 1 km: meets 33 ms at 1280x720 on lavapipe
       s.gridCells = 16;
       s.ranges.distanceMultiplier = 0.5;
-      break;
-    case QualityPreset::Balanced:  // ~200k triangles at 1 km: the renderer's 33 ms goal on lavapipe
-      s.gridCells = 16;
-      s.ranges.distanceMultiplier = 1.0;
       break;
     case QualityPreset::Exact:  // p95 screen error <= 0.5 px at 1280x720 at every standard camera
       s.gridCells = 64;
