@@ -65,13 +65,9 @@ int runBench(const BenchOptions& o) {
   TerrainSettings settings = terrainSettingsFor(*quality);
   if (o.gridCells) settings.gridCells = o.gridCells;
   if (auto s = validateTerrainSettings(settings); !s) return usageError({"", 0, 0, "--grid", s.error().message});
+  if (auto s = checkOutputDirectory(o.out, "--out"); !s) return usageError(s.error());
   std::filesystem::path dir(o.out);
   std::error_code ec;
-  if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
-    return usageError({"", 0, 0, "--out", "'" + o.out + "' exists and is not a directory"});
-  std::filesystem::path parent = dir.has_parent_path() ? dir.parent_path() : std::filesystem::path(".");
-  if (!std::filesystem::is_directory(parent, ec))
-    return usageError({"", 0, 0, "--out", "directory '" + parent.string() + "' does not exist"});
 
   ElevationModel model(*planet);
   // One sun for the whole flight, lighting the region of the path's first keyframe.

@@ -19,6 +19,17 @@ Result<ImageSize> parseSize(const std::string& text, const std::string& field) {
   return ImageSize{w, h};
 }
 
+Status checkOutputDirectory(const std::string& dir, const std::string& field) {
+  std::filesystem::path path(dir);
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_directory(path, ec))
+    return Error{"", 0, 0, field, "'" + dir + "' exists and is not a directory"};
+  std::filesystem::path parent = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+  if (!std::filesystem::is_directory(parent, ec))
+    return Error{"", 0, 0, field, "directory '" + parent.string() + "' does not exist"};
+  return Ok{};
+}
+
 Status checkImageExtension(const std::string& path, const std::string& field) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });

@@ -17,6 +17,10 @@ struct ImageSize {
 // "WxH" with 16 <= W, H <= 16384.
 Result<ImageSize> parseSize(const std::string& text, const std::string& field);
 
+// An output directory: created later by the command, so it must be a directory or not exist yet, and
+// its parent must exist. Errors name `field`.
+Status checkOutputDirectory(const std::string& dir, const std::string& field);
+
 // Output files must end in .png or .exr.
 Status checkImageExtension(const std::string& path, const std::string& field);
 

@@ -141,13 +141,9 @@ int runTrade(const TradeOptions& o) {
     if (!p) return usageError(p.error());
     path = std::move(*p);
   }
+  if (auto s = checkOutputDirectory(o.out, "--out"); !s) return usageError(s.error());
   std::filesystem::path dir(o.out);
   std::error_code ec;
-  if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
-    return usageError({"", 0, 0, "--out", "'" + o.out + "' exists and is not a directory"});
-  std::filesystem::path parent = dir.has_parent_path() ? dir.parent_path() : std::filesystem::path(".");
-  if (!std::filesystem::is_directory(parent, ec))
-    return usageError({"", 0, 0, "--out", "directory '" + parent.string() + "' does not exist"});
 
   ElevationModel model(*planet);
   TerrainSettings base = terrainSettingsFor(*preset);

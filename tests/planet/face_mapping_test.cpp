@@ -13,21 +13,8 @@ namespace {
 using testing::fromLatLon;
 using testing::randomDirection;
 
-bool bitEqual(const glm::dvec3& a, const glm::dvec3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-
-// (u, v) of parameter s along face edge e, walked from corner e to corner e+1.
-std::pair<double, double> onEdge(int e, double s) {
-  switch (e) {
-    case 0:
-      return {s, 0.0};
-    case 1:
-      return {1.0, s};
-    case 2:
-      return {1.0 - s, 1.0};
-    default:
-      return {0.0, 1.0 - s};
-  }
-}
+using testing::bitEqual;
+using testing::onEdge;
 
 TEST(FaceMapping, SharedEdgePointsBitIdenticalAcrossAllSixtyPairings) {
   const RhombusFaceMapping& m = RhombusFaceMapping::get();

@@ -1,6 +1,8 @@
 #pragma once
 // Helpers shared by the LOD tests: spherical areas, residency fakes, seeded cameras.
 #include <cmath>
+#include <cstring>
+#include <utility>
 #include <numbers>
 #include <random>
 #include <unordered_set>
@@ -39,6 +41,23 @@ inline glm::dvec3 fromLatLon(double latDeg, double lonDeg) {
   const double lat = latDeg * std::numbers::pi / 180.0;
   const double lon = lonDeg * std::numbers::pi / 180.0;
   return {std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
+}
+
+// Bitwise equality: seam exactness means the same bits, not merely equal values.
+inline bool bitEqual(const glm::dvec3& a, const glm::dvec3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// (u, v) of parameter s along face edge e, walked from corner e to corner e+1.
+inline std::pair<double, double> onEdge(int e, double s) {
+  switch (e) {
+    case 0:
+      return {s, 0.0};
+    case 1:
+      return {1.0, s};
+    case 2:
+      return {1.0 - s, 1.0};
+    default:
+      return {0.0, 1.0 - s};
+  }
 }
 
 inline glm::dvec3 randomDirection(std::mt19937_64& rng) {

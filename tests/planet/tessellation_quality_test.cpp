@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "lod_test_util.h"
+
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -127,20 +129,8 @@ TEST(TessellationQuality, RankingMatchesTheBrief) {
   EXPECT_LT(subdivisionMetrics().areaCv(), rhombusMetrics().areaCv());
 }
 
-bool bitEqual(const glm::dvec3& a, const glm::dvec3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-
-std::pair<double, double> onEdge(int e, double s) {
-  switch (e) {
-    case 0:
-      return {s, 0.0};
-    case 1:
-      return {1.0, s};
-    case 2:
-      return {1.0 - s, 1.0};
-    default:
-      return {0.0, 1.0 - s};
-  }
-}
+using testing::bitEqual;
+using testing::onEdge;
 
 TEST(TessellationQuality, SubdivisionMappingIsSeamExact) {
   const SubdivisionFaceMapping& m = SubdivisionFaceMapping::get();
