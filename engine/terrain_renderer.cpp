@@ -104,7 +104,7 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
         d.fragmentShader = "terrain_sky.frag";
         d.pushConstantBytes = sizeof(SkyPush);
         d.colourFormat = colourFormat;
-        d.depthTest = false;
+        d.depthTest = true;  // GREATER_OR_EQUAL against depth 0: passes only where nothing was drawn
         d.depthWrite = false;
         return d;
       }()) {
@@ -183,10 +183,19 @@ DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, con
                                   uint32_t frameIndex) {
   assert(frameIndex < kFramesInFlight);
   DrawStats stats;
-  if (style_.sky) {
-    recordSky(cmd, camera);
-    ++stats.drawCalls;
-  }
+  // The sky goes last, behind everything: its fullscreen triangle lies at the far plane (depth 0),
+  // so the depth test keeps only the pixels no terrain covered, and those are the only ones shaded.
+  struct SkyLast {
+    const TerrainRenderer& renderer;
+    VkCommandBuffer cmd;
+    const Camera& camera;
+    DrawStats& stats;
+    ~SkyLast() {
+      if (!renderer.style_.sky) return;
+      renderer.recordSky(cmd, camera);
+      ++stats.drawCalls;
+    }
+  } skyLast{*this, cmd, camera, stats};
   if (nodes.empty()) return stats;
   ensureCapacity(frameIndex, uint32_t(nodes.size()));
   vk::Buffer& buffer = frames_[frameIndex];
