@@ -7,7 +7,7 @@ function(globe_configure_target target)
                                               GLM_FORCE_RADIANS GLM_FORCE_DEPTH_ZERO_TO_ONE)
   target_compile_options(${target} PRIVATE -Wall -Wextra -Wconversion -Wshadow -Wpedantic
                                            -Wno-missing-field-initializers)
-  # No -ffast-math anywhere: planet-scale geodesy needs IEEE double semantics.
+  # IEEE semantics everywhere (fast-math is never enabled): planet-scale geodesy needs exact doubles.
   target_compile_options(${target} PRIVATE -fno-fast-math -ffp-contract=off)
   if(GLOBE_WERROR)
     target_compile_options(${target} PRIVATE -Werror)

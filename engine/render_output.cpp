@@ -5,6 +5,13 @@
 
 namespace globe {
 
+ViewRays viewRays(const Camera& camera, float forwardW) {
+  double tanY = std::tan(camera.verticalFov_rad * 0.5);
+  return {{float(camera.right.x), float(camera.right.y), float(camera.right.z), float(tanY * camera.aspect)},
+          {float(camera.up.x), float(camera.up.y), float(camera.up.z), float(tanY)},
+          {float(camera.forward.x), float(camera.forward.y), float(camera.forward.z), forwardW}};
+}
+
 double rayDistanceFromDepth(const Camera& camera, uint32_t width, uint32_t height, double x, double y, float depth) {
   if (!(depth > 0.0f)) return std::numeric_limits<double>::infinity();
   double tanY = std::tan(camera.verticalFov_rad * 0.5);

@@ -7,6 +7,16 @@
 
 namespace globe {
 
+// The view-ray basis of the fullscreen passes (fullscreen.vert + a ray-casting fragment shader):
+// right.w = tan(horizontal fov / 2), up.w = tan(vertical fov / 2), forward.w = `forwardW` (a
+// per-shader extra: near plane, grid spacing, ...). Vulkan NDC: y grows downwards.
+struct ViewRays {
+  float right[4];
+  float up[4];
+  float forward[4];
+};
+ViewRays viewRays(const Camera& camera, float forwardW);
+
 // Distance (metres) along the ray through pixel centre (x, y) for reversed-Z device depth `depth`.
 double rayDistanceFromDepth(const Camera& camera, uint32_t width, uint32_t height, double x, double y, float depth);
 

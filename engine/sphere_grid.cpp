@@ -1,5 +1,7 @@
 #include "engine/sphere_grid.h"
 
+#include "engine/render_output.h"
+
 #include <cmath>
 
 namespace globe {
@@ -7,9 +9,7 @@ namespace globe {
 namespace {
 struct Push {  // layout of sphere_grid.frag's push constants
   double cameraAndRadius[4];
-  float right[4];
-  float up[4];
-  float forward[4];
+  ViewRays rays;  // forward.w: grid spacing (degrees)
 };
 static_assert(sizeof(Push) == 80);
 }  // namespace
@@ -27,11 +27,8 @@ SphereGrid::SphereGrid(vk::Device& device)
       }()) {}
 
 void SphereGrid::record(VkCommandBuffer cmd, const Camera& camera, double radius_m, double spacing_deg) const {
-  double tanY = std::tan(camera.verticalFov_rad * 0.5);
   Push push{{camera.position_m.x, camera.position_m.y, camera.position_m.z, radius_m},
-            {float(camera.right.x), float(camera.right.y), float(camera.right.z), float(tanY * camera.aspect)},
-            {float(camera.up.x), float(camera.up.y), float(camera.up.z), float(tanY)},
-            {float(camera.forward.x), float(camera.forward.y), float(camera.forward.z), float(spacing_deg)}};
+            viewRays(camera, float(spacing_deg))};
   pipeline_.bind(cmd, {}, &push, sizeof(push));
   vkCmdDraw(cmd, 3, 1, 0, 0);
 }

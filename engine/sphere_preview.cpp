@@ -1,5 +1,7 @@
 #include "engine/sphere_preview.h"
 
+#include "engine/render_output.h"
+
 #include <cmath>
 
 namespace globe {
@@ -7,9 +9,7 @@ namespace globe {
 namespace {
 struct Push {
   double cameraAndRadius[4];
-  float right[4];
-  float up[4];
-  float forward[4];
+  ViewRays rays;  // forward.w: near plane (m)
   float sun[4];
 };
 static_assert(sizeof(Push) == 96);
@@ -26,12 +26,9 @@ SpherePreview::SpherePreview(vk::Device& device)
 
 void SpherePreview::record(VkCommandBuffer cmd, const Camera& camera, double radius_m,
                            const glm::dvec3& sunDirection) const {
-  double tanY = std::tan(camera.verticalFov_rad * 0.5);
   glm::dvec3 sun = glm::normalize(sunDirection);
   Push push{{camera.position_m.x, camera.position_m.y, camera.position_m.z, radius_m},
-            {float(camera.right.x), float(camera.right.y), float(camera.right.z), float(tanY * camera.aspect)},
-            {float(camera.up.x), float(camera.up.y), float(camera.up.z), float(tanY)},
-            {float(camera.forward.x), float(camera.forward.y), float(camera.forward.z), float(camera.near_m)},
+            viewRays(camera, float(camera.near_m)),
             {float(sun.x), float(sun.y), float(sun.z), 0.0f}};
   pipeline_.bind(cmd, {}, &push, sizeof(push));
   vkCmdDraw(cmd, 3, 1, 0, 0);

@@ -2,6 +2,7 @@
 
 #include <meshoptimizer.h>
 
+#include "engine/render_output.h"
 #include "engine/vk_check.h"
 #include "shaders/include/payload_layout.h"
 #include "shaders/include/terrain_layout.h"
@@ -19,9 +20,7 @@ namespace globe {
 namespace {
 
 struct SkyPush {
-  float right[4];
-  float up[4];
-  float forward[4];
+  ViewRays rays;
   float zenith[4];
   float horizon[4];
   float local[4];
@@ -162,15 +161,12 @@ void TerrainRenderer::ensureCapacity(uint32_t frameIndex, uint32_t nodes) {
 }
 
 void TerrainRenderer::recordSky(VkCommandBuffer cmd, const Camera& camera) const {
-  const double tanY = std::tan(camera.verticalFov_rad * 0.5);
   const double distance_m = glm::length(camera.position_m);
   const glm::dvec3 local = distance_m > 0.0 ? camera.position_m / distance_m : glm::dvec3(0, 0, 1);
   const double altitude_m = distance_m - style_.radius_m;
   const float atmosphere = float(std::clamp(1.0 - altitude_m / style_.atmosphereHeight_m, 0.0, 1.0));
   const glm::vec3 z = style_.zenithColour, h = style_.horizonColour;
-  SkyPush push{{float(camera.right.x), float(camera.right.y), float(camera.right.z), float(tanY * camera.aspect)},
-               {float(camera.up.x), float(camera.up.y), float(camera.up.z), float(tanY)},
-               {float(camera.forward.x), float(camera.forward.y), float(camera.forward.z), 0.0f},
+  SkyPush push{viewRays(camera, 0.0f),
                {z.x, z.y, z.z, atmosphere},
                {h.x, h.y, h.z, 0.0f},
                {float(local.x), float(local.y), float(local.z), 0.0f}};

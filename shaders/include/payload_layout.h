@@ -17,7 +17,7 @@
 //   [S*S, S*S + S*S)      normal: xyz = unit surface normal, planet-fixed, from double-precision
 //                         positions (central differences); w = 0. Ring samples hold the normal of the
 //                         nearest vertex (there are no samples beyond the ring).
-// Quantum: positions and node centres are multiples of q(level) = 2^(ceil(log2(node width)) - 20)
+// Quantum: positions and node centres are multiples of q(level) = 2^(ceil(log2(node width)) - 18)
 // metres, so that centre + position is the same double from every node of a level that holds the
 // sample, and stays exact in float relative to a floating origin snapped to the coarsest quantum.
 #ifndef GLOBE_PAYLOAD_LAYOUT_H

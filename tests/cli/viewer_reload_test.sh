@@ -13,14 +13,7 @@ SCRIPT="$3"
 PLANET="$4"
 WORK="$5"
 rm -rf "$WORK" && mkdir -p "$WORK"
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-
-if ! command -v xvfb-run >/dev/null; then
-  echo "FAIL: xvfb-run not found (scripts/install-deps.sh installs the xvfb package)"
-  exit 1
-fi
-XVFB=(xvfb-run -a -n $((100 + RANDOM % 800)) -e "$WORK/xvfb.log" -s "-screen 0 1024x768x24 -nolisten tcp")
+source "$(dirname "$0")/xvfb_common.sh"
 
 cp "$PLANET" "$WORK/planet.toml"
 "${XVFB[@]}" "$GLOBE" view --validate --planet "$WORK/planet.toml" --frames 115 --script "$SCRIPT" --size 320x240 \

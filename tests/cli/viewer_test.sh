@@ -12,16 +12,7 @@ SCRIPT="$3"
 RECORD_SCRIPT="$4"
 WORK="$5"
 rm -rf "$WORK" && mkdir -p "$WORK"
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-
-if ! command -v xvfb-run >/dev/null; then
-  echo "FAIL: xvfb-run not found (scripts/install-deps.sh installs the xvfb package)"
-  exit 1
-fi
-# -a: the first free display number from a random start (-n), so concurrent runs (other build
-# trees, other checkouts) rarely race for the same one. 24-bit like a desktop.
-XVFB=(xvfb-run -a -n $((100 + RANDOM % 800)) -e "$WORK/xvfb.log" -s "-screen 0 1024x768x24 -nolisten tcp")
+source "$(dirname "$0")/xvfb_common.sh"
 
 # 1. The scripted flight over the terrain: debug views, a resize, a recorded path. Screenshots are
 # EXR so the check can tell terrain (finite depth) from sky and space (+inf).
