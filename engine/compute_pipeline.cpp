@@ -44,7 +44,8 @@ void pushStorageBuffers(PFN_vkCmdPushDescriptorSetKHR push, VkCommandBuffer cmd,
 }
 
 ComputePipeline::ComputePipeline(Device& device, const std::string& shader, uint32_t buffers,
-                                 uint32_t pushConstantBytes, uint32_t uniformMask)
+                                 uint32_t pushConstantBytes, uint32_t uniformMask,
+                                 std::span<const uint32_t> specialization)
     : device_(device), uniformMask_(uniformMask) {
   pushDescriptorSet_ =
       reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(vkGetDeviceProcAddr(device.device(), "vkCmdPushDescriptorSetKHR"));
@@ -68,6 +69,11 @@ ComputePipeline::ComputePipeline(Device& device, const std::string& shader, uint
   info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
   info.stage.module = module;
   info.stage.pName = "main";
+  std::vector<VkSpecializationMapEntry> entries(specialization.size());
+  for (uint32_t i = 0; i < entries.size(); ++i) entries[i] = {i, i * uint32_t(sizeof(uint32_t)), sizeof(uint32_t)};
+  VkSpecializationInfo specializationInfo{static_cast<uint32_t>(entries.size()), entries.data(),
+                                          specialization.size_bytes(), specialization.data()};
+  if (!specialization.empty()) info.stage.pSpecializationInfo = &specializationInfo;
   info.layout = layout;
   VkPipeline pipeline;
   GLOBE_VK_CHECK(vkCreateComputePipelines(device.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));

@@ -7,15 +7,17 @@
 #include "engine/resources.h"
 
 #include <initializer_list>
+#include <span>
 #include <string>
 
 namespace globe::vk {
 
 class ComputePipeline {
  public:
-  // `shader` names a compiled shader ("payload.comp"); `buffers` bindings 0..n-1.
+  // `shader` names a compiled shader ("payload.comp"); `buffers` bindings 0..n-1. `specialization`
+  // gives 32-bit specialization constant i the value specialization[i].
   ComputePipeline(Device& device, const std::string& shader, uint32_t buffers, uint32_t pushConstantBytes,
-                  uint32_t uniformMask = 0);
+                  uint32_t uniformMask = 0, std::span<const uint32_t> specialization = {});
 
   // Binds the pipeline, pushes the buffers as bindings 0..n-1 and the push constants.
   void bind(VkCommandBuffer cmd, std::initializer_list<VkDescriptorBufferInfo> buffers, const void* pushConstants,

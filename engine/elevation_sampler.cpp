@@ -12,7 +12,8 @@ namespace globe {
 ElevationSampler::ElevationSampler(vk::Device& device, const gpu::ElevationParams& params, uint32_t capacity)
     : device_(device),
       capacity_(capacity),
-      pipeline_(device, "elevation_samples.comp", 3, sizeof(uint32_t), /*uniformMask=*/1u),
+      pipeline_(device, "elevation_samples.comp", 3, sizeof(uint32_t), /*uniformMask=*/1u,
+                elevationSpecialization(params)),
       params_(device, sizeof(gpu::ElevationParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::HostVisible,
               "elevation params"),
       directions_(device, VkDeviceSize(capacity) * 32, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,

@@ -44,6 +44,18 @@ gpu::ElevationParams packElevationParams(const PlanetDescription& planet) {
   return p;
 }
 
+ElevationSpecialization elevationSpecialization(const gpu::ElevationParams& params) {
+  ElevationSpecialization s{};
+  s[GLOBE_ELEVATION_SPEC_LAYER_COUNT] = params.layer_count;
+  for (int l = 0; l < GLOBE_MAX_ELEVATION_LAYERS; ++l) {
+    const gpu::ElevationLayerParams& layer = params.layers[l];
+    s[GLOBE_ELEVATION_SPEC_OCTAVES + l] = layer.octaves;
+    s[GLOBE_ELEVATION_SPEC_KIND + l] = layer.kind;
+    s[GLOBE_ELEVATION_SPEC_MODULATOR + l] = static_cast<std::uint32_t>(layer.modulator);
+  }
+  return s;
+}
+
 namespace {
 
 // The elevation function. Mirrored statement by statement in shaders/include/elevation.glsl:

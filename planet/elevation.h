@@ -10,6 +10,7 @@
 //                      value[l] = sum + offset_m;   elevation += value[l]
 // with t(n) = n (fbm), (1 - |n|)^2 (ridged), |n| (billow); freq_{i+1} = freq_i * lacunarity,
 // amp_{i+1} = amp_i * gain, seed_{i+1} = seed_i + 0x9e3779b9 (mod 2^32).
+#include <array>
 #include <cstdint>
 #include <glm/vec3.hpp>
 
@@ -24,6 +25,12 @@ std::uint32_t layerSeed(std::uint64_t planet_seed, int layer_index);
 // Packs a (valid, see validatePlanet) description into the struct the shaders read; unused layer
 // slots are zero. frequency = 1 / wavelength_m, modulation_inv_range = 1 / (high - low).
 gpu::ElevationParams packElevationParams(const PlanetDescription& planet);
+
+// The specialization constants every elevation kernel is built with (value i = constant id i, see
+// GLOBE_ELEVATION_SPEC_* in elevation_params.h): layer count, then per layer slot the octave count,
+// kind and modulator (int bits) of `params`.
+using ElevationSpecialization = std::array<std::uint32_t, GLOBE_ELEVATION_SPEC_COUNT>;
+ElevationSpecialization elevationSpecialization(const gpu::ElevationParams& params);
 
 class ElevationModel {
  public:

@@ -18,8 +18,8 @@ namespace globe {
 inline constexpr double kGradientNoiseBound = 1.04;
 
 // 32-bit avalanche ("lowbias32", C. Wellons, hash-prospector): every input bit flips each output bit
-// with probability ~1/2. 32-bit on purpose: 64-bit multiplies are emulated on most GPUs and in
-// lavapipe's AVX2 code.
+// with probability ~1/2. Derives the layer seeds (not per sample). 32-bit on purpose: 64-bit
+// multiplies are emulated on most GPUs and in lavapipe's AVX2 code.
 constexpr std::uint32_t hashMix32(std::uint32_t x) {
   x ^= x >> 16;
   x *= 0x7feb352dU;
@@ -36,6 +36,25 @@ constexpr std::uint32_t latticeKey(std::int64_t i) {
   const auto lo = static_cast<std::uint32_t>(u & 0xffffffffULL);
   const auto hi = static_cast<std::uint32_t>(u >> 32);
   return lo ^ (hi * 0x9e3779b9U);
+}
+
+// Lattice point hash, two steps so a cell's 8 corners share work: each axis's key times its own odd
+// constant (a "word", 6 per cell), then per corner the xor of the three words and the seed, folded
+// (x ^= x >> 16) and multiplied once. The gradient index is the product's top 4 bits, which depend
+// on every bit of the folded word. 14 32-bit multiplies per cell instead of the 28 of a nested
+// avalanche hash (hashMix32 per axis): on lavapipe the hash was the larger part of the noise
+// (docs/elevation.md, "GPU compute path").
+constexpr std::uint32_t latticeWordX(std::int64_t i) { return latticeKey(i) * 0x9e3779b1U; }
+constexpr std::uint32_t latticeWordY(std::int64_t i) { return latticeKey(i) * 0x85ebca77U; }
+constexpr std::uint32_t latticeWordZ(std::int64_t i) { return latticeKey(i) * 0xc2b2ae3dU; }
+constexpr std::uint32_t latticeCornerHash(std::uint32_t wx, std::uint32_t wy, std::uint32_t wz, std::uint32_t seed) {
+  std::uint32_t x = wx ^ wy ^ wz ^ seed;
+  x ^= x >> 16;
+  return x * 0x045d9f3bU;
+}
+// The hash of lattice point (x, y, z) for `seed`: what gradientNoise uses at each corner.
+constexpr std::uint32_t latticePointHash(std::int64_t x, std::int64_t y, std::int64_t z, std::uint32_t seed) {
+  return latticeCornerHash(latticeWordX(x), latticeWordY(y), latticeWordZ(z), seed);
 }
 
 // Perlin's 16 gradients (the 12 cube edges, four of them twice), indexed by the hash's top 4 bits.
@@ -83,26 +102,21 @@ inline Real gradientNoise(Real x, Real y, Real z, std::uint32_t seed) {
   const Real y1 = y0 - Real(1);
   const Real z1 = z0 - Real(1);
 
-  // Nested hash, like perm[perm[perm[x] + y] + z] but with no table.
-  const std::uint32_t hx0 = hashMix32(latticeKey(ix) + seed);
-  const std::uint32_t hx1 = hashMix32(latticeKey(ix + 1) + seed);
-  const std::uint32_t ky0 = latticeKey(iy);
-  const std::uint32_t ky1 = latticeKey(iy + 1);
-  const std::uint32_t kz0 = latticeKey(iz);
-  const std::uint32_t kz1 = latticeKey(iz + 1);
-  const std::uint32_t h00 = hashMix32(hx0 + ky0);
-  const std::uint32_t h10 = hashMix32(hx1 + ky0);
-  const std::uint32_t h01 = hashMix32(hx0 + ky1);
-  const std::uint32_t h11 = hashMix32(hx1 + ky1);
+  const std::uint32_t wx0 = latticeWordX(ix);
+  const std::uint32_t wx1 = latticeWordX(ix + 1);
+  const std::uint32_t wy0 = latticeWordY(iy);
+  const std::uint32_t wy1 = latticeWordY(iy + 1);
+  const std::uint32_t wz0 = latticeWordZ(iz);
+  const std::uint32_t wz1 = latticeWordZ(iz + 1);
 
-  const Real g000 = gradientDot(hashMix32(h00 + kz0), x0, y0, z0);
-  const Real g100 = gradientDot(hashMix32(h10 + kz0), x1, y0, z0);
-  const Real g010 = gradientDot(hashMix32(h01 + kz0), x0, y1, z0);
-  const Real g110 = gradientDot(hashMix32(h11 + kz0), x1, y1, z0);
-  const Real g001 = gradientDot(hashMix32(h00 + kz1), x0, y0, z1);
-  const Real g101 = gradientDot(hashMix32(h10 + kz1), x1, y0, z1);
-  const Real g011 = gradientDot(hashMix32(h01 + kz1), x0, y1, z1);
-  const Real g111 = gradientDot(hashMix32(h11 + kz1), x1, y1, z1);
+  const Real g000 = gradientDot(latticeCornerHash(wx0, wy0, wz0, seed), x0, y0, z0);
+  const Real g100 = gradientDot(latticeCornerHash(wx1, wy0, wz0, seed), x1, y0, z0);
+  const Real g010 = gradientDot(latticeCornerHash(wx0, wy1, wz0, seed), x0, y1, z0);
+  const Real g110 = gradientDot(latticeCornerHash(wx1, wy1, wz0, seed), x1, y1, z0);
+  const Real g001 = gradientDot(latticeCornerHash(wx0, wy0, wz1, seed), x0, y0, z1);
+  const Real g101 = gradientDot(latticeCornerHash(wx1, wy0, wz1, seed), x1, y0, z1);
+  const Real g011 = gradientDot(latticeCornerHash(wx0, wy1, wz1, seed), x0, y1, z1);
+  const Real g111 = gradientDot(latticeCornerHash(wx1, wy1, wz1, seed), x1, y1, z1);
 
   const Real u = noiseFade(x0);
   const Real v = noiseFade(y0);

@@ -11,6 +11,9 @@
 //   #define GLOBE_ELEVATION_PARAMS elevation      // any l-value of type ElevationParams (UBO or SSBO)
 //   #include "include/elevation.glsl"
 //   ... double h = globeElevation(unit_direction);  dvec3 p = globeSurfacePosition(unit_direction);
+// and create the pipeline with the specialization constants of globe::elevationSpecialization(params)
+// (ids GLOBE_ELEVATION_SPEC_*): the planet's layer structure is compiled in, its numbers stay in
+// the parameter block.
 #ifndef GLOBE_ELEVATION_GLSL
 #define GLOBE_ELEVATION_GLSL
 
@@ -20,14 +23,48 @@
 #error "define GLOBE_ELEVATION_PARAMS (an ElevationParams l-value) before including elevation.glsl"
 #endif
 
-// 32-bit avalanche, = globe::hashMix32.
-uint globeHashMix32(uint x) {
-  x ^= x >> 16;
-  x *= 0x7feb352du;
-  x ^= x >> 15;
-  x *= 0x846ca68bu;
-  x ^= x >> 16;
-  return x;
+#extension GL_EXT_control_flow_attributes : require
+
+// The planet's structure (see elevation_params.h). The defaults are never used: every pipeline
+// specializes them.
+layout(constant_id = GLOBE_ELEVATION_SPEC_LAYER_COUNT) const uint kGlobeLayerCount = 1u;
+layout(constant_id = GLOBE_ELEVATION_SPEC_OCTAVES + 0) const uint kGlobeOctaves0 = 1u;
+layout(constant_id = GLOBE_ELEVATION_SPEC_OCTAVES + 1) const uint kGlobeOctaves1 = 1u;
+layout(constant_id = GLOBE_ELEVATION_SPEC_OCTAVES + 2) const uint kGlobeOctaves2 = 1u;
+layout(constant_id = GLOBE_ELEVATION_SPEC_OCTAVES + 3) const uint kGlobeOctaves3 = 1u;
+layout(constant_id = GLOBE_ELEVATION_SPEC_OCTAVES + 4) const uint kGlobeOctaves4 = 1u;
+layout(constant_id = GLOBE_ELEVATION_SPEC_OCTAVES + 5) const uint kGlobeOctaves5 = 1u;
+layout(constant_id = GLOBE_ELEVATION_SPEC_OCTAVES + 6) const uint kGlobeOctaves6 = 1u;
+layout(constant_id = GLOBE_ELEVATION_SPEC_OCTAVES + 7) const uint kGlobeOctaves7 = 1u;
+layout(constant_id = GLOBE_ELEVATION_SPEC_KIND + 0) const uint kGlobeKind0 = 0u;
+layout(constant_id = GLOBE_ELEVATION_SPEC_KIND + 1) const uint kGlobeKind1 = 0u;
+layout(constant_id = GLOBE_ELEVATION_SPEC_KIND + 2) const uint kGlobeKind2 = 0u;
+layout(constant_id = GLOBE_ELEVATION_SPEC_KIND + 3) const uint kGlobeKind3 = 0u;
+layout(constant_id = GLOBE_ELEVATION_SPEC_KIND + 4) const uint kGlobeKind4 = 0u;
+layout(constant_id = GLOBE_ELEVATION_SPEC_KIND + 5) const uint kGlobeKind5 = 0u;
+layout(constant_id = GLOBE_ELEVATION_SPEC_KIND + 6) const uint kGlobeKind6 = 0u;
+layout(constant_id = GLOBE_ELEVATION_SPEC_KIND + 7) const uint kGlobeKind7 = 0u;
+layout(constant_id = GLOBE_ELEVATION_SPEC_MODULATOR + 0) const int kGlobeModulator0 = -1;
+layout(constant_id = GLOBE_ELEVATION_SPEC_MODULATOR + 1) const int kGlobeModulator1 = -1;
+layout(constant_id = GLOBE_ELEVATION_SPEC_MODULATOR + 2) const int kGlobeModulator2 = -1;
+layout(constant_id = GLOBE_ELEVATION_SPEC_MODULATOR + 3) const int kGlobeModulator3 = -1;
+layout(constant_id = GLOBE_ELEVATION_SPEC_MODULATOR + 4) const int kGlobeModulator4 = -1;
+layout(constant_id = GLOBE_ELEVATION_SPEC_MODULATOR + 5) const int kGlobeModulator5 = -1;
+layout(constant_id = GLOBE_ELEVATION_SPEC_MODULATOR + 6) const int kGlobeModulator6 = -1;
+layout(constant_id = GLOBE_ELEVATION_SPEC_MODULATOR + 7) const int kGlobeModulator7 = -1;
+// Per-layer lookups (a spec-constant array can't be a global const); constant-folded for a literal l.
+uint globeLayerOctaves(uint l) {
+  return l == 0u ? kGlobeOctaves0 : l == 1u ? kGlobeOctaves1 : l == 2u ? kGlobeOctaves2 : l == 3u ? kGlobeOctaves3
+       : l == 4u ? kGlobeOctaves4 : l == 5u ? kGlobeOctaves5 : l == 6u ? kGlobeOctaves6 : kGlobeOctaves7;
+}
+uint globeLayerKind(uint l) {
+  return l == 0u ? kGlobeKind0 : l == 1u ? kGlobeKind1 : l == 2u ? kGlobeKind2 : l == 3u ? kGlobeKind3
+       : l == 4u ? kGlobeKind4 : l == 5u ? kGlobeKind5 : l == 6u ? kGlobeKind6 : kGlobeKind7;
+}
+int globeLayerModulator(uint l) {
+  return l == 0u ? kGlobeModulator0 : l == 1u ? kGlobeModulator1 : l == 2u ? kGlobeModulator2
+       : l == 3u ? kGlobeModulator3 : l == 4u ? kGlobeModulator4 : l == 5u ? kGlobeModulator5
+       : l == 6u ? kGlobeModulator6 : kGlobeModulator7;
 }
 
 // = globe::latticeKey: low word, high word times the golden ratio constant.
@@ -36,6 +73,13 @@ uint globeLatticeKey(int64_t i) {
   uint lo = uint(u & 0xffffffffUL);
   uint hi = uint(u >> 32);
   return lo ^ (hi * 0x9e3779b9u);
+}
+
+// = globe::latticeCornerHash.
+uint globeLatticeCornerHash(uint wx, uint wy, uint wz, uint seed) {
+  uint x = wx ^ wy ^ wz ^ seed;
+  x ^= x >> 16;
+  return x * 0x045d9f3bu;
 }
 
 // = globe::gradientDot: Perlin's 16 gradients (12 cube edges), index = top 4 bits of the hash.
@@ -74,25 +118,21 @@ double globeGradientNoise(double x, double y, double z, uint seed) {
   precise double y1 = y0 - 1.0LF;
   precise double z1 = z0 - 1.0LF;
 
-  uint hx0 = globeHashMix32(globeLatticeKey(ix) + seed);
-  uint hx1 = globeHashMix32(globeLatticeKey(ix + 1L) + seed);
-  uint ky0 = globeLatticeKey(iy);
-  uint ky1 = globeLatticeKey(iy + 1L);
-  uint kz0 = globeLatticeKey(iz);
-  uint kz1 = globeLatticeKey(iz + 1L);
-  uint h00 = globeHashMix32(hx0 + ky0);
-  uint h10 = globeHashMix32(hx1 + ky0);
-  uint h01 = globeHashMix32(hx0 + ky1);
-  uint h11 = globeHashMix32(hx1 + ky1);
-
-  precise double g000 = globeGradientDot(globeHashMix32(h00 + kz0), x0, y0, z0);
-  precise double g100 = globeGradientDot(globeHashMix32(h10 + kz0), x1, y0, z0);
-  precise double g010 = globeGradientDot(globeHashMix32(h01 + kz0), x0, y1, z0);
-  precise double g110 = globeGradientDot(globeHashMix32(h11 + kz0), x1, y1, z0);
-  precise double g001 = globeGradientDot(globeHashMix32(h00 + kz1), x0, y0, z1);
-  precise double g101 = globeGradientDot(globeHashMix32(h10 + kz1), x1, y0, z1);
-  precise double g011 = globeGradientDot(globeHashMix32(h01 + kz1), x0, y1, z1);
-  precise double g111 = globeGradientDot(globeHashMix32(h11 + kz1), x1, y1, z1);
+  // = globe::latticeWordX/Y/Z, then one globe::latticeCornerHash per corner.
+  uint wx0 = globeLatticeKey(ix) * 0x9e3779b1u;
+  uint wx1 = globeLatticeKey(ix + 1L) * 0x9e3779b1u;
+  uint wy0 = globeLatticeKey(iy) * 0x85ebca77u;
+  uint wy1 = globeLatticeKey(iy + 1L) * 0x85ebca77u;
+  uint wz0 = globeLatticeKey(iz) * 0xc2b2ae3du;
+  uint wz1 = globeLatticeKey(iz + 1L) * 0xc2b2ae3du;
+  precise double g000 = globeGradientDot(globeLatticeCornerHash(wx0, wy0, wz0, seed), x0, y0, z0);
+  precise double g100 = globeGradientDot(globeLatticeCornerHash(wx1, wy0, wz0, seed), x1, y0, z0);
+  precise double g010 = globeGradientDot(globeLatticeCornerHash(wx0, wy1, wz0, seed), x0, y1, z0);
+  precise double g110 = globeGradientDot(globeLatticeCornerHash(wx1, wy1, wz0, seed), x1, y1, z0);
+  precise double g001 = globeGradientDot(globeLatticeCornerHash(wx0, wy0, wz1, seed), x0, y0, z1);
+  precise double g101 = globeGradientDot(globeLatticeCornerHash(wx1, wy0, wz1, seed), x1, y0, z1);
+  precise double g011 = globeGradientDot(globeLatticeCornerHash(wx0, wy1, wz1, seed), x0, y1, z1);
+  precise double g111 = globeGradientDot(globeLatticeCornerHash(wx1, wy1, wz1, seed), x1, y1, z1);
 
   precise double u = globeNoiseFade(x0);
   precise double v = globeNoiseFade(y0);
@@ -107,38 +147,33 @@ double globeGradientNoise(double x, double y, double z, uint seed) {
   return r;
 }
 
-// = globe::ElevationModel::elevation_m: elevation above radius_m at a unit direction, metres.
-double globeElevation(dvec3 unit_direction) {
-  precise double radius = GLOBE_ELEVATION_PARAMS.radius_m;
-  precise double px = unit_direction.x * radius;
-  precise double py = unit_direction.y * radius;
-  precise double pz = unit_direction.z * radius;
-  double values[GLOBE_MAX_ELEVATION_LAYERS];
-  precise double total = 0.0LF;
-  uint layer_count = GLOBE_ELEVATION_PARAMS.layer_count;
-  for (uint l = 0u; l < layer_count; ++l) {
-    precise double lacunarity = GLOBE_ELEVATION_PARAMS.layers[l].lacunarity;
-    precise double gain = GLOBE_ELEVATION_PARAMS.layers[l].gain;
-    precise double frequency = GLOBE_ELEVATION_PARAMS.layers[l].frequency;
-    precise double amplitude = GLOBE_ELEVATION_PARAMS.layers[l].amplitude_m;
-    uint seed = GLOBE_ELEVATION_PARAMS.layers[l].seed;
-    uint octaves = GLOBE_ELEVATION_PARAMS.layers[l].octaves;
-    uint kind = GLOBE_ELEVATION_PARAMS.layers[l].kind;
-    // Scale first, octaves skipped where it is exactly 0: bit-identical, see elevation.cpp.
-    int modulator = GLOBE_ELEVATION_PARAMS.layers[l].modulator;
-    precise double scale = 1.0LF;
-    if (modulator >= 0) {
-      precise double low = GLOBE_ELEVATION_PARAMS.layers[l].modulation_low_m;
-      precise double inv_range = GLOBE_ELEVATION_PARAMS.layers[l].modulation_inv_range;
-      precise double floor_scale = GLOBE_ELEVATION_PARAMS.layers[l].modulation_floor;
-      precise double m = (values[modulator] - low) * inv_range;
-      m = min(max(m, 0.0LF), 1.0LF);
-      precise double s = m * m * (3.0LF - 2.0LF * m);
-      scale = floor_scale + (1.0LF - floor_scale) * s;
-    }
-    if (scale == 0.0LF) octaves = 0u;
-    precise double sum = 0.0LF;
-    for (uint o = 0u; o < octaves; ++o) {
+// Layer l of globe::ElevationModel::elevation_m. l is a literal at every call, so after inlining
+// the octave count, kind and modulator are constants and the octave loop unrolls (lavapipe keeps no
+// loop-carried value in registers across a loop's iterations).
+void globeElevationLayer(uint l, double px, double py, double pz, inout double values[GLOBE_MAX_ELEVATION_LAYERS],
+                         inout double total) {
+  precise double lacunarity = GLOBE_ELEVATION_PARAMS.layers[l].lacunarity;
+  precise double gain = GLOBE_ELEVATION_PARAMS.layers[l].gain;
+  precise double frequency = GLOBE_ELEVATION_PARAMS.layers[l].frequency;
+  precise double amplitude = GLOBE_ELEVATION_PARAMS.layers[l].amplitude_m;
+  uint seed = GLOBE_ELEVATION_PARAMS.layers[l].seed;
+  uint octaves = globeLayerOctaves(l);
+  uint kind = globeLayerKind(l);
+  int modulator = globeLayerModulator(l);
+  // Scale first, octaves skipped where it is exactly 0: bit-identical, see elevation.cpp.
+  precise double scale = 1.0LF;
+  if (modulator >= 0) {
+    precise double low = GLOBE_ELEVATION_PARAMS.layers[l].modulation_low_m;
+    precise double inv_range = GLOBE_ELEVATION_PARAMS.layers[l].modulation_inv_range;
+    precise double floor_scale = GLOBE_ELEVATION_PARAMS.layers[l].modulation_floor;
+    precise double m = (values[max(modulator, 0)] - low) * inv_range;
+    m = min(max(m, 0.0LF), 1.0LF);
+    precise double s = m * m * (3.0LF - 2.0LF * m);
+    scale = floor_scale + (1.0LF - floor_scale) * s;
+  }
+  precise double sum = 0.0LF;
+  if (scale != 0.0LF) {
+    [[unroll]] for (uint o = 0u; o < octaves; ++o) {
       precise double n = globeGradientNoise(px * frequency, py * frequency, pz * frequency, seed);
       precise double t = n;
       if (kind == GLOBE_LAYER_RIDGED) {
@@ -152,11 +187,30 @@ double globeElevation(dvec3 unit_direction) {
       amplitude = amplitude * gain;
       seed = seed + 0x9e3779b9u;
     }
-    if (modulator >= 0) sum = sum * scale;
-    precise double value = sum + GLOBE_ELEVATION_PARAMS.layers[l].offset_m;
-    values[l] = value;
-    total = total + value;
   }
+  if (modulator >= 0) sum = sum * scale;
+  precise double value = sum + GLOBE_ELEVATION_PARAMS.layers[l].offset_m;
+  values[l] = value;
+  total = total + value;
+}
+
+// = globe::ElevationModel::elevation_m: elevation above radius_m at a unit direction, metres.
+double globeElevation(dvec3 unit_direction) {
+  precise double radius = GLOBE_ELEVATION_PARAMS.radius_m;
+  precise double px = unit_direction.x * radius;
+  precise double py = unit_direction.y * radius;
+  precise double pz = unit_direction.z * radius;
+  double values[GLOBE_MAX_ELEVATION_LAYERS];
+  precise double total = 0.0LF;
+  // Unrolled by hand: the compiler won't unroll a loop that holds another.
+  globeElevationLayer(0u, px, py, pz, values, total);
+  if (kGlobeLayerCount > 1u) globeElevationLayer(1u, px, py, pz, values, total);
+  if (kGlobeLayerCount > 2u) globeElevationLayer(2u, px, py, pz, values, total);
+  if (kGlobeLayerCount > 3u) globeElevationLayer(3u, px, py, pz, values, total);
+  if (kGlobeLayerCount > 4u) globeElevationLayer(4u, px, py, pz, values, total);
+  if (kGlobeLayerCount > 5u) globeElevationLayer(5u, px, py, pz, values, total);
+  if (kGlobeLayerCount > 6u) globeElevationLayer(6u, px, py, pz, values, total);
+  if (kGlobeLayerCount > 7u) globeElevationLayer(7u, px, py, pz, values, total);
   return total;
 }
 

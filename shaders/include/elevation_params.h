@@ -40,6 +40,18 @@ struct ElevationLayerParams {
   int modulator;                // 76: index of an earlier layer, or GLOBE_NO_MODULATOR
 };
 
+// Specialization constants of every kernel that includes elevation.glsl: the planet's structure as
+// compile-time constants, so the layer and octave loops unroll into straight-line code (a loop costs
+// masked stores of every live value per iteration on lavapipe: the unrolled 12-octave kernel measured
+// 1.5x faster, docs/elevation.md). Constant id = GLOBE_ELEVATION_SPEC_* + layer; every value is 32
+// bits; the C++ side builds them from ElevationParams (globe::elevationSpecialization), so they can't
+// disagree with the parameter block.
+#define GLOBE_ELEVATION_SPEC_LAYER_COUNT 0  // layer_count
+#define GLOBE_ELEVATION_SPEC_OCTAVES 1      // layers[l].octaves, ids 1..8
+#define GLOBE_ELEVATION_SPEC_KIND 9         // layers[l].kind, ids 9..16
+#define GLOBE_ELEVATION_SPEC_MODULATOR 17   // layers[l].modulator (int), ids 17..24
+#define GLOBE_ELEVATION_SPEC_COUNT 25
+
 // The whole elevation function (32 + 8 * 80 = 672 bytes).
 struct ElevationParams {
   double radius_m;     //  0: sphere radius, metres (elevation 0)

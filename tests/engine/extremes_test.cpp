@@ -338,9 +338,11 @@ class ExtremesTest : public GpuTest {
       camera.position_m += double(step) * 1e-3 * east;
       ++frame;
       s.terrain->update(frame, camera, frame - 1);
-      // The finest full node whose centre projects nearest the view centre, and its instance index
-      // (full nodes are drawn first, in selection order).
+      // The finest full node whose centre projects inside the view, nearest its centre, and its
+      // instance index (full nodes are drawn first, in selection order). A centre merely ahead is
+      // not enough: a finest node under a ground camera can be ahead yet entirely below the view.
       const Selection& selection = s.terrain->selection();
+      const glm::dmat4 clipFromCentre = camera.projection() * camera.viewFromWorld(camera.position_m);
       int best = -1;
       uint32_t instance = 0, fullBefore = 0;
       double bestScore = std::numeric_limits<double>::infinity();
@@ -349,7 +351,10 @@ class ExtremesTest : public GpuTest {
         if (n.partial) continue;
         const glm::dvec3 rel = s.terrain->generator().slotCentre(*s.terrain->pool().slotOf(n.id)) - camera.position_m;
         const double ahead = glm::dot(rel, camera.forward);
-        if (ahead > 0.0) {
+        const glm::dvec4 clipCentre = clipFromCentre * glm::dvec4(rel, 1.0);
+        const bool inView = clipCentre.w > 0.0 && std::abs(clipCentre.x / clipCentre.w) < 0.9 &&
+                            std::abs(clipCentre.y / clipCentre.w) < 0.9;
+        if (ahead > 0.0 && inView) {
           const double offAxis = glm::length(rel - ahead * camera.forward) / ahead;
           const double score = offAxis - 1e3 * n.id.level;  // finest level first
           if (score < bestScore) {

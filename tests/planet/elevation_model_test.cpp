@@ -51,14 +51,14 @@ TEST(ElevationModel, GoldenValues) {
   // a change means the planet changed (and the GPU mirror must change with it).
   const double s = 1.0 / std::sqrt(3.0);
   const Case cases[] = {
-      {{0.0, 0.0, 1.0}, -1453.2912578834887},
-      {{0.0, 0.0, -1.0}, 109.26554108901142},
-      {{1.0, 0.0, 0.0}, 1045.7955597866755},
-      {{-1.0, 0.0, 0.0}, -151.81798527293316},
-      {{0.0, 1.0, 0.0}, -1311.4199857085173},
-      {{s, s, s}, -1666.3998864666428},
-      {{0.0, 0.52573111211913359, 0.85065080835203999}, 5350.0426214425124},
-      {{0.6, -0.48, 0.64}, 88.744066355841923},
+      {{0.0, 0.0, 1.0}, -171.03281661968333},
+      {{0.0, 0.0, -1.0}, -3492.6161372617544},
+      {{1.0, 0.0, 0.0}, 297.7303510028209},
+      {{-1.0, 0.0, 0.0}, -2071.7464764990336},
+      {{0.0, 1.0, 0.0}, 392.74422015916997},
+      {{s, s, s}, -2668.6703764255481},
+      {{0.0, 0.52573111211913359, 0.85065080835203999}, 4171.8087100399507},
+      {{0.6, -0.48, 0.64}, -1082.431219408033},
   };
   for (const Case& c : cases) {
     const double h = model.elevation_m(c.direction);
@@ -102,6 +102,15 @@ TEST(ElevationModel, PacksParamsForTheGpu) {
   EXPECT_EQ(p.layers[1].seed, layerSeed(20180302, 1));
   EXPECT_NE(p.layers[0].seed, p.layers[1].seed);
   EXPECT_EQ(p.layers[3].octaves, 0U);  // unused slots are zero
+
+  // The shaders' specialization constants say the same as the block.
+  const ElevationSpecialization s = elevationSpecialization(p);
+  EXPECT_EQ(s[GLOBE_ELEVATION_SPEC_LAYER_COUNT], 3U);
+  EXPECT_EQ(s[GLOBE_ELEVATION_SPEC_OCTAVES + 2], 4U);
+  EXPECT_EQ(s[GLOBE_ELEVATION_SPEC_KIND + 1], GLOBE_LAYER_RIDGED);
+  EXPECT_EQ(s[GLOBE_ELEVATION_SPEC_MODULATOR + 0], 0xffffffffU);  // int -1
+  EXPECT_EQ(s[GLOBE_ELEVATION_SPEC_MODULATOR + 2], 0U);
+  EXPECT_EQ(s[GLOBE_ELEVATION_SPEC_OCTAVES + 3], 0U);
 }
 
 // A Lipschitz bound of the elevation along the surface, m/m, generous: the noise's gradient is
