@@ -2,7 +2,7 @@
 // TOML planet files (toml++). The format, every key with units, range and default, is described in
 // docs/planet-files.md; assets/planets/earthlike.toml is the reference example and the default planet.
 //
-//   name = "earthlike"          radius_m = 6371000.0      seed = 98616        sea_level_m = 0.0
+//   name = "earthlike"          radius_m = 6371000.0      seed = 37786        sea_level_m = 0.0
 //   [[layers]]                  # 1 to 8, evaluated in file order
 //   name = "continents"         kind = "fbm"              # fbm | ridged | billow
 //   octaves = 4                 wavelength_m = 4.0e6      # or frequency_per_m, not both
