@@ -11,12 +11,14 @@
 namespace globe {
 
 GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationModel& model, uint32_t cells,
-                                         uint32_t maxJobsPerSubmit, uint32_t maxSubmitsInFlight)
+                                         uint32_t maxJobsPerSubmit, uint32_t maxSubmitsInFlight,
+                                         GenerationPrecision precision)
     : device_(device),
       model_(model),
       cells_(cells),
       maxJobs_(std::min<uint32_t>(maxJobsPerSubmit, GLOBE_PAYLOAD_MAX_BATCH)),
-      pipeline_(device, "payload_generate.comp", 6, 2 * sizeof(uint32_t), /*uniformMask=*/1u,
+      pipeline_(device,
+                precision == GenerationPrecision::kFloat ? "payload_generate_float.comp" : "payload_generate.comp", 6, 2 * sizeof(uint32_t), /*uniformMask=*/1u,
                 elevationSpecialization(model.params())),
       elevation_(device, sizeof(gpu::ElevationParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                  vk::MemoryUse::HostVisible, "elevation params"),

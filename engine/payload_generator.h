@@ -14,6 +14,11 @@
 
 namespace globe {
 
+// Arithmetic of payload generation. kDouble is the engine (positions exact to the CPU reference);
+// kFloat evaluates the elevation and the planet-centred positions in float, as an all-float engine
+// would: only to measure what double buys (`globe trade`, docs/tradeoffs.md).
+enum class GenerationPrecision { kDouble, kFloat };
+
 class GpuPayloadGenerator final : public PayloadGenerator {
  public:
   // `cells`: grid cells per node side, a power of two in [16, 256]. `maxJobsPerSubmit`: most nodes
@@ -21,7 +26,8 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   // run at once (the pool's in-flight cap / budget, rounded up).
   // `model` must outlive the generator (job centres are surface points of the CPU reference).
   GpuPayloadGenerator(vk::Device& device, const ElevationModel& model, uint32_t cells,
-                      uint32_t maxJobsPerSubmit, uint32_t maxSubmitsInFlight);
+                      uint32_t maxJobsPerSubmit, uint32_t maxSubmitsInFlight,
+                      GenerationPrecision precision = GenerationPrecision::kDouble);
   ~GpuPayloadGenerator() override;
 
   // Allocates the payload buffer for `slots` slots (once, before the first generate()).

@@ -41,7 +41,8 @@ Terrain::Terrain(vk::Device& device, const ElevationModel& model, const TerrainS
   // Each generate() call is one batch; the pool caps jobs (not calls) in flight, so as many batches
   // as jobs can be running at once.
   uint32_t batches = settings.streaming.maxInFlight;
-  generator_ = std::make_unique<GpuPayloadGenerator>(device, model, settings.gridCells, budget, batches);
+  generator_ = std::make_unique<GpuPayloadGenerator>(device, model, settings.gridCells, budget, batches,
+                                                     settings.generation);
   // The payload buffer is bound as one storage buffer: at most maxStorageBufferRange bytes (128 MiB
   // on lavapipe). The VRAM budget is honoured below that.
   StreamingConfig streaming = settings.streaming;

@@ -23,6 +23,7 @@ struct TerrainSettings {
   StreamingConfig streaming;     // budgets
   double originThreshold_m = 0;  // floating origin re-base distance (0 = camera-relative)
   TerrainStyle style;            // shading (the planet's colour ramp); its radius is set from the planet
+  GenerationPrecision generation = GenerationPrecision::kDouble;  // kFloat only to measure (globe trade)
 };
 
 // Bad settings and planets are reported as an Error naming the field.

@@ -52,14 +52,15 @@ struct TradeCamera {
 
 std::string knobName(const TerrainSettings& s) {
   char text[96];
-  std::snprintf(text, sizeof(text), "g%u x%g d%d f%g", s.gridCells, s.ranges.distanceMultiplier, s.ranges.maxDepth,
-                s.ranges.morphFraction);
+  std::snprintf(text, sizeof(text), "g%u x%g d%d f%g%s", s.gridCells, s.ranges.distanceMultiplier, s.ranges.maxDepth,
+                s.ranges.morphFraction, s.generation == GenerationPrecision::kFloat ? " float" : "");
   return text;
 }
 
 bool sameKnobs(const TerrainSettings& a, const TerrainSettings& b) {
   return a.gridCells == b.gridCells && a.ranges.distanceMultiplier == b.ranges.distanceMultiplier &&
-         a.ranges.maxDepth == b.ranges.maxDepth && a.ranges.morphFraction == b.ranges.morphFraction;
+         a.ranges.maxDepth == b.ranges.maxDepth && a.ranges.morphFraction == b.ranges.morphFraction &&
+         a.generation == b.generation;
 }
 
 // One knob at a time around the baseline, then the presets and a few combinations.
@@ -82,9 +83,14 @@ std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::st
   auto mult = [](TerrainSettings& s, double v) { s.ranges.distanceMultiplier = v; };
   auto depth = [](TerrainSettings& s, double v) { s.ranges.maxDepth = int(v); };
   auto morph = [](TerrainSettings& s, double v) { s.ranges.morphFraction = v; };
+  // Generation in float instead of double (what double buys; never a preset).
+  auto precision = [](TerrainSettings& s, double v) {
+    s.generation = v != 0.0 ? GenerationPrecision::kFloat : GenerationPrecision::kDouble;
+  };
   if (quick) {  // the cheap knobs only: a minute or two on lavapipe
     vary(grid, {16, 32, 64});
     vary(mult, {0.5, 1, 2});
+    vary(precision, {1});
     return list;
   }
   // The presets and the knobs that do not change the triangle count much first: --configs N keeps
@@ -93,6 +99,7 @@ std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::st
     add(std::string(qualityPresetName(p)), terrainSettingsFor(p));
   vary(depth, {16, 20, 24});
   vary(morph, {0.25, 0.5});
+  vary(precision, {1});
   vary(grid, {16, 32, 64, 128});
   vary(mult, {0.5, 1, 2, 4});
   for (auto [g, m] : {std::pair{16.0, 2.0}, {16.0, 4.0}, {64.0, 0.5}, {64.0, 2.0}, {128.0, 0.5}, {128.0, 1.0}}) {
@@ -234,6 +241,7 @@ int runTrade(const TradeOptions& o) {
       row.distanceMultiplier = settings.ranges.distanceMultiplier;
       row.maxDepth = settings.ranges.maxDepth;
       row.morphFraction = settings.ranges.morphFraction;
+      row.generation = settings.generation == GenerationPrecision::kFloat ? "float" : "double";
       row.width = size->width;
       row.height = size->height;
       row.frameMedian_ms = nearestRankPercentile(frame_ms, 50);

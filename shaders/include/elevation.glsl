@@ -82,137 +82,26 @@ uint globeLatticeCornerHash(uint wx, uint wy, uint wz, uint seed) {
   return x * 0x045d9f3bu;
 }
 
-// = globe::gradientDot: Perlin's 16 gradients (12 cube edges), index = top 4 bits of the hash.
-double globeGradientDot(uint hash, double x, double y, double z) {
-  uint h = hash >> 28;
-  double u = h < 8u ? x : y;
-  double v = h < 4u ? y : ((h == 12u || h == 14u) ? x : z);
-  precise double a = (h & 1u) == 0u ? u : -u;
-  precise double b = (h & 2u) == 0u ? v : -v;
-  precise double r = a + b;
-  return r;
-}
+#define GLOBE_REAL double
+#define GLOBE_REAL3 dvec3
+#define GLOBE_FN(name) name
+#include "elevation_real.glsl"
+#undef GLOBE_REAL
+#undef GLOBE_REAL3
+#undef GLOBE_FN
 
-double globeNoiseFade(double t) {
-  precise double r = t * t * t * (t * (t * 6.0LF - 15.0LF) + 10.0LF);
-  return r;
-}
-
-double globeNoiseLerp(double a, double b, double t) {
-  precise double r = a + t * (b - a);
-  return r;
-}
-
-// = globe::gradientNoise<double>.
-double globeGradientNoise(double x, double y, double z, uint seed) {
-  precise double fx = floor(x);
-  precise double fy = floor(y);
-  precise double fz = floor(z);
-  int64_t ix = int64_t(fx);
-  int64_t iy = int64_t(fy);
-  int64_t iz = int64_t(fz);
-  precise double x0 = x - fx;
-  precise double y0 = y - fy;
-  precise double z0 = z - fz;
-  precise double x1 = x0 - 1.0LF;
-  precise double y1 = y0 - 1.0LF;
-  precise double z1 = z0 - 1.0LF;
-
-  // = globe::latticeWordX/Y/Z, then one globe::latticeCornerHash per corner.
-  uint wx0 = globeLatticeKey(ix) * 0x9e3779b1u;
-  uint wx1 = globeLatticeKey(ix + 1L) * 0x9e3779b1u;
-  uint wy0 = globeLatticeKey(iy) * 0x85ebca77u;
-  uint wy1 = globeLatticeKey(iy + 1L) * 0x85ebca77u;
-  uint wz0 = globeLatticeKey(iz) * 0xc2b2ae3du;
-  uint wz1 = globeLatticeKey(iz + 1L) * 0xc2b2ae3du;
-  precise double g000 = globeGradientDot(globeLatticeCornerHash(wx0, wy0, wz0, seed), x0, y0, z0);
-  precise double g100 = globeGradientDot(globeLatticeCornerHash(wx1, wy0, wz0, seed), x1, y0, z0);
-  precise double g010 = globeGradientDot(globeLatticeCornerHash(wx0, wy1, wz0, seed), x0, y1, z0);
-  precise double g110 = globeGradientDot(globeLatticeCornerHash(wx1, wy1, wz0, seed), x1, y1, z0);
-  precise double g001 = globeGradientDot(globeLatticeCornerHash(wx0, wy0, wz1, seed), x0, y0, z1);
-  precise double g101 = globeGradientDot(globeLatticeCornerHash(wx1, wy0, wz1, seed), x1, y0, z1);
-  precise double g011 = globeGradientDot(globeLatticeCornerHash(wx0, wy1, wz1, seed), x0, y1, z1);
-  precise double g111 = globeGradientDot(globeLatticeCornerHash(wx1, wy1, wz1, seed), x1, y1, z1);
-
-  precise double u = globeNoiseFade(x0);
-  precise double v = globeNoiseFade(y0);
-  precise double w = globeNoiseFade(z0);
-  precise double a00 = globeNoiseLerp(g000, g100, u);
-  precise double a10 = globeNoiseLerp(g010, g110, u);
-  precise double a01 = globeNoiseLerp(g001, g101, u);
-  precise double a11 = globeNoiseLerp(g011, g111, u);
-  precise double b0 = globeNoiseLerp(a00, a10, v);
-  precise double b1 = globeNoiseLerp(a01, a11, v);
-  precise double r = globeNoiseLerp(b0, b1, w);
-  return r;
-}
-
-// Layer l of globe::ElevationModel::elevation_m. l is a literal at every call, so after inlining
-// the octave count, kind and modulator are constants and the octave loop unrolls (lavapipe keeps no
-// loop-carried value in registers across a loop's iterations).
-void globeElevationLayer(uint l, double px, double py, double pz, inout double values[GLOBE_MAX_ELEVATION_LAYERS],
-                         inout double total) {
-  precise double lacunarity = GLOBE_ELEVATION_PARAMS.layers[l].lacunarity;
-  precise double gain = GLOBE_ELEVATION_PARAMS.layers[l].gain;
-  precise double frequency = GLOBE_ELEVATION_PARAMS.layers[l].frequency;
-  precise double amplitude = GLOBE_ELEVATION_PARAMS.layers[l].amplitude_m;
-  uint seed = GLOBE_ELEVATION_PARAMS.layers[l].seed;
-  uint octaves = globeLayerOctaves(l);
-  uint kind = globeLayerKind(l);
-  int modulator = globeLayerModulator(l);
-  // Scale first, octaves skipped where it is exactly 0: bit-identical, see elevation.cpp.
-  precise double scale = 1.0LF;
-  if (modulator >= 0) {
-    precise double low = GLOBE_ELEVATION_PARAMS.layers[l].modulation_low_m;
-    precise double inv_range = GLOBE_ELEVATION_PARAMS.layers[l].modulation_inv_range;
-    precise double floor_scale = GLOBE_ELEVATION_PARAMS.layers[l].modulation_floor;
-    precise double m = (values[max(modulator, 0)] - low) * inv_range;
-    m = min(max(m, 0.0LF), 1.0LF);
-    precise double s = m * m * (3.0LF - 2.0LF * m);
-    scale = floor_scale + (1.0LF - floor_scale) * s;
-  }
-  precise double sum = 0.0LF;
-  if (scale != 0.0LF) {
-    [[unroll]] for (uint o = 0u; o < octaves; ++o) {
-      precise double n = globeGradientNoise(px * frequency, py * frequency, pz * frequency, seed);
-      precise double t = n;
-      if (kind == GLOBE_LAYER_RIDGED) {
-        precise double c = 1.0LF - abs(n);
-        t = c * c;
-      } else if (kind == GLOBE_LAYER_BILLOW) {
-        t = abs(n);
-      }
-      sum = sum + amplitude * t;
-      frequency = frequency * lacunarity;
-      amplitude = amplitude * gain;
-      seed = seed + 0x9e3779b9u;
-    }
-  }
-  if (modulator >= 0) sum = sum * scale;
-  precise double value = sum + GLOBE_ELEVATION_PARAMS.layers[l].offset_m;
-  values[l] = value;
-  total = total + value;
-}
-
-// = globe::ElevationModel::elevation_m: elevation above radius_m at a unit direction, metres.
-double globeElevation(dvec3 unit_direction) {
-  precise double radius = GLOBE_ELEVATION_PARAMS.radius_m;
-  precise double px = unit_direction.x * radius;
-  precise double py = unit_direction.y * radius;
-  precise double pz = unit_direction.z * radius;
-  double values[GLOBE_MAX_ELEVATION_LAYERS];
-  precise double total = 0.0LF;
-  // Unrolled by hand: the compiler won't unroll a loop that holds another.
-  globeElevationLayer(0u, px, py, pz, values, total);
-  if (kGlobeLayerCount > 1u) globeElevationLayer(1u, px, py, pz, values, total);
-  if (kGlobeLayerCount > 2u) globeElevationLayer(2u, px, py, pz, values, total);
-  if (kGlobeLayerCount > 3u) globeElevationLayer(3u, px, py, pz, values, total);
-  if (kGlobeLayerCount > 4u) globeElevationLayer(4u, px, py, pz, values, total);
-  if (kGlobeLayerCount > 5u) globeElevationLayer(5u, px, py, pz, values, total);
-  if (kGlobeLayerCount > 6u) globeElevationLayer(6u, px, py, pz, values, total);
-  if (kGlobeLayerCount > 7u) globeElevationLayer(7u, px, py, pz, values, total);
-  return total;
-}
+// The same evaluation entirely in float (= globe::ElevationModel::elevationFloat_m), as
+// globeElevationFloat(vec3): only to measure what double buys (the float generation variant of
+// globe trade). Define GLOBE_ELEVATION_FLOAT before including this file to get it.
+#ifdef GLOBE_ELEVATION_FLOAT
+#define GLOBE_REAL float
+#define GLOBE_REAL3 vec3
+#define GLOBE_FN(name) name##Float
+#include "elevation_real.glsl"
+#undef GLOBE_REAL
+#undef GLOBE_REAL3
+#undef GLOBE_FN
+#endif
 
 // = globe::ElevationModel::surfacePosition: unit_direction * (radius_m + elevation), metres.
 dvec3 globeSurfacePosition(dvec3 unit_direction) {

@@ -105,6 +105,44 @@ TEST_F(PayloadGeneratorTest, MatchesCpuReferenceAtEveryDepth) {
               nodes.size(), worstRadius, worstElevation, worstNormal);
 }
 
+// The float variant (GenerationPrecision::kFloat, measured by globe trade) is the float model: its
+// heights are ElevationModel::elevationFloat_m at the float-rounded sample direction, and its
+// positions lie within float's rounding of the double ones (the size of that gap is what
+// docs/tradeoffs.md reports, not asserted here).
+TEST_F(PayloadGeneratorTest, FloatVariantIsTheFloatModel) {
+  auto nodes = testNodes();
+  GpuPayloadGenerator gen(device(), *model_, kCells, GLOBE_PAYLOAD_MAX_BATCH, 1, GenerationPrecision::kFloat);
+  gen.reserveSlots(uint32_t(nodes.size()));
+  std::vector<GenerationResult> results;
+  auto gpu = generate(gen, nodes, results);
+  ASSERT_EQ(results.size(), nodes.size());
+  const size_t perSlot = GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells);
+  const int side = int(kCells) + 3;
+  double worstHeight = 0, worstPosition = 0;
+  for (size_t k = 0; k < nodes.size(); ++k) {
+    const gpu::PayloadJob job = makePayloadJob(nodes[k], 0, *model_);
+    const glm::vec4* g = &gpu[k * perSlot];
+    for (int j = -1; j <= int(kCells) + 1; ++j) {
+      for (int i = -1; i <= int(kCells) + 1; ++i) {
+        const glm::dvec3 dir = payloadSampleDirection(job, kCells, i, j);
+        const glm::vec4& sample = g[size_t(j + 1) * size_t(side) + size_t(i + 1)];
+        const float h = model_->elevationFloat_m(glm::vec3(dir));
+        // The GPU's select-form gradient can differ from the CPU's table form in the sign of a
+        // zero, nothing else: a few float ulps of the sum at most.
+        worstHeight = std::max(worstHeight, double(std::abs(sample.w - h)));
+        ASSERT_LE(std::abs(sample.w - h), std::max(1e-3f, std::abs(h) * 1e-6f)) << k << ' ' << i << ' ' << j;
+        const glm::dvec3 exact = model_->surfacePosition(dir) - glm::dvec3(job.centre.x, job.centre.y, job.centre.z);
+        const double error = glm::length(glm::dvec3(glm::vec3(sample)) - exact);
+        worstPosition = std::max(worstPosition, error);
+        ASSERT_TRUE(std::isfinite(error));
+      }
+    }
+  }
+  std::printf("[ info ] float generation, %zu nodes: worst |h - h_float(cpu)| %.3g m, worst position error %.3g m\n",
+              nodes.size(), worstHeight, worstPosition);
+  EXPECT_LT(worstPosition, 50.0);  // float rounding of positions and of the noise, not garbage
+}
+
 // Samples on an edge shared by two nodes (same level, same face or across a face seam) are
 // bit-identical once expressed relative to the same origin in double.
 TEST_F(PayloadGeneratorTest, NeighboursAgreeExactlyOnSharedEdges) {

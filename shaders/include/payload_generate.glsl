@@ -1,0 +1,143 @@
+// Body of the payload kernels (payload_generate.comp, payload_generate_float.comp, which set the
+// version, the extensions and the precision). Fills node payloads (shaders/include/payload_layout.h): one workgroup per node. Pass 1 evaluates
+// every sample (vertices and the extra ring) in double — face mapping, then elevation — and stores
+// positions relative to the node centre, quantised, as floats, plus the double positions in a
+// scratch buffer; pass 2 derives normals from those double positions by central differences; a
+// shared-memory reduction gives the node's min/max vertex radius. Mirrors
+// planet/payload_reference.cpp operation for operation (the double kernel).
+#include "payload_layout.h"
+#include "elevation_params.h"
+#include "face_mapping.glsl"
+
+layout(local_size_x = GLOBE_PAYLOAD_WORKGROUP) in;
+
+// A uniform block: every invocation reads all of it (see engine/compute_pipeline.h).
+layout(std140, binding = 0) uniform Elevation { ElevationParams elevation; };
+layout(std430, binding = 1) readonly buffer Faces { FaceCorners faces[30]; };
+layout(std430, binding = 2) readonly buffer Jobs { PayloadJob jobs[]; };
+layout(std430, binding = 3) writeonly buffer Payloads { vec4 payloads[]; };
+layout(std430, binding = 4) buffer Scratch { dvec4 scratch[]; };
+layout(std430, binding = 5) writeonly buffer Results { PayloadResult results[]; };
+
+layout(push_constant) uniform Push {
+  uint cells;     // grid cells per side (power of two)
+  uint jobCount;  // jobs in this dispatch
+} push;
+
+#define GLOBE_ELEVATION_PARAMS elevation
+#ifdef GLOBE_PAYLOAD_FLOAT
+#define GLOBE_ELEVATION_FLOAT
+#endif
+#include "elevation.glsl"
+
+shared double sharedMin[GLOBE_PAYLOAD_WORKGROUP];
+shared double sharedMax[GLOBE_PAYLOAD_WORKGROUP];
+
+void edgeToUv(uint edge, double s, double d, out double u, out double v) {
+  if (edge == 0u) { u = s; v = d; }
+  else if (edge == 1u) { u = 1.0lf - d; v = s; }
+  else if (edge == 2u) { u = 1.0lf - s; v = 1.0lf - d; }
+  else { u = d; v = 1.0lf - s; }
+}
+
+dvec3 normalised(dvec3 p) {
+  precise double inverseLength = 1.0lf / sqrt((p.x * p.x + p.y * p.y) + p.z * p.z);
+  precise dvec3 q = p * inverseLength;
+  return q;
+}
+
+// = globe::payloadSampleDirection
+dvec3 sampleDirection(PayloadJob job, int i, int j) {
+  precise double invCells = 1.0lf / double(push.cells);
+  precise double u = job.uv.x + job.uv.z * (double(i) * invCells);
+  precise double v = job.uv.y + job.uv.z * (double(j) * invCells);
+  bool uOut = u < 0.0lf || u > 1.0lf;
+  bool vOut = v < 0.0lf || v > 1.0lf;
+  if (!uOut && !vOut) return faceUnitPoint(faces[job.face], u, v);
+  if (uOut != vOut) {
+    uint edge;
+    precise double s;
+    precise double d;
+    if (v < 0.0lf) { edge = 0u; s = u; d = -v; }
+    else if (u > 1.0lf) { edge = 1u; s = v; d = u - 1.0lf; }
+    else if (v > 1.0lf) { edge = 2u; s = 1.0lf - u; d = v - 1.0lf; }
+    else { edge = 3u; s = 1.0lf - v; d = -u; }
+    uint packed = job.neighbour[edge];
+    double nu, nv;
+    edgeToUv(packed >> 8, 1.0lf - s, d, nu, nv);
+    return faceUnitPoint(faces[packed & 0xffu], nu, nv);
+  }
+  FaceCorners f = faces[job.face];
+  dvec3 c0 = faceFlatPoint(f, 0.0lf, 0.0lf);
+  dvec3 c1 = faceFlatPoint(f, 1.0lf, 0.0lf);
+  dvec3 c3 = faceFlatPoint(f, 0.0lf, 1.0lf);
+  precise dvec3 p = (c0 + u * (c1 - c0)) + v * (c3 - c0);
+  return normalised(p);
+}
+
+void main() {
+  uint jobIndex = gl_WorkGroupID.x;
+  if (jobIndex >= push.jobCount) return;
+  PayloadJob job = jobs[jobIndex];
+  int n = int(push.cells);
+  int s = n + 3;
+  uint samples = uint(s * s);
+  uint slotBase = job.slot * GLOBE_PAYLOAD_VEC4_PER_SLOT(push.cells);
+  uint scratchBase = jobIndex * samples;
+  dvec3 centre = job.centre.xyz;
+  double q = job.centre.w;
+
+  double localMin = 1.0e300lf;
+  double localMax = 0.0lf;
+  for (uint index = gl_LocalInvocationID.x; index < samples; index += GLOBE_PAYLOAD_WORKGROUP) {
+    int i = int(index % uint(s)) - 1;
+    int j = int(index / uint(s)) - 1;
+    dvec3 dir = sampleDirection(job, i, j);
+#ifdef GLOBE_PAYLOAD_FLOAT
+    // What an all-float pipeline computes: the direction rounded to float, the elevation and the
+    // planet-centred position in float (a 0.5 m grid at Earth radius), then made relative.
+    vec3 dirFloat = vec3(dir);
+    float hFloat = globeElevationFloat(dirFloat);
+    vec3 pFloat = dirFloat * (float(GLOBE_ELEVATION_PARAMS.radius_m) + hFloat);
+    double h = double(hFloat);
+    dvec3 p = dvec3(pFloat);
+#else
+    double h = globeElevation(dir);
+    precise double r = GLOBE_ELEVATION_PARAMS.radius_m + h;
+    precise dvec3 p = dir * r;
+#endif
+    scratch[scratchBase + index] = dvec4(p, 0.0lf);
+    precise dvec3 rel = p - centre;
+    precise dvec3 quantised = floor(rel / q + 0.5lf) * q;
+    payloads[slotBase + index] = vec4(vec3(quantised), float(h));
+    if (i >= 0 && i <= n && j >= 0 && j <= n) {
+      precise double radius = sqrt((p.x * p.x + p.y * p.y) + p.z * p.z);
+      localMin = min(localMin, radius);
+      localMax = max(localMax, radius);
+    }
+  }
+  sharedMin[gl_LocalInvocationID.x] = localMin;
+  sharedMax[gl_LocalInvocationID.x] = localMax;
+  memoryBarrierBuffer();
+  barrier();
+
+  uint normalBase = slotBase + samples;
+  for (uint index = gl_LocalInvocationID.x; index < samples; index += GLOBE_PAYLOAD_WORKGROUP) {
+    int i = clamp(int(index % uint(s)) - 1, 0, n);
+    int j = clamp(int(index / uint(s)) - 1, 0, n);
+    uint at = scratchBase + uint((j + 1) * s + (i + 1));
+    precise dvec3 du = scratch[at + 1u].xyz - scratch[at - 1u].xyz;
+    precise dvec3 dv = scratch[at + uint(s)].xyz - scratch[at - uint(s)].xyz;
+    precise dvec3 c = dvec3(du.y * dv.z - du.z * dv.y, du.z * dv.x - du.x * dv.z, du.x * dv.y - du.y * dv.x);
+    payloads[normalBase + index] = vec4(vec3(normalised(c)), 0.0);
+  }
+
+  for (uint stride = GLOBE_PAYLOAD_WORKGROUP / 2u; stride > 0u; stride >>= 1) {
+    barrier();
+    if (gl_LocalInvocationID.x < stride) {
+      sharedMin[gl_LocalInvocationID.x] = min(sharedMin[gl_LocalInvocationID.x], sharedMin[gl_LocalInvocationID.x + stride]);
+      sharedMax[gl_LocalInvocationID.x] = max(sharedMax[gl_LocalInvocationID.x], sharedMax[gl_LocalInvocationID.x + stride]);
+    }
+  }
+  if (gl_LocalInvocationID.x == 0u) results[jobIndex] = PayloadResult(sharedMin[0], sharedMax[0]);
+}
