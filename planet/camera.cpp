@@ -139,4 +139,19 @@ glm::dmat4 Camera::projection() const {
   return p;
 }
 
+GeodeticPose standardCameraPose(int index) {
+  switch (index) {
+    case 0: return {20.0, -100.0, 2.0e7, 0, -90, 0};
+    case 1: return {22.0, -99.0, 1.0e5, 60, -30, 0};
+    case 2: return {22.0, -98.8, 1.0e4, 60, -15, 0};
+    case 3: return {22.05, -98.4, 1.0e3, 60, -8, 0};
+    default: return {22.1, -98.3, 2.0, 60, -2, 0};
+  }
+}
+
+const char* standardCameraName(int index) {
+  static const char* const kNames[kStandardCameraCount] = {"orbit", "100km", "10km", "1km", "2m"};
+  return kNames[index < 0 || index >= kStandardCameraCount ? kStandardCameraCount - 1 : index];
+}
+
 }  // namespace globe

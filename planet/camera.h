@@ -20,6 +20,14 @@ struct GeodeticPose {
   double roll_deg = 0;       // 0 level, positive rolls right
 };
 
+// The five standard cameras of the frame-time benchmark and of `globe trade` (docs/rendering.md):
+// orbit (2e7 m, the whole planet), 100 km, 10 km, 1 km and 2 m over the earthlike plateau near
+// 22° N 98.4° W, looking towards the horizon. index in [0, kStandardCameraCount).
+inline constexpr int kStandardCameraCount = 5;
+GeodeticPose standardCameraPose(int index);
+// "orbit", "100km", "10km", "1km", "2m".
+const char* standardCameraName(int index);
+
 // Parses "LAT,LON,HEIGHT[,HEADING,PITCH,ROLL]" (degrees, metres). Errors name `field`.
 // When HEADING/PITCH/ROLL are omitted the camera looks at the horizon (pitch is chosen so the
 // view centre sits just below the geometric horizon).

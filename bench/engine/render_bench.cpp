@@ -22,17 +22,6 @@ namespace {
 using bench::device;
 const PlanetDescription& planet() { return bench::earthlike(); }
 
-// The standard cameras: over the earthlike planet's mountains, looking towards the horizon.
-GeodeticPose standardCamera(int index) {
-  switch (index) {
-    case 0: return {20.0, -100.0, 2.0e7, 0, -90, 0};     // orbit: whole planet
-    case 1: return {22.0, -99.0, 1.0e5, 60, -30, 0};      // 100 km
-    case 2: return {22.0, -98.8, 1.0e4, 60, -15, 0};      // 10 km
-    case 3: return {22.05, -98.4, 1.0e3, 60, -8, 0};      // 1 km
-    default: return {22.1, -98.3, 2.0, 60, -2, 0};        // 2 m
-  }
-}
-
 void BM_TerrainFrame(benchmark::State& state) {
   const int index = int(state.range(0));
   static const ElevationModel model(planet());
@@ -48,7 +37,7 @@ void BM_TerrainFrame(benchmark::State& state) {
   TerrainSettings settings = terrainSettingsFor(quality);
   if (const char* g = std::getenv("GLOBE_BENCH_GRID")) settings.gridCells = uint32_t(std::atoi(g));
   if (const char* r = std::getenv("GLOBE_BENCH_RANGE")) settings.ranges.distanceMultiplier = std::atof(r);
-  GeodeticPose pose = standardCamera(index);
+  GeodeticPose pose = standardCameraPose(index);
   glm::dvec3 down = directionFromLatLon(pose.latitude_deg, pose.longitude_deg);
   Camera camera = cameraFromPose(pose, model.radius_m() + model.elevation_m(down), model.radius_m(), 1280.0 / 720.0);
   settings.style.sunDirection = defaultSunDirection(camera.position_m);

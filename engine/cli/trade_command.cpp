@@ -111,18 +111,6 @@ std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::st
   return list;
 }
 
-// The standard cameras of bench/engine/render_bench.cpp (over the earthlike mountains).
-GeodeticPose standardPose(int index) {
-  switch (index) {
-    case 0: return {20.0, -100.0, 2.0e7, 0, -90, 0};
-    case 1: return {22.0, -99.0, 1.0e5, 60, -30, 0};
-    case 2: return {22.0, -98.8, 1.0e4, 60, -15, 0};
-    case 3: return {22.05, -98.4, 1.0e3, 60, -8, 0};
-    default: return {22.1, -98.3, 2.0, 60, -2, 0};
-  }
-}
-const char* kStandardNames[] = {"orbit", "100km", "10km", "1km", "2m"};
-
 std::string loadAverage() {
   std::ifstream in("/proc/loadavg");
   std::string a, b, c;
@@ -160,8 +148,8 @@ int runTrade(const TradeOptions& o) {
   auto ground = [&](const glm::dvec3& d) { return model.radius_m() + model.elevation_m(d); };
   std::vector<TradeCamera> cameras;
   for (int i : o.quick ? std::vector<int>{2, 3} : std::vector<int>{0, 1, 2, 3, 4}) {
-    GeodeticPose pose = standardPose(i);
-    cameras.push_back({kStandardNames[i], cameraFromPose(pose, ground(directionFromLatLon(pose.latitude_deg, pose.longitude_deg)),
+    GeodeticPose pose = standardCameraPose(i);
+    cameras.push_back({standardCameraName(i), cameraFromPose(pose, ground(directionFromLatLon(pose.latitude_deg, pose.longitude_deg)),
                                                           model.radius_m(), aspect)});
   }
   if (path)
