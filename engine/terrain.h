@@ -24,6 +24,7 @@ struct TerrainSettings {
   double originThreshold_m = 0;  // floating origin re-base distance (0 = camera-relative)
   TerrainStyle style;            // shading (the planet's colour ramp); its radius is set from the planet
   GenerationPrecision generation = GenerationPrecision::kDouble;  // kFloat only to measure (globe trade)
+  VertexPositions vertexPositions = VertexPositions::kStored;     // kReprojected only to measure
 };
 
 // Bad settings and planets are reported as an Error naming the field.

@@ -4,6 +4,7 @@
 
 #include "engine/render_output.h"
 #include "engine/vk_check.h"
+#include "planet/face_mapping.h"
 #include "shaders/include/payload_layout.h"
 #include "shaders/include/terrain_layout.h"
 
@@ -32,11 +33,13 @@ static_assert(sizeof(SkyPush) == 96);
 constexpr VkDeviceSize kFrameHeaderBytes = 512;
 static_assert(sizeof(gpu::TerrainFrame) <= kFrameHeaderBytes);
 
-vk::GraphicsPipelineDesc terrainDesc(VkFormat colourFormat, bool wireframe) {
+vk::GraphicsPipelineDesc terrainDesc(VkFormat colourFormat, bool wireframe, VertexPositions positions) {
   vk::GraphicsPipelineDesc d;
-  d.vertexShader = "terrain.vert";
+  const bool reprojected = positions == VertexPositions::kReprojected;
+  d.vertexShader = reprojected ? "terrain_reprojected.vert" : "terrain.vert";
   d.fragmentShader = "terrain.frag";
-  d.storageBuffers = 3;  // 0: instances, 1: payloads, 2: frame constants (uniform)
+  // 0: instances, 1: payloads, 2: frame constants (uniform); reprojected: 3 nodes' (u, v), 4 faces.
+  d.storageBuffers = reprojected ? 5 : 3;
   d.uniformMask = 1u << 2;
   d.pushConstantBytes = sizeof(gpu::TerrainDrawPush);
   d.colourFormat = colourFormat;
@@ -92,11 +95,11 @@ gpu::TerrainVec4 toGpu(const glm::vec3& v, float w) { return {v.x, v.y, v.z, w};
 }  // namespace
 
 TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const TerrainStyle& style,
-                                 uint32_t initialNodes, VkFormat colourFormat)
+                                 uint32_t initialNodes, VkFormat colourFormat, VertexPositions positions)
     : device_(device),
       cells_(gridCells),
       style_(style),
-      solid_(device, terrainDesc(colourFormat, false)),
+      solid_(device, terrainDesc(colourFormat, false, positions)),
       sky_(device, [&] {
         vk::GraphicsPipelineDesc d;
         d.vertexShader = "fullscreen.vert";
@@ -111,7 +114,7 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
   VkPhysicalDeviceFeatures features{};
   vkGetPhysicalDeviceFeatures(device.physical(), &features);
   if (features.fillModeNonSolid) {
-    wireframe_ = std::make_unique<vk::GraphicsPipeline>(device, terrainDesc(colourFormat, true));
+    wireframe_ = std::make_unique<vk::GraphicsPipeline>(device, terrainDesc(colourFormat, true, positions));
   }
 
   std::vector<uint32_t> indices;
@@ -131,6 +134,13 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
     VkBufferCopy copy{0, 0, bytes};
     vkCmdCopyBuffer(cmd, staging.handle(), indices_.handle(), 1, &copy);
   });
+  positions_ = positions;
+  if (positions_ == VertexPositions::kReprojected) {
+    faces_ = vk::Buffer(device, 30 * sizeof(FaceCornersGpu), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                        vk::MemoryUse::HostVisible, "terrain face corners");
+    auto* faces = static_cast<FaceCornersGpu*>(faces_.mapped());
+    for (int f = 0; f < 30; ++f) faces[f] = RhombusFaceMapping::get().gpuCorners(f);
+  }
   for (uint32_t f = 0; f < kFramesInFlight; ++f) ensureCapacity(f, std::max(initialNodes, 1u));
 }
 
@@ -157,7 +167,24 @@ void TerrainRenderer::ensureCapacity(uint32_t frameIndex, uint32_t nodes) {
   frames_[frameIndex] = vk::Buffer(device_, kFrameHeaderBytes + VkDeviceSize(capacity) * sizeof(gpu::TerrainInstance),
                                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::HostVisible,
                                    frameIndex == 0 ? "terrain frame 0" : "terrain frame 1");
+  if (positions_ == VertexPositions::kReprojected) {
+    reprojection_[frameIndex] =
+        vk::Buffer(device_, sizeof(gpu::TerrainReprojectionFrame) + VkDeviceSize(capacity) * sizeof(gpu::TerrainReprojectionNode),
+                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::HostVisible, "terrain reprojection");
+  }
   capacity_[frameIndex] = capacity;
+}
+
+void TerrainRenderer::fillReprojection(uint32_t frameIndex, const Camera& camera, std::span<const DrawNode> nodes,
+                                       uint32_t full) {
+  auto* bytes = static_cast<unsigned char*>(reprojection_[frameIndex].mapped());
+  gpu::TerrainReprojectionFrame header{{camera.position_m.x, camera.position_m.y, camera.position_m.z, style_.radius_m}};
+  std::memcpy(bytes, &header, sizeof(header));
+  auto* out = reinterpret_cast<gpu::TerrainReprojectionNode*>(bytes + sizeof(header));
+  uint32_t nextFull = 0, nextPartial = full;
+  for (const DrawNode& n : nodes) {
+    out[n.partial ? nextPartial++ : nextFull++].uv = {n.id.uMin(), n.id.vMin(), n.id.size(), double(n.id.face)};
+  }
 }
 
 void TerrainRenderer::recordSky(VkCommandBuffer cmd, const Camera& camera) const {
@@ -239,8 +266,16 @@ DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, con
   const vk::GraphicsPipeline& pipeline =
       view == TerrainDebugView::kWireframe ? *wireframe_ : solid_;
   gpu::TerrainDrawPush push{cells_, 0};
-  pipeline.bind(cmd, {instanceDescriptor(frameIndex), payloads.descriptor(), constantsDescriptor(frameIndex)}, &push,
-                sizeof(push));
+  if (positions_ == VertexPositions::kReprojected) {
+    fillReprojection(frameIndex, camera, nodes, full);
+    pipeline.bind(cmd,
+                  {instanceDescriptor(frameIndex), payloads.descriptor(), constantsDescriptor(frameIndex),
+                   reprojection_[frameIndex].descriptor(), faces_.descriptor()},
+                  &push, sizeof(push));
+  } else {
+    pipeline.bind(cmd, {instanceDescriptor(frameIndex), payloads.descriptor(), constantsDescriptor(frameIndex)}, &push,
+                  sizeof(push));
+  }
   vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
   const uint32_t fullCount = skirts ? fullIndices_ : fullGridIndices_;
   const uint32_t halfCount = skirts ? halfIndices_ : halfGridIndices_;

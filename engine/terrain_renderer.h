@@ -30,6 +30,12 @@ enum class TerrainDebugView {
   kWireframe,   // LOD-coloured lines (falls back to kLodColours without fillModeNonSolid)
 };
 
+// Where the vertex shader takes a vertex's position from. kStored: the payload's float position
+// relative to the node centre, generated once in double (the engine; the primary source's choice).
+// kReprojected: the payload's height, re-projected every frame in double (face mapping, radius +
+// height, minus the camera): the alternative the source rejected, only to measure it (globe trade).
+enum class VertexPositions { kStored, kReprojected };
+
 struct TerrainStyle {
   double radius_m = 6371000.0;            // planet radius (metres): local vertical, altitude for the sky
   ColourRamp ramp;                        // colour by elevation and slope (a planet file's ramp)
@@ -70,7 +76,8 @@ class TerrainRenderer {
   // capacity allocated up front (grows when exceeded). Pipelines target OffscreenTarget's formats
   // unless `colourFormat` says otherwise (e.g. a swapchain's).
   TerrainRenderer(vk::Device& device, uint32_t gridCells, const TerrainStyle& style = {},
-                  uint32_t initialNodes = 1024, VkFormat colourFormat = VK_FORMAT_R16G16B16A16_SFLOAT);
+                  uint32_t initialNodes = 1024, VkFormat colourFormat = VK_FORMAT_R16G16B16A16_SFLOAT,
+                  VertexPositions positions = VertexPositions::kStored);
   ~TerrainRenderer();
   TerrainRenderer(const TerrainRenderer&) = delete;
   TerrainRenderer& operator=(const TerrainRenderer&) = delete;
@@ -98,6 +105,9 @@ class TerrainRenderer {
 
  private:
   void ensureCapacity(uint32_t frameIndex, uint32_t nodes);
+  // kReprojected: fills frame `frameIndex`'s reprojection buffer (camera, then each instance's
+  // (u, v) corner, size and face, in instance order).
+  void fillReprojection(uint32_t frameIndex, const Camera& camera, std::span<const DrawNode> nodes, uint32_t full);
   void recordSky(VkCommandBuffer cmd, const Camera& camera) const;
 
   vk::Device& device_;
@@ -113,6 +123,9 @@ class TerrainRenderer {
   uint32_t halfGridIndices_ = 0;
   std::array<vk::Buffer, kFramesInFlight> frames_;
   std::array<uint32_t, kFramesInFlight> capacity_{};
+  VertexPositions positions_;
+  std::array<vk::Buffer, kFramesInFlight> reprojection_;  // kReprojected only
+  vk::Buffer faces_;                                      // kReprojected only: the 30 faces' corners
 };
 
 }  // namespace globe

@@ -1,34 +1,4 @@
 #version 450
-// Terrain: one instance per selected node, vertices pulled from the node's payload slot
-// (shaders/include/terrain_vertex.glsl does the work, shared with the readback test kernel).
-// The surface colour (ramp by elevation and slope, or the debug colour per level) is computed here,
-// per vertex: the fragment shader only lights. Evaluating the ramp per fragment from the storage
-// buffer cost ~5x the whole frame on lavapipe; at grid resolution the difference is invisible.
+// The terrain vertex stage: positions read from the payload (body in include/terrain_vertex_stage.glsl).
 #extension GL_GOOGLE_include_directive : require
-#include "include/terrain_vertex.glsl"
-#define GLOBE_RAMP frame.ramp
-#include "include/terrain_shading.glsl"
-
-layout(push_constant) uniform Push {
-  TerrainDrawPush draw;
-} push;
-
-layout(location = 0) out vec3 outNormal;
-layout(location = 1) out vec3 outAlbedo;
-layout(location = 2) flat out vec4 outSun;  // xyz: towards the sun, w: ambient
-layout(location = 3) out vec3 outRelative;
-
-void main() {
-  TerrainVertex v = terrainVertex(uint(gl_VertexIndex), uint(gl_InstanceIndex), push.draw.drawnCells);
-  gl_Position = v.clip;
-  outNormal = v.normal;
-  vec3 n = normalize(v.normal);
-  if (frame.options.y != GLOBE_TERRAIN_SHADED) {
-    outAlbedo = terrainLevelColour(instances[gl_InstanceIndex].info.z);
-    outSun = vec4(0.0, 0.0, 0.0, 1.0);  // debug colours are shown unlit
-  } else {
-    outAlbedo = terrainRampColour(v.elevation, clamp(dot(n, v.up), 0.0, 1.0));
-    outSun = frame.sun;
-  }
-  outRelative = v.relative;
-}
+#include "include/terrain_vertex_stage.glsl"

@@ -52,15 +52,16 @@ struct TradeCamera {
 
 std::string knobName(const TerrainSettings& s) {
   char text[96];
-  std::snprintf(text, sizeof(text), "g%u x%g d%d f%g%s", s.gridCells, s.ranges.distanceMultiplier, s.ranges.maxDepth,
-                s.ranges.morphFraction, s.generation == GenerationPrecision::kFloat ? " float" : "");
+  std::snprintf(text, sizeof(text), "g%u x%g d%d f%g%s%s", s.gridCells, s.ranges.distanceMultiplier, s.ranges.maxDepth,
+                s.ranges.morphFraction, s.generation == GenerationPrecision::kFloat ? " float" : "",
+                s.vertexPositions == VertexPositions::kReprojected ? " reprojected" : "");
   return text;
 }
 
 bool sameKnobs(const TerrainSettings& a, const TerrainSettings& b) {
   return a.gridCells == b.gridCells && a.ranges.distanceMultiplier == b.ranges.distanceMultiplier &&
          a.ranges.maxDepth == b.ranges.maxDepth && a.ranges.morphFraction == b.ranges.morphFraction &&
-         a.generation == b.generation;
+         a.generation == b.generation && a.vertexPositions == b.vertexPositions;
 }
 
 // One knob at a time around the baseline, then the presets and a few combinations.
@@ -87,10 +88,15 @@ std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::st
   auto precision = [](TerrainSettings& s, double v) {
     s.generation = v != 0.0 ? GenerationPrecision::kFloat : GenerationPrecision::kDouble;
   };
+  // The payload's heights re-projected in double every frame instead of its stored positions.
+  auto reproject = [](TerrainSettings& s, double v) {
+    s.vertexPositions = v != 0.0 ? VertexPositions::kReprojected : VertexPositions::kStored;
+  };
   if (quick) {  // the cheap knobs only: a minute or two on lavapipe
     vary(grid, {16, 32, 64});
     vary(mult, {0.5, 1, 2});
     vary(precision, {1});
+    vary(reproject, {1});
     return list;
   }
   // The presets and the knobs that do not change the triangle count much first: --configs N keeps
@@ -100,6 +106,7 @@ std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::st
   vary(depth, {16, 20, 24});
   vary(morph, {0.25, 0.5});
   vary(precision, {1});
+  vary(reproject, {1});
   vary(grid, {16, 32, 64, 128});
   vary(mult, {0.5, 1, 2, 4});
   for (auto [g, m] : {std::pair{16.0, 2.0}, {16.0, 4.0}, {64.0, 0.5}, {64.0, 2.0}, {128.0, 0.5}, {128.0, 1.0}}) {
@@ -230,6 +237,7 @@ int runTrade(const TradeOptions& o) {
       row.maxDepth = settings.ranges.maxDepth;
       row.morphFraction = settings.ranges.morphFraction;
       row.generation = settings.generation == GenerationPrecision::kFloat ? "float" : "double";
+      row.positions = settings.vertexPositions == VertexPositions::kReprojected ? "reprojected" : "stored";
       row.width = size->width;
       row.height = size->height;
       row.frameMedian_ms = nearestRankPercentile(frame_ms, 50);

@@ -23,11 +23,16 @@ struct TerrainUvec4 {
 struct TerrainMat4 {
   float m[16];  // column-major, like GLSL
 };
+struct TerrainDvec4 {
+  double x, y, z, w;
+};
 #define GLOBE_VEC4 TerrainVec4
+#define GLOBE_DVEC4 TerrainDvec4
 #define GLOBE_UVEC4 TerrainUvec4
 #define GLOBE_MAT4 TerrainMat4
 #else
 #define GLOBE_VEC4 vec4
+#define GLOBE_DVEC4 dvec4
 #define GLOBE_UVEC4 uvec4
 #define GLOBE_MAT4 mat4
 #endif
@@ -57,6 +62,17 @@ struct TerrainInstance {
                       //     z = level the node is drawn at (id.level - partial), w = 0
 };
 
+// Positions re-projected every frame (VertexPositions::kReprojected, measured by globe trade): one
+// host-visible storage buffer per frame in flight, binding 3 of the reprojecting pipeline, holds a
+// TerrainReprojectionFrame then one TerrainReprojectionNode per instance (same order). Doubles: the
+// vertex shader maps (u, v) to the sphere and subtracts the camera in double.
+struct TerrainReprojectionFrame {
+  GLOBE_DVEC4 camera;  // 0: xyz = camera position, planet-centred, metres; w = planet radius, metres
+};
+struct TerrainReprojectionNode {
+  GLOBE_DVEC4 uv;  // 0: x = u of the node's corner, y = v, z = node size in (u, v); w = face (0..29)
+};
+
 // Push constants of one draw (8 bytes): which grid the index buffer range is.
 struct TerrainDrawPush {
   uint drawnCells;  // cells per side of the drawn grid: N (full nodes) or N / 2 (partial nodes)
@@ -66,9 +82,11 @@ struct TerrainDrawPush {
 #ifdef __cplusplus
 static_assert(sizeof(TerrainFrame) == 480);
 static_assert(sizeof(TerrainInstance) == 48);
+static_assert(sizeof(TerrainReprojectionFrame) == 32 && sizeof(TerrainReprojectionNode) == 32);
 }  // namespace globe::gpu
 #endif
 #undef GLOBE_VEC4
+#undef GLOBE_DVEC4
 #undef GLOBE_UVEC4
 #undef GLOBE_MAT4
 

@@ -22,12 +22,38 @@
 
 #include "payload_layout.h"
 #include "terrain_layout.h"
+#ifdef GLOBE_TERRAIN_REPROJECT
+#include "face_mapping.glsl"
+#endif
 
 // Bindings (engine/terrain_renderer.cpp): 0 the drawn nodes, 1 the payloads, 2 the frame constants —
 // a uniform block, which every vertex reads (lavapipe fetches it once instead of per lane).
 layout(std430, set = 0, binding = 0) readonly buffer TerrainInstances { TerrainInstance instances[]; };
 layout(std430, set = 0, binding = 1) readonly buffer PayloadBuffer { vec4 payload[]; };
 layout(std140, set = 0, binding = 2) uniform TerrainFrameBlock { TerrainFrame frame; };
+
+#ifdef GLOBE_TERRAIN_REPROJECT
+// The primary source's rejected alternative, only to measure it (VertexPositions::kReprojected):
+// each vertex's position is re-projected from its payload height every frame, in double — face
+// mapping of the sample's (u, v) exactly as the payload kernel computed its direction, times
+// (radius + height), minus the camera — instead of read from the payload. Shared samples get the
+// same doubles from every node holding them (dyadic u, v; seam-exact mapping), so the mesh stays
+// crack-free. Positions below are camera-relative from the start (the camera is the origin).
+layout(std430, set = 0, binding = 3) readonly buffer TerrainReprojection {
+  TerrainReprojectionFrame reprojection;
+  TerrainReprojectionNode reprojectionNodes[];
+};
+layout(std430, set = 0, binding = 4) readonly buffer TerrainFaces { FaceCorners terrainFaces[30]; };
+
+vec3 terrainReprojected(dvec4 uv, uint cells, int i, int j, float elevation_m) {
+  precise double invCells = 1.0lf / double(cells);
+  precise double u = uv.x + uv.z * (double(i) * invCells);
+  precise double v = uv.y + uv.z * (double(j) * invCells);
+  dvec3 direction = faceUnitPoint(terrainFaces[uint(uv.w)], u, v);
+  precise dvec3 p = direction * (reprojection.camera.w + double(elevation_m)) - reprojection.camera.xyz;
+  return vec3(p);
+}
+#endif
 
 // Finishes the morph a little inside both ends of the band so that float rounding of the distance
 // cannot leave k just below 1 where a coarser neighbour needs it exactly 1 (or just above 0).
@@ -75,8 +101,14 @@ TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCell
   uint normals = (cells + 3u) * (cells + 3u);
   int si = int(gi * stride), sj = int(gj * stride);
   vec4 sample0 = payload[terrainSample(base, cells, si, sj)];
+#ifdef GLOBE_TERRAIN_REPROJECT
+  dvec4 uv = reprojectionNodes[instanceIndex].uv;
+  vec3 world = terrainReprojected(uv, cells, si, sj, sample0.w);
+  vec3 rel0 = world;
+#else
   precise vec3 world = inst.offset.xyz + sample0.xyz;
   precise vec3 rel0 = (world - frame.cameraHigh.xyz) - frame.cameraLow.xyz;
+#endif
   float k = terrainMorphFactor(length(rel0), inst.morph.xy);
 
   vec3 position = world;
@@ -91,8 +123,13 @@ TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCell
     uint ia = terrainSample(base, cells, int(a.x * stride), int(a.y * stride));
     uint ib = terrainSample(base, cells, int(b.x * stride), int(b.y * stride));
     vec4 sa = payload[ia], sb = payload[ib];
+#ifdef GLOBE_TERRAIN_REPROJECT
+    vec3 wa = terrainReprojected(uv, cells, int(a.x * stride), int(a.y * stride), sa.w);
+    vec3 wb = terrainReprojected(uv, cells, int(b.x * stride), int(b.y * stride), sb.w);
+#else
     precise vec3 wa = inst.offset.xyz + sa.xyz;
     precise vec3 wb = inst.offset.xyz + sb.xyz;
+#endif
     precise vec3 mid = (wa + wb) * 0.5;
     precise vec3 morphed = world + (mid - world) * k;
     position = morphed;
@@ -100,7 +137,11 @@ TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCell
     elevation = mix(elevation, 0.5 * (sa.w + sb.w), k);
   }
 
+#ifdef GLOBE_TERRAIN_REPROJECT
+  vec3 up = vec3(normalize(dvec3(world) + reprojection.camera.xyz));
+#else
   vec3 up = normalize(world - frame.planetCentre.xyz);
+#endif
   if (skirt) {
     // Flared skirt: a little beyond the edge (towards the neighbour, along the ring sample) and
     // below it. Hidden under the neighbour's surface; it only shows through sub-pixel gaps
@@ -113,7 +154,11 @@ TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCell
   }
 
   TerrainVertex v;
+#ifdef GLOBE_TERRAIN_REPROJECT
+  vec3 rel = position;
+#else
   precise vec3 rel = (position - frame.cameraHigh.xyz) - frame.cameraLow.xyz;
+#endif
   v.relative = rel;
   v.clip = frame.clipFromCamera * vec4(rel, 1.0);
   v.normal = normal;
