@@ -20,6 +20,7 @@ struct FrameStats {
   uint32_t evicted = 0;         // payloads evicted this frame
   double resident_mib = 0;      // payload memory resident on the GPU (MiB)
   uint32_t queue_length = 0;    // generation requests waiting
+  bool converged = false;       // every node the view wants is drawn at its level (Terrain::converged)
 };
 
 }  // namespace globe

@@ -37,10 +37,14 @@ FrameStats HeadlessRenderer::renderFrame(Terrain& terrain, const Camera& camera,
   terrain.update(frame_, camera, frame_ - 1);
   if (converge) {
     // Bounded: a view needs at most a few thousand payloads; the pool's budget moves 8 per round.
+    // A round that dispatches, runs and completes nothing changes nothing (the camera stands
+    // still): the pool is full of nodes this view needs, and the frame is drawn as it is
+    // (stats.converged false) instead of spinning the remaining rounds.
     for (int round = 0; round < 100000 && !terrain.converged(); ++round) {
       terrain.waitForGeneration();
       ++frame_;
-      terrain.update(frame_, camera, frame_ - 1);
+      const FrameStats& progress = terrain.update(frame_, camera, frame_ - 1);
+      if (progress.gen_dispatched == 0 && progress.gen_in_flight == 0 && progress.gen_completed == 0) break;
     }
     // Converged frames measure drawing alone (the source's "data instantly available" mode).
     start = std::chrono::steady_clock::now();
@@ -67,6 +71,7 @@ FrameStats HeadlessRenderer::renderFrame(Terrain& terrain, const Camera& camera,
   GLOBE_VK_CHECK(vkWaitForFences(device_.device(), 1, &fence, VK_TRUE, UINT64_MAX));
 
   FrameStats stats = terrain.stats();
+  stats.converged = terrain.converged();
   uint64_t stamps[2] = {0, 0};
   if (vkGetQueryPoolResults(device_.device(), queries_, 0, 2, sizeof(stamps), stamps, sizeof(uint64_t),
                             VK_QUERY_RESULT_64_BIT) == VK_SUCCESS &&

@@ -20,6 +20,7 @@ struct TradeRow {
   double morphFraction = 0;
   std::string generation = "double";  // payload generation precision: "double" or "float"
   std::string positions = "stored";   // vertex positions: "stored" (payload) or "reprojected" (double, per frame)
+  bool converged = true;               // false: the pool could not hold the view (drawn coarser)
   uint32_t width = 0, height = 0;
   double frameMedian_ms = 0, frameP95_ms = 0;  // converged frames (render cost alone)
   double select_ms = 0;                        // median CPU selection time

@@ -243,6 +243,7 @@ int runTrade(const TradeOptions& o) {
       row.frameMedian_ms = nearestRankPercentile(frame_ms, 50);
       row.frameP95_ms = nearestRankPercentile(frame_ms, 95);
       row.select_ms = nearestRankPercentile(select_ms, 50);
+      row.converged = stats.converged;
       row.triangles = stats.triangles;
       row.nodes = stats.nodes_selected;
       row.resident_mib = stats.resident_mib;
@@ -270,8 +271,9 @@ int runTrade(const TradeOptions& o) {
               "err_max", "triMax");
   for (const TradeRow& r : rows)
     if (r.camera == "worst")
-      std::printf("%-34s %9.2f %9.2f %9.3f %9.3f %9.2f %7llu\n", r.config.c_str(), r.frameMedian_ms, r.frameP95_ms,
-                  r.error.p50_px, r.error.p95_px, r.error.max_px, (unsigned long long)r.triangles);
+      std::printf("%-34s %9.2f %9.2f %9.3f %9.3f %9.2f %7llu%s\n", r.config.c_str(), r.frameMedian_ms, r.frameP95_ms,
+                  r.error.p50_px, r.error.p95_px, r.error.max_px, (unsigned long long)r.triangles,
+                  r.converged ? "" : "  (not converged: the pool could not hold the view)");
   std::printf("truth ray casting %.1f s, total %.1f s; wrote %s/trade.csv and %s/pareto.svg\n", truth_ms * 1e-3, total_s,
               o.out.c_str(), o.out.c_str());
   return kExitOk;

@@ -30,7 +30,9 @@ TEST(TradeReport, WorstRowAndFiles) {
   b.frameMedian_ms = 20;
   b.error.p95_px = 0.9;
   b.genPerNode_ms = 3;
+  b.converged = false;  // a view the pool could not hold makes the configuration's worst row unconverged
   TradeRow w = aggregateTradeRows({a, b});
+  EXPECT_FALSE(w.converged);
   EXPECT_EQ(w.camera, "worst");
   EXPECT_EQ(w.frameMedian_ms, 30);
   EXPECT_EQ(w.error.p95_px, 0.9);
