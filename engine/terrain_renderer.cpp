@@ -94,7 +94,7 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
       skirts_(device, terrainDesc(colourFormat, false, VK_CULL_MODE_NONE)),
       sky_(device, [&] {
         vk::GraphicsPipelineDesc d;
-        d.vertexShader = "fullscreen.vert";
+        d.vertexShader = "terrain_sky.vert";
         d.fragmentShader = "terrain_sky.frag";
         d.pushConstantBytes = sizeof(SkyPush);
         d.colourFormat = colourFormat;
