@@ -11,6 +11,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <cassert>
 #include <cmath>
 #include <cstring>
@@ -33,7 +34,8 @@ static_assert(sizeof(SkyPush) == 96);
 constexpr VkDeviceSize kFrameHeaderBytes = 512;
 static_assert(sizeof(gpu::TerrainFrame) <= kFrameHeaderBytes);
 
-vk::GraphicsPipelineDesc terrainDesc(VkFormat colourFormat, bool wireframe, VertexPositions positions) {
+vk::GraphicsPipelineDesc terrainDesc(VkFormat colourFormat, bool wireframe, VkCullModeFlags cull,
+                                     VertexPositions positions) {
   vk::GraphicsPipelineDesc d;
   const bool reprojected = positions == VertexPositions::kReprojected;
   d.vertexShader = reprojected ? "terrain_reprojected.vert" : "terrain.vert";
@@ -44,44 +46,34 @@ vk::GraphicsPipelineDesc terrainDesc(VkFormat colourFormat, bool wireframe, Vert
   d.pushConstantBytes = sizeof(gpu::TerrainDrawPush);
   d.colourFormat = colourFormat;
   d.wireframe = wireframe;
+  d.cull = cull;
   return d;
 }
 
-// Triangles of an n x n grid (vertex i + j (n+1)), every cell split along (i, j)-(i+1, j+1), then the
-// skirt quads of its four edges (skirt vertex (n+1)^2 + e (n+1) + t below grid vertex t of edge e).
-// Returns the grid's own index count.
-uint32_t appendGrid(uint32_t n, std::vector<uint32_t>& out) {
+// Triangles of an n x n grid (vertex i + j (n+1)), every cell split along (i, j)-(i+1, j+1).
+void appendGrid(uint32_t n, std::vector<uint32_t>& out) {
   const uint32_t side = n + 1;
+  const size_t first = out.size();
   for (uint32_t j = 0; j < n; ++j) {
     for (uint32_t i = 0; i < n; ++i) {
       const uint32_t v00 = j * side + i, v10 = v00 + 1, v01 = v00 + side, v11 = v01 + 1;
       out.insert(out.end(), {v00, v10, v11, v00, v11, v01});
     }
   }
-  const uint32_t gridIndices = 6 * n * n;
-  const auto edgeVertex = [&](uint32_t edge, uint32_t t) -> uint32_t {
-    switch (edge) {
-      case 0: return t;                 // j = 0
-      case 1: return t * side + n;      // i = n
-      case 2: return n * side + t;      // j = n
-      default: return t * side;         // i = 0
-    }
-  };
-  for (uint32_t e = 0; e < 4; ++e) {
-    for (uint32_t t = 0; t < n; ++t) {
-      const uint32_t g0 = edgeVertex(e, t), g1 = edgeVertex(e, t + 1);
-      const uint32_t s0 = side * side + e * side + t, s1 = s0 + 1;
-      out.insert(out.end(), {g0, g1, s1, g0, s1, s0});
-    }
-  }
   // Row-major order re-shades most vertices (a row is longer than a post-transform cache); meshopt
-  // reorders the triangles for cache reuse. Grid and skirts stay separate ranges.
-  const size_t first = out.size() - gridIndices - 24 * size_t(n);
-  const size_t vertices = size_t(side) * side + 4 * size_t(side);
-  meshopt_optimizeVertexCache(&out[first], &out[first], gridIndices, vertices);
-  meshopt_optimizeVertexCache(&out[first + gridIndices], &out[first + gridIndices], 24 * size_t(n), vertices);
-  return gridIndices;
+  // reorders the triangles for cache reuse.
+  meshopt_optimizeVertexCache(&out[first], &out[first], out.size() - first, size_t(side) * side);
 }
+
+// The skirt strip of one node edge (terrain_vertex.glsl): top vertex (n+1)^2 + t is grid vertex t
+// along the edge, bottom vertex (n+1)^2 + (n+1) + t its flared copy.
+void appendSkirt(uint32_t n, std::vector<uint32_t>& out) {
+  const uint32_t top = (n + 1) * (n + 1), bottom = top + n + 1;
+  for (uint32_t t = 0; t < n; ++t) out.insert(out.end(), {top + t, top + t + 1, bottom + t + 1, top + t, bottom + t + 1, bottom + t});
+}
+
+// Sort key of a drawn node for the skirt test below.
+std::pair<uint64_t, bool> drawnKey(const NodeId& id, bool partial) { return {id.key(), partial}; }
 
 float morphDistance(double metres) {
   // +infinity (depth 0 never morphs) and anything beyond float become FLT_MAX; the shader treats
@@ -99,10 +91,14 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
     : device_(device),
       cells_(gridCells),
       style_(style),
-      solid_(device, terrainDesc(colourFormat, false, positions)),
+      // The surface is seen from above only (the camera never goes under it): its back faces are
+      // always hidden behind front faces, and culling them halves the rasteriser's work. Skirts
+      // fill gaps seen from either side.
+      solid_(device, terrainDesc(colourFormat, false, VK_CULL_MODE_BACK_BIT, positions)),
+      skirts_(device, terrainDesc(colourFormat, false, VK_CULL_MODE_NONE, positions)),
       sky_(device, [&] {
         vk::GraphicsPipelineDesc d;
-        d.vertexShader = "fullscreen.vert";
+        d.vertexShader = "terrain_sky.vert";
         d.fragmentShader = "terrain_sky.frag";
         d.pushConstantBytes = sizeof(SkyPush);
         d.colourFormat = colourFormat;
@@ -114,15 +110,20 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
   VkPhysicalDeviceFeatures features{};
   vkGetPhysicalDeviceFeatures(device.physical(), &features);
   if (features.fillModeNonSolid) {
-    wireframe_ = std::make_unique<vk::GraphicsPipeline>(device, terrainDesc(colourFormat, true, positions));
+    wireframe_ =
+        std::make_unique<vk::GraphicsPipeline>(device, terrainDesc(colourFormat, true, VK_CULL_MODE_NONE, positions));
   }
 
+  // Ranges: full grid, half grid, full skirt strip, half skirt strip.
   std::vector<uint32_t> indices;
-  indices.reserve(size_t(6) * (gridCells * gridCells + gridCells * gridCells / 4 + 6 * gridCells));
-  fullGridIndices_ = appendGrid(gridCells, indices);
-  fullIndices_ = uint32_t(indices.size());
-  halfGridIndices_ = appendGrid(gridCells / 2, indices);
-  halfIndices_ = uint32_t(indices.size()) - fullIndices_;
+  indices.reserve(size_t(6) * (gridCells * gridCells + gridCells * gridCells / 4 + gridCells + gridCells / 2));
+  for (uint32_t r = 0; r < 4; ++r) {
+    const uint32_t n = r % 2 == 0 ? gridCells : gridCells / 2;
+    first_[r] = uint32_t(indices.size());
+    if (r < 2) appendGrid(n, indices);
+    else appendSkirt(n, indices);
+    count_[r] = uint32_t(indices.size()) - first_[r];
+  }
 
   const VkDeviceSize bytes = indices.size() * sizeof(uint32_t);
   indices_ = vk::Buffer(device, bytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -175,16 +176,12 @@ void TerrainRenderer::ensureCapacity(uint32_t frameIndex, uint32_t nodes) {
   capacity_[frameIndex] = capacity;
 }
 
-void TerrainRenderer::fillReprojection(uint32_t frameIndex, const Camera& camera, std::span<const DrawNode> nodes,
-                                       uint32_t full) {
+gpu::TerrainReprojectionNode* TerrainRenderer::beginReprojection(uint32_t frameIndex, const Camera& camera) {
   auto* bytes = static_cast<unsigned char*>(reprojection_[frameIndex].mapped());
-  gpu::TerrainReprojectionFrame header{{camera.position_m.x, camera.position_m.y, camera.position_m.z, style_.radius_m}};
+  const gpu::TerrainReprojectionFrame header{
+      {camera.position_m.x, camera.position_m.y, camera.position_m.z, style_.radius_m}};
   std::memcpy(bytes, &header, sizeof(header));
-  auto* out = reinterpret_cast<gpu::TerrainReprojectionNode*>(bytes + sizeof(header));
-  uint32_t nextFull = 0, nextPartial = full;
-  for (const DrawNode& n : nodes) {
-    out[n.partial ? nextPartial++ : nextFull++].uv = {n.id.uMin(), n.id.vMin(), n.id.size(), double(n.id.face)};
-  }
+  return reinterpret_cast<gpu::TerrainReprojectionNode*>(bytes + sizeof(header));
 }
 
 void TerrainRenderer::recordSky(VkCommandBuffer cmd, const Camera& camera) const {
@@ -220,7 +217,30 @@ DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, con
     }
   } skyLast{*this, cmd, camera, stats};
   if (nodes.empty()) return stats;
-  ensureCapacity(frameIndex, uint32_t(nodes.size()));
+  const bool skirts = style_.skirtOutward > 0.0f || style_.skirtDrop > 0.0f;
+  // Skirted edges of full nodes, then of partial ones (one skirt instance each).
+  std::array<uint32_t, 2> skirtEdges{0, 0};
+  if (skirts) {
+    drawn_.clear();
+    for (const DrawNode& n : nodes) drawn_.push_back(drawnKey(n.id, n.partial));
+    std::sort(drawn_.begin(), drawn_.end());
+    skirtMask_.resize(nodes.size());
+    for (size_t k = 0; k < nodes.size(); ++k) {
+      // An edge needs no skirt when its same-level neighbour is drawn the same way (same level,
+      // both full or both partial): they share bit-identical vertices and the same morph band, so
+      // the rasteriser's fill rule leaves no gap. Gaps open only where the level or the payload
+      // quantum changes (docs/rendering.md, "Skirts").
+      uint8_t mask = 0;
+      for (int e = 0; e < 4; ++e) {
+        if (!std::binary_search(drawn_.begin(), drawn_.end(), drawnKey(edgeNeighbour(nodes[k].id, e), nodes[k].partial)))
+          mask |= uint8_t(1u << e);
+      }
+      skirtMask_[k] = mask;
+      skirtEdges[nodes[k].partial ? 1 : 0] += uint32_t(std::popcount(mask));
+    }
+  }
+  const uint32_t instanceCount = uint32_t(nodes.size()) + skirtEdges[0] + skirtEdges[1];
+  ensureCapacity(frameIndex, instanceCount);
   vk::Buffer& buffer = frames_[frameIndex];
   auto* bytes = static_cast<unsigned char*>(buffer.mapped());
 
@@ -237,7 +257,6 @@ DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, con
   frame.sun = toGpu(glm::vec3(glm::normalize(style_.sunDirection)), style_.ambient);
   TerrainDebugView view = style_.debug;
   if (view == TerrainDebugView::kWireframe && !wireframe_) view = TerrainDebugView::kLodColours;
-  const bool skirts = style_.skirtOutward > 0.0f || style_.skirtDrop > 0.0f;
   frame.options = {cells_,
                    view == TerrainDebugView::kShaded ? GLOBE_TERRAIN_SHADED
                    : view == TerrainDebugView::kLodColours ? GLOBE_TERRAIN_LOD_COLOURS
@@ -247,53 +266,62 @@ DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, con
   frame.ramp = packColourRamp(style_.ramp);
   std::memcpy(bytes, &frame, sizeof(frame));
 
-  // Instances: full nodes first, then partial ones, so each draw is one contiguous instance range.
+  // Instances: full nodes, partial nodes, skirts of full nodes, skirts of partial nodes, so each
+  // draw is one contiguous instance range.
   auto* instances = reinterpret_cast<gpu::TerrainInstance*>(bytes + kFrameHeaderBytes);
   const uint32_t slotVec4 = GLOBE_PAYLOAD_VEC4_PER_SLOT(cells_);
   uint32_t full = 0;
   for (const DrawNode& n : nodes) full += n.partial ? 0u : 1u;
-  uint32_t nextFull = 0, nextPartial = full;
-  for (const DrawNode& n : nodes) {
+  const uint32_t partial = uint32_t(nodes.size()) - full;
+  // First instance of each draw, in index-range order (full grid, half grid, full skirts, half skirts).
+  const std::array<uint32_t, 4> firstInstance{0, full, uint32_t(nodes.size()), uint32_t(nodes.size()) + skirtEdges[0]};
+  const std::array<uint32_t, 4> instancesOf{full, partial, skirtEdges[0], skirtEdges[1]};
+  std::array<uint32_t, 4> next = firstInstance;
+  // kReprojected: each instance's node (u, v) corner, size and face, at the same index.
+  gpu::TerrainReprojectionNode* reprojection = nullptr;
+  if (positions_ == VertexPositions::kReprojected) reprojection = beginReprojection(frameIndex, camera);
+  for (size_t k = 0; k < nodes.size(); ++k) {
+    const DrawNode& n = nodes[k];
+    const gpu::TerrainReprojectionNode mapping{{n.id.uMin(), n.id.vMin(), n.id.size(), double(n.id.face)}};
     gpu::TerrainInstance inst{};
     // Double first, float last: the offset is a multiple of the level's quantum and small.
     inst.offset = toGpu(glm::vec3(n.centre_m - origin_m), 0.0f);
     inst.morph = {morphDistance(n.morph.start_m), morphDistance(n.morph.end_m), 0.0f, 0.0f};
     inst.info = {n.slot * slotVec4, n.partial ? 2u : 1u, uint32_t(n.id.level) - (n.partial ? 1u : 0u), 0u};
-    instances[n.partial ? nextPartial++ : nextFull++] = inst;
+    const int range = n.partial ? 1 : 0;
+    if (reprojection) reprojection[next[range]] = mapping;
+    instances[next[range]++] = inst;
+    for (uint32_t e = 0; skirts && e < 4; ++e) {
+      if ((skirtMask_[k] >> e & 1u) == 0) continue;
+      inst.info.w = e;
+      if (reprojection) reprojection[next[range + 2]] = mapping;
+      instances[next[range + 2]++] = inst;
+    }
   }
-  const uint32_t partial = uint32_t(nodes.size()) - full;
 
-  const vk::GraphicsPipeline& pipeline =
-      view == TerrainDebugView::kWireframe ? *wireframe_ : solid_;
-  gpu::TerrainDrawPush push{cells_, 0};
-  if (positions_ == VertexPositions::kReprojected) {
-    fillReprojection(frameIndex, camera, nodes, full);
-    pipeline.bind(cmd,
-                  {instanceDescriptor(frameIndex), payloads.descriptor(), constantsDescriptor(frameIndex),
-                   reprojection_[frameIndex].descriptor(), faces_.descriptor()},
-                  &push, sizeof(push));
-  } else {
-    pipeline.bind(cmd, {instanceDescriptor(frameIndex), payloads.descriptor(), constantsDescriptor(frameIndex)}, &push,
-                  sizeof(push));
-  }
+  const bool wireframe = view == TerrainDebugView::kWireframe;
   vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
-  const uint32_t fullCount = skirts ? fullIndices_ : fullGridIndices_;
-  const uint32_t halfCount = skirts ? halfIndices_ : halfGridIndices_;
-  if (full > 0) {
-    vkCmdDrawIndexed(cmd, fullCount, full, 0, 0, 0);
+  for (uint32_t r = 0; r < 4; ++r) {
+    if (instancesOf[r] == 0) continue;
+    // Grids are drawn with back faces culled, skirts from both sides; the wireframe view shows both.
+    const vk::GraphicsPipeline& pipeline = wireframe ? *wireframe_ : r < 2 ? solid_ : skirts_;
+    const gpu::TerrainDrawPush push{r % 2 == 0 ? cells_ : cells_ / 2, 0};
+    if (reprojection) {
+      pipeline.bind(cmd,
+                    {instanceDescriptor(frameIndex), payloads.descriptor(), constantsDescriptor(frameIndex),
+                     reprojection_[frameIndex].descriptor(), faces_.descriptor()},
+                    &push, sizeof(push));
+    } else {
+      pipeline.bind(cmd, {instanceDescriptor(frameIndex), payloads.descriptor(), constantsDescriptor(frameIndex)}, &push,
+                    sizeof(push));
+    }
+    vkCmdDrawIndexed(cmd, count_[r], instancesOf[r], first_[r], 0, firstInstance[r]);
     ++stats.drawCalls;
-    stats.triangles += uint64_t(fullCount / 3) * full;
-  }
-  if (partial > 0) {
-    push.drawnCells = cells_ / 2;
-    vkCmdPushConstants(cmd, pipeline.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                       sizeof(push), &push);
-    vkCmdDrawIndexed(cmd, halfCount, partial, fullIndices_, 0, full);
-    ++stats.drawCalls;
-    stats.triangles += uint64_t(halfCount / 3) * partial;
+    stats.triangles += uint64_t(count_[r] / 3) * instancesOf[r];
   }
   stats.nodes = uint32_t(nodes.size());
   stats.partialNodes = partial;
+  stats.skirtEdges = skirtEdges[0] + skirtEdges[1];
   return stats;
 }
 

@@ -21,8 +21,13 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <utility>
+#include <vector>
 
 namespace globe {
+namespace gpu {
+struct TerrainReprojectionNode;  // shaders/include/terrain_layout.h
+}
 
 enum class TerrainDebugView {
   kShaded,      // lit colour ramp (normal use)
@@ -66,6 +71,7 @@ struct DrawStats {
   uint32_t drawCalls = 0;
   uint32_t nodes = 0;
   uint32_t partialNodes = 0;
+  uint32_t skirtEdges = 0;  // node edges drawn with a skirt (those next to a level change)
 };
 
 class TerrainRenderer {
@@ -93,11 +99,13 @@ class TerrainRenderer {
   void setDebugView(TerrainDebugView view) { style_.debug = view; }
   bool wireframeSupported() const { return wireframe_ != nullptr; }
   uint32_t gridCells() const { return cells_; }
-  // Index counts of the full and the half-resolution grid ranges (with skirts).
-  uint32_t fullIndexCount() const { return fullIndices_; }
-  uint32_t halfIndexCount() const { return halfIndices_; }
+  // Index counts of the full and the half-resolution grids, and of one skirt strip (one node edge) of each.
+  uint32_t fullIndexCount() const { return count_[0]; }
+  uint32_t halfIndexCount() const { return count_[1]; }
+  uint32_t fullSkirtIndexCount() const { return count_[2]; }
+  uint32_t halfSkirtIndexCount() const { return count_[3]; }
   // The per-frame buffer of `frameIndex`: TerrainFrame constants at offset 0, the drawn nodes'
-  // TerrainInstances from instanceBytes(). Bindings of the terrain shaders (0 instances, 2 constants).
+  // TerrainInstances from instanceBytes() (then the skirt instances). Bindings of the terrain shaders (0 instances, 2 constants).
   const vk::Buffer& frameBuffer(uint32_t frameIndex) const { return frames_[frameIndex]; }
   VkDescriptorBufferInfo instanceDescriptor(uint32_t frameIndex) const;
   VkDescriptorBufferInfo constantsDescriptor(uint32_t frameIndex) const;
@@ -105,27 +113,30 @@ class TerrainRenderer {
 
  private:
   void ensureCapacity(uint32_t frameIndex, uint32_t nodes);
-  // kReprojected: fills frame `frameIndex`'s reprojection buffer (camera, then each instance's
-  // (u, v) corner, size and face, in instance order).
-  void fillReprojection(uint32_t frameIndex, const Camera& camera, std::span<const DrawNode> nodes, uint32_t full);
+  // kReprojected: writes the camera into frame `frameIndex`'s reprojection buffer and returns its
+  // per-instance array (the caller fills it in instance order).
+  gpu::TerrainReprojectionNode* beginReprojection(uint32_t frameIndex, const Camera& camera);
   void recordSky(VkCommandBuffer cmd, const Camera& camera) const;
 
   vk::Device& device_;
   uint32_t cells_;
   TerrainStyle style_;
-  vk::GraphicsPipeline solid_;
+  vk::GraphicsPipeline solid_;   // grids, back faces culled
+  vk::GraphicsPipeline skirts_;  // skirt strips, both sides
   std::unique_ptr<vk::GraphicsPipeline> wireframe_;
   vk::GraphicsPipeline sky_;
   vk::Buffer indices_;
-  uint32_t fullIndices_ = 0;   // full grid + its skirts
-  uint32_t fullGridIndices_ = 0;  // full grid alone
-  uint32_t halfIndices_ = 0;
-  uint32_t halfGridIndices_ = 0;
+  // Index ranges: full grid, half grid, one full skirt strip, one half skirt strip.
+  std::array<uint32_t, 4> first_{};
+  std::array<uint32_t, 4> count_{};
   std::array<vk::Buffer, kFramesInFlight> frames_;
   std::array<uint32_t, kFramesInFlight> capacity_{};
   VertexPositions positions_;
   std::array<vk::Buffer, kFramesInFlight> reprojection_;  // kReprojected only
   vk::Buffer faces_;                                      // kReprojected only: the 30 faces' corners
+  // Per-frame scratch for the skirt test, kept to avoid allocating every frame.
+  std::vector<std::pair<uint64_t, bool>> drawn_;  // (NodeId key, partial) of every drawn node, sorted
+  std::vector<uint8_t> skirtMask_;                // per drawn node: bit e = edge e has a skirt
 };
 
 }  // namespace globe

@@ -2,8 +2,9 @@
 // shared by C++ and GLSL like payload_layout.h: C++ sees namespace globe::gpu, GLSL plain structs.
 //
 // One host-visible storage buffer per frame in flight holds a TerrainFrame followed by one
-// TerrainInstance per drawn node (full nodes first, then partial ones); gl_InstanceIndex (which
-// includes the draw's firstInstance) indexes the instances. Every position in here is relative to
+// TerrainInstance per drawn node (full nodes first, then partial ones), then one per skirted node
+// edge (full, then partial: a copy of the node's record with info.w = the edge); gl_InstanceIndex
+// (which includes the draw's firstInstance) indexes the instances. Every position in here is relative to
 // the floating origin and small: the shaders never see planet-scale numbers.
 #ifndef GLOBE_TERRAIN_LAYOUT_H
 #define GLOBE_TERRAIN_LAYOUT_H
@@ -59,7 +60,8 @@ struct TerrainInstance {
   GLOBE_VEC4 offset;  //  0: xyz = float(node centre - origin), metres: exact (multiples of the quantum)
   GLOBE_VEC4 morph;   // 16: x = morph start, y = morph end (metres from the camera); z, w unused
   GLOBE_UVEC4 info;   // 32: x = first vec4 of the node's payload slot, y = sample stride (1 full, 2 partial),
-                      //     z = level the node is drawn at (id.level - partial), w = 0
+                      //     z = level the node is drawn at (id.level - partial),
+                      //     w = node edge of a skirt instance (NodeEdge), 0 for the grid
 };
 
 // Positions re-projected every frame (VertexPositions::kReprojected, measured by globe trade): one

@@ -4,10 +4,11 @@
 //
 // Grid: the drawn grid has n cells per side (N for full nodes, N / 2 for partial ones, which read
 // every other payload sample: their parent's resolution over their own quadrant). Vertex indices
-// [0, (n+1)^2) are grid vertices i + j * (n+1); [(n+1)^2, (n+1)^2 + 4 (n+1)) are skirt vertices,
-// edge e (0: j = 0, 1: i = n, 2: j = n, 3: i = 0) at position t along it. Every cell is split along
-// the diagonal (i, j)-(i+1, j+1), at every level, so a parent cell's diagonal is the union of its
-// children's diagonals.
+// [0, (n+1)^2) are grid vertices i + j * (n+1); [(n+1)^2, (n+1)^2 + 2 (n+1)) are the skirt strip of
+// the instance's edge e = info.w (0: j = 0, 1: i = n, 2: j = n, 3: i = 0): first its n+1 top vertices
+// (the grid's edge vertices) at position t along it, then the n+1 flared bottom ones. Every cell is
+// split along the diagonal (i, j)-(i+1, j+1), at every level, so a parent cell's diagonal is the
+// union of its children's diagonals.
 //
 // Morph (CDLOD): k from the vertex's distance to the camera; an odd vertex slides to the midpoint of
 // its even neighbours along its row/column, an odd-odd vertex to the midpoint of the parent cell's
@@ -85,13 +86,14 @@ TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCell
   uint side = drawnCells + 1u;
   uint gi, gj;
   ivec2 outward = ivec2(0);
-  bool skirt = vertexIndex >= side * side;
-  if (!skirt) {
+  bool skirt = false;  // a flared bottom vertex of a skirt strip
+  if (vertexIndex < side * side) {
     gi = vertexIndex % side;
     gj = vertexIndex / side;
   } else {
     uint s = vertexIndex - side * side;
-    uint edge = s / side, t = s % side;
+    uint edge = inst.info.w, t = s % side;
+    skirt = s >= side;
     if (edge == 0u) { gi = t; gj = 0u; outward = ivec2(0, -1); }
     else if (edge == 1u) { gi = drawnCells; gj = t; outward = ivec2(1, 0); }
     else if (edge == 2u) { gi = t; gj = drawnCells; outward = ivec2(0, 1); }

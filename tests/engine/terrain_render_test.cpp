@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <set>
 #include <unordered_map>
 
 namespace globe::testing {
@@ -459,13 +460,29 @@ TEST_F(TerrainRenderTest, ShadedViewDebugViewsAndStats) {
   const Camera camera = cameraAt(30.0, 20.0, 3000.0, 60.0, -8.0);
   Frame shaded = render(renderer, payloads, selector, camera);
   save(shaded, "terrain_shaded");
-  EXPECT_EQ(shaded.stats.drawCalls, 3u);  // sky, full nodes, partial nodes
+  EXPECT_EQ(shaded.stats.drawCalls, 5u);  // sky, full nodes, partial nodes, skirts of each
   EXPECT_EQ(shaded.stats.nodes, uint32_t(shaded.nodes.size()));
   uint32_t partial = 0;
   for (const DrawNode& n : shaded.nodes) partial += n.partial ? 1u : 0u;
   EXPECT_EQ(shaded.stats.partialNodes, partial);
+  // Skirts: one strip per node edge whose same-level neighbour is not drawn the same way.
+  std::set<std::pair<uint64_t, bool>> drawn;
+  for (const DrawNode& n : shaded.nodes) drawn.insert({n.id.key(), n.partial});
+  uint32_t skirted = 0;
+  uint64_t skirtTriangles = 0;
+  for (const DrawNode& n : shaded.nodes) {
+    for (int e = 0; e < 4; ++e) {
+      if (drawn.count({edgeNeighbour(n.id, e).key(), n.partial}) > 0) continue;
+      ++skirted;
+      skirtTriangles += (n.partial ? renderer.halfSkirtIndexCount() : renderer.fullSkirtIndexCount()) / 3;
+    }
+  }
+  EXPECT_EQ(shaded.stats.skirtEdges, skirted);
+  EXPECT_GT(skirted, 0u);
+  EXPECT_LT(skirted, 2 * shaded.stats.nodes) << "most edges are between nodes of one level";
   const uint64_t fullTriangles = renderer.fullIndexCount() / 3, halfTriangles = renderer.halfIndexCount() / 3;
-  EXPECT_EQ(shaded.stats.triangles, fullTriangles * (shaded.stats.nodes - partial) + halfTriangles * partial);
+  EXPECT_EQ(shaded.stats.triangles,
+            fullTriangles * (shaded.stats.nodes - partial) + halfTriangles * partial + skirtTriangles);
   // Sky at the top row, terrain at the bottom row; everything opaque.
   const float* top = shaded.image.pixel(kWidth / 2, 0);
   const float* bottom = shaded.image.pixel(kWidth / 2, kHeight - 1);
