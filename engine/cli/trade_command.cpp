@@ -115,6 +115,14 @@ std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::st
     mult(s, m);
     add("", s);
   }
+  // Finer grids with the deepest level: what ground-level cameras need for sub-pixel error.
+  for (auto [g, m] : {std::pair{32.0, 1.0}, {32.0, 2.0}, {64.0, 1.0}, {64.0, 2.0}, {128.0, 1.0}}) {
+    TerrainSettings s = base;
+    grid(s, g);
+    mult(s, m);
+    depth(s, 24);
+    add("", s);
+  }
   return list;
 }
 
