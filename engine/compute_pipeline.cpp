@@ -65,6 +65,7 @@ ComputePipeline::ComputePipeline(Device& device, const std::string& shader, uint
 
   UniqueShaderModule module = loadShaderModule(device, shader);
   VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  info.flags = VK_PIPELINE_CREATE_DISPATCH_BASE_BIT;  // vkCmdDispatchBase (e.g. one payload page at a time)
   info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
   info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
   info.stage.module = module;

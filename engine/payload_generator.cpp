@@ -73,11 +73,20 @@ GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationMode
 
 GpuPayloadGenerator::~GpuPayloadGenerator() { waitIdle(); }
 
-void GpuPayloadGenerator::reserveSlots(uint32_t slots) {
+void GpuPayloadGenerator::reserveSlots(uint32_t slots, uint32_t maxSlotsPerPage) {
   assert(payloads_.size() == 0);
   payloads_ = vk::Buffer(device_, VkDeviceSize(slots) * slotBytes(),
                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                          vk::MemoryUse::DeviceLocal, "payload slots");
+  const VkPhysicalDeviceLimits& limits = device_.properties().limits;
+  uint32_t perPage = std::max<uint32_t>(1, uint32_t(limits.maxStorageBufferRange / slotBytes()));
+  if (maxSlotsPerPage > 0) perPage = std::min(perPage, maxSlotsPerPage);
+  // Every window must start at a multiple of the storage-buffer offset alignment (slot bytes are a
+  // multiple of 16 and the alignment a power of two <= 256, so 16 slots always align).
+  while (perPage > 1 && (VkDeviceSize(perPage) * slotBytes()) % limits.minStorageBufferOffsetAlignment != 0) --perPage;
+  if (slots > perPage && (VkDeviceSize(perPage) * slotBytes()) % limits.minStorageBufferOffsetAlignment != 0)
+    throw std::runtime_error("payload pages of " + std::to_string(perPage) + " slots break the storage-buffer offset alignment");
+  pages_ = {payloads_.handle(), payloads_.size(), VkDeviceSize(perPage) * slotBytes(), perPage};
   slotCentres_.assign(slots, glm::dvec3(0.0));
 }
 
@@ -98,8 +107,13 @@ void GpuPayloadGenerator::generate(std::span<const GenerationJob> jobs) {
     Batch& batch = freeBatch();
     auto* gpuJobs = static_cast<gpu::PayloadJob*>(batch.jobs.mapped());
     batch.submitted.assign(jobs.begin() + std::ptrdiff_t(first), jobs.begin() + std::ptrdiff_t(first + count));
+    // One dispatch per payload page the batch writes (usually one): jobs sorted by page, each
+    // dispatch offset to its first job (vkCmdDispatchBase) with its page's window bound.
+    std::stable_sort(batch.submitted.begin(), batch.submitted.end(), [&](const GenerationJob& a, const GenerationJob& b) {
+      return pages_.page(a.slot) < pages_.page(b.slot);
+    });
     for (size_t k = 0; k < count; ++k) {
-      gpuJobs[k] = makePayloadJob(batch.submitted[k].node, batch.submitted[k].slot, model_);
+      gpuJobs[k] = makePayloadJob(batch.submitted[k].node, pages_.localSlot(batch.submitted[k].slot), model_);
       slotCentres_[batch.submitted[k].slot] = {gpuJobs[k].centre.x, gpuJobs[k].centre.y, gpuJobs[k].centre.z};
     }
 
@@ -109,11 +123,17 @@ void GpuPayloadGenerator::generate(std::span<const GenerationJob> jobs) {
     GLOBE_VK_CHECK(vkBeginCommandBuffer(batch.cmd, &begin));
     vkCmdWriteTimestamp2(batch.cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, queries_, 2 * batch.index);
     uint32_t push[2] = {cells_, uint32_t(count)};
-    pipeline_.bind(batch.cmd,
-                   {elevation_.descriptor(), faces_.descriptor(), batch.jobs.descriptor(), payloads_.descriptor(),
-                    batch.scratch.descriptor(), batch.results.descriptor()},
-                   push, sizeof(push));
-    vkCmdDispatch(batch.cmd, uint32_t(count), 1, 1);
+    for (size_t run = 0; run < count;) {
+      const uint32_t page = pages_.page(batch.submitted[run].slot);
+      size_t end = run + 1;
+      while (end < count && pages_.page(batch.submitted[end].slot) == page) ++end;
+      pipeline_.bind(batch.cmd,
+                     {elevation_.descriptor(), faces_.descriptor(), batch.jobs.descriptor(), pages_.window(page),
+                      batch.scratch.descriptor(), batch.results.descriptor()},
+                     push, sizeof(push));
+      vkCmdDispatchBase(batch.cmd, uint32_t(run), 0, 0, uint32_t(end - run), 1, 1);
+      run = end;
+    }
     vk::computeWriteBarrier(batch.cmd);
     vkCmdWriteTimestamp2(batch.cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, queries_, 2 * batch.index + 1);
     GLOBE_VK_CHECK(vkEndCommandBuffer(batch.cmd));

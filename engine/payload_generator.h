@@ -5,6 +5,7 @@
 // nodes with their radius ranges (padded for unresolved detail, planet/payload_reference.h).
 // Implements planet's PayloadGenerator, so the PayloadPool drives it exactly like the CPU fake.
 #include "engine/compute_pipeline.h"
+#include "engine/payload_pages.h"
 #include "planet/elevation.h"
 #include "planet/payload_generator.h"
 #include "shaders/include/payload_layout.h"
@@ -30,8 +31,10 @@ class GpuPayloadGenerator final : public PayloadGenerator {
                       GenerationPrecision precision = GenerationPrecision::kDouble);
   ~GpuPayloadGenerator() override;
 
-  // Allocates the payload buffer for `slots` slots (once, before the first generate()).
-  void reserveSlots(uint32_t slots);
+  // Allocates the payload buffer for `slots` slots (once, before the first generate()), bound in
+  // pages of as many slots as one storage-buffer binding holds, or `maxSlotsPerPage` if smaller
+  // (0 = no extra cap; tests use it to exercise paging).
+  void reserveSlots(uint32_t slots, uint32_t maxSlotsPerPage = 0);
 
   void generate(std::span<const GenerationJob> jobs) override;
   void collect(std::vector<GenerationResult>& finished) override;
@@ -44,7 +47,9 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   uint32_t cells() const { return cells_; }
   // Node centre (metres) the payload in `slot` is relative to (the job's snapped centre).
   const glm::dvec3& slotCentre(uint32_t slot) const { return slotCentres_[slot]; }
+  // The whole payload buffer (copies, tests) and its binding windows (shaders).
   const vk::Buffer& payloads() const { return payloads_; }
+  const PayloadPages& pages() const { return pages_; }
   // Device time of all finished batches so far (ms) and how many nodes they held.
   double gpuTime_ms() const { return gpuTime_ms_; }
   uint64_t nodesGenerated() const { return nodesGenerated_; }
@@ -71,6 +76,7 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   vk::Buffer elevation_;
   vk::Buffer faces_;
   vk::Buffer payloads_;
+  PayloadPages pages_;
   vk::UniqueCommandPool commandPool_;
   vk::UniqueQueryPool queries_;
   double timestampPeriod_ns_ = 1.0;

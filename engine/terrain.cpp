@@ -43,15 +43,13 @@ Terrain::Terrain(vk::Device& device, const ElevationModel& model, const TerrainS
   uint32_t batches = settings.streaming.maxInFlight;
   generator_ = std::make_unique<GpuPayloadGenerator>(device, model, settings.gridCells, budget, batches,
                                                      settings.generation);
-  // The payload buffer is bound as one storage buffer: at most maxStorageBufferRange bytes (128 MiB
-  // on lavapipe). The VRAM budget is honoured below that.
-  StreamingConfig streaming = settings.streaming;
-  uint32_t bindable = uint32_t(device.properties().limits.maxStorageBufferRange / generator_->slotBytes());
-  streaming.maxSlots = streaming.maxSlots ? std::min(streaming.maxSlots, bindable) : bindable;
+  // The payload buffer is bound in pages of at most maxStorageBufferRange bytes (PayloadPages), so
+  // only the VRAM budget bounds the pool.
+  const StreamingConfig& streaming = settings.streaming;
   auto pool = PayloadPool::create(streaming, *generator_, model.radius_m());
   if (!pool) throw std::runtime_error(pool.error().format());
   pool_ = std::move(*pool);
-  generator_->reserveSlots(pool_->slotCapacity());
+  generator_->reserveSlots(pool_->slotCapacity(), settings.payloadSlotsPerPage);
   TerrainStyle style = settings.style;
   style.radius_m = model.radius_m();
   renderer_ = std::make_unique<TerrainRenderer>(device, settings.gridCells, style, 1024,
@@ -99,7 +97,7 @@ const FrameStats& Terrain::update(uint64_t frame, const Camera& camera, uint64_t
 }
 
 void Terrain::record(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex) {
-  DrawStats d = renderer_->record(cmd, camera, origin_.origin_m(), drawNodes_, generator_->payloads(), frameIndex);
+  DrawStats d = renderer_->record(cmd, camera, origin_.origin_m(), drawNodes_, generator_->pages(), frameIndex);
   stats_.triangles = d.triangles;
   stats_.draw_calls = d.drawCalls;
 }

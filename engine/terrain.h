@@ -25,6 +25,7 @@ struct TerrainSettings {
   TerrainStyle style;            // shading (the planet's colour ramp); its radius is set from the planet
   GenerationPrecision generation = GenerationPrecision::kDouble;  // kFloat only to measure (globe trade)
   VertexPositions vertexPositions = VertexPositions::kStored;     // kReprojected only to measure
+  uint32_t payloadSlotsPerPage = 0;  // cap on slots per payload page (0: one binding's worth; tests)
 };
 
 // Bad settings and planets are reported as an Error naming the field.

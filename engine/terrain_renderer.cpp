@@ -199,7 +199,7 @@ void TerrainRenderer::recordSky(VkCommandBuffer cmd, const Camera& camera) const
 }
 
 DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, const glm::dvec3& origin_m,
-                                  std::span<const DrawNode> nodes, const vk::Buffer& payloads,
+                                  std::span<const DrawNode> nodes, const PayloadPages& payloads,
                                   uint32_t frameIndex) {
   assert(frameIndex < kFramesInFlight);
   DrawStats stats;
@@ -266,17 +266,25 @@ DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, con
   frame.ramp = packColourRamp(style_.ramp);
   std::memcpy(bytes, &frame, sizeof(frame));
 
-  // Instances: full nodes, partial nodes, skirts of full nodes, skirts of partial nodes, so each
-  // draw is one contiguous instance range.
+  // Instances grouped by draw: index range (full grid, half grid, full skirts, half skirts), then
+  // payload page (one page unless the pool outgrows one storage-buffer binding), so each draw is one
+  // contiguous instance range with its page's window bound.
   auto* instances = reinterpret_cast<gpu::TerrainInstance*>(bytes + kFrameHeaderBytes);
   const uint32_t slotVec4 = GLOBE_PAYLOAD_VEC4_PER_SLOT(cells_);
-  uint32_t full = 0;
-  for (const DrawNode& n : nodes) full += n.partial ? 0u : 1u;
-  const uint32_t partial = uint32_t(nodes.size()) - full;
-  // First instance of each draw, in index-range order (full grid, half grid, full skirts, half skirts).
-  const std::array<uint32_t, 4> firstInstance{0, full, uint32_t(nodes.size()), uint32_t(nodes.size()) + skirtEdges[0]};
-  const std::array<uint32_t, 4> instancesOf{full, partial, skirtEdges[0], skirtEdges[1]};
-  std::array<uint32_t, 4> next = firstInstance;
+  const uint32_t pageCount = std::max(payloads.pageCount(), 1u);
+  instancesOf_.assign(size_t(4) * pageCount, 0);
+  auto group = [&](uint32_t range, uint32_t slot) { return size_t(range) * pageCount + payloads.page(slot); };
+  uint32_t partial = 0;
+  for (size_t k = 0; k < nodes.size(); ++k) {
+    const uint32_t range = nodes[k].partial ? 1u : 0u;
+    partial += range;
+    ++instancesOf_[group(range, nodes[k].slot)];
+    if (skirts) instancesOf_[group(range + 2, nodes[k].slot)] += uint32_t(std::popcount(skirtMask_[k]));
+  }
+  firstInstance_.assign(instancesOf_.size(), 0);
+  for (size_t g = 1; g < instancesOf_.size(); ++g) firstInstance_[g] = firstInstance_[g - 1] + instancesOf_[g - 1];
+  std::vector<uint32_t>& next = nextInstance_;
+  next = firstInstance_;
   // kReprojected: each instance's node (u, v) corner, size and face, at the same index.
   gpu::TerrainReprojectionNode* reprojection = nullptr;
   if (positions_ == VertexPositions::kReprojected) reprojection = beginReprojection(frameIndex, camera);
@@ -287,37 +295,42 @@ DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, con
     // Double first, float last: the offset is a multiple of the level's quantum and small.
     inst.offset = toGpu(glm::vec3(n.centre_m - origin_m), 0.0f);
     inst.morph = {morphDistance(n.morph.start_m), morphDistance(n.morph.end_m), 0.0f, 0.0f};
-    inst.info = {n.slot * slotVec4, n.partial ? 2u : 1u, uint32_t(n.id.level) - (n.partial ? 1u : 0u), 0u};
-    const int range = n.partial ? 1 : 0;
-    if (reprojection) reprojection[next[range]] = mapping;
-    instances[next[range]++] = inst;
+    inst.info = {payloads.localSlot(n.slot) * slotVec4, n.partial ? 2u : 1u,
+                 uint32_t(n.id.level) - (n.partial ? 1u : 0u), 0u};
+    const uint32_t range = n.partial ? 1u : 0u;
+    const size_t grid = group(range, n.slot), skirt = group(range + 2, n.slot);
+    if (reprojection) reprojection[next[grid]] = mapping;
+    instances[next[grid]++] = inst;
     for (uint32_t e = 0; skirts && e < 4; ++e) {
       if ((skirtMask_[k] >> e & 1u) == 0) continue;
       inst.info.w = e;
-      if (reprojection) reprojection[next[range + 2]] = mapping;
-      instances[next[range + 2]++] = inst;
+      if (reprojection) reprojection[next[skirt]] = mapping;
+      instances[next[skirt]++] = inst;
     }
   }
 
   const bool wireframe = view == TerrainDebugView::kWireframe;
   vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
   for (uint32_t r = 0; r < 4; ++r) {
-    if (instancesOf[r] == 0) continue;
-    // Grids are drawn with back faces culled, skirts from both sides; the wireframe view shows both.
-    const vk::GraphicsPipeline& pipeline = wireframe ? *wireframe_ : r < 2 ? solid_ : skirts_;
-    const gpu::TerrainDrawPush push{r % 2 == 0 ? cells_ : cells_ / 2, 0};
-    if (reprojection) {
-      pipeline.bind(cmd,
-                    {instanceDescriptor(frameIndex), payloads.descriptor(), constantsDescriptor(frameIndex),
-                     reprojection_[frameIndex].descriptor(), faces_.descriptor()},
-                    &push, sizeof(push));
-    } else {
-      pipeline.bind(cmd, {instanceDescriptor(frameIndex), payloads.descriptor(), constantsDescriptor(frameIndex)}, &push,
-                    sizeof(push));
+    for (uint32_t page = 0; page < pageCount; ++page) {
+      const size_t g = size_t(r) * pageCount + page;
+      if (instancesOf_[g] == 0) continue;
+      // Grids are drawn with back faces culled, skirts from both sides; the wireframe view shows both.
+      const vk::GraphicsPipeline& pipeline = wireframe ? *wireframe_ : r < 2 ? solid_ : skirts_;
+      const gpu::TerrainDrawPush push{r % 2 == 0 ? cells_ : cells_ / 2, 0};
+      if (reprojection) {
+        pipeline.bind(cmd,
+                      {instanceDescriptor(frameIndex), payloads.window(page), constantsDescriptor(frameIndex),
+                       reprojection_[frameIndex].descriptor(), faces_.descriptor()},
+                      &push, sizeof(push));
+      } else {
+        pipeline.bind(cmd, {instanceDescriptor(frameIndex), payloads.window(page), constantsDescriptor(frameIndex)},
+                      &push, sizeof(push));
+      }
+      vkCmdDrawIndexed(cmd, count_[r], instancesOf_[g], first_[r], 0, firstInstance_[g]);
+      ++stats.drawCalls;
+      stats.triangles += uint64_t(count_[r] / 3) * instancesOf_[g];
     }
-    vkCmdDrawIndexed(cmd, count_[r], instancesOf[r], first_[r], 0, firstInstance[r]);
-    ++stats.drawCalls;
-    stats.triangles += uint64_t(count_[r] / 3) * instancesOf[r];
   }
   stats.nodes = uint32_t(nodes.size());
   stats.partialNodes = partial;

@@ -12,6 +12,7 @@
 // buffer per frame index, preallocated and grown only when a frame has more nodes than ever before.
 // The caller must have waited for the previous use of `frameIndex` before record().
 #include "engine/graphics_pipeline.h"
+#include "engine/payload_pages.h"
 #include "planet/camera.h"
 #include "planet/colour_ramp.h"
 #include "planet/lod_ranges.h"
@@ -89,10 +90,11 @@ class TerrainRenderer {
   TerrainRenderer& operator=(const TerrainRenderer&) = delete;
 
   // Records the sky (if enabled) and the terrain into the current dynamic-rendering pass (viewport and
-  // scissor already set). `origin_m`: the floating origin (FloatingOrigin); `payloads`: the buffer
-  // whose slot s starts at vec4 s * GLOBE_PAYLOAD_VEC4_PER_SLOT(gridCells). frameIndex < kFramesInFlight.
+  // scissor already set). `origin_m`: the floating origin (FloatingOrigin); `payloads`: the payload
+  // pages, slot s starting at vec4 localSlot(s) * GLOBE_PAYLOAD_VEC4_PER_SLOT(gridCells) of page
+  // page(s)'s window. frameIndex < kFramesInFlight.
   DrawStats record(VkCommandBuffer cmd, const Camera& camera, const glm::dvec3& origin_m,
-                   std::span<const DrawNode> nodes, const vk::Buffer& payloads, uint32_t frameIndex);
+                   std::span<const DrawNode> nodes, const PayloadPages& payloads, uint32_t frameIndex);
 
   const TerrainStyle& style() const { return style_; }
   void setStyle(const TerrainStyle& style) { style_ = style; }
@@ -137,6 +139,8 @@ class TerrainRenderer {
   // Per-frame scratch for the skirt test, kept to avoid allocating every frame.
   std::vector<std::pair<uint64_t, bool>> drawn_;  // (NodeId key, partial) of every drawn node, sorted
   std::vector<uint8_t> skirtMask_;                // per drawn node: bit e = edge e has a skirt
+  // Per draw group (index range x payload page): instance count, first instance, next free one.
+  std::vector<uint32_t> instancesOf_, firstInstance_, nextInstance_;
 };
 
 }  // namespace globe

@@ -23,6 +23,8 @@
 #include "planet/lod_ranges.h"
 #include "planet/node_bounds.h"
 #include "planet/payload_reference.h"
+#include "shaders/include/payload_layout.h"
+#include "shaders/include/terrain_layout.h"
 #include "planet/planet_file.h"
 #include "planet/triacontahedron.h"
 #include "shaders/include/terrain_layout.h"
@@ -338,13 +340,12 @@ class ExtremesTest : public GpuTest {
       camera.position_m += double(step) * 1e-3 * east;
       ++frame;
       s.terrain->update(frame, camera, frame - 1);
-      // The finest full node whose centre projects inside the view, nearest its centre, and its
-      // instance index (full nodes are drawn first, in selection order). A centre merely ahead is
-      // not enough: a finest node under a ground camera can be ahead yet entirely below the view.
+      // The finest full node whose centre projects inside the view, nearest its centre. A centre
+      // merely ahead is not enough: a finest node under a ground camera can be ahead yet entirely
+      // below the view.
       const Selection& selection = s.terrain->selection();
       const glm::dmat4 clipFromCentre = camera.projection() * camera.viewFromWorld(camera.position_m);
       int best = -1;
-      uint32_t instance = 0, fullBefore = 0;
       double bestScore = std::numeric_limits<double>::infinity();
       for (size_t k = 0; k < selection.nodes.size(); ++k) {
         const SelectedNode& n = selection.nodes[k];
@@ -360,10 +361,8 @@ class ExtremesTest : public GpuTest {
           if (score < bestScore) {
             bestScore = score;
             best = int(k);
-            instance = fullBefore;
           }
         }
-        ++fullBefore;
       }
       ASSERT_GE(best, 0);
       const SelectedNode& node = selection.nodes[size_t(best)];
@@ -375,9 +374,24 @@ class ExtremesTest : public GpuTest {
         target.begin(cmd, clear);
         s.terrain->record(cmd, camera, frameIndex);
         target.end(cmd);
+        // The node's grid instance, found in what record() just wrote (grid instances come first,
+        // grouped by payload page): same slot offset, same node offset.
+        const PayloadPages& pages = s.terrain->generator().pages();
+        const auto* records =
+            reinterpret_cast<const gpu::TerrainInstance*>(s.terrain->renderer().instanceBytes(frameIndex));
+        const glm::vec3 offset(centre - s.terrain->origin());
+        uint32_t instance = UINT32_MAX;
+        for (uint32_t i = 0; i < selection.nodes.size() && instance == UINT32_MAX; ++i) {
+          const gpu::TerrainInstance& r = records[i];
+          if (r.info.x == pages.localSlot(slot) * GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells) && r.info.y == 1u &&
+              r.offset.x == offset.x && r.offset.y == offset.y && r.offset.z == offset.z)
+            instance = i;
+        }
+        ASSERT_NE(instance, UINT32_MAX);
         Push push{kCells, instance, count, 0};
         kernel.bind(cmd,
-                    {s.terrain->renderer().instanceDescriptor(frameIndex), s.terrain->generator().payloads().descriptor(),
+                    {s.terrain->renderer().instanceDescriptor(frameIndex),
+                     s.terrain->generator().pages().window(s.terrain->generator().pages().page(slot)),
                      s.terrain->renderer().constantsDescriptor(frameIndex), out.descriptor()},
                     &push, sizeof(push));
         vkCmdDispatch(cmd, (count + 63) / 64, 1, 1);

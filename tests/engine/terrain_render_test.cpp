@@ -94,6 +94,7 @@ class CpuPayloads final : public NodeResidency {
     next_ = 0;
   }
   const vk::Buffer& buffer() const { return buffer_; }
+  PayloadPages pages() const { return PayloadPages::single(buffer_.handle(), buffer_.size(), capacity_); }
   std::span<glm::vec4> slot(uint32_t s) const {
     return buffer_.as<glm::vec4>().subspan(size_t(s) * GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells), GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells));
   }
@@ -188,7 +189,7 @@ class TerrainRenderTest : public GpuTest {
     vk::OffscreenTarget target(device(), {kWidth, kHeight});
     device().submitAndWait([&](VkCommandBuffer cmd) {
       target.begin(cmd, kBackground);
-      f.stats = renderer.record(cmd, camera, origin.origin_m(), f.nodes, payloads.buffer(), 0);
+      f.stats = renderer.record(cmd, camera, origin.origin_m(), f.nodes, payloads.pages(), 0);
       target.end(cmd);
     });
     f.image = target.readback();
@@ -356,7 +357,7 @@ TEST_F(TerrainRenderTest, NearerSurfaceWinsAt1mAnd100km) {
       vk::OffscreenTarget target(device(), {kWidth, kHeight});
       device().submitAndWait([&](VkCommandBuffer cmd) {
         target.begin(cmd, kBackground);
-        renderer.record(cmd, camera, origin.origin_m(), nodes, payloads.buffer(), 1);
+        renderer.record(cmd, camera, origin.origin_m(), nodes, payloads.pages(), 1);
         target.end(cmd);
       });
       vk::ReadbackImage image = target.readback();
@@ -379,7 +380,7 @@ TEST_F(TerrainRenderTest, NearerSurfaceWinsAt1mAnd100km) {
 // Runs the vertex shader's computation (test_terrain_vertex.comp) for one full node and returns
 // the clip positions of its grid vertices.
 std::vector<glm::vec4> gpuClipPositions(vk::Device& device, TerrainRenderer& renderer, const Camera& camera,
-                                        const glm::dvec3& origin_m, const DrawNode& node, const vk::Buffer& payloads) {
+                                        const glm::dvec3& origin_m, const DrawNode& node, const PayloadPages& payloads) {
   struct Push {
     uint32_t drawnCells, instance, vertexCount, pad0;
   };
@@ -394,7 +395,7 @@ std::vector<glm::vec4> gpuClipPositions(vk::Device& device, TerrainRenderer& ren
     target.end(cmd);
     Push push{kCells, 0, count, 0};
     kernel.bind(cmd,
-                {renderer.instanceDescriptor(0), payloads.descriptor(), renderer.constantsDescriptor(0), out.descriptor()},
+                {renderer.instanceDescriptor(0), payloads.window(0), renderer.constantsDescriptor(0), out.descriptor()},
                 &push, sizeof(push));
     vkCmdDispatch(cmd, (count + 63) / 64, 1, 1);
     vk::computeWriteBarrier(cmd);
@@ -425,7 +426,7 @@ TEST_F(TerrainRenderTest, VerticesDoNotJitterOneCentimetreAboveEarth) {
       Camera camera = start;
       camera.position_m += double(step) * 0.001 * east;  // 1 mm steps
       origin.update(camera.position_m);
-      const auto clip = gpuClipPositions(device(), renderer, camera, origin.origin_m(), node, payloads.buffer());
+      const auto clip = gpuClipPositions(device(), renderer, camera, origin.origin_m(), node, payloads.pages());
       const glm::dmat4 clipFromCamera = camera.projection() * camera.viewFromWorld(camera.position_m);
       for (uint32_t j = 0; j <= kCells; ++j) {
         for (uint32_t i = 0; i <= kCells; ++i) {
@@ -530,7 +531,7 @@ TEST_F(TerrainRenderTest, NoAllocationAfterWarmUpAndGrowth) {
     vk::OffscreenTarget target(device(), {kWidth, kHeight});
     device().submitAndWait([&](VkCommandBuffer cmd) {
       target.begin(cmd, kBackground);
-      renderer.record(cmd, camera, glm::dvec3(0.0), nodes, payloads.buffer(), uint32_t(frame % 2));
+      renderer.record(cmd, camera, glm::dvec3(0.0), nodes, payloads.pages(), uint32_t(frame % 2));
       target.end(cmd);
     });
     if (frame == 2) before = renderer.frameBuffer(0).handle();

@@ -72,5 +72,34 @@ TEST_F(VertexPositionsTest, ReprojectedDrawMatchesStoredPositions) {
   }
 }
 
+// A pool spread over several payload pages (one binding each) draws exactly the same image as one
+// page: instances are grouped by page, one draw per (index range, page).
+TEST_F(VertexPositionsTest, PagedPayloadsDrawTheSameImage) {
+  auto planet = loadPlanetFile(std::string(GLOBE_SOURCE_DIR) + "/assets/planets/earthlike.toml");
+  ASSERT_TRUE(planet.ok()) << planet.error().format();
+  ElevationModel model(*planet);
+  const uint32_t w = 128, h = 96;
+  HeadlessRenderer renderer(device(), {w, h});
+  const GeodeticPose pose = standardCameraPose(3);
+  const glm::dvec3 down = directionFromLatLon(pose.latitude_deg, pose.longitude_deg);
+  const Camera camera = cameraFromPose(pose, model.radius_m() + model.elevation_m(down), model.radius_m(), double(w) / h);
+  vk::ReadbackImage images[2];
+  FrameStats stats[2];
+  for (int variant = 0; variant < 2; ++variant) {
+    TerrainSettings settings;
+    settings.gridCells = 16;
+    settings.payloadSlotsPerPage = variant == 0 ? 0 : 16;
+    auto terrain = Terrain::create(device(), model, settings);
+    ASSERT_TRUE(terrain.ok()) << terrain.error().format();
+    stats[variant] = renderer.renderFrame(**terrain, camera, true);
+    images[variant] = renderer.readback();
+  }
+  EXPECT_EQ(stats[0].nodes_selected, stats[1].nodes_selected);
+  EXPECT_EQ(stats[0].triangles, stats[1].triangles);
+  EXPECT_GT(stats[1].draw_calls, stats[0].draw_calls);  // the nodes sit in many pages
+  EXPECT_EQ(images[0].depth, images[1].depth);
+  EXPECT_EQ(images[0].rgba, images[1].rgba);
+}
+
 }  // namespace
 }  // namespace globe::testing
