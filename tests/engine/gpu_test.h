@@ -3,10 +3,14 @@
 // tens of milliseconds on lavapipe), and a check after every test that the validation layers said
 // nothing.
 #include "engine/device.h"
+#include "planet/elevation.h"
+#include "planet/planet_file.h"
 
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <stdexcept>
+#include <string>
 
 namespace globe::testing {
 
@@ -23,5 +27,15 @@ class GpuTest : public ::testing::Test {
   }
   vk::Device& device() { return sharedDevice(); }
 };
+
+// The default planet's elevation model (assets/planets/earthlike.toml), loaded once per process.
+inline const ElevationModel& earthlikeModel() {
+  static const ElevationModel model = [] {
+    auto planet = loadPlanetFile(std::string(GLOBE_SOURCE_DIR) + "/assets/planets/earthlike.toml");
+    if (!planet) throw std::runtime_error(planet.error().format());
+    return ElevationModel(*planet);
+  }();
+  return model;
+}
 
 }  // namespace globe::testing

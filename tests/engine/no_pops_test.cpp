@@ -14,9 +14,7 @@ namespace {
 class NoPopsTest : public GpuTest {};
 
 TEST_F(NoPopsTest, OneMillimetreStepChangesDepthSmoothly) {
-  auto planet = loadPlanetFile(std::string(GLOBE_SOURCE_DIR) + "/assets/planets/earthlike.toml");
-  ASSERT_TRUE(planet.ok()) << planet.error().format();
-  ElevationModel model(*planet);
+  const ElevationModel& model = earthlikeModel();
   TerrainSettings settings;
   settings.gridCells = 16;
   settings.style.sky = false;

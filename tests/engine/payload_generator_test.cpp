@@ -19,12 +19,6 @@ constexpr uint32_t kCells = 16;
 
 class PayloadGeneratorTest : public GpuTest {
  protected:
-  void SetUp() override {
-    GpuTest::SetUp();
-    auto planet = loadPlanetFile(std::string(GLOBE_SOURCE_DIR) + "/assets/planets/earthlike.toml");
-    ASSERT_TRUE(planet.ok()) << planet.error().format();
-    model_ = std::make_unique<ElevationModel>(*planet);
-  }
 
   // Generates `nodes` into slots 0..n-1 and reads the slots back.
   std::vector<glm::vec4> generate(GpuPayloadGenerator& gen, const std::vector<NodeId>& nodes,
@@ -45,7 +39,7 @@ class PayloadGeneratorTest : public GpuTest {
     return {data.begin(), data.end()};
   }
 
-  std::unique_ptr<ElevationModel> model_;
+  const ElevationModel* model_ = &earthlikeModel();
 };
 
 std::vector<NodeId> testNodes() {

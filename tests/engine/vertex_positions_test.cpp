@@ -13,13 +13,21 @@
 namespace globe::testing {
 namespace {
 
-class VertexPositionsTest : public GpuTest {};
+constexpr uint32_t kWidth = 128, kHeight = 96;
+
+class VertexPositionsTest : public GpuTest {
+ protected:
+  // The camera at `pose` over the earthlike planet, for a kWidth x kHeight image.
+  Camera cameraAt(const GeodeticPose& pose) const {
+    const glm::dvec3 down = directionFromLatLon(pose.latitude_deg, pose.longitude_deg);
+    return cameraFromPose(pose, model_->radius_m() + model_->elevation_m(down), model_->radius_m(),
+                          double(kWidth) / kHeight);
+  }
+  const ElevationModel* model_ = &earthlikeModel();
+};
 
 TEST_F(VertexPositionsTest, ReprojectedDrawMatchesStoredPositions) {
-  auto planet = loadPlanetFile(std::string(GLOBE_SOURCE_DIR) + "/assets/planets/earthlike.toml");
-  ASSERT_TRUE(planet.ok()) << planet.error().format();
-  ElevationModel model(*planet);
-  const uint32_t w = 128, h = 96;
+  const uint32_t w = kWidth, h = kHeight;
   HeadlessRenderer renderer(device(), {w, h});
   // A five-fold vertex seen from 10 m looking down (five faces meet in view), the standard 2 m and
   // 1 km cameras (morphing bands in view), and orbit.
@@ -34,16 +42,14 @@ TEST_F(VertexPositionsTest, ReprojectedDrawMatchesStoredPositions) {
                {"orbit", standardCameraPose(0)}};
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
-    const glm::dvec3 down = directionFromLatLon(c.pose.latitude_deg, c.pose.longitude_deg);
-    const Camera camera =
-        cameraFromPose(c.pose, model.radius_m() + model.elevation_m(down), model.radius_m(), double(w) / h);
+    const Camera camera = cameraAt(c.pose);
     vk::ReadbackImage images[2];
     for (int variant = 0; variant < 2; ++variant) {
       TerrainSettings settings;
       settings.gridCells = 16;
       settings.style.sky = false;
       settings.vertexPositions = variant == 0 ? VertexPositions::kStored : VertexPositions::kReprojected;
-      auto terrain = Terrain::create(device(), model, settings);
+      auto terrain = Terrain::create(device(), *model_, settings);
       ASSERT_TRUE(terrain.ok()) << terrain.error().format();
       renderer.renderFrame(**terrain, camera, true);
       images[variant] = renderer.readback();
@@ -75,21 +81,16 @@ TEST_F(VertexPositionsTest, ReprojectedDrawMatchesStoredPositions) {
 // A pool spread over several payload pages (one binding each) draws exactly the same image as one
 // page: instances are grouped by page, one draw per (index range, page).
 TEST_F(VertexPositionsTest, PagedPayloadsDrawTheSameImage) {
-  auto planet = loadPlanetFile(std::string(GLOBE_SOURCE_DIR) + "/assets/planets/earthlike.toml");
-  ASSERT_TRUE(planet.ok()) << planet.error().format();
-  ElevationModel model(*planet);
-  const uint32_t w = 128, h = 96;
+  const uint32_t w = kWidth, h = kHeight;
   HeadlessRenderer renderer(device(), {w, h});
-  const GeodeticPose pose = standardCameraPose(3);
-  const glm::dvec3 down = directionFromLatLon(pose.latitude_deg, pose.longitude_deg);
-  const Camera camera = cameraFromPose(pose, model.radius_m() + model.elevation_m(down), model.radius_m(), double(w) / h);
+  const Camera camera = cameraAt(standardCameraPose(3));
   vk::ReadbackImage images[2];
   FrameStats stats[2];
   for (int variant = 0; variant < 2; ++variant) {
     TerrainSettings settings;
     settings.gridCells = 16;
     settings.payloadSlotsPerPage = variant == 0 ? 0 : 16;
-    auto terrain = Terrain::create(device(), model, settings);
+    auto terrain = Terrain::create(device(), *model_, settings);
     ASSERT_TRUE(terrain.ok()) << terrain.error().format();
     stats[variant] = renderer.renderFrame(**terrain, camera, true);
     images[variant] = renderer.readback();
