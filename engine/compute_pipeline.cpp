@@ -43,17 +43,16 @@ void pushStorageBuffers(PFN_vkCmdPushDescriptorSetKHR push, VkCommandBuffer cmd,
   push(cmd, bindPoint, layout, 0, static_cast<uint32_t>(writes.size()), writes.data());
 }
 
-ComputePipeline::ComputePipeline(Device& device, const std::string& shader, uint32_t buffers,
-                                 uint32_t pushConstantBytes, uint32_t uniformMask,
-                                 std::span<const uint32_t> specialization)
-    : device_(device), uniformMask_(uniformMask) {
-  pushDescriptorSet_ =
+PFN_vkCmdPushDescriptorSetKHR pushDescriptorSetFunction(Device& device) {
+  auto push =
       reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(vkGetDeviceProcAddr(device.device(), "vkCmdPushDescriptorSetKHR"));
-  if (!pushDescriptorSet_) throw std::runtime_error("vkCmdPushDescriptorSetKHR is not available");
-  setLayout_ = storageBufferSetLayout(device, buffers, VK_SHADER_STAGE_COMPUTE_BIT, uniformMask);
+  if (!push) throw std::runtime_error("vkCmdPushDescriptorSetKHR is not available");
+  return push;
+}
 
-  VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes};
-  VkDescriptorSetLayout setLayout = setLayout_;
+UniquePipelineLayout pushDescriptorPipelineLayout(Device& device, VkDescriptorSetLayout setLayout,
+                                                  VkShaderStageFlags stages, uint32_t pushConstantBytes) {
+  VkPushConstantRange range{stages, 0, pushConstantBytes};
   VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   layoutInfo.setLayoutCount = 1;
   layoutInfo.pSetLayouts = &setLayout;
@@ -61,7 +60,16 @@ ComputePipeline::ComputePipeline(Device& device, const std::string& shader, uint
   layoutInfo.pPushConstantRanges = &range;
   VkPipelineLayout layout;
   GLOBE_VK_CHECK(vkCreatePipelineLayout(device.device(), &layoutInfo, nullptr, &layout));
-  layout_ = UniquePipelineLayout(device.device(), layout);
+  return UniquePipelineLayout(device.device(), layout);
+}
+
+ComputePipeline::ComputePipeline(Device& device, const std::string& shader, uint32_t buffers,
+                                 uint32_t pushConstantBytes, uint32_t uniformMask,
+                                 std::span<const uint32_t> specialization)
+    : device_(device), uniformMask_(uniformMask) {
+  pushDescriptorSet_ = pushDescriptorSetFunction(device);
+  setLayout_ = storageBufferSetLayout(device, buffers, VK_SHADER_STAGE_COMPUTE_BIT, uniformMask);
+  layout_ = pushDescriptorPipelineLayout(device, setLayout_, VK_SHADER_STAGE_COMPUTE_BIT, pushConstantBytes);
 
   UniqueShaderModule module = loadShaderModule(device, shader);
   VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
@@ -75,7 +83,7 @@ ComputePipeline::ComputePipeline(Device& device, const std::string& shader, uint
   VkSpecializationInfo specializationInfo{static_cast<uint32_t>(entries.size()), entries.data(),
                                           specialization.size_bytes(), specialization.data()};
   if (!specialization.empty()) info.stage.pSpecializationInfo = &specializationInfo;
-  info.layout = layout;
+  info.layout = layout_;
   VkPipeline pipeline;
   GLOBE_VK_CHECK(vkCreateComputePipelines(device.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
   pipeline_ = UniquePipeline(device.device(), pipeline);

@@ -46,6 +46,14 @@ void pushStorageBuffers(PFN_vkCmdPushDescriptorSetKHR push, VkCommandBuffer cmd,
 UniqueDescriptorSetLayout storageBufferSetLayout(Device& device, uint32_t count, VkShaderStageFlags stages,
                                                  uint32_t uniformMask = 0);
 
+// vkCmdPushDescriptorSetKHR of `device` (throws when the extension's entry point is missing).
+PFN_vkCmdPushDescriptorSetKHR pushDescriptorSetFunction(Device& device);
+
+// A pipeline layout of one push-descriptor set and, when pushConstantBytes > 0, one push-constant
+// range visible to `stages`.
+UniquePipelineLayout pushDescriptorPipelineLayout(Device& device, VkDescriptorSetLayout setLayout,
+                                                  VkShaderStageFlags stages, uint32_t pushConstantBytes);
+
 // A memory barrier making compute-shader writes visible to later reads (vertex, transfer, host...).
 void computeWriteBarrier(VkCommandBuffer cmd);
 

@@ -8,21 +8,10 @@
 namespace globe::vk {
 
 GraphicsPipeline::GraphicsPipeline(Device& device, const GraphicsPipelineDesc& desc) {
-  pushDescriptorSet_ =
-      reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(vkGetDeviceProcAddr(device.device(), "vkCmdPushDescriptorSetKHR"));
-  if (!pushDescriptorSet_) throw std::runtime_error("vkCmdPushDescriptorSetKHR is not available");
+  pushDescriptorSet_ = pushDescriptorSetFunction(device);
   uniformMask_ = desc.uniformMask;
   setLayout_ = storageBufferSetLayout(device, desc.storageBuffers, stages_, desc.uniformMask);
-  VkPushConstantRange range{stages_, 0, desc.pushConstantBytes};
-  VkDescriptorSetLayout setLayout = setLayout_;
-  VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  layoutInfo.setLayoutCount = 1;
-  layoutInfo.pSetLayouts = &setLayout;
-  layoutInfo.pushConstantRangeCount = desc.pushConstantBytes ? 1 : 0;
-  layoutInfo.pPushConstantRanges = &range;
-  VkPipelineLayout layout;
-  GLOBE_VK_CHECK(vkCreatePipelineLayout(device.device(), &layoutInfo, nullptr, &layout));
-  layout_ = UniquePipelineLayout(device.device(), layout);
+  layout_ = pushDescriptorPipelineLayout(device, setLayout_, stages_, desc.pushConstantBytes);
 
   UniqueShaderModule vert = loadShaderModule(device, desc.vertexShader);
   UniqueShaderModule frag = loadShaderModule(device, desc.fragmentShader);
@@ -86,7 +75,7 @@ GraphicsPipeline::GraphicsPipeline(Device& device, const GraphicsPipelineDesc& d
   info.pDepthStencilState = &depth;
   info.pColorBlendState = &blend;
   info.pDynamicState = &dynamic;
-  info.layout = layout;
+  info.layout = layout_;
   VkPipeline pipeline;
   GLOBE_VK_CHECK(vkCreateGraphicsPipelines(device.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
   pipeline_ = UniquePipeline(device.device(), pipeline);

@@ -52,8 +52,7 @@ Terrain::Terrain(vk::Device& device, const ElevationModel& model, const TerrainS
   generator_->reserveSlots(pool_->slotCapacity(), settings.payloadSlotsPerPage);
   TerrainStyle style = settings.style;
   style.radius_m = model.radius_m();
-  renderer_ = std::make_unique<TerrainRenderer>(device, settings.gridCells, style, 1024,
-                                                VK_FORMAT_R16G16B16A16_SFLOAT, settings.vertexPositions);
+  renderer_ = std::make_unique<TerrainRenderer>(device, settings.gridCells, style, settings.vertexPositions);
   drawNodes_.reserve(4096);
 }
 

@@ -87,7 +87,7 @@ gpu::TerrainVec4 toGpu(const glm::vec3& v, float w) { return {v.x, v.y, v.z, w};
 }  // namespace
 
 TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const TerrainStyle& style,
-                                 uint32_t initialNodes, VkFormat colourFormat, VertexPositions positions)
+                                 VertexPositions positions, uint32_t initialNodes, VkFormat colourFormat)
     : device_(device),
       cells_(gridCells),
       style_(style),

@@ -83,8 +83,8 @@ class TerrainRenderer {
   // capacity allocated up front (grows when exceeded). Pipelines target OffscreenTarget's formats
   // unless `colourFormat` says otherwise (e.g. a swapchain's).
   TerrainRenderer(vk::Device& device, uint32_t gridCells, const TerrainStyle& style = {},
-                  uint32_t initialNodes = 1024, VkFormat colourFormat = VK_FORMAT_R16G16B16A16_SFLOAT,
-                  VertexPositions positions = VertexPositions::kStored);
+                  VertexPositions positions = VertexPositions::kStored, uint32_t initialNodes = 1024,
+                  VkFormat colourFormat = VK_FORMAT_R16G16B16A16_SFLOAT);
   ~TerrainRenderer();
   TerrainRenderer(const TerrainRenderer&) = delete;
   TerrainRenderer& operator=(const TerrainRenderer&) = delete;

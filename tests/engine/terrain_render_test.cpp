@@ -517,7 +517,7 @@ TEST_F(TerrainRenderTest, ShadedViewDebugViewsAndStats) {
 }
 
 TEST_F(TerrainRenderTest, NoAllocationAfterWarmUpAndGrowth) {
-  TerrainRenderer renderer(device(), kCells, {}, 4);
+  TerrainRenderer renderer(device(), kCells, {}, VertexPositions::kStored, 4);
   CpuPayloads payloads(device(), model_, 16);
   std::vector<DrawNode> nodes;
   for (uint32_t i = 0; i < 10; ++i) {
