@@ -23,3 +23,17 @@ function(globe_configure_target target)
     target_link_options(${target} PRIVATE -fsanitize=address,undefined)
   endif()
 endfunction()
+
+# A library of globe: the .cpp files of its folder (globbed, so a new file needs no CMake edit),
+# configured as above, exported as globe::NAME (target globe_NAME, file libglobe_NAME.a).
+# Headers are included by their path from the source root ("engine/vk/device.h").
+function(globe_add_library name)
+  file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp ${CMAKE_CURRENT_SOURCE_DIR}/*/*.cpp)
+  add_library(globe_${name} STATIC ${sources})
+  add_library(globe::${name} ALIAS globe_${name})
+  set_target_properties(globe_${name} PROPERTIES EXPORT_NAME ${name})
+  globe_configure_target(globe_${name})
+  target_include_directories(globe_${name} PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
+                                                  $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/globe>)
+  set_property(GLOBAL APPEND PROPERTY GLOBE_LIBRARIES globe_${name})
+endfunction()

@@ -18,6 +18,8 @@ PACKAGES=(
   libimgui-dev libmeshoptimizer-dev
   # tests and benchmarks (libnoise is the benchmark's comparison peer)
   libgtest-dev libgmock-dev libbenchmark-dev libnoise-dev xvfb xauth
+  # the formatting check of the test suite; readelf for the consumer check (binutils)
+  clang-format binutils
 )
 
 if [[ "${1:-}" == "--list" ]]; then

@@ -8,6 +8,6 @@ scripts/install-deps.sh
 cmake --preset release >/dev/null
 cmake --build --preset release
 mkdir -p out
-build/release/engine/globe bench --planet assets/planets/earthlike.toml --path assets/paths/flyover.path \
+build/release/bin/globe bench --planet assets/planets/earthlike.toml --path assets/paths/flyover.path \
   --out out/bench --mode budgeted "$@"
 echo "main job done: open out/bench/report.html"

@@ -1,6 +1,6 @@
 #version 450
 // Elevation at a batch of unit directions, in double: the GPU side of the CPU-reference test and
-// of the samples-per-second benchmark (engine/elevation_sampler.h).
+// of the samples-per-second benchmark (engine/generation/elevation_sampler.h).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 

@@ -1,9 +1,9 @@
 #pragma once
 // Shared by the engine benchmarks: one device for the process ($GLOBE_DEVICE honoured, no validation:
 // benchmarks measure) and the default planet.
-#include "engine/device.h"
-#include "planet/elevation.h"
-#include "planet/planet_file.h"
+#include "engine/vk/device.h"
+#include "planet/elevation/elevation.h"
+#include "planet/elevation/planet_file.h"
 
 #include <cstdio>
 #include <cstdlib>

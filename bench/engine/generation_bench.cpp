@@ -1,12 +1,12 @@
 // Generation on the GPU (lavapipe here): samples per second of the double elevation kernel, and
 // milliseconds per node payload at grid 16/32/64/128 in batches, warm and cold.
 //
-//   build/release/bench/engine_bench --benchmark_filter='Gpu'
-// Compare with the CPU reference and libnoise: build/release/bench/planet_bench --benchmark_filter='Elevation|Libnoise'
-#include "engine/elevation_sampler.h"
-#include "engine/payload_generator.h"
+//   build/release/bin/engine_bench --benchmark_filter='Gpu'
+// Compare with the CPU reference and libnoise: build/release/bin/planet_bench --benchmark_filter='Elevation|Libnoise'
 #include "bench_support.h"
-#include "planet/planet_file.h"
+#include "engine/generation/elevation_sampler.h"
+#include "engine/generation/payload_generator.h"
+#include "planet/elevation/planet_file.h"
 
 #include <benchmark/benchmark.h>
 
@@ -89,10 +89,7 @@ void BM_GpuPayload(benchmark::State& state) {
   state.counters["gpu_samples_per_s"] = double((cells + 3) * (cells + 3)) / (perNode * 1e-3);
   state.SetItemsProcessed(int64_t(state.iterations()) * batch);
 }
-BENCHMARK(BM_GpuPayload)
-    ->ArgsProduct({{16, 32, 64, 128}, {8, 32}})
-    ->UseManualTime()
-    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GpuPayload)->ArgsProduct({{16, 32, 64, 128}, {8, 32}})->UseManualTime()->Unit(benchmark::kMillisecond);
 
 // Cold: pipeline creation plus the first dispatch (JIT compilation; Mesa's disk cache may help —
 // set MESA_SHADER_CACHE_DISABLE=true for a truly cold figure).

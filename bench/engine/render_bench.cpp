@@ -1,13 +1,13 @@
 // Frame time of the terrain at the five standard cameras (orbit, 100 km, 10 km, 1 km, 2 m), 1280x720,
 // converged (every payload resident: render cost alone), with triangles and draw calls per frame.
 //
-//   build/release/bench/engine_bench --benchmark_filter=TerrainFrame
+//   build/release/bin/engine_bench --benchmark_filter=TerrainFrame
 // Knobs: GLOBE_BENCH_QUALITY (fast|balanced|exact, default balanced), then overrides
 // GLOBE_BENCH_GRID (cells per node side) and GLOBE_BENCH_RANGE (LOD distance multiplier).
-#include "engine/headless_renderer.h"
-#include "engine/quality.h"
 #include "bench_support.h"
-#include "planet/planet_file.h"
+#include "engine/render/headless_renderer.h"
+#include "engine/render/quality.h"
+#include "planet/elevation/planet_file.h"
 
 #include <benchmark/benchmark.h>
 

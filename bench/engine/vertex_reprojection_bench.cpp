@@ -5,7 +5,7 @@
 // lavapipe runs vertex shaders on the same CPU cores with the same SIMD, so the ratio is indicative
 // of the vertex-stage cost there; not a GPU measurement.
 //
-//   build/release/bench/engine_bench --benchmark_filter=VertexWork
+//   build/release/bin/engine_bench --benchmark_filter=VertexWork
 #include <benchmark/benchmark.h>
 
 #include <glm/glm.hpp>
@@ -41,7 +41,9 @@ BENCHMARK(BM_VertexWorkStoredFloatPositions);
 void BM_VertexWorkReprojectedDouble(benchmark::State& state) {
   std::vector<float> heights(size_t(kSide) * kSide * kNodes);
   for (size_t i = 0; i < heights.size(); ++i) heights[i] = float(i % 1000) * 3.0f;
-  struct NodeCorners { glm::dvec3 c0, e1, e3; };
+  struct NodeCorners {
+    glm::dvec3 c0, e1, e3;
+  };
   std::vector<NodeCorners> nodes(kNodes, {glm::dvec3(0.3, 0.5, 0.6), glm::dvec3(1e-4, 0, 0), glm::dvec3(0, 1e-4, 0)});
   const double radius = 6371000.0;
   const glm::dvec3 camera(1.9e6, 3.2e6, 3.8e6);
@@ -53,7 +55,7 @@ void BM_VertexWorkReprojectedDouble(benchmark::State& state) {
         for (int i = 0; i < kSide; ++i) {
           double u = double(i) / kCells, v = double(j) / kCells;
           glm::dvec3 p = (c.c0 + u * c.e1) + v * c.e3;  // face mapping (bilinear on the rhombus)
-          double s = 1.0 / std::sqrt(glm::dot(p, p));      // normalise
+          double s = 1.0 / std::sqrt(glm::dot(p, p));   // normalise
           double h = heights[size_t(n) * kSide * kSide + size_t(j * kSide + i)];
           glm::dvec3 world = p * (s * (radius + h));
           sum += glm::vec3(world - camera);

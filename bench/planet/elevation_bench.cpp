@@ -2,7 +2,7 @@
 // libnoise's Perlin module (12 octaves, standard quality, double), same points, 1 and 2 threads;
 // plus the float-vs-double error table of docs/elevation.md (reported as counters).
 //
-//   build/elev/bench/planet_bench --benchmark_filter='Elevation|Libnoise'
+//   build/elev/bin/planet_bench --benchmark_filter='Elevation|Libnoise'
 #include <benchmark/benchmark.h>
 
 #include <libnoise/noise.h>
@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "planet/elevation.h"
-#include "planet/planet_file.h"
+#include "planet/elevation/elevation.h"
+#include "planet/elevation/planet_file.h"
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "planet/selection.h"
+#include "planet/lod/selection.h"
 
 namespace globe {
 namespace {

@@ -18,10 +18,10 @@
 
 #include <glm/geometric.hpp>
 
-#include "planet/camera.h"
-#include "planet/fake_payload_generator.h"
-#include "planet/payload_pool.h"
-#include "planet/selection.h"
+#include "planet/camera/camera.h"
+#include "planet/lod/selection.h"
+#include "planet/streaming/payload_pool.h"
+#include "tests/support/fake_payload_generator.h"
 
 namespace globe {
 namespace {
@@ -123,7 +123,8 @@ void registerAll() {
     const char* name;
     double altitude_m, speed_mps;
   };
-  for (const Flight& f : {Flight{"alt_1km/speed_1km_s", 1000.0, 1000.0}, Flight{"alt_100m/speed_300m_s", 100.0, 300.0}}) {
+  for (const Flight& f :
+       {Flight{"alt_1km/speed_1km_s", 1000.0, 1000.0}, Flight{"alt_100m/speed_300m_s", 100.0, 300.0}}) {
     for (bool prefetch : {true, false}) {
       const std::string name = std::string("Streaming/") + f.name + (prefetch ? "/prefetch" : "/no_prefetch");
       benchmark::RegisterBenchmark(name.c_str(), flight, f.altitude_m, f.speed_mps, prefetch)

@@ -1,5 +1,5 @@
 // Tessellation quality and mapping cost (docs/tessellation.md; issue 8). One command prints the table:
-//   build/tess/bench/planet_bench --benchmark_filter=Tessellation
+//   build/tess/bin/planet_bench --benchmark_filter=Tessellation
 // Tessellation/Quality/<mapping>: one measurement of the 128-cells-per-edge grid per iteration; the
 //   counters are the table's columns (area max/min, area CV, angle min/max in degrees, edge max/min).
 // Tessellation/UnitPoint/<mapping>: cost of one unit-point evaluation over the 129 × 129 grid points of
@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "planet/subdivision_face_mapping.h"
-#include "planet/tessellation_quality.h"
-#include "planet/triacontahedron.h"
+#include "planet/analysis/subdivision_face_mapping.h"
+#include "planet/analysis/tessellation_quality.h"
+#include "planet/geometry/triacontahedron.h"
 
 namespace globe {
 namespace {
@@ -105,8 +105,7 @@ void subdivideGrid(std::vector<glm::dvec3>& g, int n) {
     }
     for (int j = 0; j < n; j += step) {
       for (int i = 0; i < n; i += step) {
-        at(i + half, j + half) =
-            normalised((at(i, j) + at(i + step, j)) + (at(i + step, j + step) + at(i, j + step)));
+        at(i + half, j + half) = normalised((at(i, j) + at(i + step, j)) + (at(i + step, j + step) + at(i, j + step)));
       }
     }
   }
@@ -138,16 +137,17 @@ void subdivisionGridCost(benchmark::State& state) {
     subdivideGrid(grid, n);
     benchmark::DoNotOptimize(grid.data());
   }
-  state.counters["t_per_point"] = benchmark::Counter(static_cast<double>((n + 1) * (n + 1)),
-                                                     benchmark::Counter::kIsIterationInvariantRate |
-                                                         benchmark::Counter::kInvert);
+  state.counters["t_per_point"] =
+      benchmark::Counter(static_cast<double>((n + 1) * (n + 1)),
+                         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 template <typename Mapping>
 void locateCost(benchmark::State& state, const Mapping& mapping) {
   std::vector<glm::dvec3> directions;
   for (int i = 0; i < 256; ++i) {
-    directions.push_back(mapping.unitPoint(i % kFaceCount, ((i * 37) % 256 + 0.5) / 256.0, ((i * 91) % 256 + 0.5) / 256.0));
+    directions.push_back(
+        mapping.unitPoint(i % kFaceCount, ((i * 37) % 256 + 0.5) / 256.0, ((i * 91) % 256 + 0.5) / 256.0));
   }
   size_t k = 0;
   for (auto _ : state) {
@@ -159,9 +159,9 @@ void locateCost(benchmark::State& state, const Mapping& mapping) {
 void registerAll() {
   benchmark::RegisterBenchmark("Tessellation/Locate/rhombus_bilinear",
                                [](benchmark::State& s) { locateCost(s, RhombusFaceMapping::get()); });
-  benchmark::RegisterBenchmark("Tessellation/Locate/rhombus_subdivision",
-                               [](benchmark::State& s) { locateCost(s, SubdivisionFaceMapping::get()); })
-      ->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("Tessellation/Locate/rhombus_subdivision", [](benchmark::State& s) {
+    locateCost(s, SubdivisionFaceMapping::get());
+  })->Unit(benchmark::kMicrosecond);
   benchmark::RegisterBenchmark("Tessellation/UnitPoint/rhombus_subdivision/whole_grid", subdivisionGridCost);
   for (int i = 0; i < 4; ++i) {
     benchmark::RegisterBenchmark((std::string("Tessellation/Quality/") + mappingCase(i).name).c_str(), quality, i)
@@ -169,12 +169,8 @@ void registerAll() {
         ->Iterations(1);
   }
   const auto rhombus = [](int f, double u, double v) { return RhombusFaceMapping::get().unitPoint(f, u, v); };
-  const auto subdivision = [](int f, double u, double v) {
-    return SubdivisionFaceMapping::get().unitPoint(f, u, v);
-  };
-  const auto gnomonic = [](int f, double u, double v) {
-    return cubeSpherePoint(CubeSphereWarp::kGnomonic, f, u, v);
-  };
+  const auto subdivision = [](int f, double u, double v) { return SubdivisionFaceMapping::get().unitPoint(f, u, v); };
+  const auto gnomonic = [](int f, double u, double v) { return cubeSpherePoint(CubeSphereWarp::kGnomonic, f, u, v); };
   const auto equiAngular = [](int f, double u, double v) {
     return cubeSpherePoint(CubeSphereWarp::kEquiAngular, f, u, v);
   };

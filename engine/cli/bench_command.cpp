@@ -1,16 +1,16 @@
 // globe bench: deterministic replay of a camera path, headless, with per-frame metrics, key-frame
 // images and a report (docs/benchmark.md).
 #include "commands.h"
-#include "engine/bench_report.h"
-#include "engine/device.h"
-#include "engine/headless_renderer.h"
-#include "engine/image_io.h"
-#include "engine/quality.h"
-#include "engine/render_output.h"
+#include "engine/io/image_io.h"
+#include "engine/render/headless_renderer.h"
+#include "engine/render/quality.h"
+#include "engine/render/render_output.h"
+#include "engine/report/bench_report.h"
+#include "engine/vk/device.h"
 #include "options.h"
+#include "planet/camera/camera_path_file.h"
+#include "planet/elevation/planet_file.h"
 #include "progress_bar.h"
-#include "planet/camera_path_file.h"
-#include "planet/planet_file.h"
 
 #include <cmath>
 #include <cstdio>
@@ -71,9 +71,8 @@ int runBench(const BenchOptions& o) {
 
   ElevationModel model(*planet);
   // One sun for the whole flight, lighting the region of the path's first keyframe.
-  settings.style.sunDirection = defaultSunDirection(path->positionAt(path->startTime_s(), [&](const glm::dvec3& d) {
-    return model.radius_m() + model.elevation_m(d);
-  }));
+  settings.style.sunDirection = defaultSunDirection(path->positionAt(
+      path->startTime_s(), [&](const glm::dvec3& d) { return model.radius_m() + model.elevation_m(d); }));
   settings.style.ramp = planet->colour_ramp;
   vk::Device device(deviceOptions(o.device));
   auto terrain = Terrain::create(device, model, settings);
@@ -115,8 +114,8 @@ int runBench(const BenchOptions& o) {
     progress.update(double(k + 1) / double(frames));
   }
 
-  BenchRunInfo info{o.planet, o.path, o.mode, device.name(), o.size, settings.gridCells, o.commandLine,
-                    std::string(GLOBE_VERSION)};
+  BenchRunInfo info{
+      o.planet, o.path, o.mode, device.name(), o.size, settings.gridCells, o.commandLine, std::string(GLOBE_VERSION)};
   if (auto s = writeBenchReport(o.out, info, rows, keys); !s) {
     printError(s.error().format());
     return kExitFailure;
@@ -145,10 +144,13 @@ void addBenchCommand(CLI::App& app, Runner& run, const std::string& commandLine)
       ->check(CLI::IsMember({"budgeted", "converged"}))
       ->capture_default_str();
   cmd->add_option("--size", opts->size, "Image size WxH in pixels")->capture_default_str();
-  cmd->add_option("--keyframes", opts->keyFrames, "Path times (s) whose frames are saved as PNG")->capture_default_str();
+  cmd->add_option("--keyframes", opts->keyFrames, "Path times (s) whose frames are saved as PNG")
+      ->capture_default_str();
   cmd->add_option("--rate", opts->rate_hz, "Frames per second of path time (fixed step)")->capture_default_str();
-  cmd->add_option("--grid", opts->gridCells, "Grid cells per node side (power of two, 16..256; default: the quality preset's)");
-  cmd->add_option("--quality", opts->quality, "fast, balanced or exact (docs/tradeoffs.md; default: the planet's default_quality)");
+  cmd->add_option("--grid", opts->gridCells,
+                  "Grid cells per node side (power of two, 16..256; default: the quality preset's)");
+  cmd->add_option("--quality", opts->quality,
+                  "fast, balanced or exact (docs/tradeoffs.md; default: the planet's default_quality)");
   addDeviceFlags(*cmd, opts->device);
   cmd->callback([opts, &run] { run = [opts] { return runBench(*opts); }; });
 }

@@ -19,8 +19,8 @@ void addTradeCommand(CLI::App& app, Runner& run);  // globe trade: speed/accurac
 
 // Exit codes shared by every command.
 constexpr int kExitOk = 0;
-constexpr int kExitFailure = 1;   // the command could not do its job (device, I/O, ...)
-constexpr int kExitUsage = 2;     // bad command-line values or input files
+constexpr int kExitFailure = 1;  // the command could not do its job (device, I/O, ...)
+constexpr int kExitUsage = 2;    // bad command-line values or input files
 
 // Prints "globe: error: MESSAGE" on one line to stderr.
 void printError(const std::string& message);

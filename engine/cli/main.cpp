@@ -17,13 +17,16 @@ void printError(const std::string& message) {
 
 int main(int argc, char** argv) {
   using namespace globe::cli;
-  CLI::App app{"globe: a planetary-scale globe engine (Vulkan).\n"
-               "Set GLOBE_DEVICE=NAME (or --device) to force a Vulkan device by name."};
+  CLI::App app{
+      "globe: a planetary-scale globe engine (Vulkan).\n"
+      "Set GLOBE_DEVICE=NAME (or --device) to force a Vulkan device by name."};
   app.set_version_flag("--version", std::string("globe ") + GLOBE_VERSION);
   app.require_subcommand(0, 1);
   Runner run;
   addRenderCommand(app, run);
+#ifdef GLOBE_HAS_VIEWER
   addViewCommand(app, run);
+#endif
   addPlanetCommand(app, run);
   std::string commandLine;
   for (int i = 0; i < argc; ++i) commandLine += (i ? " " : "") + std::string(argv[i]);

@@ -1,6 +1,7 @@
 #include "options.h"
 
 #include "commands.h"
+#include "planet/core/data_directory.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -38,8 +39,9 @@ Status checkImageExtension(const std::string& path, const std::string& field) {
 }
 
 void addDeviceFlags(CLI::App& cmd, DeviceFlags& flags) {
-  cmd.add_option("--device", flags.name, "Force the Vulkan device whose name contains NAME (default: $GLOBE_DEVICE, "
-                                         "else a discrete GPU, else lavapipe)");
+  cmd.add_option("--device", flags.name,
+                 "Force the Vulkan device whose name contains NAME (default: $GLOBE_DEVICE, "
+                 "else a discrete GPU, else lavapipe)");
   cmd.add_flag("--validate", flags.validation, "Enable the Vulkan validation layers; any message fails the command");
 }
 
@@ -65,16 +67,10 @@ int usageError(const Error& error) {
   return kExitUsage;
 }
 
-std::string defaultPlanetPath() {
-  const char* env = std::getenv("GLOBE_ASSET_DIR");
-  const std::string dir = (env != nullptr && *env != '\0') ? std::string(env) : std::string(GLOBE_ASSET_DIR);
-  return dir + "/planets/earthlike.toml";
-}
+std::string defaultPlanetPath() { return defaultAssetPath("planets/earthlike.toml"); }
 
 std::string defaultAssetPath(const std::string& relative) {
-  const char* env = std::getenv("GLOBE_ASSET_DIR");
-  const std::string dir = (env != nullptr && *env != '\0') ? std::string(env) : std::string(GLOBE_ASSET_DIR);
-  return dir + "/" + relative;
+  return dataDirectory("GLOBE_ASSET_DIR", "assets") + "/" + relative;
 }
 
 }  // namespace globe::cli

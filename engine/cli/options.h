@@ -1,7 +1,7 @@
 #pragma once
 // Option parsing shared by the subcommands: sizes, device selection, error reporting.
-#include "engine/device.h"
-#include "planet/error.h"
+#include "engine/vk/device.h"
+#include "planet/core/error.h"
 
 #include <CLI/CLI.hpp>
 
@@ -25,8 +25,8 @@ Status checkOutputDirectory(const std::string& dir, const std::string& field);
 Status checkImageExtension(const std::string& path, const std::string& field);
 
 struct DeviceFlags {
-  std::string name;        // --device, else $GLOBE_DEVICE
-  bool validation = false; // --validate, or $GLOBE_VALIDATION=1
+  std::string name;         // --device, else $GLOBE_DEVICE
+  bool validation = false;  // --validate, or $GLOBE_VALIDATION=1
 };
 void addDeviceFlags(CLI::App& cmd, DeviceFlags& flags);
 vk::DeviceOptions deviceOptions(const DeviceFlags& flags);
@@ -37,11 +37,11 @@ int validationExitCode(vk::Device& device);
 // Prints the error and returns kExitUsage.
 int usageError(const Error& error);
 
-// The planet every command uses without --planet: $GLOBE_ASSET_DIR/planets/earthlike.toml when
-// the variable is set, else the source tree's assets/planets/earthlike.toml (GLOBE_ASSET_DIR,
-// fixed at build time), so `globe` works from any working directory.
+// The planet every command uses without --planet: planets/earthlike.toml under the asset directory,
+// so `globe` works from any working directory.
 std::string defaultPlanetPath();
-// A file under the asset directory ($GLOBE_ASSET_DIR, else the source tree's assets/).
+// A file under the asset directory: $GLOBE_ASSET_DIR, else share/globe/assets beside the program
+// (planet/core/data_directory.h; in the build tree a link to the source tree's assets/).
 std::string defaultAssetPath(const std::string& relative);
 
 }  // namespace globe::cli

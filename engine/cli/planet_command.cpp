@@ -1,10 +1,10 @@
 // globe planet: check, stats, sample (and export, planet_export_command.cpp) for planet files.
 #include "commands.h"
 #include "options.h"
-#include "planet/camera.h"
-#include "planet/elevation.h"
-#include "planet/planet_file.h"
-#include "planet/sphere_sampling.h"
+#include "planet/camera/camera.h"
+#include "planet/elevation/elevation.h"
+#include "planet/elevation/planet_file.h"
+#include "planet/elevation/sphere_sampling.h"
 #include "planet_commands.h"
 #include "progress_bar.h"
 

@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "planet/planet_description.h"
+#include "planet/elevation/planet_description.h"
 
 namespace globe::cli {
 

@@ -1,14 +1,14 @@
 // globe planet export: an equirectangular float32 elevation map (OpenEXR, channel Y, metres) and an
 // optional shaded, ramp-coloured PNG preview. Written atomically: a failed or interrupted export
-// leaves no target file (see engine/elevation_exr.h and signal_cleanup.h).
+// leaves no target file (see engine/io/elevation_exr.h and signal_cleanup.h).
 #include "commands.h"
-#include "engine/elevation_exr.h"
-#include "engine/image_io.h"
+#include "engine/io/elevation_exr.h"
+#include "engine/io/image_io.h"
 #include "options.h"
-#include "planet/atomic_file.h"
-#include "planet/colour_ramp.h"
-#include "planet/elevation.h"
-#include "planet/equirect_preview.h"
+#include "planet/core/atomic_file.h"
+#include "planet/elevation/colour_ramp.h"
+#include "planet/elevation/elevation.h"
+#include "planet/elevation/equirect_preview.h"
 #include "planet_commands.h"
 #include "progress_bar.h"
 #include "signal_cleanup.h"

@@ -1,15 +1,15 @@
 // globe render: one headless frame of the terrain (or the reference sphere) written as PNG or EXR.
 #include "commands.h"
-#include "engine/device.h"
-#include "engine/headless_renderer.h"
-#include "engine/quality.h"
-#include "engine/render_output.h"
-#include "engine/sphere_preview.h"
+#include "engine/render/headless_renderer.h"
+#include "engine/render/quality.h"
+#include "engine/render/render_output.h"
+#include "engine/render/sphere_preview.h"
+#include "engine/vk/device.h"
 #include "options.h"
-#include "planet/atomic_file.h"
-#include "planet/camera.h"
-#include "planet/payload_reference.h"
-#include "planet/planet_file.h"
+#include "planet/camera/camera.h"
+#include "planet/core/atomic_file.h"
+#include "planet/elevation/planet_file.h"
+#include "planet/streaming/payload_reference.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -79,9 +79,9 @@ int runRender(const RenderOptions& o) {
     // Waits until every node the view needs is resident before drawing the frame it writes.
     FrameStats stats = renderer.renderFrame(**terrain, camera, true);
     image = toImage(renderer.readback(), camera);
-    std::printf("%u nodes (%u partial), %llu triangles, %u payloads resident (%.1f MiB), frame %.1f ms (GPU %.1f ms)\n", stats.nodes_selected,
-                stats.nodes_partial, (unsigned long long)stats.triangles, (*terrain)->pool().stats().residentNodes,
-                stats.resident_mib, stats.frame_ms, stats.gpu_ms);
+    std::printf("%u nodes (%u partial), %llu triangles, %u payloads resident (%.1f MiB), frame %.1f ms (GPU %.1f ms)\n",
+                stats.nodes_selected, stats.nodes_partial, (unsigned long long)stats.triangles,
+                (*terrain)->pool().stats().residentNodes, stats.resident_mib, stats.frame_ms, stats.gpu_ms);
   }
   if (auto s = writeImage(o.out, image, "--out"); !s) {
     printError(s.error().format());
@@ -110,8 +110,10 @@ void addRenderCommand(CLI::App& app, Runner& run) {
   cmd->add_option("--mode", opts->mode, "terrain (the planet) or sphere (its reference sphere, analytic)")
       ->check(CLI::IsMember({"terrain", "sphere"}))
       ->capture_default_str();
-  cmd->add_option("--grid", opts->gridCells, "Grid cells per node side (power of two, 16..256; default: the quality preset's)");
-  cmd->add_option("--quality", opts->quality, "fast, balanced or exact (docs/tradeoffs.md; default: the planet's default_quality)");
+  cmd->add_option("--grid", opts->gridCells,
+                  "Grid cells per node side (power of two, 16..256; default: the quality preset's)");
+  cmd->add_option("--quality", opts->quality,
+                  "fast, balanced or exact (docs/tradeoffs.md; default: the planet's default_quality)");
   addDeviceFlags(*cmd, opts->device);
   cmd->callback([opts, &run] { run = [opts] { return runRender(*opts); }; });
 }

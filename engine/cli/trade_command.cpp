@@ -1,18 +1,18 @@
 // globe trade: measures the speed/accuracy trade of the terrain settings (docs/tradeoffs.md). Each
 // configuration is rendered converged at each camera; frame time, selection time, triangles, memory
 // and generation cost are recorded, and the read-back depth is compared with the exact planet
-// (engine/screen_error.h). Writes DIR/trade.csv and DIR/pareto.svg.
+// (engine/render/screen_error.h). Writes DIR/trade.csv and DIR/pareto.svg.
 #include "commands.h"
-#include "engine/device.h"
-#include "engine/bench_metrics.h"
-#include "engine/headless_renderer.h"
-#include "engine/quality.h"
-#include "engine/screen_error.h"
-#include "engine/trade_report.h"
+#include "engine/render/headless_renderer.h"
+#include "engine/render/quality.h"
+#include "engine/render/screen_error.h"
+#include "engine/report/bench_metrics.h"
+#include "engine/report/trade_report.h"
+#include "engine/vk/device.h"
 #include "options.h"
+#include "planet/camera/camera_path_file.h"
+#include "planet/elevation/planet_file.h"
 #include "progress_bar.h"
-#include "planet/camera_path_file.h"
-#include "planet/planet_file.h"
 
 #include <algorithm>
 #include <chrono>
@@ -30,13 +30,13 @@ struct TradeOptions {
   DeviceFlags device;
   std::string planet;
   std::string out = "out/trade";
-  std::string quality;  // baseline; empty = the planet's default_quality
-  std::string size;     // empty = 1280x720, --quick 320x180
-  std::string path;     // path sampled for extra cameras (full sweep only)
-  std::string cameras;  // comma-separated camera names to keep; empty = all
-  uint32_t frames = 0;  // 0 = 11, --quick 5
-  uint32_t stride = 0;  // 0 = 4
-  uint32_t configs = 0; // 0 = all
+  std::string quality;   // baseline; empty = the planet's default_quality
+  std::string size;      // empty = 1280x720, --quick 320x180
+  std::string path;      // path sampled for extra cameras (full sweep only)
+  std::string cameras;   // comma-separated camera names to keep; empty = all
+  uint32_t frames = 0;   // 0 = 11, --quick 5
+  uint32_t stride = 0;   // 0 = 4
+  uint32_t configs = 0;  // 0 = all
   bool quick = false;
 };
 
@@ -164,8 +164,9 @@ int runTrade(const TradeOptions& o) {
   std::vector<TradeCamera> cameras;
   for (int i : o.quick ? std::vector<int>{2, 3} : std::vector<int>{0, 1, 2, 3, 4}) {
     GeodeticPose pose = standardCameraPose(i);
-    cameras.push_back({standardCameraName(i), cameraFromPose(pose, ground(directionFromLatLon(pose.latitude_deg, pose.longitude_deg)),
-                                                          model.radius_m(), aspect)});
+    cameras.push_back(
+        {standardCameraName(i), cameraFromPose(pose, ground(directionFromLatLon(pose.latitude_deg, pose.longitude_deg)),
+                                               model.radius_m(), aspect)});
   }
   if (path)
     for (double t : {7.0, 12.0})
@@ -282,8 +283,8 @@ int runTrade(const TradeOptions& o) {
       std::printf("%-34s %9.2f %9.2f %9.3f %9.3f %9.2f %7llu%s\n", r.config.c_str(), r.frameMedian_ms, r.frameP95_ms,
                   r.error.p50_px, r.error.p95_px, r.error.max_px, (unsigned long long)r.triangles,
                   r.converged ? "" : "  (not converged: the pool could not hold the view)");
-  std::printf("truth ray casting %.1f s, total %.1f s; wrote %s/trade.csv and %s/pareto.svg\n", truth_ms * 1e-3, total_s,
-              o.out.c_str(), o.out.c_str());
+  std::printf("truth ray casting %.1f s, total %.1f s; wrote %s/trade.csv and %s/pareto.svg\n", truth_ms * 1e-3,
+              total_s, o.out.c_str(), o.out.c_str());
   return kExitOk;
 }
 
@@ -293,17 +294,22 @@ void addTradeCommand(CLI::App& app, Runner& run) {
   auto opts = std::make_shared<TradeOptions>();
   opts->planet = defaultPlanetPath();
   opts->path = defaultAssetPath("paths/flyover.path");
-  CLI::App* cmd = app.add_subcommand("trade", "Measure the speed/accuracy trade of the terrain settings (trade.csv, pareto.svg)");
+  CLI::App* cmd =
+      app.add_subcommand("trade", "Measure the speed/accuracy trade of the terrain settings (trade.csv, pareto.svg)");
   cmd->add_option("--planet", opts->planet, "Planet file (TOML)")->capture_default_str();
   cmd->add_option("--out", opts->out, "Output directory (trade.csv, pareto.svg)")->capture_default_str();
   cmd->add_flag("--quick", opts->quick, "Few configurations, two cameras, 320x180: about a minute");
-  cmd->add_option("--quality", opts->quality, "Baseline preset: fast, balanced or exact (default: the planet's default_quality)");
+  cmd->add_option("--quality", opts->quality,
+                  "Baseline preset: fast, balanced or exact (default: the planet's default_quality)");
   cmd->add_option("--size", opts->size, "Image size WxH (default 1280x720, --quick 320x180)");
-  cmd->add_option("--frames", opts->frames, "Timed converged frames per configuration and camera (default 11, --quick 3)");
+  cmd->add_option("--frames", opts->frames,
+                  "Timed converged frames per configuration and camera (default 11, --quick 3)");
   cmd->add_option("--stride", opts->stride, "Screen error sampled every N-th pixel in x and y (default 4)");
-  cmd->add_option("--cameras", opts->cameras, "Only these cameras, comma-separated (orbit, 100km, 10km, 1km, 2m, path@7s, path@12s)");
+  cmd->add_option("--cameras", opts->cameras,
+                  "Only these cameras, comma-separated (orbit, 100km, 10km, 1km, 2m, path@7s, path@12s)");
   cmd->add_option("--configs", opts->configs, "Run only the first N configurations (0 = all)");
-  cmd->add_option("--path", opts->path, "Camera path whose t = 7 s and 12 s views join the standard cameras (full sweep)")
+  cmd->add_option("--path", opts->path,
+                  "Camera path whose t = 7 s and 12 s views join the standard cameras (full sweep)")
       ->capture_default_str();
   addDeviceFlags(*cmd, opts->device);
   cmd->callback([opts, &run] { run = [opts] { return runTrade(*opts); }; });

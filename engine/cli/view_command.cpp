@@ -1,14 +1,14 @@
 // globe view: the windowed viewer (GLFW + Vulkan, Dear ImGui overlay). Scriptable for tests:
 // --frames, --script and --screenshot make a run deterministic and checkable under Xvfb.
 #include "commands.h"
-#include "engine/device.h"
-#include "engine/quality.h"
-#include "engine/viewer.h"
-#include "engine/window.h"
+#include "engine/render/quality.h"
+#include "engine/viewer/viewer.h"
+#include "engine/viewer/window.h"
+#include "engine/vk/device.h"
 #include "options.h"
-#include "planet/atomic_file.h"
-#include "planet/camera.h"
-#include "planet/planet_file.h"
+#include "planet/camera/camera.h"
+#include "planet/core/atomic_file.h"
+#include "planet/elevation/planet_file.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -160,8 +160,10 @@ void addViewCommand(CLI::App& app, Runner& run) {
   cmd->add_option("--mode", opts->mode, "terrain (the planet) or sphere (its reference sphere, analytic)")
       ->check(CLI::IsMember({"terrain", "sphere"}))
       ->capture_default_str();
-  cmd->add_option("--grid", opts->gridCells, "Grid cells per node side (power of two, 16..256; default: the quality preset's)");
-  cmd->add_option("--quality", opts->quality, "fast, balanced or exact (docs/tradeoffs.md; default: the planet's default_quality)");
+  cmd->add_option("--grid", opts->gridCells,
+                  "Grid cells per node side (power of two, 16..256; default: the quality preset's)");
+  cmd->add_option("--quality", opts->quality,
+                  "fast, balanced or exact (docs/tradeoffs.md; default: the planet's default_quality)");
   cmd->add_option("--record-dir", opts->recordDir,
                   "Directory where R (start/stop recording) writes globe-path-YYYYmmdd-HHMMSS.path")
       ->capture_default_str();

@@ -4,14 +4,14 @@
 // positions relative to the node centre, quantised, as floats, plus the double positions in a
 // scratch buffer; pass 2 derives normals from those double positions by central differences; a
 // shared-memory reduction gives the node's min/max vertex radius. Mirrors
-// planet/payload_reference.cpp operation for operation (the double kernel).
+// planet/streaming/payload_reference.cpp operation for operation (the double kernel).
 #include "payload_layout.h"
 #include "elevation_params.h"
 #include "face_mapping.glsl"
 
 layout(local_size_x = GLOBE_PAYLOAD_WORKGROUP) in;
 
-// A uniform block: every invocation reads all of it (see engine/compute_pipeline.h).
+// A uniform block: every invocation reads all of it (see engine/vk/compute_pipeline.h).
 layout(std140, binding = 0) uniform Elevation { ElevationParams elevation; };
 layout(std430, binding = 1) readonly buffer Faces { FaceCorners faces[30]; };
 layout(std430, binding = 2) readonly buffer Jobs { PayloadJob jobs[]; };

@@ -43,7 +43,8 @@ struct uvec4_ {
 // Samples per side including the ring.
 #define GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells) ((cells) + 3u)
 // vec4 entries in one slot: positions then normals.
-#define GLOBE_PAYLOAD_VEC4_PER_SLOT(cells) (2u * GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells) * GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells))
+#define GLOBE_PAYLOAD_VEC4_PER_SLOT(cells) \
+  (2u * GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells) * GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells))
 // Most jobs one generation dispatch takes.
 #define GLOBE_PAYLOAD_MAX_BATCH 64u
 // Threads per generation workgroup (one workgroup per node).
@@ -51,13 +52,13 @@ struct uvec4_ {
 
 // One node to generate (std430, 96 bytes).
 struct PayloadJob {
-  GLOBE_DVEC4 centre;      //  0: xyz node centre, planet-fixed metres, multiple of w; w = quantum (m)
-  GLOBE_DVEC4 uv;          // 32: x = uMin, y = vMin, z = node size in face (u, v) units, w = 0
-  uint face;               // 64: 0..29
-  uint slot;               // 68: payload slot to fill
-  uint level;              // 72: quadtree level
-  uint pad0;               // 76
-  GLOBE_UVEC4 neighbour;   // 80: across face edge e: neighbour face | (its edge << 8)
+  GLOBE_DVEC4 centre;     //  0: xyz node centre, planet-fixed metres, multiple of w; w = quantum (m)
+  GLOBE_DVEC4 uv;         // 32: x = uMin, y = vMin, z = node size in face (u, v) units, w = 0
+  uint face;              // 64: 0..29
+  uint slot;              // 68: payload slot to fill
+  uint level;             // 72: quadtree level
+  uint pad0;              // 76
+  GLOBE_UVEC4 neighbour;  // 80: across face edge e: neighbour face | (its edge << 8)
 };
 
 // What a job reports back (std430, 16 bytes): the min/max radius (metres from the planet centre)

@@ -1,4 +1,4 @@
-// Terrain colours: the planet's colour ramp (a mirror of globe::rampColour, planet/colour_ramp.cpp,
+// Terrain colours: the planet's colour ramp (a mirror of globe::rampColour, planet/elevation/colour_ramp.cpp,
 // see shaders/include/colour_ramp.h for the formula) and the debug colours per level.
 #ifndef GLOBE_TERRAIN_SHADING_GLSL
 #define GLOBE_TERRAIN_SHADING_GLSL

@@ -1,5 +1,5 @@
 // The terrain renderer's vertex computation, shared by shaders/terrain.vert and the test kernel
-// shaders/test_terrain_vertex.comp (which reads back exactly what the vertex shader computes).
+// tests/shaders/test_terrain_vertex.comp (which reads back exactly what the vertex shader computes).
 // Requires: GL_GOOGLE_include_directive; the includer declares nothing at bindings 0 and 1.
 //
 // Grid: the drawn grid has n cells per side (N for full nodes, N / 2 for partial ones, which read
@@ -27,7 +27,7 @@
 #include "face_mapping.glsl"
 #endif
 
-// Bindings (engine/terrain_renderer.cpp): 0 the drawn nodes, 1 the payloads, 2 the frame constants —
+// Bindings (engine/render/terrain_renderer.cpp): 0 the drawn nodes, 1 the payloads, 2 the frame constants —
 // a uniform block, which every vertex reads (lavapipe fetches it once instead of per lane).
 layout(std430, set = 0, binding = 0) readonly buffer TerrainInstances { TerrainInstance instances[]; };
 layout(std430, set = 0, binding = 1) readonly buffer PayloadBuffer { vec4 payload[]; };

@@ -12,8 +12,8 @@
 //   viewer_screenshot_check pose PATHFILE   prints the last keyframe as LAT,LON,H,HEADING,PITCH,ROLL
 //                                           (for globe render --at), after parsing the whole file
 // Prints what it measured; exits 0 when the check passes, 1 when it fails, 2 on bad arguments.
-#include "engine/image_io.h"
-#include "planet/camera_path_file.h"
+#include "engine/io/image_io.h"
+#include "planet/camera/camera_path_file.h"
 
 #include <cmath>
 #include <cstdio>
@@ -56,8 +56,8 @@ int coverage(int argc, char** argv) {
     if (p[0] > 0.25f && p[0] > p[2] + 0.15f) ++grid;
   }
   double planetShare = double(planet) / double(n), gridShare = double(grid) / double(n);
-  std::printf("%s: %ux%u, planet %.1f%% (%s), grid %.2f%%\n", argv[2], image->width, image->height,
-              planetShare * 100, depth ? "finite depth" : "not black", gridShare * 100);
+  std::printf("%s: %ux%u, planet %.1f%% (%s), grid %.2f%%\n", argv[2], image->width, image->height, planetShare * 100,
+              depth ? "finite depth" : "not black", gridShare * 100);
   bool ok = true;
   if (planetShare < minPlanet || planetShare > maxPlanet) {
     std::fprintf(stderr, "FAIL: planet covers %.1f%% of %s, expected [%.1f%%, %.1f%%]\n", planetShare * 100, argv[2],

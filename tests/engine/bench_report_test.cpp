@@ -1,9 +1,9 @@
 // The benchmark report writer: files, formats, statistics, well-formed markup, determinism and
 // errors. No GPU.
-#include "engine/bench_report.h"
-#include "engine/bench_metrics.h"
-#include "engine/image_io.h"
-#include "engine/markup_escape.h"
+#include "engine/report/bench_report.h"
+#include "engine/io/image_io.h"
+#include "engine/report/bench_metrics.h"
+#include "engine/report/markup_escape.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

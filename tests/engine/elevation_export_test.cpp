@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <string>
 
-#include "engine/elevation_exr.h"
-#include "planet/planet_file.h"
-#include "planet/sphere_sampling.h"
+#include "engine/io/elevation_exr.h"
+#include "planet/elevation/planet_file.h"
+#include "planet/elevation/sphere_sampling.h"
 
 namespace globe {
 namespace {

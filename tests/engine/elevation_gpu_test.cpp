@@ -1,8 +1,8 @@
 // The compute shader's double elevation must match the CPU reference (<= 1e-6 m).
-#include "engine/elevation_sampler.h"
-#include "gpu_test.h"
-#include "planet/camera.h"
-#include "planet/planet_file.h"
+#include "engine/generation/elevation_sampler.h"
+#include "planet/camera/camera.h"
+#include "planet/elevation/planet_file.h"
+#include "tests/support/gpu_test.h"
 
 #include <cmath>
 #include <random>

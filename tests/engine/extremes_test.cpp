@@ -13,21 +13,20 @@
 //   each radius x 6 heights (1 mm, 1 m, 1 km, 1e6, 1e9, 1e11 m) x 2 positions (a face seam and
 //   vertex 8 on ±180°), then each radius x 36 positions (32 vertices, 2 seams, lon +180 and -180)
 //   at 1 m; jitter at 1 mm and 1 m over a seam.
-#include "engine/compute_pipeline.h"
-#include "engine/headless_renderer.h"
-#include "engine/offscreen_target.h"
-#include "engine/render_output.h"
-#include "engine/terrain.h"
-#include "gpu_test.h"
-#include "planet/face_mapping.h"
-#include "planet/lod_ranges.h"
-#include "planet/node_bounds.h"
-#include "planet/payload_reference.h"
+#include "engine/render/headless_renderer.h"
+#include "engine/render/render_output.h"
+#include "engine/render/terrain.h"
+#include "engine/vk/compute_pipeline.h"
+#include "engine/vk/offscreen_target.h"
+#include "planet/elevation/planet_file.h"
+#include "planet/geometry/face_mapping.h"
+#include "planet/geometry/node_bounds.h"
+#include "planet/geometry/triacontahedron.h"
+#include "planet/lod/lod_ranges.h"
+#include "planet/streaming/payload_reference.h"
 #include "shaders/include/payload_layout.h"
 #include "shaders/include/terrain_layout.h"
-#include "planet/planet_file.h"
-#include "planet/triacontahedron.h"
-#include "shaders/include/terrain_layout.h"
+#include "tests/support/gpu_test.h"
 
 #include <glm/geometric.hpp>
 
@@ -100,15 +99,15 @@ std::vector<Position> allPositions() {
 // Worst values over every frame of a test (printed, and quoted in docs/tradeoffs.md).
 struct Worst {
   int frames = 0;
-  long nonFinite = 0;       // NaN/Inf in colour, depth, selection, payloads, instances
-  long cracks = 0;          // background pixels inside the lowest drawn surface's silhouette
-  long depthOrder = 0;      // depths outside [outer entry, inner hit] along their ray
-  double elevation_m = 0;   // max |payload w - CPU elevation|
-  double elevation_ulp = 0; // max |payload w - float(CPU elevation)| in float ulps of the value
-  double position_m = 0;    // max |centre + payload xyz - CPU surface point| (quantum included)
-  double jitter_px = 0;     // max GPU vs double projection error (1920-px view)
-  long samples = 0;         // payload samples compared
-  long projected = 0;       // vertices compared for jitter
+  long nonFinite = 0;        // NaN/Inf in colour, depth, selection, payloads, instances
+  long cracks = 0;           // background pixels inside the lowest drawn surface's silhouette
+  long depthOrder = 0;       // depths outside [outer entry, inner hit] along their ray
+  double elevation_m = 0;    // max |payload w - CPU elevation|
+  double elevation_ulp = 0;  // max |payload w - float(CPU elevation)| in float ulps of the value
+  double position_m = 0;     // max |centre + payload xyz - CPU surface point| (quantum included)
+  double jitter_px = 0;      // max GPU vs double projection error (1920-px view)
+  long samples = 0;          // payload samples compared
+  long projected = 0;        // vertices compared for jitter
 };
 
 class ExtremesTest : public GpuTest {
@@ -186,7 +185,8 @@ class ExtremesTest : public GpuTest {
     for (const SelectedNode& n : selection.nodes) {
       const int drawn = n.id.level - (n.partial ? 1 : 0);
       if (drawn == 0) {
-        selectionBad += n.morph.start_m == std::numeric_limits<double>::infinity() && n.morph.end_m == n.morph.start_m ? 0 : 1;
+        selectionBad +=
+            n.morph.start_m == std::numeric_limits<double>::infinity() && n.morph.end_m == n.morph.start_m ? 0 : 1;
       } else {
         selectionBad += std::isfinite(n.morph.start_m) && std::isfinite(n.morph.end_m) && n.morph.start_m >= 0.0 &&
                                 n.morph.start_m <= n.morph.end_m
@@ -206,8 +206,9 @@ class ExtremesTest : public GpuTest {
       slots.push_back(*slot);
       // Every drawn triangle (morphed to the parent's cells, skirts aside) lies above the sphere of
       // the node's lowest radius times the cosine of twice a drawn cell's diagonal angle.
-      const double diagonal = std::max(angleBetween(nodeCornerDirection(mapping, n.id, 0), nodeCornerDirection(mapping, n.id, 2)),
-                                       angleBetween(nodeCornerDirection(mapping, n.id, 1), nodeCornerDirection(mapping, n.id, 3)));
+      const double diagonal =
+          std::max(angleBetween(nodeCornerDirection(mapping, n.id, 0), nodeCornerDirection(mapping, n.id, 2)),
+                   angleBetween(nodeCornerDirection(mapping, n.id, 1), nodeCornerDirection(mapping, n.id, 3)));
       const double angle = 2.0 * 1.25 * diagonal / double(n.partial ? kCells / 2 : kCells);
       inner = std::min(inner, range->min_m * std::cos(angle));
       outer = std::max(outer, range->max_m);
@@ -236,10 +237,12 @@ class ExtremesTest : public GpuTest {
           const double de = std::abs(double(p.w) - e);
           worst.elevation_m = std::max(worst.elevation_m, de);
           const float ef = float(e);
-          const double ulp = double(std::nextafter(std::abs(ef), std::numeric_limits<float>::infinity()) - std::abs(ef));
+          const double ulp =
+              double(std::nextafter(std::abs(ef), std::numeric_limits<float>::infinity()) - std::abs(ef));
           worst.elevation_ulp = std::max(worst.elevation_ulp, std::abs(double(p.w) - double(ef)) / ulp);
           // float rounding of the value (half an ulp) plus the GPU/CPU agreement bound of elevation.h.
-          EXPECT_LE(de, 1e-6 + std::abs(e) * 0x1p-24) << "node " << int(id.face) << "/" << int(id.level) << " sample " << i << "," << j;
+          EXPECT_LE(de, 1e-6 + std::abs(e) * 0x1p-24)
+              << "node " << int(id.face) << "/" << int(id.level) << " sample " << i << "," << j;
           const glm::dvec3 world = glm::dvec3(job.centre.x, job.centre.y, job.centre.z) + glm::dvec3(glm::vec3(p));
           const double dp = glm::length(world - s.model.surfacePosition(dir));
           worst.position_m = std::max(worst.position_m, dp / job.centre.w);
@@ -293,9 +296,9 @@ class ExtremesTest : public GpuTest {
           if (ok && std::isfinite(outerEntry)) ok = d >= outerEntry - tol;
           if (ok && innerHit > 0.0) ok = d <= innerHit + tol;
           if (!ok && order++ == 0)
-            ADD_FAILURE() << "depth order at pixel " << x << "," << y << ": ray distance " << d << " m, outer sphere entry "
-                          << outerEntry << " m, inner sphere hit " << innerHit << " m (inner " << inner << ", outer "
-                          << outer << ")";
+            ADD_FAILURE() << "depth order at pixel " << x << "," << y << ": ray distance " << d
+                          << " m, outer sphere entry " << outerEntry << " m, inner sphere hit " << innerHit
+                          << " m (inner " << inner << ", outer " << outer << ")";
         }
       }
     }
@@ -303,9 +306,10 @@ class ExtremesTest : public GpuTest {
     EXPECT_EQ(order, 0) << "depth order";
     worst.cracks += cracks;
     worst.depthOrder += order;
-    std::printf("[ info ] %-28s nodes %4u (partial %3u) cracks %ld depth %ld non-finite %ld (%llu generated, %.0f ms)\n",
-                label.c_str(), stats.nodes_selected, stats.nodes_partial, cracks, order, nonFinite,
-                (unsigned long long)generated, ms);
+    std::printf(
+        "[ info ] %-28s nodes %4u (partial %3u) cracks %ld depth %ld non-finite %ld (%llu generated, %.0f ms)\n",
+        label.c_str(), stats.nodes_selected, stats.nodes_partial, cracks, order, nonFinite,
+        (unsigned long long)generated, ms);
   }
 
   // Vertex jitter: GPU projection (the vertex shader's code, test_terrain_vertex.comp) of the finest
@@ -330,7 +334,8 @@ class ExtremesTest : public GpuTest {
     const uint32_t count = (kCells + 1) * (kCells + 1);
     vk::Buffer out(device(), count * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::HostVisible,
                    "extremes vertex readback");
-    vk::ComputePipeline kernel(device(), "test_terrain_vertex.comp", 4, sizeof(Push), /*uniformMask=*/1u << 2);
+    vk::ComputePipeline kernel(device(), GLOBE_TEST_SHADER_DIR "/test_terrain_vertex.comp", 4, sizeof(Push),
+                               /*uniformMask=*/1u << 2);
     vk::OffscreenTarget target(device(), {kWidth, kHeight});
     const glm::dvec3 east = glm::normalize(glm::cross(glm::dvec3(0, 0, 1), direction) + glm::dvec3(1e-9, 0, 0));
     const double scale = kJitterWidth_px * 0.5, scaleY = kJitterWidth_px / start.aspect * 0.5;
@@ -406,11 +411,20 @@ class ExtremesTest : public GpuTest {
           const glm::dvec3 rel = (centre + glm::dvec3(glm::vec3(p))) - camera.position_m;
           // Unmorphed vertices only (even-even ones never move; others only before the band).
           const bool even = (i % 2 == 0) && (j % 2 == 0);
-          if (!even && !(glm::length(rel) < node.morph.start_m * 0.99)) { ++dbgMorph; continue; }
+          if (!even && !(glm::length(rel) < node.morph.start_m * 0.99)) {
+            ++dbgMorph;
+            continue;
+          }
           const glm::dvec4 ref = clipFromCamera * glm::dvec4(rel, 1.0);
-          if (ref.w < camera.near_m) { ++dbgBehind; continue; }
+          if (ref.w < camera.near_m) {
+            ++dbgBehind;
+            continue;
+          }
           const double rx = ref.x / ref.w, ry = ref.y / ref.w;
-          if (std::abs(rx) > 1.0 || std::abs(ry) > 1.0) { ++dbgOff; continue; }
+          if (std::abs(rx) > 1.0 || std::abs(ry) > 1.0) {
+            ++dbgOff;
+            continue;
+          }
           const glm::vec4 gpu = clip[j * (kCells + 1) + i];
           ASSERT_GT(gpu.w, 0.0f);
           const double dx = (double(gpu.x) / gpu.w - rx) * scale, dy = (double(gpu.y) / gpu.w - ry) * scaleY;
@@ -422,8 +436,8 @@ class ExtremesTest : public GpuTest {
       }
     }
     worst.projected += compared;
-    EXPECT_GT(compared, 20) << "the nearest node should be on screen; " << dbgBehind << " behind, " << dbgOff << " off, "
-                            << dbgMorph << " morphing, near " << start.near_m;
+    EXPECT_GT(compared, 20) << "the nearest node should be on screen; " << dbgBehind << " behind, " << dbgOff
+                            << " off, " << dbgMorph << " morphing, near " << start.near_m;
   }
 
   void runPlanet(const std::string& name) {
@@ -443,18 +457,18 @@ class ExtremesTest : public GpuTest {
       checkFrame(s, cameraAt(s, p.direction, 1.0, true), name + " " + p.name + " 1 m down", worst);
     }
     for (double h : {1e-3, 1.0}) checkJitter(s, seam.direction, h, worst);
-    std::printf("[ info ] %s: %d frames, non-finite %ld, cracks %ld, depth order %ld, max |gpu-cpu| elevation %.3g m "
-                "= %.1f float ulp of the value (%ld samples), max position error %.3f quanta, max jitter %.2e px at "
-                "1920 px (%ld vertices)\n",
-                name.c_str(), worst.frames, worst.nonFinite, worst.cracks, worst.depthOrder, worst.elevation_m,
-                worst.elevation_ulp, worst.samples, worst.position_m, worst.jitter_px, worst.projected);
+    std::printf(
+        "[ info ] %s: %d frames, non-finite %ld, cracks %ld, depth order %ld, max |gpu-cpu| elevation %.3g m "
+        "= %.1f float ulp of the value (%ld samples), max position error %.3f quanta, max jitter %.2e px at "
+        "1920 px (%ld vertices)\n",
+        name.c_str(), worst.frames, worst.nonFinite, worst.cracks, worst.depthOrder, worst.elevation_m,
+        worst.elevation_ulp, worst.samples, worst.position_m, worst.jitter_px, worst.projected);
   }
 };
 
 TEST_F(ExtremesTest, Asteroid1km) { runPlanet("asteroid"); }
 TEST_F(ExtremesTest, Earthlike6371km) { runPlanet("earthlike"); }
 TEST_F(ExtremesTest, GasGiantCore7e7m) { runPlanet("gasgiant-core"); }
-
 
 // Float budget of payload positions (payload_layout.h): relative to their node centre and quantised
 // to q(level) = 2^(ceil(log2 width) - 18), they are exact floats while |xyz| < 2^24 q, i.e. 64 node
@@ -483,10 +497,11 @@ TEST_F(ExtremesTest, PayloadPositionsFitFloatAtEveryRadius) {
       }
       const float lf = float(largest);
       const double ulp = double(std::nextafter(lf, std::numeric_limits<float>::infinity()) - lf);
-      std::printf("[ info ] %-13s R %.0f m level %2d: width %.4g m, quantum %.4g m, max |xyz| %.4g m = %.3g quanta "
-                  "(exact below 2^24 = 1.68e7), float step there %.3g m; centre double step %.3g m\n",
-                  name, radius, level, nominalNodeWidth(level, radius), q, largest, largest / q, ulp,
-                  std::nextafter(radius, 2.0 * radius) - radius);
+      std::printf(
+          "[ info ] %-13s R %.0f m level %2d: width %.4g m, quantum %.4g m, max |xyz| %.4g m = %.3g quanta "
+          "(exact below 2^24 = 1.68e7), float step there %.3g m; centre double step %.3g m\n",
+          name, radius, level, nominalNodeWidth(level, radius), q, largest, largest / q, ulp,
+          std::nextafter(radius, 2.0 * radius) - radius);
       EXPECT_EQ(offGrid, 0) << name << " level " << level;
       EXPECT_LT(largest / q, 0x1p24) << name << " level " << level << ": positions would round";
       EXPECT_LE(ulp, q) << name << " level " << level;
@@ -526,9 +541,10 @@ TEST_F(ExtremesTest, CameraHeightIsAboveTheDrawnMesh) {
       worstAbove = std::max(worstAbove, mesh - ground);
       above1mm += mesh - ground > 1e-3 ? 1 : 0;
     }
-    std::printf("[ info ] %-13s drawn mesh (depth 20, grid 16) above the true ground by up to %.3g m; "
-                "more than 1 mm in %d of 200 directions\n",
-                name, worstAbove, above1mm);
+    std::printf(
+        "[ info ] %-13s drawn mesh (depth 20, grid 16) above the true ground by up to %.3g m; "
+        "more than 1 mm in %d of 200 directions\n",
+        name, worstAbove, above1mm);
   }
 }
 
@@ -548,8 +564,8 @@ TEST_F(ExtremesTest, FullPoolStillConverges) {
   for (int v : {0, 1, 2}) {
     const glm::dvec3 d = positions[size_t(v)].direction;
     const glm::dvec2 ll = latLonFromPosition(d);
-    const Camera camera = cameraFromPose({ll.x, ll.y, 1.0, 30.0, -90.0, 0.0}, (*terrain)->cameraGroundRadius(d),
-                                         model.radius_m(), 1.5);
+    const Camera camera =
+        cameraFromPose({ll.x, ll.y, 1.0, 30.0, -90.0, 0.0}, (*terrain)->cameraGroundRadius(d), model.radius_m(), 1.5);
     int rounds = 0;
     for (; rounds < 5000; ++rounds) {
       ++frame;
@@ -580,8 +596,8 @@ TEST_F(ExtremesTest, SubPixelPlanetAt1e11mStaysFinite) {
   HeadlessRenderer renderer(device(), {33, 33});
   for (double h : {1e9, 1e10, 1e11, 1e12}) {
     const glm::dvec3 d = directionFromLatLon(10.0, 20.0);
-    const Camera camera = cameraFromPose({10.0, 20.0, h, 0.0, -90.0, 0.0}, (*terrain)->cameraGroundRadius(d),
-                                         model.radius_m(), 1.0);
+    const Camera camera =
+        cameraFromPose({10.0, 20.0, h, 0.0, -90.0, 0.0}, (*terrain)->cameraGroundRadius(d), model.radius_m(), 1.0);
     renderer.renderFrame(**terrain, camera, true);
     const vk::ReadbackImage image = renderer.readback();
     long bad = 0;

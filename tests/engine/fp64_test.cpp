@@ -1,6 +1,6 @@
 // The device computes in IEEE double: generation depends on it.
-#include "engine/compute_pipeline.h"
-#include "gpu_test.h"
+#include "engine/vk/compute_pipeline.h"
+#include "tests/support/gpu_test.h"
 
 #include <cmath>
 #include <cstring>
@@ -49,7 +49,7 @@ TEST_F(Fp64Test, ArithmeticMatchesCpuDouble) {
     operands[2 * i] = table[i].first;
     operands[2 * i + 1] = table[i].second;
   }
-  vk::ComputePipeline pipeline(device(), "test_fp64_ops.comp", 2, sizeof(uint32_t));
+  vk::ComputePipeline pipeline(device(), GLOBE_TEST_SHADER_DIR "/test_fp64_ops.comp", 2, sizeof(uint32_t));
   device().submitAndWait([&](VkCommandBuffer cmd) {
     pipeline.bind(cmd, {in.descriptor(), out.descriptor()}, &n, sizeof(n));
     vkCmdDispatch(cmd, (n + 63) / 64, 1, 1);

@@ -1,9 +1,9 @@
 // No pops: moving the camera by 1 mm changes the rendered depth by about 1 mm, everywhere but at a
 // few occlusion edges — no node switches level or snaps without morphing.
-#include "engine/headless_renderer.h"
-#include "engine/render_output.h"
-#include "gpu_test.h"
-#include "planet/planet_file.h"
+#include "engine/render/headless_renderer.h"
+#include "engine/render/render_output.h"
+#include "planet/elevation/planet_file.h"
+#include "tests/support/gpu_test.h"
 
 #include <algorithm>
 #include <cmath>

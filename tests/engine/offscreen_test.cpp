@@ -1,8 +1,8 @@
 // Offscreen drawing, readback and the image files written from it.
-#include "engine/graphics_pipeline.h"
-#include "engine/image_io.h"
-#include "engine/offscreen_target.h"
-#include "gpu_test.h"
+#include "engine/io/image_io.h"
+#include "engine/vk/graphics_pipeline.h"
+#include "engine/vk/offscreen_target.h"
+#include "tests/support/gpu_test.h"
 
 #include <filesystem>
 
@@ -20,8 +20,8 @@ class OffscreenTest : public GpuTest {
   vk::ReadbackImage drawTriangle(uint32_t w, uint32_t h) {
     vk::OffscreenTarget target(device(), {w, h});
     vk::GraphicsPipelineDesc desc;
-    desc.vertexShader = "test_triangle.vert";
-    desc.fragmentShader = "test_triangle.frag";
+    desc.vertexShader = GLOBE_TEST_SHADER_DIR "/test_triangle.vert";
+    desc.fragmentShader = GLOBE_TEST_SHADER_DIR "/test_triangle.frag";
     desc.pushConstantBytes = sizeof(TrianglePush);
     vk::GraphicsPipeline pipeline(device(), desc);
     TrianglePush push = {{{-1, -1, 0.25f, 1}, {-1, 3, 0.25f, 1}, {0, -1, 0.25f, 1}}, {0.25f, 0.5f, 0.75f, 1}};
@@ -83,7 +83,7 @@ TEST_F(OffscreenTest, PngAndExrRoundTrip) {
   ASSERT_EQ(exr->width, image.width);
   ASSERT_EQ(exr->z.size(), image.z.size());
   for (size_t i = 0; i < image.z.size(); ++i) {
-    EXPECT_EQ(exr->z[i], image.z[i]);  // float channel: exact
+    EXPECT_EQ(exr->z[i], image.z[i]);                                                    // float channel: exact
     for (int c = 0; c < 3; ++c) EXPECT_EQ(exr->rgba[i * 4 + c], image.rgba[i * 4 + c]);  // came from half
   }
 

@@ -1,12 +1,12 @@
 // GPU payload generation against the CPU reference, seam agreement, and a flight through the pool.
-#include "engine/payload_generator.h"
-#include "gpu_test.h"
-#include "planet/camera.h"
-#include "planet/payload_pool.h"
-#include "planet/payload_reference.h"
-#include "planet/planet_file.h"
-#include "planet/selection.h"
-#include "planet/triacontahedron.h"
+#include "engine/generation/payload_generator.h"
+#include "planet/camera/camera.h"
+#include "planet/elevation/planet_file.h"
+#include "planet/geometry/triacontahedron.h"
+#include "planet/lod/selection.h"
+#include "planet/streaming/payload_pool.h"
+#include "planet/streaming/payload_reference.h"
+#include "tests/support/gpu_test.h"
 
 #include <cmath>
 #include <cstring>
@@ -19,7 +19,6 @@ constexpr uint32_t kCells = 16;
 
 class PayloadGeneratorTest : public GpuTest {
  protected:
-
   // Generates `nodes` into slots 0..n-1 and reads the slots back.
   std::vector<glm::vec4> generate(GpuPayloadGenerator& gen, const std::vector<NodeId>& nodes,
                                   std::vector<GenerationResult>& results) {

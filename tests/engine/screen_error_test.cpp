@@ -1,11 +1,11 @@
-// The screen-space error metric (engine/screen_error.h) and its ground truth (planet/surface_ray.h):
+// The screen-space error metric (engine/render/screen_error.h) and its ground truth (planet/analysis/surface_ray.h):
 // the ray caster against analytic ray-sphere intersections, the metric against injected errors, and
 // a rendered frame of a sphere-shaped planet against its exact surface.
-#include "engine/headless_renderer.h"
-#include "engine/screen_error.h"
-#include "gpu_test.h"
-#include "planet/planet_file.h"
-#include "planet/surface_ray.h"
+#include "engine/render/screen_error.h"
+#include "engine/render/headless_renderer.h"
+#include "planet/analysis/surface_ray.h"
+#include "planet/elevation/planet_file.h"
+#include "tests/support/gpu_test.h"
 
 #include <gtest/gtest.h>
 
@@ -57,7 +57,8 @@ TEST(SurfaceRay, MatchesRaySphereToOneMillimetre) {
         double exact = raySphere(camera.position_m, dir, model.radius_m());
         const SurfaceRayHit& hit = truth.at(c, r);
         ASSERT_NE(hit.kind, SurfaceRayHit::Kind::Unresolved);
-        ASSERT_EQ(hit.kind == SurfaceRayHit::Kind::Hit, std::isfinite(exact)) << height << " m, pixel " << c << "," << r;
+        ASSERT_EQ(hit.kind == SurfaceRayHit::Kind::Hit, std::isfinite(exact))
+            << height << " m, pixel " << c << "," << r;
         if (!std::isfinite(exact)) {
           ++sky;
           continue;

@@ -1,18 +1,18 @@
 // The terrain renderer on lavapipe: no cracks (background inside the planet's silhouette) at face
 // seams, polyhedron vertices, poles and ±180° from 1 cm to orbit with morphing active; depth order at
 // 1 m and 100 km; vertex jitter at 1 cm above an Earth-sized planet; the debug views and statistics.
-// Payloads come from the CPU reference (planet/payload_reference.h), selections from LodSelector.
-#include "engine/compute_pipeline.h"
-#include "engine/image_io.h"
-#include "engine/offscreen_target.h"
-#include "engine/render_output.h"
-#include "engine/terrain_renderer.h"
-#include "gpu_test.h"
-#include "planet/face_mapping.h"
-#include "planet/floating_origin.h"
-#include "planet/payload_reference.h"
-#include "planet/selection.h"
-#include "planet/triacontahedron.h"
+// Payloads come from the CPU reference (planet/streaming/payload_reference.h), selections from LodSelector.
+#include "engine/io/image_io.h"
+#include "engine/render/render_output.h"
+#include "engine/render/terrain_renderer.h"
+#include "engine/vk/compute_pipeline.h"
+#include "engine/vk/offscreen_target.h"
+#include "planet/camera/floating_origin.h"
+#include "planet/geometry/face_mapping.h"
+#include "planet/geometry/triacontahedron.h"
+#include "planet/lod/selection.h"
+#include "planet/streaming/payload_reference.h"
+#include "tests/support/gpu_test.h"
 
 #include <glm/geometric.hpp>
 
@@ -79,8 +79,9 @@ class CpuPayloads final : public NodeResidency {
     gpu::PayloadJob job = makePayloadJob(id, e.slot, model_);
     e.centre_m = {job.centre.x, job.centre.y, job.centre.z};
     auto all = buffer_.as<glm::vec4>();
-    e.vertices = fillPayloadReference(model_, job, kCells, all.subspan(size_t(e.slot) * GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells),
-                                                                        GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells)));
+    e.vertices = fillPayloadReference(
+        model_, job, kCells,
+        all.subspan(size_t(e.slot) * GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells), GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells)));
     e.padded = paddedRadiusRange(model_.params(), e.vertices, id.level, kCells);
     return entries_.emplace(id, e).first->second;
   }
@@ -96,7 +97,8 @@ class CpuPayloads final : public NodeResidency {
   const vk::Buffer& buffer() const { return buffer_; }
   PayloadPages pages() const { return PayloadPages::single(buffer_.handle(), buffer_.size(), capacity_); }
   std::span<glm::vec4> slot(uint32_t s) const {
-    return buffer_.as<glm::vec4>().subspan(size_t(s) * GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells), GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells));
+    return buffer_.as<glm::vec4>().subspan(size_t(s) * GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells),
+                                           GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells));
   }
 
  private:
@@ -174,8 +176,9 @@ class TerrainRenderTest : public GpuTest {
       f.nodes.push_back({s.id, e.slot, band, s.partial, e.centre_m});
       // Angular size of a drawn cell's diagonal, doubled for the morph to the parent's cells: every
       // drawn triangle lies within that angle of one of its vertices, so above r * cos(angle).
-      const double diagonal = std::max(angleBetween(nodeCornerDirection(mapping, s.id, 0), nodeCornerDirection(mapping, s.id, 2)),
-                                        angleBetween(nodeCornerDirection(mapping, s.id, 1), nodeCornerDirection(mapping, s.id, 3)));
+      const double diagonal =
+          std::max(angleBetween(nodeCornerDirection(mapping, s.id, 0), nodeCornerDirection(mapping, s.id, 2)),
+                   angleBetween(nodeCornerDirection(mapping, s.id, 1), nodeCornerDirection(mapping, s.id, 3)));
       const double angle = 2.0 * 1.25 * diagonal / double(s.partial ? kCells / 2 : kCells);
       inner = std::min(inner, e.vertices.min_m * std::cos(angle));
       // Morphing: the node's distance range (its bounding radius around the centre) meets its band.
@@ -275,9 +278,10 @@ TEST_F(TerrainRenderTest, NoCracksAtSeamsVerticesPolesAndAntimeridian) {
     double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     int inside = 0;
     int holes = countHoles(f, camera, &inside);
-    std::printf("[ info ] %-18s nodes %4u (partial %3u, morphing %3u) triangles %7llu, inside %5d px, holes %d (%.0f ms)\n",
-                c.name, f.stats.nodes, f.stats.partialNodes, f.morphing, (unsigned long long)f.stats.triangles, inside,
-                holes, ms);
+    std::printf(
+        "[ info ] %-18s nodes %4u (partial %3u, morphing %3u) triangles %7llu, inside %5d px, holes %d (%.0f ms)\n",
+        c.name, f.stats.nodes, f.stats.partialNodes, f.morphing, (unsigned long long)f.stats.triangles, inside, holes,
+        ms);
     EXPECT_EQ(holes, 0) << c.name;
     EXPECT_GT(inside, int(kWidth * kHeight / 10)) << c.name << ": the planet should fill part of the view";
     EXPECT_GT(f.stats.nodes, 0u);
@@ -380,14 +384,16 @@ TEST_F(TerrainRenderTest, NearerSurfaceWinsAt1mAnd100km) {
 // Runs the vertex shader's computation (test_terrain_vertex.comp) for one full node and returns
 // the clip positions of its grid vertices.
 std::vector<glm::vec4> gpuClipPositions(vk::Device& device, TerrainRenderer& renderer, const Camera& camera,
-                                        const glm::dvec3& origin_m, const DrawNode& node, const PayloadPages& payloads) {
+                                        const glm::dvec3& origin_m, const DrawNode& node,
+                                        const PayloadPages& payloads) {
   struct Push {
     uint32_t drawnCells, instance, vertexCount, pad0;
   };
   const uint32_t count = (kCells + 1) * (kCells + 1);
   vk::Buffer out(device, count * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::HostVisible,
                  "terrain vertex readback");
-  vk::ComputePipeline kernel(device, "test_terrain_vertex.comp", 4, sizeof(Push), /*uniformMask=*/1u << 2);
+  vk::ComputePipeline kernel(device, GLOBE_TEST_SHADER_DIR "/test_terrain_vertex.comp", 4, sizeof(Push),
+                             /*uniformMask=*/1u << 2);
   vk::OffscreenTarget target(device, {kWidth, kHeight});
   device.submitAndWait([&](VkCommandBuffer cmd) {
     target.begin(cmd, kBackground);
@@ -498,7 +504,8 @@ TEST_F(TerrainRenderTest, ShadedViewDebugViewsAndStats) {
   renderer.setStyle(lod);
   Frame coloured = render(renderer, payloads, selector, camera);
   save(coloured, "terrain_lod_colours");
-  EXPECT_NE(std::vector<float>(coloured.image.pixel(kWidth / 2, kHeight - 1), coloured.image.pixel(kWidth / 2, kHeight - 1) + 3),
+  EXPECT_NE(std::vector<float>(coloured.image.pixel(kWidth / 2, kHeight - 1),
+                               coloured.image.pixel(kWidth / 2, kHeight - 1) + 3),
             std::vector<float>(bottom, bottom + 3));
   if (renderer.wireframeSupported()) {
     renderer.setDebugView(TerrainDebugView::kWireframe);

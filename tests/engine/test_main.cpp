@@ -1,4 +1,4 @@
-#include "gpu_test.h"
+#include "tests/support/gpu_test.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // globe trade's report: the Pareto frontier, the aggregate row, and well-formed CSV / SVG.
-#include "engine/trade_report.h"
+#include "engine/report/trade_report.h"
 
 #include <gtest/gtest.h>
 

@@ -2,10 +2,10 @@
 // by globe trade) draws the same surface as the engine's stored positions: per pixel the depths
 // agree to a small fraction of the distance, and the coverage is the same (so it is crack-free
 // wherever the stored draw is, which terrain_render_test and extremes_test check).
-#include "engine/headless_renderer.h"
-#include "gpu_test.h"
-#include "planet/planet_file.h"
-#include "planet/triacontahedron.h"
+#include "engine/render/headless_renderer.h"
+#include "planet/elevation/planet_file.h"
+#include "planet/geometry/triacontahedron.h"
+#include "tests/support/gpu_test.h"
 
 #include <cmath>
 #include <cstdio>
@@ -32,7 +32,8 @@ TEST_F(VertexPositionsTest, ReprojectedDrawMatchesStoredPositions) {
   // A five-fold vertex seen from 10 m looking down (five faces meet in view), the standard 2 m and
   // 1 km cameras (morphing bands in view), and orbit.
   const glm::dvec3 vertex = Triacontahedron::get().vertexDirection(0);
-  const double vertexLat = std::asin(vertex.z) * 180.0 / M_PI, vertexLon = std::atan2(vertex.y, vertex.x) * 180.0 / M_PI;
+  const double vertexLat = std::asin(vertex.z) * 180.0 / M_PI,
+               vertexLon = std::atan2(vertex.y, vertex.x) * 180.0 / M_PI;
   struct Case {
     const char* name;
     GeodeticPose pose;
@@ -73,7 +74,7 @@ TEST_F(VertexPositionsTest, ReprojectedDrawMatchesStoredPositions) {
     std::printf("[ info ] %-24s %5d covered pixels, %d coverage mismatches, worst relative depth difference %.2e\n",
                 c.name, covered, coverageMismatch, worstRelative);
     EXPECT_GT(covered, int(w * h / 10));
-    EXPECT_LE(coverageMismatch, 2);     // a pixel centre grazing the horizon may tip either way
+    EXPECT_LE(coverageMismatch, 2);    // a pixel centre grazing the horizon may tip either way
     EXPECT_LT(worstRelative, 1.0e-3);  // float rounding of positions, at silhouettes one pixel's step
   }
 }

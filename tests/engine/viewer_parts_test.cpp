@@ -1,8 +1,8 @@
 // CPU parts of the windowed viewer: deferred release by frame, the input-script format and the
 // fly camera (altitude-scaled speed, never below the ground, stable at the poles).
-#include "engine/deferred_release_queue.h"
-#include "engine/fly_camera.h"
-#include "engine/input_script.h"
+#include "engine/viewer/fly_camera.h"
+#include "engine/viewer/input_script.h"
+#include "engine/vk/deferred_release_queue.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

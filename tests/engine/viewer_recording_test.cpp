@@ -1,11 +1,11 @@
 // CPU parts of the viewer's path recording and live reload: the recorder's keyframe spacing and
 // the round trip of a recorded camera through a path file (what `globe bench --path` replays), and
 // the planet file watcher's change detection.
-#include "engine/fly_camera.h"
-#include "engine/path_recorder.h"
-#include "engine/planet_file_watcher.h"
-#include "planet/camera_orientation.h"
-#include "planet/camera_path_file.h"
+#include "engine/viewer/fly_camera.h"
+#include "engine/viewer/path_recorder.h"
+#include "engine/viewer/planet_file_watcher.h"
+#include "planet/camera/camera_orientation.h"
+#include "planet/camera/camera_path_file.h"
 
 #include <gtest/gtest.h>
 
@@ -104,8 +104,8 @@ TEST(PlanetFileWatcher, ReportsEachChangeOnce) {
   using Clock = PlanetFileWatcher::Clock;
   PlanetFileWatcher w(file, std::chrono::milliseconds(100));
   Clock::time_point t = Clock::now() + std::chrono::seconds(1);
-  EXPECT_FALSE(w.changed(t));  // nothing changed since construction
-  std::ofstream(file) << "abc";  // size changes even if the mtime does not
+  EXPECT_FALSE(w.changed(t));                                  // nothing changed since construction
+  std::ofstream(file) << "abc";                                // size changes even if the mtime does not
   EXPECT_FALSE(w.changed(t + std::chrono::milliseconds(10)));  // not yet due
   EXPECT_TRUE(w.changed(t + std::chrono::milliseconds(200)));
   EXPECT_FALSE(w.changed(t + std::chrono::milliseconds(400)));  // reported once

@@ -1,4 +1,4 @@
-#include "engine/vk_check.h"
+#include "engine/vk/vk_check.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "planet/camera.h"
+#include "planet/camera/camera.h"
 
 #include <gtest/gtest.h>
 

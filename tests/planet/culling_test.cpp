@@ -5,9 +5,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "lod_test_util.h"
-#include "planet/frustum.h"
-#include "planet/horizon_cone.h"
+#include "planet/lod/frustum.h"
+#include "planet/lod/horizon_cone.h"
+#include "tests/support/lod_test_util.h"
 
 namespace globe {
 namespace {

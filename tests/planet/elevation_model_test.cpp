@@ -6,8 +6,8 @@
 #include <random>
 #include <vector>
 
-#include "planet/elevation.h"
-#include "planet/gradient_noise.h"
+#include "planet/elevation/elevation.h"
+#include "planet/elevation/gradient_noise.h"
 
 namespace globe {
 namespace {

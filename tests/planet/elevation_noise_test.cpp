@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <random>
 
-#include "planet/gradient_noise.h"
+#include "planet/elevation/gradient_noise.h"
 
 namespace globe {
 namespace {
@@ -38,8 +38,7 @@ TEST(NoiseHash, LatticePointHashGoldenValues) {
   // A change here changes every planet (and must be made in elevation.glsl too).
   EXPECT_EQ(latticePointHash(0, 0, 0, 0U), 0U);
   EXPECT_EQ(latticePointHash(1, 2, 3, 4U), 0xbd8bce9cU);
-  EXPECT_EQ(latticePointHash(1, 2, 3, 4U),
-            latticeCornerHash(latticeWordX(1), latticeWordY(2), latticeWordZ(3), 4U));
+  EXPECT_EQ(latticePointHash(1, 2, 3, 4U), latticeCornerHash(latticeWordX(1), latticeWordY(2), latticeWordZ(3), 4U));
 }
 
 // Chi-square of 16 gradient-index counts against the uniform distribution.

@@ -1,4 +1,4 @@
-#include "planet/error.h"
+#include "planet/core/error.h"
 
 #include <gtest/gtest.h>
 

@@ -1,11 +1,11 @@
-#include "planet/face_mapping.h"
+#include "planet/geometry/face_mapping.h"
 
 #include <gtest/gtest.h>
 
 #include <cstring>
 #include <random>
 
-#include "lod_test_util.h"
+#include "tests/support/lod_test_util.h"
 
 namespace globe {
 namespace {

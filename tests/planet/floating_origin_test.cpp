@@ -1,6 +1,6 @@
 // FloatingOrigin: re-basing threshold, snapping to the level-0 quantum, exact float sums.
-#include "planet/floating_origin.h"
-#include "planet/payload_reference.h"
+#include "planet/camera/floating_origin.h"
+#include "planet/streaming/payload_reference.h"
 
 #include <gtest/gtest.h>
 

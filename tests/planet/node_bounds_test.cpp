@@ -1,11 +1,11 @@
-#include "planet/node_bounds.h"
+#include "planet/geometry/node_bounds.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <random>
 
-#include "lod_test_util.h"
+#include "tests/support/lod_test_util.h"
 
 namespace globe {
 namespace {

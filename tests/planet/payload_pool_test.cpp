@@ -1,9 +1,9 @@
 // The node/payload pool over long seeded random flights against the fake generator.
-#include "planet/camera.h"
-#include "planet/face_mapping.h"
-#include "planet/fake_payload_generator.h"
-#include "planet/payload_pool.h"
-#include "planet/selection.h"
+#include "planet/streaming/payload_pool.h"
+#include "planet/camera/camera.h"
+#include "planet/geometry/face_mapping.h"
+#include "planet/lod/selection.h"
+#include "tests/support/fake_payload_generator.h"
 
 #include <gtest/gtest.h>
 
@@ -90,7 +90,8 @@ TEST(PayloadPool, RejectsBadBudgets) {
   c.vramBudget_MiB = 8;  // 8 slots of 1 MiB
   auto p = PayloadPool::create(c, gen, kR);
   ASSERT_FALSE(p.ok());
-  EXPECT_EQ(p.error().format(), "vram_budget_mib: too small: 8 payload slots of 1048576 bytes fit, at least 34 are needed");
+  EXPECT_EQ(p.error().format(),
+            "vram_budget_mib: too small: 8 payload slots of 1048576 bytes fit, at least 34 are needed");
   c = {};
   c.dispatchBudget = 0;
   EXPECT_EQ(PayloadPool::create(c, gen, kR).error().format(), "dispatch_budget: must be >= 1");
@@ -154,11 +155,11 @@ TEST(PayloadPool, TenThousandFrameRandomFlight) {
   EXPECT_EQ(h.selection.stats.fallbacks, 0u) << "still not refined after " << frames << " frames";
   EXPECT_EQ(h.pool->stats().queueLength, 0u);
   EXPECT_GT(evicted, 1000u);
-  std::printf("[ info ] flight: %llu generations, %llu evictions, p50 %u, p99 %u frames request->resident; "
-              "converged in %d frames\n",
-              (unsigned long long)h.generator.generatedTotal(), (unsigned long long)evicted,
-              h.pool->latencyPercentile(0.5),
-              h.pool->latencyPercentile(0.99), frames);
+  std::printf(
+      "[ info ] flight: %llu generations, %llu evictions, p50 %u, p99 %u frames request->resident; "
+      "converged in %d frames\n",
+      (unsigned long long)h.generator.generatedTotal(), (unsigned long long)evicted, h.pool->latencyPercentile(0.5),
+      h.pool->latencyPercentile(0.99), frames);
 }
 
 TEST(PayloadPool, LatencyWithDefaultBudgetIsBounded) {
@@ -170,8 +171,10 @@ TEST(PayloadPool, LatencyWithDefaultBudgetIsBounded) {
     h.run(cameraFromPose({45, 7, alt, 30, -30, 0}, kR, kR, 16.0 / 9.0));
   }
   uint32_t p50 = h.pool->latencyPercentile(0.5), p99 = h.pool->latencyPercentile(0.99);
-  std::printf("[ info ] descent 100 km -> 100 m in 20 s: p50 %u, p99 %u frames from request to resident "
-              "(budget 8/frame, 32 in flight, fake generation 1-3 frames)\n", p50, p99);
+  std::printf(
+      "[ info ] descent 100 km -> 100 m in 20 s: p50 %u, p99 %u frames from request to resident "
+      "(budget 8/frame, 32 in flight, fake generation 1-3 frames)\n",
+      p50, p99);
   EXPECT_LE(p99, 60u);
 }
 
@@ -257,11 +260,12 @@ TurnResult turnAfterConverging(double ringRangeFactor) {
 
 TEST(PayloadPool, RingPrefetchMakesTurningCheap) {
   TurnResult off = turnAfterConverging(0.0), half = turnAfterConverging(0.5), full = turnAfterConverging(1.0);
-  std::printf("[ info ] 90 degree turn at 2 m, first frame levels too coarse (mean, max), frames to refine, "
-              "resident MiB before:\n"
-              "[ info ]   ring 0: %.2f, %d, %d, %.0f; ring 0.5: %.2f, %d, %d, %.0f; ring 1: %.2f, %d, %d, %.0f\n",
-              off.meanDeficit, off.maxDeficit, off.frames, off.residentMiB, half.meanDeficit, half.maxDeficit,
-              half.frames, half.residentMiB, full.meanDeficit, full.maxDeficit, full.frames, full.residentMiB);
+  std::printf(
+      "[ info ] 90 degree turn at 2 m, first frame levels too coarse (mean, max), frames to refine, "
+      "resident MiB before:\n"
+      "[ info ]   ring 0: %.2f, %d, %d, %.0f; ring 0.5: %.2f, %d, %d, %.0f; ring 1: %.2f, %d, %d, %.0f\n",
+      off.meanDeficit, off.maxDeficit, off.frames, off.residentMiB, half.meanDeficit, half.maxDeficit, half.frames,
+      half.residentMiB, full.meanDeficit, full.maxDeficit, full.frames, full.residentMiB);
   EXPECT_LT(half.meanDeficit, off.meanDeficit);
   EXPECT_LE(half.maxDeficit, 2);
   EXPECT_LT(half.frames, off.frames);
@@ -291,10 +295,11 @@ TEST(PayloadPool, PrefetchNeverEvictsWhatTheViewNeeds) {
   }
   EXPECT_EQ(h.generator.generatedTotal(), generated) << "prefetch keeps regenerating in a full pool";
   EXPECT_TRUE(h.pool->exhaustionWarning().empty()) << h.pool->exhaustionWarning();
-  std::printf("[ info ] %u-slot pool at 2 m (view alone: %u): converged in %d frames (alone: %llu generations), "
-              "%u queued prefetch requests wait\n",
-              config.maxSlots, plain.pool->stats().residentNodes, frames,
-              (unsigned long long)plain.generator.generatedTotal(), h.pool->stats().queueLength);
+  std::printf(
+      "[ info ] %u-slot pool at 2 m (view alone: %u): converged in %d frames (alone: %llu generations), "
+      "%u queued prefetch requests wait\n",
+      config.maxSlots, plain.pool->stats().residentNodes, frames, (unsigned long long)plain.generator.generatedTotal(),
+      h.pool->stats().queueLength);
 }
 
 TEST(PayloadPool, ResidentMemoryIsScaleIndependent) {
@@ -319,9 +324,10 @@ TEST(PayloadPool, ResidentMemoryIsScaleIndependent) {
     mib[k] = measure(radii[k], true);
     fixed[k] = measure(radii[k], false);  // for docs/streaming.md: Earth's -11/+9 km on every radius
   }
-  std::printf("[ info ] resident MiB at 2 m, elevation scaled with R: R = 637 km %.1f, 6371 km %.1f, 63710 km "
-              "%.1f; elevation fixed -11/+9 km: %.1f, %.1f, %.1f\n",
-              mib[0], mib[1], mib[2], fixed[0], fixed[1], fixed[2]);
+  std::printf(
+      "[ info ] resident MiB at 2 m, elevation scaled with R: R = 637 km %.1f, 6371 km %.1f, 63710 km "
+      "%.1f; elevation fixed -11/+9 km: %.1f, %.1f, %.1f\n",
+      mib[0], mib[1], mib[2], fixed[0], fixed[1], fixed[2]);
   double lo = std::min({mib[0], mib[1], mib[2]}), hi = std::max({mib[0], mib[1], mib[2]});
   EXPECT_LE(hi, 1.2 * lo);
 }

@@ -5,10 +5,10 @@
 #include <numbers>
 #include <string>
 
-#include "planet/colour_ramp.h"
-#include "planet/elevation.h"
-#include "planet/planet_file.h"
-#include "planet/planet_file_writer.h"
+#include "planet/elevation/colour_ramp.h"
+#include "planet/elevation/elevation.h"
+#include "planet/elevation/planet_file.h"
+#include "planet/elevation/planet_file_writer.h"
 
 namespace globe {
 namespace {

@@ -1,4 +1,4 @@
-#include "planet/selection.h"
+#include "planet/lod/selection.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "lod_test_util.h"
+#include "tests/support/lod_test_util.h"
 
 namespace globe {
 namespace {

@@ -9,8 +9,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "planet/planet_file.h"
-#include "planet/sphere_sampling.h"
+#include "planet/elevation/planet_file.h"
+#include "planet/elevation/sphere_sampling.h"
 
 namespace globe {
 namespace {

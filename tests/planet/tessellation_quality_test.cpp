@@ -1,11 +1,11 @@
-// Tessellation quality (planet/tessellation_quality.h, docs/tessellation.md): the metric's primitives,
+// Tessellation quality (planet/analysis/tessellation_quality.h, docs/tessellation.md): the metric's primitives,
 // the 4π tiling check for every mapping, the cube spheres against their analytic limits, the rhombus
 // mappings as a regression table, and the subdivision mapping's seam exactness and inverse.
-#include "planet/tessellation_quality.h"
+#include "planet/analysis/tessellation_quality.h"
 
 #include <gtest/gtest.h>
 
-#include "lod_test_util.h"
+#include "tests/support/lod_test_util.h"
 
 #include <cmath>
 #include <cstring>
@@ -14,8 +14,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "planet/subdivision_face_mapping.h"
-#include "planet/triacontahedron.h"
+#include "planet/analysis/subdivision_face_mapping.h"
+#include "planet/geometry/triacontahedron.h"
 
 namespace globe {
 namespace {
@@ -59,16 +59,18 @@ TEST(TessellationQuality, SmallTriangleAreaMatchesLHuilier) {
   };
   const double a = arc(q, r), b = arc(p, r), c = arc(p, q), s = 0.5 * (a + b + c);
   const double lHuilier =
-      4.0 * std::atan(std::sqrt(std::tan(s / 2) * std::tan((s - a) / 2) * std::tan((s - b) / 2) * std::tan((s - c) / 2)));
+      4.0 *
+      std::atan(std::sqrt(std::tan(s / 2) * std::tan((s - a) / 2) * std::tan((s - b) / 2) * std::tan((s - c) / 2)));
   EXPECT_NEAR(std::abs(sphericalTriangleArea_sr(p, q, r)), lHuilier, 1e-9 * lHuilier);
 }
 
 TEST(TessellationQuality, EveryMappingTilesTheSphere) {
-  for (const TessellationMetrics* m : {&rhombusMetrics(), &subdivisionMetrics(), &cubeMetrics(CubeSphereWarp::kGnomonic),
-                                        &cubeMetrics(CubeSphereWarp::kEquiAngular)}) {
+  for (const TessellationMetrics* m :
+       {&rhombusMetrics(), &subdivisionMetrics(), &cubeMetrics(CubeSphereWarp::kGnomonic),
+        &cubeMetrics(CubeSphereWarp::kEquiAngular)}) {
     EXPECT_NEAR(m->totalArea_sr, 4.0 * kPi, 1e-9) << m->faceCount << " faces";
     EXPECT_EQ(m->cellCount, static_cast<int64_t>(m->faceCount) * kCells * kCells);
-    EXPECT_GT(m->areaMin_sr, 0.0);  // no folded or degenerate cell
+    EXPECT_GT(m->areaMin_sr, 0.0);              // no folded or degenerate cell
     EXPECT_LT(m->maxExcessMismatch_sr, 1e-12);  // Girard agrees with Van Oosterom–Strackee
   }
 }
@@ -181,7 +183,7 @@ TEST(TessellationQuality, SubdivisionMappingLocateInvertsUnitPoint) {
     EXPECT_NEAR(back.v, v, 1e-9);
     // Non-dyadic points are continuous with the dyadic ones around them.
     EXPECT_LT(glm::length(p - m.unitPoint(face, std::ldexp(std::floor(std::ldexp(u, 30)), -30),
-                                           std::ldexp(std::floor(std::ldexp(v, 30)), -30))),
+                                          std::ldexp(std::floor(std::ldexp(v, 30)), -30))),
               1e-8);
   }
 }

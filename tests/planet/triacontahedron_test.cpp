@@ -1,4 +1,4 @@
-#include "planet/triacontahedron.h"
+#include "planet/geometry/triacontahedron.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <numbers>
 #include <set>
 
-#include "lod_test_util.h"
+#include "tests/support/lod_test_util.h"
 
 namespace globe {
 namespace {

@@ -1,0 +1,190 @@
+#include "engine/generation/payload_generator.h"
+
+#include "engine/vk/vk_check.h"
+#include "planet/geometry/face_mapping.h"
+#include "planet/streaming/payload_reference.h"
+
+#include <cassert>
+#include <cstring>
+#include <stdexcept>
+
+namespace globe {
+
+GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationModel& model, uint32_t cells,
+                                         uint32_t maxJobsPerSubmit, uint32_t maxSubmitsInFlight,
+                                         GenerationPrecision precision)
+    : device_(device),
+      model_(model),
+      cells_(cells),
+      maxJobs_(std::min<uint32_t>(maxJobsPerSubmit, GLOBE_PAYLOAD_MAX_BATCH)),
+      pipeline_(device,
+                precision == GenerationPrecision::kFloat ? "payload_generate_float.comp" : "payload_generate.comp", 6,
+                2 * sizeof(uint32_t), /*uniformMask=*/1u, elevationSpecialization(model.params())),
+      elevation_(device, sizeof(gpu::ElevationParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::HostVisible,
+                 "elevation params"),
+      faces_(device, 30 * sizeof(FaceCornersGpu), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::HostVisible,
+             "face corners") {
+  if (cells < 16 || cells > 256 || (cells & (cells - 1)) != 0)
+    throw std::runtime_error("grid cells must be a power of two in [16, 256], got " + std::to_string(cells));
+  std::memcpy(elevation_.mapped(), &model.params(), sizeof(gpu::ElevationParams));
+  auto* faces = static_cast<FaceCornersGpu*>(faces_.mapped());
+  for (int f = 0; f < 30; ++f) faces[f] = RhombusFaceMapping::get().gpuCorners(f);
+
+  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+  poolInfo.queueFamilyIndex = device.queueFamily();
+  VkCommandPool pool;
+  GLOBE_VK_CHECK(vkCreateCommandPool(device.device(), &poolInfo, nullptr, &pool));
+  commandPool_ = vk::UniqueCommandPool(device.device(), pool);
+
+  uint32_t batchCount = std::max<uint32_t>(maxSubmitsInFlight, 1) + 1;
+  VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+  queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
+  queryInfo.queryCount = 2 * batchCount;
+  VkQueryPool queryPool;
+  GLOBE_VK_CHECK(vkCreateQueryPool(device.device(), &queryInfo, nullptr, &queryPool));
+  queries_ = vk::UniqueQueryPool(device.device(), queryPool);
+  vkResetQueryPool(device.device(), queryPool, 0, 2 * batchCount);
+  timestampPeriod_ns_ = double(device.properties().limits.timestampPeriod);
+
+  size_t samples = size_t(cells + 3) * size_t(cells + 3);
+  batches_.resize(batchCount);
+  for (uint32_t b = 0; b < batchCount; ++b) {
+    Batch& batch = batches_[b];
+    batch.index = b;
+    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    alloc.commandPool = pool;
+    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    alloc.commandBufferCount = 1;
+    GLOBE_VK_CHECK(vkAllocateCommandBuffers(device.device(), &alloc, &batch.cmd));
+    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VkFence fence;
+    GLOBE_VK_CHECK(vkCreateFence(device.device(), &fenceInfo, nullptr, &fence));
+    batch.fence = vk::UniqueFence(device.device(), fence);
+    batch.jobs = vk::Buffer(device, maxJobs_ * sizeof(gpu::PayloadJob), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                            vk::MemoryUse::HostVisible, "payload jobs");
+    batch.results = vk::Buffer(device, maxJobs_ * sizeof(gpu::PayloadResult), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                               vk::MemoryUse::HostVisible, "payload results");
+    batch.scratch = vk::Buffer(device, VkDeviceSize(maxJobs_) * samples * 32, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                               vk::MemoryUse::DeviceLocal, "payload scratch");
+    batch.submitted.reserve(maxJobs_);
+  }
+}
+
+GpuPayloadGenerator::~GpuPayloadGenerator() { waitIdle(); }
+
+void GpuPayloadGenerator::reserveSlots(uint32_t slots, uint32_t maxSlotsPerPage) {
+  assert(payloads_.size() == 0);
+  payloads_ = vk::Buffer(device_, VkDeviceSize(slots) * slotBytes(),
+                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                         vk::MemoryUse::DeviceLocal, "payload slots");
+  const VkPhysicalDeviceLimits& limits = device_.properties().limits;
+  uint32_t perPage = std::max<uint32_t>(1, uint32_t(limits.maxStorageBufferRange / slotBytes()));
+  if (maxSlotsPerPage > 0) perPage = std::min(perPage, maxSlotsPerPage);
+  // Every window must start at a multiple of the storage-buffer offset alignment (slot bytes are a
+  // multiple of 16 and the alignment a power of two <= 256, so 16 slots always align).
+  while (perPage > 1 && (VkDeviceSize(perPage) * slotBytes()) % limits.minStorageBufferOffsetAlignment != 0) --perPage;
+  if (slots > perPage && (VkDeviceSize(perPage) * slotBytes()) % limits.minStorageBufferOffsetAlignment != 0)
+    throw std::runtime_error("payload pages of " + std::to_string(perPage) +
+                             " slots break the storage-buffer offset alignment");
+  pages_ = {payloads_.handle(), payloads_.size(), VkDeviceSize(perPage) * slotBytes(), perPage};
+  slotCentres_.assign(slots, glm::dvec3(0.0));
+}
+
+GpuPayloadGenerator::Batch& GpuPayloadGenerator::freeBatch() {
+  for (Batch& b : batches_)
+    if (!b.busy) return b;
+  // Every batch is running: the caller exceeded the in-flight cap it promised. Wait for the oldest.
+  Batch& oldest = batches_[order_.front()];
+  VkFence fence = oldest.fence;
+  GLOBE_VK_CHECK(vkWaitForFences(device_.device(), 1, &fence, VK_TRUE, UINT64_MAX));
+  throw std::logic_error("GpuPayloadGenerator: more batches in flight than configured");
+}
+
+void GpuPayloadGenerator::generate(std::span<const GenerationJob> jobs) {
+  assert(payloads_.size() > 0 && "reserveSlots() first");
+  for (size_t first = 0; first < jobs.size(); first += maxJobs_) {
+    size_t count = std::min<size_t>(maxJobs_, jobs.size() - first);
+    Batch& batch = freeBatch();
+    auto* gpuJobs = static_cast<gpu::PayloadJob*>(batch.jobs.mapped());
+    batch.submitted.assign(jobs.begin() + std::ptrdiff_t(first), jobs.begin() + std::ptrdiff_t(first + count));
+    // One dispatch per payload page the batch writes (usually one): jobs sorted by page, each
+    // dispatch offset to its first job (vkCmdDispatchBase) with its page's window bound.
+    std::stable_sort(
+        batch.submitted.begin(), batch.submitted.end(),
+        [&](const GenerationJob& a, const GenerationJob& b) { return pages_.page(a.slot) < pages_.page(b.slot); });
+    for (size_t k = 0; k < count; ++k) {
+      gpuJobs[k] = makePayloadJob(batch.submitted[k].node, pages_.localSlot(batch.submitted[k].slot), model_);
+      slotCentres_[batch.submitted[k].slot] = {gpuJobs[k].centre.x, gpuJobs[k].centre.y, gpuJobs[k].centre.z};
+    }
+
+    GLOBE_VK_CHECK(vkResetCommandBuffer(batch.cmd, 0));
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    GLOBE_VK_CHECK(vkBeginCommandBuffer(batch.cmd, &begin));
+    vkCmdWriteTimestamp2(batch.cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, queries_, 2 * batch.index);
+    uint32_t push[2] = {cells_, uint32_t(count)};
+    for (size_t run = 0; run < count;) {
+      const uint32_t page = pages_.page(batch.submitted[run].slot);
+      size_t end = run + 1;
+      while (end < count && pages_.page(batch.submitted[end].slot) == page) ++end;
+      pipeline_.bind(batch.cmd,
+                     {elevation_.descriptor(), faces_.descriptor(), batch.jobs.descriptor(), pages_.window(page),
+                      batch.scratch.descriptor(), batch.results.descriptor()},
+                     push, sizeof(push));
+      vkCmdDispatchBase(batch.cmd, uint32_t(run), 0, 0, uint32_t(end - run), 1, 1);
+      run = end;
+    }
+    vk::computeWriteBarrier(batch.cmd);
+    vkCmdWriteTimestamp2(batch.cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, queries_, 2 * batch.index + 1);
+    GLOBE_VK_CHECK(vkEndCommandBuffer(batch.cmd));
+
+    VkFence fence = batch.fence;
+    GLOBE_VK_CHECK(vkResetFences(device_.device(), 1, &fence));
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &batch.cmd;
+    GLOBE_VK_CHECK(vkQueueSubmit(device_.queue(), 1, &submit, fence));
+    batch.busy = true;
+    order_.push_back(batch.index);
+  }
+}
+
+void GpuPayloadGenerator::finish(Batch& batch, std::vector<GenerationResult>& finished) {
+  const auto* results = static_cast<const gpu::PayloadResult*>(batch.results.mapped());
+  for (size_t k = 0; k < batch.submitted.size(); ++k) {
+    const GenerationJob& job = batch.submitted[k];
+    RadiusRange payload{results[k].minRadius_m, results[k].maxRadius_m};
+    finished.push_back({job.node, job.slot, paddedRadiusRange(model_.params(), payload, job.node.level, cells_)});
+  }
+  uint64_t stamps[2] = {0, 0};
+  VkResult r = vkGetQueryPoolResults(device_.device(), queries_, 2 * batch.index, 2, sizeof(stamps), stamps,
+                                     sizeof(uint64_t), VK_QUERY_RESULT_64_BIT);
+  if (r == VK_SUCCESS && stamps[1] >= stamps[0])
+    gpuTime_ms_ += double(stamps[1] - stamps[0]) * timestampPeriod_ns_ * 1e-6;
+  vkResetQueryPool(device_.device(), queries_, 2 * batch.index, 2);
+  nodesGenerated_ += batch.submitted.size();
+  batch.submitted.clear();
+  batch.busy = false;
+}
+
+void GpuPayloadGenerator::collect(std::vector<GenerationResult>& finished) {
+  // Batches finish in submission order on one queue: stop at the first that is still running.
+  while (!order_.empty()) {
+    Batch& batch = batches_[order_.front()];
+    VkResult status = vkGetFenceStatus(device_.device(), batch.fence);
+    if (status == VK_NOT_READY) break;
+    GLOBE_VK_CHECK(status);
+    order_.pop_front();
+    finish(batch, finished);
+  }
+}
+
+void GpuPayloadGenerator::waitIdle() {
+  for (uint32_t index : order_) {
+    VkFence fence = batches_[index].fence;
+    GLOBE_VK_CHECK(vkWaitForFences(device_.device(), 1, &fence, VK_TRUE, UINT64_MAX));
+  }
+}
+
+}  // namespace globe

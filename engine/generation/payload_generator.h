@@ -1,0 +1,89 @@
+#pragma once
+// The GPU payload generator: fills payload slots with shaders/payload_generate.comp, asynchronously.
+// Each generate() call records one dispatch (one workgroup per node) into its own command buffer and
+// submits it with a fence; collect() polls the fences without waiting and reports the finished
+// nodes with their radius ranges (padded for unresolved detail, planet/streaming/payload_reference.h).
+// Implements planet's PayloadGenerator, so the PayloadPool drives it exactly like the CPU fake.
+#include "engine/generation/payload_pages.h"
+#include "engine/vk/compute_pipeline.h"
+#include "planet/elevation/elevation.h"
+#include "planet/streaming/payload_generator.h"
+#include "shaders/include/payload_layout.h"
+
+#include <deque>
+#include <vector>
+
+namespace globe {
+
+// Arithmetic of payload generation. kDouble is the engine (positions exact to the CPU reference);
+// kFloat evaluates the elevation and the planet-centred positions in float, as an all-float engine
+// would: only to measure what double buys (`globe trade`, docs/tradeoffs.md).
+enum class GenerationPrecision { kDouble, kFloat };
+
+class GpuPayloadGenerator final : public PayloadGenerator {
+ public:
+  // `cells`: grid cells per node side, a power of two in [16, 256]. `maxJobsPerSubmit`: most nodes
+  // one generate() call takes (the pool's dispatch budget); `maxSubmitsInFlight`: batches that may
+  // run at once (the pool's in-flight cap / budget, rounded up).
+  // `model` must outlive the generator (job centres are surface points of the CPU reference).
+  GpuPayloadGenerator(vk::Device& device, const ElevationModel& model, uint32_t cells, uint32_t maxJobsPerSubmit,
+                      uint32_t maxSubmitsInFlight, GenerationPrecision precision = GenerationPrecision::kDouble);
+  ~GpuPayloadGenerator() override;
+
+  // Allocates the payload buffer for `slots` slots (once, before the first generate()), bound in
+  // pages of as many slots as one storage-buffer binding holds, or `maxSlotsPerPage` if smaller
+  // (0 = no extra cap; tests use it to exercise paging).
+  void reserveSlots(uint32_t slots, uint32_t maxSlotsPerPage = 0);
+
+  void generate(std::span<const GenerationJob> jobs) override;
+  void collect(std::vector<GenerationResult>& finished) override;
+  size_t slotBytes() const override { return slotBytesFor(cells_); }
+  static size_t slotBytesFor(uint32_t cells) { return size_t(GLOBE_PAYLOAD_VEC4_PER_SLOT(cells)) * 16u; }
+
+  // Blocks until every submitted batch has finished (converged mode, shutdown, tests).
+  void waitIdle();
+
+  uint32_t cells() const { return cells_; }
+  // Node centre (metres) the payload in `slot` is relative to (the job's snapped centre).
+  const glm::dvec3& slotCentre(uint32_t slot) const { return slotCentres_[slot]; }
+  // The whole payload buffer (copies, tests) and its binding windows (shaders).
+  const vk::Buffer& payloads() const { return payloads_; }
+  const PayloadPages& pages() const { return pages_; }
+  // Device time of all finished batches so far (ms) and how many nodes they held.
+  double gpuTime_ms() const { return gpuTime_ms_; }
+  uint64_t nodesGenerated() const { return nodesGenerated_; }
+
+ private:
+  struct Batch {
+    VkCommandBuffer cmd = VK_NULL_HANDLE;
+    vk::UniqueFence fence;
+    vk::Buffer jobs;
+    vk::Buffer results;
+    vk::Buffer scratch;
+    std::vector<GenerationJob> submitted;
+    bool busy = false;
+    uint32_t index = 0;  // query slots 2*index, 2*index+1
+  };
+  Batch& freeBatch();
+  void finish(Batch& batch, std::vector<GenerationResult>& finished);
+
+  vk::Device& device_;
+  const ElevationModel& model_;
+  uint32_t cells_;
+  uint32_t maxJobs_;
+  vk::ComputePipeline pipeline_;
+  vk::Buffer elevation_;
+  vk::Buffer faces_;
+  vk::Buffer payloads_;
+  PayloadPages pages_;
+  vk::UniqueCommandPool commandPool_;
+  vk::UniqueQueryPool queries_;
+  double timestampPeriod_ns_ = 1.0;
+  std::vector<Batch> batches_;
+  std::vector<glm::dvec3> slotCentres_;
+  std::deque<uint32_t> order_;  // busy batches, oldest first
+  double gpuTime_ms_ = 0.0;
+  uint64_t nodesGenerated_ = 0;
+};
+
+}  // namespace globe

@@ -1,0 +1,84 @@
+#include "engine/render/headless_renderer.h"
+
+#include "engine/vk/vk_check.h"
+
+#include <chrono>
+
+namespace globe {
+
+HeadlessRenderer::HeadlessRenderer(vk::Device& device, VkExtent2D extent) : device_(device), target_(device, extent) {
+  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+  poolInfo.queueFamilyIndex = device.queueFamily();
+  VkCommandPool pool;
+  GLOBE_VK_CHECK(vkCreateCommandPool(device.device(), &poolInfo, nullptr, &pool));
+  pool_ = vk::UniqueCommandPool(device.device(), pool);
+  VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  alloc.commandPool = pool;
+  alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  alloc.commandBufferCount = 1;
+  GLOBE_VK_CHECK(vkAllocateCommandBuffers(device.device(), &alloc, &cmd_));
+  VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  VkFence fence;
+  GLOBE_VK_CHECK(vkCreateFence(device.device(), &fenceInfo, nullptr, &fence));
+  fence_ = vk::UniqueFence(device.device(), fence);
+  VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+  queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
+  queryInfo.queryCount = 2;
+  VkQueryPool queries;
+  GLOBE_VK_CHECK(vkCreateQueryPool(device.device(), &queryInfo, nullptr, &queries));
+  queries_ = vk::UniqueQueryPool(device.device(), queries);
+}
+
+FrameStats HeadlessRenderer::renderFrame(Terrain& terrain, const Camera& camera, bool converge) {
+  auto start = std::chrono::steady_clock::now();
+  // Every earlier frame has completed: this loop waits for each frame before the next.
+  ++frame_;
+  terrain.update(frame_, camera, frame_ - 1);
+  if (converge) {
+    // Bounded: a view needs at most a few thousand payloads; the pool's budget moves 8 per round.
+    // A round that dispatches, runs and completes nothing changes nothing (the camera stands
+    // still): the pool is full of nodes this view needs, and the frame is drawn as it is
+    // (stats.converged false) instead of spinning the remaining rounds.
+    for (int round = 0; round < 100000 && !terrain.converged(); ++round) {
+      terrain.waitForGeneration();
+      ++frame_;
+      const FrameStats& progress = terrain.update(frame_, camera, frame_ - 1);
+      if (progress.gen_dispatched == 0 && progress.gen_in_flight == 0 && progress.gen_completed == 0) break;
+    }
+    // Converged frames measure drawing alone (the source's "data instantly available" mode).
+    start = std::chrono::steady_clock::now();
+    frame_ += 1;
+    terrain.update(frame_, camera, frame_ - 1);
+  }
+  vkResetQueryPool(device_.device(), queries_, 0, 2);
+  GLOBE_VK_CHECK(vkResetCommandBuffer(cmd_, 0));
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  GLOBE_VK_CHECK(vkBeginCommandBuffer(cmd_, &begin));
+  vkCmdWriteTimestamp2(cmd_, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, queries_, 0);
+  target_.begin(cmd_, clear_.data());
+  terrain.record(cmd_, camera, uint32_t(frame_ % 2));
+  target_.end(cmd_);
+  vkCmdWriteTimestamp2(cmd_, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, queries_, 1);
+  GLOBE_VK_CHECK(vkEndCommandBuffer(cmd_));
+  VkFence fence = fence_;
+  GLOBE_VK_CHECK(vkResetFences(device_.device(), 1, &fence));
+  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &cmd_;
+  GLOBE_VK_CHECK(vkQueueSubmit(device_.queue(), 1, &submit, fence));
+  GLOBE_VK_CHECK(vkWaitForFences(device_.device(), 1, &fence, VK_TRUE, UINT64_MAX));
+
+  FrameStats stats = terrain.stats();
+  stats.converged = terrain.converged();
+  uint64_t stamps[2] = {0, 0};
+  if (vkGetQueryPoolResults(device_.device(), queries_, 0, 2, sizeof(stamps), stamps, sizeof(uint64_t),
+                            VK_QUERY_RESULT_64_BIT) == VK_SUCCESS &&
+      stamps[1] >= stamps[0])
+    stats.gpu_ms = double(stamps[1] - stamps[0]) * double(device_.properties().limits.timestampPeriod) * 1e-6;
+  stats.frame_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return stats;
+}
+
+}  // namespace globe

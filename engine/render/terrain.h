@@ -1,0 +1,93 @@
+#pragma once
+// The planet's terrain per frame: CDLOD selection (planet/), the node/payload pool and its request
+// queue (planet/), GPU payload generation and the terrain draw (engine/). One object owns the
+// chain camera -> selection -> requests -> generation -> payloads -> draw -> stats, so the viewer,
+// the headless renderer and the benchmark run exactly the same frame.
+#include "engine/generation/payload_generator.h"
+#include "engine/render/terrain_renderer.h"
+#include "planet/analysis/frame_stats.h"
+#include "planet/camera/camera.h"
+#include "planet/camera/floating_origin.h"
+#include "planet/elevation/elevation.h"
+#include "planet/lod/selection.h"
+#include "planet/streaming/payload_pool.h"
+
+#include <memory>
+#include <vector>
+
+namespace globe {
+
+struct TerrainSettings {
+  uint32_t gridCells = 32;       // cells per node side: power of two in [16, 256]
+  LodRangeConfig ranges;         // view ranges, max depth, morph region
+  StreamingConfig streaming;     // budgets
+  double originThreshold_m = 0;  // floating origin re-base distance (0 = camera-relative)
+  TerrainStyle style;            // shading (the planet's colour ramp); its radius is set from the planet
+  GenerationPrecision generation = GenerationPrecision::kDouble;  // kFloat only to measure (globe trade)
+  VertexPositions vertexPositions = VertexPositions::kStored;     // kReprojected only to measure
+  uint32_t payloadSlotsPerPage = 0;  // cap on slots per payload page (0: one binding's worth; tests)
+};
+
+// Bad settings and planets are reported as an Error naming the field.
+Status validateTerrainSettings(const TerrainSettings& settings);
+
+class Terrain {
+ public:
+  // `model` must outlive the terrain. Throws VulkanError / std::runtime_error on device failures;
+  // settings are validated first (an Error is returned through create()).
+  static Result<std::unique_ptr<Terrain>> create(vk::Device& device, const ElevationModel& model,
+                                                 const TerrainSettings& settings);
+  ~Terrain();
+
+  // CPU part of frame `frame` (strictly increasing): collects finished generations, selects,
+  // requests, starts new generations under the budget. `completedFrame`: the newest frame whose GPU
+  // work has finished (slots only older frames used may be regenerated). Returns the statistics
+  // known so far (selection and streaming); record() adds the draw's.
+  const FrameStats& update(uint64_t frame, const Camera& camera, uint64_t completedFrame);
+  // Records the draw of the last update(). `frameIndex`: which per-frame buffers to use (frame % 2).
+  void record(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex);
+
+  // True when the last selection drew every node at its wanted level and nothing is queued (except
+  // prefetch the full pool declined) or being generated: the view has fully converged.
+  bool converged() const;
+  // Blocks until every generation submitted so far has finished.
+  void waitForGeneration() { generator_->waitIdle(); }
+  // Drops every payload (the planet changed); they are regenerated as the view asks for them.
+  void invalidate() { pool_->invalidateAll(); }
+
+  const FrameStats& stats() const { return stats_; }
+  const Selection& selection() const { return selection_; }
+  const PayloadPool& pool() const { return *pool_; }
+  const ElevationModel& model() const { return model_; }
+  glm::dvec3 origin() const { return origin_.origin_m(); }
+  TerrainRenderer& renderer() { return *renderer_; }
+  // Ground radius (metres from the centre) below a unit direction, from the CPU reference.
+  double groundRadius(const glm::dvec3& unitDirection) const {
+    return model_.radius_m() + model_.elevation_m(unitDirection);
+  }
+  // The radius a camera's height is measured from: the higher of the true ground and the mesh drawn
+  // there at the deepest level (drawnSurfaceRadius). The drawn mesh misses the relief finer than its
+  // samples and can lie metres above the true ground (7e7 m planet, depth 20); a camera placed a
+  // millimetre above the true ground would then be under the mesh and see through the planet.
+  double cameraGroundRadius(const glm::dvec3& unitDirection) const;
+  // The payload generator (its payload buffer and slot centres), for tests and tools.
+  const GpuPayloadGenerator& generator() const { return *generator_; }
+  const TerrainSettings& settings() const { return settings_; }
+
+ private:
+  Terrain(vk::Device& device, const ElevationModel& model, const TerrainSettings& settings, LodSelector selector);
+
+  vk::Device& device_;
+  const ElevationModel& model_;
+  TerrainSettings settings_;
+  LodSelector selector_;
+  std::unique_ptr<GpuPayloadGenerator> generator_;
+  std::unique_ptr<PayloadPool> pool_;
+  std::unique_ptr<TerrainRenderer> renderer_;
+  Selection selection_;
+  std::vector<DrawNode> drawNodes_;
+  FloatingOrigin origin_;
+  FrameStats stats_;
+};
+
+}  // namespace globe

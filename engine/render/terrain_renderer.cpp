@@ -1,0 +1,344 @@
+#include "engine/render/terrain_renderer.h"
+
+#include <meshoptimizer.h>
+
+#include "engine/render/render_output.h"
+#include "engine/vk/vk_check.h"
+#include "planet/geometry/face_mapping.h"
+#include "shaders/include/payload_layout.h"
+#include "shaders/include/terrain_layout.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <bit>
+#include <cassert>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+namespace globe {
+namespace {
+
+struct SkyPush {
+  ViewRays rays;
+  float zenith[4];
+  float horizon[4];
+  float local[4];
+};
+static_assert(sizeof(SkyPush) == 96);
+
+// Per-frame buffer: the TerrainFrame constants, then the instances at an offset every device accepts
+// for a storage-buffer binding (minStorageBufferOffsetAlignment is at most 256).
+constexpr VkDeviceSize kFrameHeaderBytes = 512;
+static_assert(sizeof(gpu::TerrainFrame) <= kFrameHeaderBytes);
+
+vk::GraphicsPipelineDesc terrainDesc(VkFormat colourFormat, bool wireframe, VkCullModeFlags cull,
+                                     VertexPositions positions) {
+  vk::GraphicsPipelineDesc d;
+  const bool reprojected = positions == VertexPositions::kReprojected;
+  d.vertexShader = reprojected ? "terrain_reprojected.vert" : "terrain.vert";
+  d.fragmentShader = "terrain.frag";
+  // 0: instances, 1: payloads, 2: frame constants (uniform); reprojected: 3 nodes' (u, v), 4 faces.
+  d.storageBuffers = reprojected ? 5 : 3;
+  d.uniformMask = 1u << 2;
+  d.pushConstantBytes = sizeof(gpu::TerrainDrawPush);
+  d.colourFormat = colourFormat;
+  d.wireframe = wireframe;
+  d.cull = cull;
+  return d;
+}
+
+// Triangles of an n x n grid (vertex i + j (n+1)), every cell split along (i, j)-(i+1, j+1).
+void appendGrid(uint32_t n, std::vector<uint32_t>& out) {
+  const uint32_t side = n + 1;
+  const size_t first = out.size();
+  for (uint32_t j = 0; j < n; ++j) {
+    for (uint32_t i = 0; i < n; ++i) {
+      const uint32_t v00 = j * side + i, v10 = v00 + 1, v01 = v00 + side, v11 = v01 + 1;
+      out.insert(out.end(), {v00, v10, v11, v00, v11, v01});
+    }
+  }
+  // Row-major order re-shades most vertices (a row is longer than a post-transform cache); meshopt
+  // reorders the triangles for cache reuse.
+  meshopt_optimizeVertexCache(&out[first], &out[first], out.size() - first, size_t(side) * side);
+}
+
+// The skirt strip of one node edge (terrain_vertex.glsl): top vertex (n+1)^2 + t is grid vertex t
+// along the edge, bottom vertex (n+1)^2 + (n+1) + t its flared copy.
+void appendSkirt(uint32_t n, std::vector<uint32_t>& out) {
+  const uint32_t top = (n + 1) * (n + 1), bottom = top + n + 1;
+  for (uint32_t t = 0; t < n; ++t)
+    out.insert(out.end(), {top + t, top + t + 1, bottom + t + 1, top + t, bottom + t + 1, bottom + t});
+}
+
+// Sort key of a drawn node for the skirt test below.
+std::pair<uint64_t, bool> drawnKey(const NodeId& id, bool partial) { return {id.key(), partial}; }
+
+float morphDistance(double metres) {
+  // +infinity (depth 0 never morphs) and anything beyond float become FLT_MAX; the shader treats
+  // an empty band at FLT_MAX as "never".
+  if (!(metres < double(std::numeric_limits<float>::max()))) return std::numeric_limits<float>::max();
+  return float(metres);
+}
+
+gpu::TerrainVec4 toGpu(const glm::vec3& v, float w) { return {v.x, v.y, v.z, w}; }
+
+}  // namespace
+
+TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const TerrainStyle& style,
+                                 VertexPositions positions, uint32_t initialNodes, VkFormat colourFormat)
+    : device_(device),
+      cells_(gridCells),
+      style_(style),
+      // The surface is seen from above only (the camera never goes under it): its back faces are
+      // always hidden behind front faces, and culling them halves the rasteriser's work. Skirts
+      // fill gaps seen from either side.
+      solid_(device, terrainDesc(colourFormat, false, VK_CULL_MODE_BACK_BIT, positions)),
+      skirts_(device, terrainDesc(colourFormat, false, VK_CULL_MODE_NONE, positions)),
+      sky_(device, [&] {
+        vk::GraphicsPipelineDesc d;
+        d.vertexShader = "terrain_sky.vert";
+        d.fragmentShader = "terrain_sky.frag";
+        d.pushConstantBytes = sizeof(SkyPush);
+        d.colourFormat = colourFormat;
+        d.depthTest = true;  // GREATER_OR_EQUAL against depth 0: passes only where nothing was drawn
+        d.depthWrite = false;
+        return d;
+      }()) {
+  assert(gridCells >= 16 && gridCells <= 256 && (gridCells & (gridCells - 1)) == 0);
+  VkPhysicalDeviceFeatures features{};
+  vkGetPhysicalDeviceFeatures(device.physical(), &features);
+  if (features.fillModeNonSolid) {
+    wireframe_ =
+        std::make_unique<vk::GraphicsPipeline>(device, terrainDesc(colourFormat, true, VK_CULL_MODE_NONE, positions));
+  }
+
+  // Ranges: full grid, half grid, full skirt strip, half skirt strip.
+  std::vector<uint32_t> indices;
+  indices.reserve(size_t(6) * (gridCells * gridCells + gridCells * gridCells / 4 + gridCells + gridCells / 2));
+  for (uint32_t r = 0; r < 4; ++r) {
+    const uint32_t n = r % 2 == 0 ? gridCells : gridCells / 2;
+    first_[r] = uint32_t(indices.size());
+    if (r < 2)
+      appendGrid(n, indices);
+    else
+      appendSkirt(n, indices);
+    count_[r] = uint32_t(indices.size()) - first_[r];
+  }
+
+  const VkDeviceSize bytes = indices.size() * sizeof(uint32_t);
+  indices_ = vk::Buffer(device, bytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                        vk::MemoryUse::DeviceLocal, "terrain grid indices");
+  vk::Buffer staging(device, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, vk::MemoryUse::HostVisible,
+                     "terrain grid indices (staging)");
+  std::memcpy(staging.mapped(), indices.data(), size_t(bytes));
+  device.submitAndWait([&](VkCommandBuffer cmd) {
+    VkBufferCopy copy{0, 0, bytes};
+    vkCmdCopyBuffer(cmd, staging.handle(), indices_.handle(), 1, &copy);
+  });
+  positions_ = positions;
+  if (positions_ == VertexPositions::kReprojected) {
+    faces_ = vk::Buffer(device, 30 * sizeof(FaceCornersGpu), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                        vk::MemoryUse::HostVisible, "terrain face corners");
+    auto* faces = static_cast<FaceCornersGpu*>(faces_.mapped());
+    for (int f = 0; f < 30; ++f) faces[f] = RhombusFaceMapping::get().gpuCorners(f);
+  }
+  for (uint32_t f = 0; f < kFramesInFlight; ++f) ensureCapacity(f, std::max(initialNodes, 1u));
+}
+
+TerrainRenderer::~TerrainRenderer() = default;
+
+VkDescriptorBufferInfo TerrainRenderer::instanceDescriptor(uint32_t frameIndex) const {
+  const vk::Buffer& b = frames_[frameIndex];
+  return {b.handle(), kFrameHeaderBytes, b.size() - kFrameHeaderBytes};
+}
+
+VkDescriptorBufferInfo TerrainRenderer::constantsDescriptor(uint32_t frameIndex) const {
+  return {frames_[frameIndex].handle(), 0, sizeof(gpu::TerrainFrame)};
+}
+
+const unsigned char* TerrainRenderer::instanceBytes(uint32_t frameIndex) const {
+  return static_cast<const unsigned char*>(frames_[frameIndex].mapped()) + kFrameHeaderBytes;
+}
+
+void TerrainRenderer::ensureCapacity(uint32_t frameIndex, uint32_t nodes) {
+  if (nodes <= capacity_[frameIndex]) return;
+  // Grow geometrically so a slowly rising node count does not reallocate every frame. The caller
+  // waited for this frame index, so the old buffer is idle and can go now.
+  const uint32_t capacity = std::max(nodes, capacity_[frameIndex] + capacity_[frameIndex] / 2);
+  frames_[frameIndex] = vk::Buffer(device_, kFrameHeaderBytes + VkDeviceSize(capacity) * sizeof(gpu::TerrainInstance),
+                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                   vk::MemoryUse::HostVisible, frameIndex == 0 ? "terrain frame 0" : "terrain frame 1");
+  if (positions_ == VertexPositions::kReprojected) {
+    reprojection_[frameIndex] = vk::Buffer(
+        device_, sizeof(gpu::TerrainReprojectionFrame) + VkDeviceSize(capacity) * sizeof(gpu::TerrainReprojectionNode),
+        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::HostVisible, "terrain reprojection");
+  }
+  capacity_[frameIndex] = capacity;
+}
+
+gpu::TerrainReprojectionNode* TerrainRenderer::beginReprojection(uint32_t frameIndex, const Camera& camera) {
+  auto* bytes = static_cast<unsigned char*>(reprojection_[frameIndex].mapped());
+  const gpu::TerrainReprojectionFrame header{
+      {camera.position_m.x, camera.position_m.y, camera.position_m.z, style_.radius_m}};
+  std::memcpy(bytes, &header, sizeof(header));
+  return reinterpret_cast<gpu::TerrainReprojectionNode*>(bytes + sizeof(header));
+}
+
+void TerrainRenderer::recordSky(VkCommandBuffer cmd, const Camera& camera) const {
+  const double distance_m = glm::length(camera.position_m);
+  const glm::dvec3 local = distance_m > 0.0 ? camera.position_m / distance_m : glm::dvec3(0, 0, 1);
+  const double altitude_m = distance_m - style_.radius_m;
+  const float atmosphere = float(std::clamp(1.0 - altitude_m / style_.atmosphereHeight_m, 0.0, 1.0));
+  const glm::vec3 z = style_.zenithColour, h = style_.horizonColour;
+  SkyPush push{viewRays(camera, 0.0f),
+               {z.x, z.y, z.z, atmosphere},
+               {h.x, h.y, h.z, 0.0f},
+               {float(local.x), float(local.y), float(local.z), 0.0f}};
+  sky_.bind(cmd, {}, &push, sizeof(push));
+  vkCmdDraw(cmd, 3, 1, 0, 0);
+}
+
+DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, const glm::dvec3& origin_m,
+                                  std::span<const DrawNode> nodes, const PayloadPages& payloads, uint32_t frameIndex) {
+  assert(frameIndex < kFramesInFlight);
+  DrawStats stats;
+  // The sky goes last, behind everything: its fullscreen triangle lies at the far plane (depth 0),
+  // so the depth test keeps only the pixels no terrain covered, and those are the only ones shaded.
+  struct SkyLast {
+    const TerrainRenderer& renderer;
+    VkCommandBuffer cmd;
+    const Camera& camera;
+    DrawStats& stats;
+    ~SkyLast() {
+      if (!renderer.style_.sky) return;
+      renderer.recordSky(cmd, camera);
+      ++stats.drawCalls;
+    }
+  } skyLast{*this, cmd, camera, stats};
+  if (nodes.empty()) return stats;
+  const bool skirts = style_.skirtOutward > 0.0f || style_.skirtDrop > 0.0f;
+  // Skirted edges of full nodes, then of partial ones (one skirt instance each).
+  std::array<uint32_t, 2> skirtEdges{0, 0};
+  if (skirts) {
+    drawn_.clear();
+    for (const DrawNode& n : nodes) drawn_.push_back(drawnKey(n.id, n.partial));
+    std::sort(drawn_.begin(), drawn_.end());
+    skirtMask_.resize(nodes.size());
+    for (size_t k = 0; k < nodes.size(); ++k) {
+      // An edge needs no skirt when its same-level neighbour is drawn the same way (same level,
+      // both full or both partial): they share bit-identical vertices and the same morph band, so
+      // the rasteriser's fill rule leaves no gap. Gaps open only where the level or the payload
+      // quantum changes (docs/rendering.md, "Skirts").
+      uint8_t mask = 0;
+      for (int e = 0; e < 4; ++e) {
+        if (!std::binary_search(drawn_.begin(), drawn_.end(),
+                                drawnKey(edgeNeighbour(nodes[k].id, e), nodes[k].partial)))
+          mask |= uint8_t(1u << e);
+      }
+      skirtMask_[k] = mask;
+      skirtEdges[nodes[k].partial ? 1 : 0] += uint32_t(std::popcount(mask));
+    }
+  }
+  const uint32_t instanceCount = uint32_t(nodes.size()) + skirtEdges[0] + skirtEdges[1];
+  ensureCapacity(frameIndex, instanceCount);
+  vk::Buffer& buffer = frames_[frameIndex];
+  auto* bytes = static_cast<unsigned char*>(buffer.mapped());
+
+  // Frame constants. The view matrix has no translation: vertices arrive camera-relative.
+  gpu::TerrainFrame frame{};
+  const glm::mat4 clipFromCamera(camera.projection() * camera.viewFromWorld(camera.position_m));
+  std::memcpy(frame.clipFromCamera.m, glm::value_ptr(clipFromCamera), sizeof(frame.clipFromCamera.m));
+  const glm::dvec3 cameraRelative = camera.position_m - origin_m;
+  const glm::vec3 high(cameraRelative);
+  const glm::vec3 low(cameraRelative - glm::dvec3(high));
+  frame.cameraHigh = toGpu(high, 0.0f);
+  frame.cameraLow = toGpu(low, 0.0f);
+  frame.planetCentre = toGpu(glm::vec3(-origin_m), float(style_.radius_m));
+  frame.sun = toGpu(glm::vec3(glm::normalize(style_.sunDirection)), style_.ambient);
+  TerrainDebugView view = style_.debug;
+  if (view == TerrainDebugView::kWireframe && !wireframe_) view = TerrainDebugView::kLodColours;
+  frame.options = {cells_,
+                   view == TerrainDebugView::kShaded       ? GLOBE_TERRAIN_SHADED
+                   : view == TerrainDebugView::kLodColours ? GLOBE_TERRAIN_LOD_COLOURS
+                                                           : GLOBE_TERRAIN_WIREFRAME,
+                   skirts ? 1u : 0u, 0u};
+  frame.skirt = {style_.skirtOutward, style_.skirtDrop, 0.0f, 0.0f};
+  frame.ramp = packColourRamp(style_.ramp);
+  std::memcpy(bytes, &frame, sizeof(frame));
+
+  // Instances grouped by draw: index range (full grid, half grid, full skirts, half skirts), then
+  // payload page (one page unless the pool outgrows one storage-buffer binding), so each draw is one
+  // contiguous instance range with its page's window bound.
+  auto* instances = reinterpret_cast<gpu::TerrainInstance*>(bytes + kFrameHeaderBytes);
+  const uint32_t slotVec4 = GLOBE_PAYLOAD_VEC4_PER_SLOT(cells_);
+  const uint32_t pageCount = std::max(payloads.pageCount(), 1u);
+  instancesOf_.assign(size_t(4) * pageCount, 0);
+  auto group = [&](uint32_t range, uint32_t slot) { return size_t(range) * pageCount + payloads.page(slot); };
+  uint32_t partial = 0;
+  for (size_t k = 0; k < nodes.size(); ++k) {
+    const uint32_t range = nodes[k].partial ? 1u : 0u;
+    partial += range;
+    ++instancesOf_[group(range, nodes[k].slot)];
+    if (skirts) instancesOf_[group(range + 2, nodes[k].slot)] += uint32_t(std::popcount(skirtMask_[k]));
+  }
+  firstInstance_.assign(instancesOf_.size(), 0);
+  for (size_t g = 1; g < instancesOf_.size(); ++g) firstInstance_[g] = firstInstance_[g - 1] + instancesOf_[g - 1];
+  std::vector<uint32_t>& next = nextInstance_;
+  next = firstInstance_;
+  // kReprojected: each instance's node (u, v) corner, size and face, at the same index.
+  gpu::TerrainReprojectionNode* reprojection = nullptr;
+  if (positions_ == VertexPositions::kReprojected) reprojection = beginReprojection(frameIndex, camera);
+  for (size_t k = 0; k < nodes.size(); ++k) {
+    const DrawNode& n = nodes[k];
+    const gpu::TerrainReprojectionNode mapping{{n.id.uMin(), n.id.vMin(), n.id.size(), double(n.id.face)}};
+    gpu::TerrainInstance inst{};
+    // Double first, float last: the offset is a multiple of the level's quantum and small.
+    inst.offset = toGpu(glm::vec3(n.centre_m - origin_m), 0.0f);
+    inst.morph = {morphDistance(n.morph.start_m), morphDistance(n.morph.end_m), 0.0f, 0.0f};
+    inst.info = {payloads.localSlot(n.slot) * slotVec4, n.partial ? 2u : 1u,
+                 uint32_t(n.id.level) - (n.partial ? 1u : 0u), 0u};
+    const uint32_t range = n.partial ? 1u : 0u;
+    const size_t grid = group(range, n.slot), skirt = group(range + 2, n.slot);
+    if (reprojection) reprojection[next[grid]] = mapping;
+    instances[next[grid]++] = inst;
+    for (uint32_t e = 0; skirts && e < 4; ++e) {
+      if ((skirtMask_[k] >> e & 1u) == 0) continue;
+      inst.info.w = e;
+      if (reprojection) reprojection[next[skirt]] = mapping;
+      instances[next[skirt]++] = inst;
+    }
+  }
+
+  const bool wireframe = view == TerrainDebugView::kWireframe;
+  vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
+  for (uint32_t r = 0; r < 4; ++r) {
+    for (uint32_t page = 0; page < pageCount; ++page) {
+      const size_t g = size_t(r) * pageCount + page;
+      if (instancesOf_[g] == 0) continue;
+      // Grids are drawn with back faces culled, skirts from both sides; the wireframe view shows both.
+      const vk::GraphicsPipeline& pipeline = wireframe ? *wireframe_ : r < 2 ? solid_ : skirts_;
+      const gpu::TerrainDrawPush push{r % 2 == 0 ? cells_ : cells_ / 2, 0};
+      if (reprojection) {
+        pipeline.bind(cmd,
+                      {instanceDescriptor(frameIndex), payloads.window(page), constantsDescriptor(frameIndex),
+                       reprojection_[frameIndex].descriptor(), faces_.descriptor()},
+                      &push, sizeof(push));
+      } else {
+        pipeline.bind(cmd, {instanceDescriptor(frameIndex), payloads.window(page), constantsDescriptor(frameIndex)},
+                      &push, sizeof(push));
+      }
+      vkCmdDrawIndexed(cmd, count_[r], instancesOf_[g], first_[r], 0, firstInstance_[g]);
+      ++stats.drawCalls;
+      stats.triangles += uint64_t(count_[r] / 3) * instancesOf_[g];
+    }
+  }
+  stats.nodes = uint32_t(nodes.size());
+  stats.partialNodes = partial;
+  stats.skirtEdges = skirtEdges[0] + skirtEdges[1];
+  return stats;
+}
+
+}  // namespace globe

@@ -1,0 +1,147 @@
+#pragma once
+// The terrain draw (CDLOD, Strugar 2009; primary source §3.3): every selected node is one instance of
+// ONE shared grid index buffer, its vertices pulled by the vertex shader from the node's payload slot
+// (shaders/include/payload_layout.h). Two instanced draws per frame: full nodes (N x N cells) and
+// partial nodes (the N/2 grid over their own payload's every other sample = their parent's LOD).
+// Per-vertex morphing towards the parent's mesh from the distance to the camera, a floating origin
+// (every float the GPU sees is relative to it, computed in double on the CPU first), reversed-Z with
+// an infinite far plane, and flared skirts that fill sub-pixel gaps between nodes. See
+// docs/rendering.md.
+//
+// Frames in flight: per-frame data (constants + one record per node) lives in one host-visible
+// buffer per frame index, preallocated and grown only when a frame has more nodes than ever before.
+// The caller must have waited for the previous use of `frameIndex` before record().
+#include "engine/generation/payload_pages.h"
+#include "engine/vk/graphics_pipeline.h"
+#include "planet/camera/camera.h"
+#include "planet/elevation/colour_ramp.h"
+#include "planet/geometry/node_id.h"
+#include "planet/lod/lod_ranges.h"
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <span>
+#include <utility>
+#include <vector>
+
+namespace globe {
+namespace gpu {
+struct TerrainReprojectionNode;  // shaders/include/terrain_layout.h
+}
+
+enum class TerrainDebugView {
+  kShaded,      // lit colour ramp (normal use)
+  kLodColours,  // one flat colour per drawn level
+  kWireframe,   // LOD-coloured lines (falls back to kLodColours without fillModeNonSolid)
+};
+
+// Where the vertex shader takes a vertex's position from. kStored: the payload's float position
+// relative to the node centre, generated once in double (the engine; the primary source's choice).
+// kReprojected: the payload's height, re-projected every frame in double (face mapping, radius +
+// height, minus the camera): the alternative the source rejected, only to measure it (globe trade).
+enum class VertexPositions { kStored, kReprojected };
+
+struct TerrainStyle {
+  double radius_m = 6371000.0;                   // planet radius (metres): local vertical, altitude for the sky
+  ColourRamp ramp;                               // colour by elevation and slope (a planet file's ramp)
+  glm::dvec3 sunDirection{1.0, 0.4, 0.6};        // towards the sun, planet-fixed (normalised here)
+  float ambient = 0.08f;                         // light on faces turned away from the sun, [0, 1]
+  bool sky = true;                               // draw the sky gradient behind the terrain
+  double atmosphereHeight_m = 100000.0;          // above it the background is black space (> 0)
+  glm::vec3 zenithColour{0.20f, 0.38f, 0.80f};   // linear RGB
+  glm::vec3 horizonColour{0.62f, 0.74f, 0.92f};  // linear RGB
+  TerrainDebugView debug = TerrainDebugView::kShaded;
+  // Skirt flare, in drawn cells: outward under the neighbour and down. 0 = no skirts (cracks of a
+  // fraction of a pixel may then show between nodes of different levels).
+  float skirtOutward = 0.25f;
+  float skirtDrop = 0.5f;
+};
+
+// One node to draw; the caller builds these from the selection and the payload pool.
+struct DrawNode {
+  NodeId id;
+  uint32_t slot = 0;         // payload slot holding the node's samples
+  MorphRange morph;          // metres from the camera (SelectedNode::morph)
+  bool partial = false;      // drawn at half resolution (the parent's LOD) over its own quadrant
+  glm::dvec3 centre_m{0.0};  // node centre the payload was generated with (PayloadJob::centre)
+};
+
+struct DrawStats {
+  uint64_t triangles = 0;  // submitted, including skirts and the degenerate ones of morphed cells
+  uint32_t drawCalls = 0;
+  uint32_t nodes = 0;
+  uint32_t partialNodes = 0;
+  uint32_t skirtEdges = 0;  // node edges drawn with a skirt (those next to a level change)
+};
+
+class TerrainRenderer {
+ public:
+  static constexpr uint32_t kFramesInFlight = 2;
+
+  // gridCells: payload grid cells per node side, a power of two in [16, 256]. initialNodes: per-frame
+  // capacity allocated up front (grows when exceeded). Pipelines target OffscreenTarget's formats
+  // unless `colourFormat` says otherwise (e.g. a swapchain's).
+  TerrainRenderer(vk::Device& device, uint32_t gridCells, const TerrainStyle& style = {},
+                  VertexPositions positions = VertexPositions::kStored, uint32_t initialNodes = 1024,
+                  VkFormat colourFormat = VK_FORMAT_R16G16B16A16_SFLOAT);
+  ~TerrainRenderer();
+  TerrainRenderer(const TerrainRenderer&) = delete;
+  TerrainRenderer& operator=(const TerrainRenderer&) = delete;
+
+  // Records the sky (if enabled) and the terrain into the current dynamic-rendering pass (viewport and
+  // scissor already set). `origin_m`: the floating origin (FloatingOrigin); `payloads`: the payload
+  // pages, slot s starting at vec4 localSlot(s) * GLOBE_PAYLOAD_VEC4_PER_SLOT(gridCells) of page
+  // page(s)'s window. frameIndex < kFramesInFlight.
+  DrawStats record(VkCommandBuffer cmd, const Camera& camera, const glm::dvec3& origin_m,
+                   std::span<const DrawNode> nodes, const PayloadPages& payloads, uint32_t frameIndex);
+
+  const TerrainStyle& style() const { return style_; }
+  void setStyle(const TerrainStyle& style) { style_ = style; }
+  void setDebugView(TerrainDebugView view) { style_.debug = view; }
+  bool wireframeSupported() const { return wireframe_ != nullptr; }
+  uint32_t gridCells() const { return cells_; }
+  // Index counts of the full and the half-resolution grids, and of one skirt strip (one node edge) of each.
+  uint32_t fullIndexCount() const { return count_[0]; }
+  uint32_t halfIndexCount() const { return count_[1]; }
+  uint32_t fullSkirtIndexCount() const { return count_[2]; }
+  uint32_t halfSkirtIndexCount() const { return count_[3]; }
+  // The per-frame buffer of `frameIndex`: TerrainFrame constants at offset 0, the drawn nodes'
+  // TerrainInstances from instanceBytes() (then the skirt instances). Bindings of the terrain shaders (0 instances, 2
+  // constants).
+  const vk::Buffer& frameBuffer(uint32_t frameIndex) const { return frames_[frameIndex]; }
+  VkDescriptorBufferInfo instanceDescriptor(uint32_t frameIndex) const;
+  VkDescriptorBufferInfo constantsDescriptor(uint32_t frameIndex) const;
+  const unsigned char* instanceBytes(uint32_t frameIndex) const;
+
+ private:
+  void ensureCapacity(uint32_t frameIndex, uint32_t nodes);
+  // kReprojected: writes the camera into frame `frameIndex`'s reprojection buffer and returns its
+  // per-instance array (the caller fills it in instance order).
+  gpu::TerrainReprojectionNode* beginReprojection(uint32_t frameIndex, const Camera& camera);
+  void recordSky(VkCommandBuffer cmd, const Camera& camera) const;
+
+  vk::Device& device_;
+  uint32_t cells_;
+  TerrainStyle style_;
+  vk::GraphicsPipeline solid_;   // grids, back faces culled
+  vk::GraphicsPipeline skirts_;  // skirt strips, both sides
+  std::unique_ptr<vk::GraphicsPipeline> wireframe_;
+  vk::GraphicsPipeline sky_;
+  vk::Buffer indices_;
+  // Index ranges: full grid, half grid, one full skirt strip, one half skirt strip.
+  std::array<uint32_t, 4> first_{};
+  std::array<uint32_t, 4> count_{};
+  std::array<vk::Buffer, kFramesInFlight> frames_;
+  std::array<uint32_t, kFramesInFlight> capacity_{};
+  VertexPositions positions_;
+  std::array<vk::Buffer, kFramesInFlight> reprojection_;  // kReprojected only
+  vk::Buffer faces_;                                      // kReprojected only: the 30 faces' corners
+  // Per-frame scratch for the skirt test, kept to avoid allocating every frame.
+  std::vector<std::pair<uint64_t, bool>> drawn_;  // (NodeId key, partial) of every drawn node, sorted
+  std::vector<uint8_t> skirtMask_;                // per drawn node: bit e = edge e has a skirt
+  // Per draw group (index range x payload page): instance count, first instance, next free one.
+  std::vector<uint32_t> instancesOf_, firstInstance_, nextInstance_;
+};
+
+}  // namespace globe

@@ -1,0 +1,169 @@
+#include "engine/report/bench_report.h"
+
+#include "engine/report/bench_metrics.h"
+#include "engine/report/bench_report_html.h"
+#include "engine/report/bench_timeline_svg.h"
+#include "planet/core/atomic_file.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <vector>
+
+namespace globe {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kTimeDecimals = 6;  // t in seconds: microseconds, enough for any fixed step
+
+// Bad frames are the caller's data, but a report built on them would be silently wrong
+// (NaN sorts anywhere, breaks JSON and the plot), so they are refused with the offending value named.
+Status validateFrames(std::span<const BenchFrame> frames) {
+  if (frames.empty()) return Error{"", 0, 0, "frames", "no frames to report"};
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    const std::string where = "frames[" + std::to_string(i) + "]";
+    if (!std::isfinite(frames[i].t_s)) return Error{"", 0, 0, where + ".t_s", "not a finite number"};
+    if (i > 0 && frames[i].t_s < frames[i - 1].t_s) {
+      return Error{"", 0, 0, where + ".t_s",
+                   "time goes backwards (" + formatFixed(frames[i].t_s, kTimeDecimals) + " s after " +
+                       formatFixed(frames[i - 1].t_s, kTimeDecimals) + " s)"};
+    }
+    for (const BenchMetric& m : benchMetrics()) {
+      if (!std::isfinite(m.value(frames[i]))) return Error{"", 0, 0, where + "." + m.name, "not a finite number"};
+    }
+  }
+  return Ok{};
+}
+
+Status validateKeyFrames(const std::string& dir, std::span<const BenchKeyFrame> keyFrames) {
+  for (std::size_t i = 0; i < keyFrames.size(); ++i) {
+    const BenchKeyFrame& k = keyFrames[i];
+    const std::string where = "keyFrames[" + std::to_string(i) + "]";
+    if (!std::isfinite(k.t_s)) return Error{"", 0, 0, where + ".t_s", "not a finite number"};
+    const fs::path file(k.imageFile);
+    // The report links it by this name, so it has to stay inside the report directory.
+    bool escapes = file.empty() || file.is_absolute();
+    for (const auto& part : file) escapes = escapes || part == "..";
+    if (escapes)
+      return Error{"", 0, 0, where + ".imageFile",
+                   "'" + k.imageFile + "' is not a file name inside the report directory"};
+    std::error_code ec;
+    const fs::path full = fs::path(dir) / file;
+    if (!fs::is_regular_file(full, ec))
+      return Error{full.string(), 0, 0, where + ".imageFile", "key-frame image does not exist"};
+  }
+  return Ok{};
+}
+
+std::string framesCsv(std::span<const BenchFrame> frames) {
+  std::string out = "frame,t";
+  for (const BenchMetric& m : benchMetrics()) out += std::string(",") + m.name;
+  out += '\n';
+  for (const BenchFrame& f : frames) {
+    out += std::to_string(f.frame);
+    out += ',';
+    out += formatFixed(f.t_s, kTimeDecimals);
+    for (const BenchMetric& m : benchMetrics()) {
+      out += ',';
+      out += m.kind == MetricKind::Integer ? std::to_string(static_cast<uint64_t>(m.value(f)))
+                                           : formatFixed(m.value(f), m.decimals);
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+// Integer metrics keep integer statistics (they are samples); the mean is a real number.
+nlohmann::ordered_json statValue(double v, const BenchMetric& m) {
+  if (m.kind == MetricKind::Integer) return static_cast<uint64_t>(v);
+  return v;
+}
+
+std::string summaryJson(const BenchRunInfo& info, std::span<const BenchFrame> frames,
+                        std::span<const BenchKeyFrame> keyFrames) {
+  using Json = nlohmann::ordered_json;  // keys in the order written: readable, and stable bytes
+  Json run = {{"planet_file", info.planetFile},
+              {"path_file", info.pathFile},
+              {"mode", info.mode},
+              {"device", info.device},
+              {"size", info.size},
+              {"grid_cells", info.gridCells},
+              {"command_line", info.commandLine},
+              {"globe_version", info.globeVersion}};
+  Json metrics = Json::object();
+  for (const BenchMetric& m : benchMetrics()) {
+    const MetricSummary s = summarizeMetric(frames, m);
+    metrics[m.name] = {{"unit", m.unit},
+                       {"min", statValue(s.min, m)},
+                       {"median", statValue(s.median, m)},
+                       {"p95", statValue(s.p95, m)},
+                       {"p99", statValue(s.p99, m)},
+                       {"max", statValue(s.max, m)},
+                       {"mean", s.mean}};
+  }
+  Json keys = Json::array();
+  for (const BenchKeyFrame& k : keyFrames) keys.push_back({{"t_s", k.t_s}, {"image_file", k.imageFile}});
+  Json summary = {{"schema", "globe-bench-summary/1"},   {"run", std::move(run)},
+                  {"frame_count", frames.size()},        {"t_first_s", frames.front().t_s},
+                  {"t_last_s", frames.back().t_s},       {"frame_budget_ms", kFrameBudgetMs},
+                  {"jank_ms", jankMs(frames)},           {"frames_over_33ms", framesOverBudget(frames)},
+                  {"percentile_method", "nearest-rank"}, {"metrics", std::move(metrics)},
+                  {"key_frames", std::move(keys)}};
+  // Invalid UTF-8 in a file name or command line would make dump() throw; replace it instead.
+  return summary.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+}
+
+Status writeTemporary(AtomicFile& file, const std::string& content) {
+  std::ofstream out(file.tempPath(), std::ios::binary);
+  out.write(content.data(), static_cast<std::streamsize>(content.size()));
+  out.flush();
+  if (!out) return Error{file.targetPath(), 0, 0, "", "cannot write"};
+  return Ok{};
+}
+
+}  // namespace
+
+Status writeBenchReport(const std::string& dir, const BenchRunInfo& info, std::span<const BenchFrame> frames,
+                        std::span<const BenchKeyFrame> keyFrames) {
+  if (auto s = validateFrames(frames); !s) return s;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return Error{dir, 0, 0, "", "report directory does not exist"};
+  if (auto s = validateKeyFrames(dir, keyFrames); !s) return s;
+
+  struct Output {
+    const char* name;
+    std::string content;
+  };
+  std::vector<Output> outputs;
+  try {
+    const std::string svg = benchTimelineSvg(info, frames, keyFrames);
+    outputs.push_back({"frames.csv", framesCsv(frames)});
+    outputs.push_back({"summary.json", summaryJson(info, frames, keyFrames)});
+    outputs.push_back({"timeline.svg", "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n" + svg});
+    // Last, so an existing report.html means the files it links to exist too.
+    outputs.push_back({"report.html", benchReportHtml(info, frames, keyFrames, svg)});
+  } catch (const std::exception& e) {  // nlohmann or allocation: never out of here
+    return Error{dir, 0, 0, "", std::string("cannot build the report: ") + e.what()};
+  }
+
+  // All temporaries first: a failure here leaves every existing report file untouched and, through
+  // ~AtomicFile, no temporaries.
+  std::vector<std::unique_ptr<AtomicFile>> files;
+  for (const Output& o : outputs) {
+    const std::string path = (fs::path(dir) / o.name).string();
+    if (auto s = checkWritable(path, ""); !s) return Error{path, 0, 0, "", s.error().message};
+    files.push_back(std::make_unique<AtomicFile>(path));
+    if (auto s = writeTemporary(*files.back(), o.content); !s) return s;
+  }
+  for (auto& file : files) {
+    if (auto s = file->commit(); !s) return s;
+  }
+  return Ok{};
+}
+
+}  // namespace globe

@@ -1,0 +1,206 @@
+#include "engine/report/trade_report.h"
+
+#include "engine/report/bench_metrics.h"
+#include "engine/report/markup_escape.h"
+#include "planet/core/atomic_file.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+namespace globe {
+
+TradeRow aggregateTradeRows(const std::vector<TradeRow>& rows) {
+  TradeRow w = rows.front();
+  w.camera = "worst";
+  w.error = {};
+  double gen = 0;
+  for (const TradeRow& r : rows) {
+    w.frameMedian_ms = std::max(w.frameMedian_ms, r.frameMedian_ms);
+    w.frameP95_ms = std::max(w.frameP95_ms, r.frameP95_ms);
+    w.select_ms = std::max(w.select_ms, r.select_ms);
+    w.triangles = std::max(w.triangles, r.triangles);
+    w.nodes = std::max(w.nodes, r.nodes);
+    w.resident_mib = std::max(w.resident_mib, r.resident_mib);
+    w.converged = w.converged && r.converged;
+    gen += r.genPerNode_ms;
+    ScreenError& e = w.error;
+    e.samples += r.error.samples;
+    e.bothHit += r.error.bothHit;
+    e.unresolved += r.error.unresolved;
+    e.p50_px = std::max(e.p50_px, r.error.p50_px);
+    e.p95_px = std::max(e.p95_px, r.error.p95_px);
+    e.max_px = std::max(e.max_px, r.error.max_px);
+    e.p50_m = std::max(e.p50_m, r.error.p50_m);
+    e.p95_m = std::max(e.p95_m, r.error.p95_m);
+    e.max_m = std::max(e.max_m, r.error.max_m);
+    e.silhouetteMismatches += r.error.silhouetteMismatches;
+    e.silhouetteMax_px = std::max(e.silhouetteMax_px, r.error.silhouetteMax_px);
+  }
+  w.genPerNode_ms = gen / double(rows.size());
+  return w;
+}
+
+std::vector<size_t> paretoFrontier(const std::vector<std::pair<double, double>>& points) {
+  std::vector<size_t> frontier;
+  for (size_t i = 0; i < points.size(); ++i) {
+    bool dominated = false;
+    for (size_t j = 0; j < points.size() && !dominated; ++j) {
+      if (j == i) continue;
+      const auto& a = points[j];
+      const auto& b = points[i];
+      dominated = a.first <= b.first && a.second <= b.second && (a.first < b.first || a.second < b.second);
+    }
+    if (!dominated) frontier.push_back(i);
+  }
+  std::sort(frontier.begin(), frontier.end(), [&](size_t a, size_t b) { return points[a].first < points[b].first; });
+  return frontier;
+}
+
+namespace {
+
+std::string csvField(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string out = "\"";
+  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+double finite(double v) { return std::isfinite(v) ? v : 0.0; }
+
+}  // namespace
+
+std::string tradeCsv(const std::vector<TradeRow>& rows) {
+  std::string s =
+      "config,camera,grid_cells,distance_multiplier,max_depth,morph_fraction,generation,positions,width,height,"
+      "converged,frame_median_ms,"
+      "frame_p95_ms,select_ms,triangles,nodes,resident_mib,gen_ms_per_node,err_p50_px,err_p95_px,err_max_px,"
+      "err_p50_m,err_p95_m,err_max_m,silhouette_mismatches,silhouette_max_px,samples,samples_both_hit,"
+      "truth_unresolved\n";
+  for (const TradeRow& r : rows) {
+    const ScreenError& e = r.error;
+    s += csvField(r.config) + "," + csvField(r.camera) + "," + std::to_string(r.gridCells) + "," +
+         formatFixed(r.distanceMultiplier, 3) + "," + std::to_string(r.maxDepth) + "," +
+         formatFixed(r.morphFraction, 3) + "," + csvField(r.generation) + "," + csvField(r.positions) + "," +
+         std::to_string(r.width) + "," + std::to_string(r.height) + "," + (r.converged ? "1" : "0") + "," +
+         formatFixed(r.frameMedian_ms, 3) + "," + formatFixed(r.frameP95_ms, 3) + "," + formatFixed(r.select_ms, 4) +
+         "," + std::to_string(r.triangles) + "," + std::to_string(r.nodes) + "," + formatFixed(r.resident_mib, 3) +
+         "," + formatFixed(finite(r.genPerNode_ms), 4) + "," + formatFixed(e.p50_px, 4) + "," +
+         formatFixed(e.p95_px, 4) + "," + formatFixed(finite(e.max_px), 4) + "," + formatFixed(e.p50_m, 4) + "," +
+         formatFixed(e.p95_m, 4) + "," + formatFixed(finite(e.max_m), 4) + "," +
+         std::to_string(e.silhouetteMismatches) + "," + formatFixed(e.silhouetteMax_px, 1) + "," +
+         std::to_string(e.samples) + "," + std::to_string(e.bothHit) + "," + std::to_string(e.unresolved) + "\n";
+  }
+  return s;
+}
+
+std::string paretoSvg(const std::vector<TradeRow>& rows, const std::string& title) {
+  std::vector<const TradeRow*> pts;
+  for (const TradeRow& r : rows)
+    if (r.camera == "worst") pts.push_back(&r);
+  const double W = 900, H = 600, left = 80, right = 30, top = 50, bottom = 60;
+  double maxX = 1, minY = 1e-3, maxY = 1;
+  for (const TradeRow* r : pts) {
+    maxX = std::max(maxX, r->frameMedian_ms);
+    maxY = std::max(maxY, r->error.p95_px);
+  }
+  // Round ticks: a 1-2-5 step giving at most 10 intervals; labels need room on the right.
+  double step = std::pow(10.0, std::floor(std::log10(maxX * 1.15 / 10.0)));
+  for (double m : {1.0, 2.0, 5.0, 10.0})
+    if (maxX * 1.15 / (m * step) <= 10.0) {
+      step *= m;
+      break;
+    }
+  const int ticks = int(std::ceil(maxX * 1.15 / step));
+  maxX = ticks * step;
+  // Log error axis: whole decades from 1e-3 px (or the smallest point) to above the largest.
+  double lo = 1e9;
+  for (const TradeRow* r : pts) lo = std::min(lo, std::max(r->error.p95_px, 1e-4));
+  minY = std::pow(10.0, std::floor(std::log10(std::min(lo, 0.1))));
+  maxY = std::pow(10.0, std::ceil(std::log10(maxY * 1.01)));
+  auto sx = [&](double x) { return left + x / maxX * (W - left - right); };
+  auto sy = [&](double y) {
+    double ly = std::log10(std::max(y, minY));
+    return top + (1.0 - (ly - std::log10(minY)) / (std::log10(maxY) - std::log10(minY))) * (H - top - bottom);
+  };
+  auto f1 = [](double v) { return formatFixed(v, 1); };
+  std::string s = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" +
+                  f1(W) + "\" height=\"" + f1(H) + "\" viewBox=\"0 0 " + f1(W) + " " + f1(H) +
+                  "\" font-family=\"sans-serif\" font-size=\"11\">\n";
+  s += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  s += "<text x=\"" + f1(W / 2) + "\" y=\"24\" text-anchor=\"middle\" font-size=\"15\">" + escapeMarkup(title) +
+       "</text>\n";
+  // Axes, grid and ticks.
+  s += "<g stroke=\"#ccc\">\n";
+  for (int i = 0; i <= ticks; ++i) {
+    double x = step * i;
+    s += "<line x1=\"" + f1(sx(x)) + "\" y1=\"" + f1(top) + "\" x2=\"" + f1(sx(x)) + "\" y2=\"" + f1(H - bottom) +
+         "\"/>\n";
+  }
+  for (double y = minY; y <= maxY * 1.0001; y *= 10)
+    s += "<line x1=\"" + f1(left) + "\" y1=\"" + f1(sy(y)) + "\" x2=\"" + f1(W - right) + "\" y2=\"" + f1(sy(y)) +
+         "\"/>\n";
+  s += "</g>\n<g>\n";
+  for (int i = 0; i <= ticks; ++i) {
+    double x = step * i;
+    s += "<text x=\"" + f1(sx(x)) + "\" y=\"" + f1(H - bottom + 16) + "\" text-anchor=\"middle\">" + formatFixed(x, 0) +
+         "</text>\n";
+  }
+  for (double y = minY; y <= maxY * 1.0001; y *= 10)
+    s += "<text x=\"" + f1(left - 6) + "\" y=\"" + f1(sy(y) + 4) + "\" text-anchor=\"end\">" +
+         formatFixed(y, std::max(0, int(-std::floor(std::log10(y) + 1e-9)))) + "</text>\n";
+  s += "<text x=\"" + f1((left + W - right) / 2) + "\" y=\"" + f1(H - 18) +
+       "\" text-anchor=\"middle\">median frame time at the slowest camera (ms, converged)</text>\n";
+  s += "<text transform=\"translate(20," + f1((top + H - bottom) / 2) +
+       ") rotate(-90)\" text-anchor=\"middle\">p95 screen error at the worst camera (px, log)</text>\n";
+  // 33.3 ms budget and the 0.5 px "exact" line.
+  s += "<line x1=\"" + f1(sx(kFrameBudgetMs)) + "\" y1=\"" + f1(top) + "\" x2=\"" + f1(sx(kFrameBudgetMs)) +
+       "\" y2=\"" + f1(H - bottom) + "\" stroke=\"#c33\" stroke-dasharray=\"5,4\"/>\n";
+  if (0.5 >= minY && 0.5 <= maxY)
+    s += "<line x1=\"" + f1(left) + "\" y1=\"" + f1(sy(0.5)) + "\" x2=\"" + f1(W - right) + "\" y2=\"" + f1(sy(0.5)) +
+         "\" stroke=\"#36c\" stroke-dasharray=\"5,4\"/>\n";
+  s += "</g>\n";
+  std::vector<std::pair<double, double>> xy;
+  for (const TradeRow* r : pts) xy.emplace_back(r->frameMedian_ms, r->error.p95_px);
+  std::vector<size_t> front = paretoFrontier(xy);
+  if (!front.empty()) {
+    s += "<polyline fill=\"none\" stroke=\"#d62\" stroke-width=\"2\" points=\"";
+    for (size_t i : front) s += f1(sx(xy[i].first)) + "," + f1(sy(xy[i].second)) + " ";
+    s += "\"/>\n";
+  }
+  for (size_t i = 0; i < pts.size(); ++i) {
+    bool onFront = std::find(front.begin(), front.end(), i) != front.end();
+    s += "<circle cx=\"" + f1(sx(xy[i].first)) + "\" cy=\"" + f1(sy(xy[i].second)) + "\" r=\"" +
+         (onFront ? "5" : "3.5") + "\" fill=\"" + (onFront ? "#d62" : "#888") + "\"/>\n";
+    s += "<text x=\"" + f1(sx(xy[i].first) + 7) + "\" y=\"" + f1(sy(xy[i].second) - 5) + "\"" +
+         (onFront ? " font-weight=\"bold\"" : "") + ">" + escapeMarkup(pts[i]->config) + "</text>\n";
+  }
+  s += "<text x=\"" + f1(W - right) + "\" y=\"" + f1(top - 8) +
+       "\" text-anchor=\"end\" fill=\"#d62\">orange: Pareto frontier; dashed: 33.3 ms budget, 0.5 px</text>\n";
+  s += "</svg>\n";
+  return s;
+}
+
+Status writeTradeReport(const std::string& dir, const std::vector<TradeRow>& rows, const std::string& title) {
+  namespace fs = std::filesystem;
+  const std::pair<std::string, std::string> outputs[] = {{"trade.csv", tradeCsv(rows)},
+                                                         {"pareto.svg", paretoSvg(rows, title)}};
+  // Every temporary is written before any is renamed: a failure leaves neither file.
+  std::vector<std::unique_ptr<AtomicFile>> files;
+  for (const auto& [name, content] : outputs) {
+    const std::string path = (fs::path(dir) / name).string();
+    if (auto s = checkWritable(path, ""); !s) return Error{path, 0, 0, "", s.error().message};
+    files.push_back(std::make_unique<AtomicFile>(path));
+    std::ofstream out(files.back()->tempPath(), std::ios::binary);
+    out.write(content.data(), static_cast<std::streamsize>(content.size()));
+    out.flush();
+    if (!out) return Error{path, 0, 0, "", "cannot write"};
+  }
+  for (auto& file : files)
+    if (auto s = file->commit(); !s) return s;
+  return Ok{};
+}
+
+}  // namespace globe

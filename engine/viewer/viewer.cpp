@@ -1,0 +1,404 @@
+#include "engine/viewer/viewer.h"
+
+#include "engine/io/image_io.h"
+#include "engine/render/render_output.h"
+#include "engine/viewer/fly_camera.h"
+#include "engine/viewer/overlay.h"
+#include "engine/viewer/path_recorder.h"
+#include "engine/viewer/swapchain.h"
+#include "engine/viewer/window.h"
+#include "engine/vk/deferred_release_queue.h"
+#include "engine/vk/frame_ring.h"
+#include "engine/vk/offscreen_target.h"
+#include "engine/vk/vk_check.h"
+#include "planet/analysis/frame_stats.h"
+#include "planet/camera/camera_orientation.h"
+#include "planet/camera/camera_path_file.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <thread>
+#include <unordered_set>
+
+namespace globe {
+
+namespace {
+
+constexpr double kFixedStep_s = 1.0 / 60.0;
+constexpr float kSpaceColour[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+constexpr int kMaxReloadWait_s = 60;  // a script's WAIT RELOAD gives up after this
+
+// Keyboard and mouse state built from the event stream (window and script alike).
+struct InputState {
+  std::unordered_set<int> keysDown;
+  bool dragging = false;  // left button held
+  bool haveCursor = false;
+  double cursorX = 0, cursorY = 0;
+  double dragX_px = 0, dragY_px = 0;  // accumulated this frame
+
+  bool down(int key) const { return keysDown.count(key) != 0; }
+  double axis(int positive, int negative) const { return (down(positive) ? 1.0 : 0.0) - (down(negative) ? 1.0 : 0.0); }
+};
+
+// Lines on stdout are how scripted runs (tests) follow the viewer: flush each one.
+void printLine(const std::string& line) {
+  std::fputs((line + "\n").c_str(), stdout);
+  std::fflush(stdout);
+}
+
+std::unique_ptr<ViewerScene> makeScene(vk::Device& device, ViewerSceneOptions options) {
+  auto scene = ViewerScene::create(device, std::move(options));
+  // The command validated the settings and the planet; what is left is a programming error.
+  if (!scene) throw std::runtime_error(scene.error().format());
+  return std::move(*scene);
+}
+
+}  // namespace
+
+struct Viewer::State {
+  State(Window& w, vk::Device& d, ViewerOptions o)
+      : window(w),
+        device(d),
+        options(std::move(o)),
+        swapchain(d, w.framebufferExtent(), options.vsync),
+        ring(d),
+        target(std::make_unique<vk::OffscreenTarget>(d, swapchain.extent())),
+        scene(makeScene(d, options.scene)),
+        overlay(std::make_unique<Overlay>(d, w, swapchain)),
+        // The scene outlives the camera (declared earlier), and is never replaced: a reload
+        // swaps the planet inside it, so this query always sees the current ground.
+        camera(options.pose, scene->radius_m(), [this](const glm::dvec3& dir) { return scene->groundRadius(dir); }) {}
+
+  void handle(const InputEvent& e);
+  bool recreateSwapchain();
+  void renderFrame(uint32_t image, VkCommandBuffer cmd, const Camera& cam);
+  Status saveScreenshot(const std::string& path, const Camera& cam);
+  void reportReload(const ReloadOutcome& outcome);
+  GeodeticPose currentPose(const Camera& cam) const;
+  void toggleRecording(const Camera& cam);
+  void stopRecording();
+  void waitForReload();
+
+  Window& window;
+  vk::Device& device;
+  ViewerOptions options;
+  vk::DeferredReleaseQueue releases;  // destroyed after everything below that it may hold
+  vk::Swapchain swapchain;
+  vk::FrameRing ring;
+  std::unique_ptr<vk::OffscreenTarget> target;  // swapchain-sized HDR colour + reversed-Z depth
+  std::unique_ptr<ViewerScene> scene;
+  std::unique_ptr<Overlay> overlay;
+  FlyCamera camera;
+  PathRecorder recorder;
+
+  InputState input;
+  uint64_t frame = 0;  // frames submitted so far = number of the next frame
+  bool quit = false;
+  bool screenshotRequested = false;
+  bool recordToggleRequested = false;
+  bool waitForReloadRequested = false;
+  bool swapchainStale = false;
+  std::string message;                    // shown in the overlay
+  std::vector<std::string> planetErrors;  // of the planet file on disk, while it is invalid
+  FrameStats stats;
+};
+
+void Viewer::State::handle(const InputEvent& e) {
+  switch (e.type) {
+    case InputEvent::Type::Key:
+      if (e.down) {
+        input.keysDown.insert(e.code);
+        if (e.code == GLFW_KEY_ESCAPE) quit = true;
+        if (e.code == GLFW_KEY_F12 || e.code == GLFW_KEY_P) screenshotRequested = true;
+        if (e.code == GLFW_KEY_F1 || e.code == GLFW_KEY_L) scene->cycleDebugView();
+        if (e.code == GLFW_KEY_R) recordToggleRequested = true;
+      } else {
+        input.keysDown.erase(e.code);
+      }
+      break;
+    case InputEvent::Type::MouseButton:
+      if (e.code == GLFW_MOUSE_BUTTON_LEFT)
+        input.dragging = e.down && !overlay->wantsMouse();  // drags on the overlay are its own
+      break;
+    case InputEvent::Type::MouseMove:
+      if (input.haveCursor && input.dragging) {
+        input.dragX_px += e.x - input.cursorX;
+        input.dragY_px += e.y - input.cursorY;
+      }
+      input.cursorX = e.x;
+      input.cursorY = e.y;
+      input.haveCursor = true;
+      break;
+    case InputEvent::Type::Resize:
+      window.setSize(uint32_t(e.x), uint32_t(e.y));
+      break;
+    case InputEvent::Type::WaitReload:
+      waitForReloadRequested = true;
+      break;
+  }
+}
+
+void Viewer::State::waitForReload() {
+  // Scripts only: a test edits the planet file while the loop stands still, so the frame numbers
+  // of its screenshots do not depend on how fast this machine renders.
+  using Clock = std::chrono::steady_clock;
+  printLine("waiting for the planet file to change (frame " + std::to_string(frame) + ")");
+  Clock::time_point deadline = Clock::now() + std::chrono::seconds(kMaxReloadWait_s);
+  while (Clock::now() < deadline && !quit) {
+    for (const InputEvent& e : window.pollEvents()) handle(e);
+    if (auto outcome = scene->pollReload(Clock::now())) {
+      reportReload(*outcome);
+      return;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  std::fprintf(stderr, "globe: warning: the planet file did not change within %d s; going on\n", kMaxReloadWait_s);
+}
+
+bool Viewer::State::recreateSwapchain() {
+  VkExtent2D extent = window.framebufferExtent();
+  if (extent.width == 0 || extent.height == 0) return false;  // minimised: nothing to present to
+  // Everything below may still be in use by frames up to frame - 1; `frame` is the conservative key.
+  overlay->retireFramebuffers(releases, frame);
+  swapchain.recreate(extent, releases, frame);
+  overlay->attach(swapchain);
+  VkExtent2D size = swapchain.extent();
+  if (size.width != target->extent().width || size.height != target->extent().height) {
+    releases.retire(frame, std::move(target));
+    target = std::make_unique<vk::OffscreenTarget>(device, size);
+  }
+  swapchainStale = false;
+  return true;
+}
+
+void Viewer::State::renderFrame(uint32_t image, VkCommandBuffer cmd, const Camera& cam) {
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  GLOBE_VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
+
+  // Scene: HDR colour and reversed-Z depth. The terrain's per-frame buffers are indexed by
+  // frame % 2, the FrameRing slot whose fence begin() waited for.
+  target->begin(cmd, kSpaceColour);
+  scene->record(cmd, cam, uint32_t(frame % vk::kFramesInFlight));
+  target->end(cmd);  // colour is now TRANSFER_SRC_OPTIMAL
+
+  // Blit into the swapchain image; the sRGB format encodes gamma and clamps HDR to [0, 1].
+  VkImage swapImage = swapchain.image(image);
+  vk::transitionImage(cmd, swapImage, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+  VkExtent2D e = target->extent();
+  VkImageBlit blit{};
+  blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  blit.srcOffsets[1] = {int32_t(e.width), int32_t(e.height), 1};
+  blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  blit.dstOffsets[1] = blit.srcOffsets[1];
+  vkCmdBlitImage(cmd, target->colour().handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, swapImage,
+                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_NEAREST);
+  vk::transitionImage(cmd, swapImage, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+  overlay->record(cmd, image);  // leaves the image in PRESENT_SRC_KHR
+  GLOBE_VK_CHECK(vkEndCommandBuffer(cmd));
+}
+
+Status Viewer::State::saveScreenshot(const std::string& path, const Camera& cam) {
+  // The last submitted frame must be complete before its target is read; screenshots are rare.
+  GLOBE_VK_CHECK(vkQueueWaitIdle(device.queue()));
+  vk::ReadbackImage frameImage = target->readback();
+  ImageRgba image = toImage(frameImage, cam);
+  return writeImage(path, image, "screenshot");
+}
+
+void Viewer::State::reportReload(const ReloadOutcome& outcome) {
+  const std::string& file = scene->planetPath();
+  std::string when = " (frame " + std::to_string(frame) + ")";
+  if (outcome.errors.empty()) {
+    planetErrors.clear();
+    if (outcome.reloaded) {
+      message = "reloaded " + file;
+      printLine("planet reloaded: " + file + when);
+    } else {
+      printLine("planet unchanged: " + file + when);
+    }
+    return;
+  }
+  // Once per change of the file: the overlay keeps showing them until the next valid save.
+  planetErrors.clear();
+  std::fprintf(stderr, "globe: warning: %s is invalid (%zu error(s)); keeping the last good planet\n", file.c_str(),
+               outcome.errors.size());
+  for (const Error& e : outcome.errors) {
+    planetErrors.push_back(e.format());
+    std::fprintf(stderr, "globe: error: %s\n", planetErrors.back().c_str());
+  }
+  std::fflush(stderr);
+  printLine("planet reload failed: " + file + when);
+}
+
+GeodeticPose Viewer::State::currentPose(const Camera& cam) const {
+  return poseFromCamera(cam, scene->groundRadius(glm::normalize(cam.position_m)));
+}
+
+void Viewer::State::toggleRecording(const Camera& cam) {
+  if (recorder.recording()) {
+    stopRecording();
+    return;
+  }
+  recorder.start(currentPose(cam));
+  printLine("recording path (frame " + std::to_string(frame) + ")");
+}
+
+void Viewer::State::stopRecording() {
+  auto path = recorder.stop();
+  if (!path) {
+    message = "path not saved: " + path.error().format();
+    std::fprintf(stderr, "globe: warning: %s\n", message.c_str());
+    return;
+  }
+  std::string file = options.recordFile.empty() ? timestampedPathFile(options.recordDirectory) : options.recordFile;
+  if (Status st = saveCameraPath(file, *path); !st) {
+    message = "path not saved: " + st.error().format();
+    std::fprintf(stderr, "globe: warning: %s\n", message.c_str());
+    return;
+  }
+  char text[96];
+  std::snprintf(text, sizeof text, " (%zu keyframes, %.2f s)", path->keyframes().size(), path->duration_s());
+  message = "saved path " + file + text;
+  printLine("path " + file + text + " (frame " + std::to_string(frame) + ")");
+}
+
+Viewer::Viewer(Window& window, vk::Device& device, ViewerOptions options)
+    : s_(std::make_unique<State>(window, device, std::move(options))) {}
+
+Viewer::~Viewer() {
+  // Nothing may be destroyed while the GPU still uses it; a failed wait leaves nothing to wait for.
+  (void)vkDeviceWaitIdle(s_->device.device());
+}
+
+uint64_t Viewer::framesRendered() const { return s_->frame; }
+
+Status Viewer::run() {
+  State& s = *s_;
+  using Clock = std::chrono::steady_clock;
+  Clock::time_point previous = Clock::now();
+  Camera lastCamera = s.camera.camera(double(s.target->extent().width) / s.target->extent().height);
+
+  while (!s.quit && !(s.options.frames && s.frame >= s.options.frames)) {
+    // Input: the window's events, then the script's for this frame.
+    for (const InputEvent& e : s.window.pollEvents()) s.handle(e);
+    for (const InputEvent& e : s.options.script.take(s.frame)) s.handle(e);
+    if (s.waitForReloadRequested) {
+      s.waitForReloadRequested = false;
+      s.waitForReload();
+    }
+    if (s.window.shouldClose()) s.quit = true;
+    if (s.quit) break;
+
+    Clock::time_point now = Clock::now();
+    double wall_s = std::chrono::duration<double>(now - previous).count();
+    previous = now;
+
+    // Live reload, before this frame uses the terrain (a reload may replace it).
+    if (auto outcome = s.scene->pollReload(now)) s.reportReload(*outcome);
+
+    vk::FrameRing::Slot slot = s.ring.begin(s.frame);
+    if (s.frame >= vk::kFramesInFlight) s.releases.collect(s.frame - vk::kFramesInFlight);
+
+    if (s.window.takeResized() || s.swapchainStale) {
+      if (!s.recreateSwapchain()) {
+        glfwWaitEventsTimeout(0.05);  // minimised: sleep until something changes
+        continue;
+      }
+    }
+    std::optional<uint32_t> image = s.swapchain.acquire(slot.imageAcquired);
+    if (!image) {  // out of date: rebuild and try again next iteration
+      s.swapchainStale = true;
+      continue;
+    }
+
+    // Camera: keys move, left-drag turns.
+    FlyControls controls;
+    controls.forward = s.input.axis(GLFW_KEY_W, GLFW_KEY_S);
+    controls.right = s.input.axis(GLFW_KEY_D, GLFW_KEY_A);
+    controls.up = s.input.axis(GLFW_KEY_E, GLFW_KEY_Q);
+    controls.boost = s.input.down(GLFW_KEY_LEFT_SHIFT) || s.input.down(GLFW_KEY_RIGHT_SHIFT);
+    controls.turnRight_px = s.input.dragX_px;
+    controls.turnUp_px = -s.input.dragY_px;
+    s.input.dragX_px = s.input.dragY_px = 0;
+    double step_s = s.options.fixedStep ? kFixedStep_s : std::min(wall_s, 0.25);
+    s.camera.update(controls, step_s);
+    VkExtent2D extent = s.target->extent();
+    Camera cam = s.camera.camera(double(extent.width) / double(extent.height));
+
+    // Path recording in camera time: what the camera advanced by is what the replay advances by.
+    if (s.recordToggleRequested) {
+      s.recordToggleRequested = false;
+      s.toggleRecording(cam);
+    } else if (s.recorder.recording()) {
+      s.recorder.advance(step_s, s.currentPose(cam));
+    }
+
+    // FrameRing::begin waited for frame - kFramesInFlight. The terrain counts frames from
+    // kFramesInFlight, so its completed frame (its own numbering) is `s.frame` and never underflows:
+    // terrain frames below kFramesInFlight never existed, so nothing they "used" can be in flight.
+    s.scene->update(s.frame + vk::kFramesInFlight, cam, s.frame);
+
+    OverlayView view;
+    view.stats = s.stats;  // the previous frame's complete statistics (draws are counted in record)
+    view.stats.frame_ms = wall_s * 1000.0;
+    view.altitude_m = s.camera.altitude_m();
+    glm::dvec2 latLon = s.camera.latLon_deg();
+    view.latitude_deg = latLon.x;
+    view.longitude_deg = latLon.y;
+    view.speed_mps = s.camera.speed_mps();
+    view.debugView = s.scene->debugViewName();
+    view.deviceName = s.device.name();
+    view.planet = s.scene->planet().name + " (" + s.scene->planetPath() + ")";
+    if (s.recorder.recording()) {
+      char text[96];
+      std::snprintf(text, sizeof text, "recording... %.1f s, %zu keyframes (R stops)", s.recorder.elapsed_s(),
+                    s.recorder.keyframeCount());
+      view.recording = text;
+    }
+    view.message = s.message;
+    view.errors = s.planetErrors;
+    s.overlay->build(view);
+
+    s.renderFrame(*image, slot.cmd, cam);
+    s.stats = s.scene->stats();
+    s.ring.submit(s.frame, s.swapchain.renderFinished(*image));
+    if (!s.swapchain.present(*image)) s.swapchainStale = true;
+    lastCamera = cam;
+    ++s.frame;
+
+    if (s.screenshotRequested) {
+      s.screenshotRequested = false;
+      char name[64];
+      std::snprintf(name, sizeof name, "globe-frame%06llu%s", static_cast<unsigned long long>(s.frame - 1),
+                    s.options.screenshotExtension.c_str());
+      std::string path = (std::filesystem::path(s.options.screenshotDirectory) / name).string();
+      if (Status st = s.saveScreenshot(path, cam); st) {
+        s.message = "saved " + path;
+        // Tests compare screenshots of still views: say whether the terrain had converged.
+        printLine("screenshot " + path + (s.scene->converged() ? " (converged)" : " (streaming)"));
+      } else {
+        s.message = st.error().format();
+        std::fprintf(stderr, "globe: warning: %s\n", s.message.c_str());
+      }
+    }
+  }
+
+  // Quitting while recording keeps the flight.
+  if (s.recorder.recording()) s.stopRecording();
+  GLOBE_VK_CHECK(vkDeviceWaitIdle(s.device.device()));
+  s.releases.releaseAll();
+  if (!s.options.screenshotPath.empty()) {
+    if (s.frame == 0) return Error{"", 0, 0, "--screenshot", "no frame was rendered"};
+    return s.saveScreenshot(s.options.screenshotPath, lastCamera);
+  }
+  return Ok{};
+}
+
+}  // namespace globe

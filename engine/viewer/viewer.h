@@ -1,0 +1,54 @@
+#pragma once
+// `globe view`: the windowed frame loop. Each frame updates the planet's terrain (selection,
+// streaming, generation: engine/render/terrain.h) for the fly camera, draws it into an HDR offscreen
+// target with reversed-Z depth, blits that into the swapchain image (the sRGB swapchain format
+// encodes gamma), draws the overlay on top and presents, with two frames in flight. Input comes
+// from the window and, for tests, from an input script. The planet file is watched and reloaded
+// when it changes (engine/viewer/viewer_scene.h); R records the flight as a camera path.
+#include "engine/viewer/input_script.h"
+#include "engine/viewer/viewer_scene.h"
+#include "engine/vk/device.h"
+#include "planet/camera/camera.h"
+#include "planet/core/error.h"
+
+#include <memory>
+#include <string>
+
+namespace globe {
+
+class Window;
+
+struct ViewerOptions {
+  GeodeticPose pose;                         // starting camera (height above the terrain)
+  ViewerSceneOptions scene;                  // planet, mode, terrain settings, sun
+  uint64_t frames = 0;                       // stop after this many frames; 0 = until Esc or the window closes
+  InputScript script;                        // scripted input, applied by frame number
+  bool fixedStep = false;                    // advance the camera by 1/60 s per frame (deterministic runs)
+  std::string screenshotPath;                // written at exit when not empty (.png or .exr)
+  std::string screenshotDirectory = ".";     // where F12/P screenshots go
+  std::string screenshotExtension = ".png";  // of F12/P screenshots: ".png" or ".exr" (with depth)
+  std::string recordDirectory = ".";         // where R writes globe-path-YYYYmmdd-HHMMSS.path
+  std::string recordFile;                    // when set, R writes this file instead (overwriting)
+  bool vsync = true;                         // FIFO presentation; false prefers MAILBOX/IMMEDIATE
+};
+
+class Viewer {
+ public:
+  // Throws VulkanError on device failures; an invalid scene (terrain settings) is an Error from run().
+  Viewer(Window& window, vk::Device& device, ViewerOptions options);
+  ~Viewer();
+  Viewer(const Viewer&) = delete;
+  Viewer& operator=(const Viewer&) = delete;
+
+  // Runs until Esc, the window closes or the frame limit; then writes the exit screenshot.
+  // An error is a screenshot that could not be written.
+  Status run();
+
+  uint64_t framesRendered() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> s_;
+};
+
+}  // namespace globe

@@ -1,0 +1,46 @@
+#pragma once
+// A graphics pipeline for dynamic rendering into the offscreen (or swapchain) formats: no vertex
+// input (vertex shaders pull from storage buffers), reversed-Z depth test, push constants and
+// storage buffers pushed per draw.
+#include "engine/vk/resources.h"
+
+#include <initializer_list>
+#include <string>
+
+namespace globe::vk {
+
+struct GraphicsPipelineDesc {
+  std::string vertexShader;     // e.g. "terrain.vert"
+  std::string fragmentShader;   // e.g. "terrain.frag"
+  uint32_t storageBuffers = 0;  // buffer bindings 0..n-1 (storage, or uniform per uniformMask)
+  uint32_t uniformMask = 0;     // bit b: binding b is a uniform buffer (see compute_pipeline.h)
+  uint32_t pushConstantBytes = 0;
+  VkFormat colourFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+  VkFormat depthFormat = VK_FORMAT_D32_SFLOAT;
+  bool depthTest = true;  // reversed-Z: GREATER_OR_EQUAL passes nearer fragments
+  bool depthWrite = true;
+  bool wireframe = false;  // needs fillModeNonSolid
+  VkCullModeFlags cull = VK_CULL_MODE_NONE;
+  bool blend = false;  // premultiplied-alpha blending (overlays)
+};
+
+class GraphicsPipeline {
+ public:
+  GraphicsPipeline(Device& device, const GraphicsPipelineDesc& desc);
+
+  void bind(VkCommandBuffer cmd, std::initializer_list<VkDescriptorBufferInfo> buffers, const void* pushConstants,
+            uint32_t pushConstantBytes) const;
+
+  VkPipeline pipeline() const { return pipeline_; }
+  VkPipelineLayout layout() const { return layout_; }
+
+ private:
+  UniqueDescriptorSetLayout setLayout_;
+  UniquePipelineLayout layout_;
+  UniquePipeline pipeline_;
+  PFN_vkCmdPushDescriptorSetKHR pushDescriptorSet_ = nullptr;
+  uint32_t uniformMask_ = 0;
+  VkShaderStageFlags stages_ = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+};
+
+}  // namespace globe::vk

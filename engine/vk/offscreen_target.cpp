@@ -1,0 +1,91 @@
+#include "engine/vk/offscreen_target.h"
+
+#include <Imath/half.h>
+
+namespace globe::vk {
+
+OffscreenTarget::OffscreenTarget(Device& device, VkExtent2D extent)
+    : device_(device),
+      colour_(device, kColourFormat, extent, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+              VK_IMAGE_ASPECT_COLOR_BIT, "offscreen colour"),
+      depth_(device, kDepthFormat, extent,
+             VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_DEPTH_BIT,
+             "offscreen depth"),
+      colourReadback_(device, VkDeviceSize(extent.width) * extent.height * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                      MemoryUse::HostVisible, "colour readback"),
+      depthReadback_(device, VkDeviceSize(extent.width) * extent.height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                     MemoryUse::HostVisible, "depth readback") {}
+
+void OffscreenTarget::begin(VkCommandBuffer cmd, const float clear[4]) {
+  VkImageLayout colourFrom = initialised_ ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED;
+  transitionImage(cmd, colour_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, colourFrom,
+                  VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+  transitionImage(
+      cmd, depth_.handle(), VK_IMAGE_ASPECT_DEPTH_BIT,
+      colourFrom == VK_IMAGE_LAYOUT_UNDEFINED ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+      VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+  initialised_ = true;
+
+  VkRenderingAttachmentInfo colour{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  colour.imageView = colour_.view();
+  colour.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  colour.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  colour.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  for (int i = 0; i < 4; ++i) colour.clearValue.color.float32[i] = clear[i];
+  VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  depth.imageView = depth_.view();
+  depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+  depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  depth.clearValue.depthStencil = {0.0f, 0};  // reversed-Z: far is 0
+  VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
+  info.renderArea = {{0, 0}, extent()};
+  info.layerCount = 1;
+  info.colorAttachmentCount = 1;
+  info.pColorAttachments = &colour;
+  info.pDepthAttachment = &depth;
+  vkCmdBeginRendering(cmd, &info);
+
+  VkViewport viewport{0, 0, float(extent().width), float(extent().height), 0, 1};
+  VkRect2D scissor{{0, 0}, extent()};
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+}
+
+void OffscreenTarget::end(VkCommandBuffer cmd) {
+  vkCmdEndRendering(cmd);
+  transitionImage(cmd, colour_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+  transitionImage(cmd, depth_.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+}
+
+ReadbackImage OffscreenTarget::readback() {
+  VkExtent2D e = extent();
+  device_.submitAndWait([&](VkCommandBuffer cmd) {
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {e.width, e.height, 1};
+    vkCmdCopyImageToBuffer(cmd, colour_.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, colourReadback_.handle(), 1,
+                           &region);
+    region.imageSubresource.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
+    vkCmdCopyImageToBuffer(cmd, depth_.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, depthReadback_.handle(), 1,
+                           &region);
+  });
+  ReadbackImage out;
+  out.width = e.width;
+  out.height = e.height;
+  size_t n = size_t(e.width) * e.height;
+  out.rgba.resize(n * 4);
+  const auto* halves = static_cast<const uint16_t*>(colourReadback_.mapped());
+  for (size_t i = 0; i < n * 4; ++i) {
+    Imath::half h;
+    h.setBits(halves[i]);
+    out.rgba[i] = float(h);
+  }
+  const auto* depths = static_cast<const float*>(depthReadback_.mapped());
+  out.depth.assign(depths, depths + n);
+  return out;
+}
+
+}  // namespace globe::vk

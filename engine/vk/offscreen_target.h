@@ -1,0 +1,49 @@
+#pragma once
+// An offscreen render target: linear HDR colour (RGBA16F) and a 32-bit float depth buffer
+// (reversed-Z: 1 is near, 0 is infinitely far), with readback to the CPU.
+#include "engine/vk/resources.h"
+
+#include <vector>
+
+namespace globe::vk {
+
+// What a frame looks like on the CPU after readback.
+struct ReadbackImage {
+  uint32_t width = 0;
+  uint32_t height = 0;
+  std::vector<float> rgba;   // linear colour, 4 floats per pixel, row 0 at the top
+  std::vector<float> depth;  // device depth per pixel (reversed-Z: 0 = nothing drawn / infinity)
+
+  float depthAt(uint32_t x, uint32_t y) const { return depth[size_t(y) * width + x]; }
+  const float* pixel(uint32_t x, uint32_t y) const { return &rgba[(size_t(y) * width + x) * 4]; }
+};
+
+class OffscreenTarget {
+ public:
+  static constexpr VkFormat kColourFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+  static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+
+  OffscreenTarget(Device& device, VkExtent2D extent);
+
+  VkExtent2D extent() const { return colour_.extent(); }
+  const Image& colour() const { return colour_; }
+  const Image& depth() const { return depth_; }
+
+  // Layout expected by begin(): images are kept in attachment layouts between frames.
+  // Records vkCmdBeginRendering with clear colour `clear` (linear RGBA) and depth 0 (reversed-Z).
+  void begin(VkCommandBuffer cmd, const float clear[4]);
+  void end(VkCommandBuffer cmd);
+
+  // Copies colour and depth to the CPU (submits and waits).
+  ReadbackImage readback();
+
+ private:
+  Device& device_;
+  Image colour_;
+  Image depth_;
+  Buffer colourReadback_;
+  Buffer depthReadback_;
+  bool initialised_ = false;
+};
+
+}  // namespace globe::vk

@@ -1,0 +1,71 @@
+#pragma once
+// Buffers, images and shader modules: small owners with the memory bound to them.
+#include "engine/vk/device.h"
+#include "engine/vk/vk_handles.h"
+
+#include <span>
+#include <string>
+
+namespace globe::vk {
+
+enum class MemoryUse {
+  DeviceLocal,  // fastest for the GPU; not mapped
+  HostVisible,  // mapped for the buffer's lifetime, coherent: uploads, readback, per-frame data
+};
+
+class Buffer {
+ public:
+  Buffer() = default;
+  Buffer(Device& device, VkDeviceSize sizeBytes, VkBufferUsageFlags usage, MemoryUse memory, const char* name);
+
+  VkBuffer handle() const { return buffer_; }
+  VkDeviceSize size() const { return size_; }
+  void* mapped() const { return mapped_; }  // nullptr unless HostVisible
+  template <class T>
+  std::span<T> as() const {
+    return {static_cast<T*>(mapped_), static_cast<size_t>(size_ / sizeof(T))};
+  }
+  VkDescriptorBufferInfo descriptor() const { return {buffer_, 0, size_}; }
+
+ private:
+  UniqueMemory memory_;  // declared first: destroyed after the buffer that uses it
+  UniqueBuffer buffer_;
+  VkDeviceSize size_ = 0;
+  void* mapped_ = nullptr;
+};
+
+class Image {
+ public:
+  Image() = default;
+  Image(Device& device, VkFormat format, VkExtent2D extent, VkImageUsageFlags usage, VkImageAspectFlags aspect,
+        const char* name);
+
+  VkImage handle() const { return image_; }
+  VkImageView view() const { return view_; }
+  VkFormat format() const { return format_; }
+  VkExtent2D extent() const { return extent_; }
+  VkImageAspectFlags aspect() const { return aspect_; }
+
+ private:
+  UniqueMemory memory_;
+  UniqueImage image_;
+  UniqueImageView view_;
+  VkFormat format_ = VK_FORMAT_UNDEFINED;
+  VkExtent2D extent_{};
+  VkImageAspectFlags aspect_ = 0;
+};
+
+// Directory holding the compiled SPIR-V: $GLOBE_SHADER_DIR, else share/globe/shaders beside the
+// program (planet/core/data_directory.h).
+std::string shaderDirectory();
+
+// Loads shaderDirectory()/NAME.spv (e.g. "terrain.vert"), or NAME.spv when NAME is an absolute path
+// (the test suite's own shaders). Throws std::runtime_error with one line
+// naming the file when it is missing or not SPIR-V.
+UniqueShaderModule loadShaderModule(Device& device, const std::string& name);
+
+// A full pipeline barrier for images in the common transitions of this engine (layout change).
+void transitionImage(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
+                     VkImageLayout to);
+
+}  // namespace globe::vk

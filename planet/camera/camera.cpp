@@ -1,0 +1,168 @@
+#include "planet/camera/camera.h"
+
+#include <GeographicLib/Geocentric.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+#include <vector>
+
+namespace globe {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDeg = kPi / 180.0;
+
+Result<double> parseNumber(const std::string& text, const std::string& field, const char* what) {
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  double v = std::strtod(begin, &end);
+  while (end && *end == ' ') ++end;
+  if (text.empty() || end == begin || *end != '\0')
+    return Error{"", 0, 0, field, std::string(what) + " '" + text + "' is not a number"};
+  if (!std::isfinite(v)) return Error{"", 0, 0, field, std::string(what) + " must be finite"};
+  return v;
+}
+}  // namespace
+
+Result<GeodeticPose> parsePose(const std::string& text, const std::string& field) {
+  std::vector<std::string> parts;
+  std::stringstream ss(text);
+  std::string part;
+  while (std::getline(ss, part, ',')) parts.push_back(part);
+  if (!text.empty() && text.back() == ',') parts.push_back("");
+  if (parts.size() != 3 && parts.size() != 6)
+    return Error{"", 0, 0, field, "expected LAT,LON,HEIGHT[,HEADING,PITCH,ROLL], got '" + text + "'"};
+  static const char* names[] = {"latitude", "longitude", "height", "heading", "pitch", "roll"};
+  double v[6] = {0, 0, 0, 0, 0, 0};
+  for (size_t i = 0; i < parts.size(); ++i) {
+    auto r = parseNumber(parts[i], field, names[i]);
+    if (!r) return r.error();
+    v[i] = *r;
+  }
+  GeodeticPose pose{v[0], v[1], v[2], v[3], v[4], v[5]};
+  if (parts.size() == 3) pose.pitch_deg = std::nan("");  // "look at the horizon", resolved later
+  if (auto s = validatePose(pose, field); !s) return s.error();
+  return pose;
+}
+
+Status validatePose(const GeodeticPose& pose, const std::string& field) {
+  if (!std::isfinite(pose.latitude_deg) || std::abs(pose.latitude_deg) > 90)
+    return Error{"", 0, 0, field, "latitude must be within [-90, 90] degrees"};
+  if (!std::isfinite(pose.longitude_deg)) return Error{"", 0, 0, field, "longitude must be finite"};
+  if (!std::isfinite(pose.height_m) || pose.height_m <= 0 || pose.height_m > 1e12)
+    return Error{"", 0, 0, field, "height must be within (0, 1e12] metres above the surface"};
+  if (!std::isfinite(pose.heading_deg) || !std::isfinite(pose.roll_deg))
+    return Error{"", 0, 0, field, "heading and roll must be finite"};
+  if (!std::isnan(pose.pitch_deg) && std::abs(pose.pitch_deg) > 90)
+    return Error{"", 0, 0, field, "pitch must be within [-90, 90] degrees"};
+  return Ok{};
+}
+
+glm::dvec3 defaultSunDirection(const glm::dvec3& position_m) {
+  glm::dvec2 ll = latLonFromPosition(position_m);
+  double lat = ll.x * kDeg, lon = ll.y * kDeg;
+  glm::dvec3 up{std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
+  glm::dvec3 east{-std::sin(lon), std::cos(lon), 0.0};
+  glm::dvec3 north = glm::cross(up, east);
+  double towardsEquator = ll.x >= 0 ? -1.0 : 1.0;
+  return glm::normalize(0.5 * east + 0.5 * towardsEquator * north + 1.0 * up);
+}
+
+double horizonPitch_deg(double height_m, double radius_m) {
+  // The horizon lies acos(R / (R + h)) below the local horizontal.
+  double ratio = radius_m / (radius_m + std::max(height_m, 0.0));
+  return -std::acos(std::clamp(ratio, -1.0, 1.0)) / kDeg;
+}
+
+glm::dvec3 directionFromLatLon(double latitude_deg, double longitude_deg) {
+  double lat = latitude_deg * kDeg, lon = longitude_deg * kDeg;
+  return {std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
+}
+
+glm::dvec2 latLonFromPosition(const glm::dvec3& p) {
+  double lon = std::atan2(p.y, p.x) / kDeg;
+  double lat = std::atan2(p.z, std::hypot(p.x, p.y)) / kDeg;
+  return {lat, lon};
+}
+
+Camera cameraFromPose(const GeodeticPose& pose, double groundRadius_m, double sphereRadius_m, double aspect) {
+  Camera cam;
+  cam.aspect = aspect;
+  // GeographicLib on the planet's sphere (flattening 0): position and the local east/north/up frame.
+  GeographicLib::Geocentric sphere(groundRadius_m, 0.0);
+  std::vector<double> m(9);
+  double x, y, z;
+  sphere.Forward(pose.latitude_deg, pose.longitude_deg, pose.height_m, x, y, z, m);
+  cam.position_m = {x, y, z};
+  // Columns of M are east, north, up in planet-fixed coordinates (row-major storage).
+  glm::dvec3 east{m[0], m[3], m[6]}, north{m[1], m[4], m[7]}, upLocal{m[2], m[5], m[8]};
+
+  double pitch = std::isnan(pose.pitch_deg) ? horizonPitch_deg(pose.height_m, sphereRadius_m) - 2.0 : pose.pitch_deg;
+  pitch = std::clamp(pitch, -90.0, 90.0);
+  double h = pose.heading_deg * kDeg, p = pitch * kDeg, r = pose.roll_deg * kDeg;
+  glm::dvec3 forward = std::cos(p) * (std::sin(h) * east + std::cos(h) * north) + std::sin(p) * upLocal;
+  // Right is defined by the heading alone, so straight-down views keep a stable orientation.
+  glm::dvec3 right = std::cos(h) * east - std::sin(h) * north;
+  glm::dvec3 up = glm::cross(right, forward);
+  // Roll turns right and up about the view direction.
+  glm::dvec3 rolledRight = std::cos(r) * right - std::sin(r) * up;
+  glm::dvec3 rolledUp = std::sin(r) * right + std::cos(r) * up;
+  cam.forward = glm::normalize(forward);
+  cam.right = glm::normalize(rolledRight);
+  cam.up = glm::normalize(rolledUp);
+  // Near plane: a fraction of the height above ground, so 1 cm over the surface still resolves.
+  cam.near_m = std::clamp(pose.height_m * 0.25, 1e-4, 100.0);
+  return cam;
+}
+
+glm::dmat4 Camera::viewFromWorld(const glm::dvec3& origin_m) const {
+  glm::dvec3 eye = position_m - origin_m;
+  glm::dvec3 back = -forward;
+  glm::dmat4 v(1.0);
+  v[0][0] = right.x;
+  v[1][0] = right.y;
+  v[2][0] = right.z;
+  v[0][1] = up.x;
+  v[1][1] = up.y;
+  v[2][1] = up.z;
+  v[0][2] = back.x;
+  v[1][2] = back.y;
+  v[2][2] = back.z;
+  v[3][0] = -glm::dot(right, eye);
+  v[3][1] = -glm::dot(up, eye);
+  v[3][2] = -glm::dot(back, eye);
+  return v;
+}
+
+glm::dmat4 Camera::projection() const {
+  double f = 1.0 / std::tan(verticalFov_rad * 0.5);
+  glm::dmat4 p(0.0);
+  p[0][0] = f / aspect;
+  p[1][1] = -f;      // Vulkan clip space: y points down
+  p[3][2] = near_m;  // z_clip = near
+  p[2][3] = -1.0;    // w_clip = -z_view
+  return p;
+}
+
+GeodeticPose standardCameraPose(int index) {
+  switch (index) {
+    case 0:
+      return {20.0, -100.0, 2.0e7, 0, -90, 0};
+    case 1:
+      return {22.0, -99.0, 1.0e5, 60, -30, 0};
+    case 2:
+      return {22.0, -98.8, 1.0e4, 60, -15, 0};
+    case 3:
+      return {22.05, -98.4, 1.0e3, 60, -8, 0};
+    default:
+      return {22.1, -98.3, 2.0, 60, -2, 0};
+  }
+}
+
+const char* standardCameraName(int index) {
+  static const char* const kNames[kStandardCameraCount] = {"orbit", "100km", "10km", "1km", "2m"};
+  return kNames[index < 0 || index >= kStandardCameraCount ? kStandardCameraCount - 1 : index];
+}
+
+}  // namespace globe

@@ -1,0 +1,87 @@
+#pragma once
+// Camera paths: timed keyframes (geodetic position, height above the ground, heading/pitch/roll)
+// and their smooth interpolation, for deterministic benchmark replay and viewer recording. The file
+// format lives in camera_path_file.h; docs/camera-paths.md describes both.
+//
+// Interpolation (all double):
+//  - direction from the planet centre: a cubic Hermite curve on the unit sphere (spherical Bezier
+//    evaluated by slerp de Casteljau, Shoemake 1985), so longitude wrap and the poles are ordinary
+//    points. Tangents are the time-weighted three-point velocities, limited to 3x the slower
+//    adjacent chord speed (Fritsch-Carlson) so a repeated keyframe means "stand still" and nothing
+//    overshoots. C1 in time: position and velocity are continuous at keyframes.
+//  - height above the ground: the same monotone cubic Hermite on ln(height_m), so a descent from
+//    orbit to the ground spends comparable time in each decade of altitude and never undershoots.
+//  - orientation: slerp between the two keyframes' quaternions, each first carried along with the
+//    camera by the smallest rotation taking its keyframe's up direction to the current one, so
+//    level keyframes give a level flight between them even over long arcs or across a pole. C0.
+// The camera's position is direction * (groundRadius(direction) + height): it follows the terrain.
+#include "planet/camera/camera.h"
+#include "planet/core/error.h"
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace globe {
+
+// Ground radius (metres from the planet centre) below a unit planet-fixed direction: the elevation
+// model's surface, or a constant sphere. Camera paths don't depend on the elevation model itself.
+using GroundRadiusFn = std::function<double(const glm::dvec3& unitDirection)>;
+
+struct PathKeyframe {
+  double time_s = 0;  // path time, seconds; strictly increasing along a path
+  GeodeticPose pose;  // pitch must not be NaN (no "look at the horizon" default in paths)
+  int line = 0;       // 1-based line in the source file for errors, 0 when built in memory
+};
+
+class CameraPath {
+ public:
+  // Consecutive keyframes may be at most this far apart on the sphere (degrees of arc): the shortest
+  // great circle between nearly antipodal points is ill-defined.
+  static constexpr double kMaxSegmentArc_deg = 150.0;
+  // ... and may turn the camera by less than this (degrees): slerp takes the shorter way round, so
+  // a half turn is ambiguous. Split larger turns with extra keyframes.
+  static constexpr double kMaxSegmentTurn_deg = 179.0;
+
+  // Validates and prepares keyframes (>= 2, increasing finite times, poses within validatePose's
+  // ranges, segment arc and turn limits). Errors carry `file` and the keyframe's line (or name
+  // "keyframe N", 1-based, when line is 0).
+  static Result<CameraPath> create(std::vector<PathKeyframe> keyframes, const std::string& file = "");
+
+  const std::vector<PathKeyframe>& keyframes() const { return keys_; }
+  double startTime_s() const { return keys_.front().time_s; }
+  double endTime_s() const { return keys_.back().time_s; }
+  double duration_s() const { return endTime_s() - startTime_s(); }
+
+  // Times outside [startTime_s, endTime_s] are clamped. At a keyframe's exact time these return
+  // that keyframe as written (bit-exact, longitude not wrapped).
+  GeodeticPose poseAt(double t_s) const;
+  glm::dvec3 directionAt(double t_s) const;    // unit, planet-fixed
+  double heightAt(double t_s) const;           // metres above the ground
+  glm::dquat orientationAt(double t_s) const;  // camera axes -> planet-fixed (camera_orientation.h)
+  // direction * (groundRadius(direction) + height), metres, planet-centred.
+  glm::dvec3 positionAt(double t_s, const GroundRadiusFn& groundRadius) const;
+  // The camera at time t: cameraFromPose(poseAt(t), groundRadius(directionAt(t)), sphereRadius_m, aspect).
+  Camera cameraAt(double t_s, double sphereRadius_m, double aspect, const GroundRadiusFn& groundRadius) const;
+
+ private:
+  struct Key {
+    glm::dvec3 direction{1, 0, 0};     // unit
+    glm::dvec3 directionTangent{0.0};  // d(direction)/dt, tangent to the sphere, 1/s
+    double logHeight = 0;              // ln(height_m)
+    double logHeightSlope = 0;         // d ln(height)/dt, 1/s
+    glm::dquat orientation{1, 0, 0, 0};
+  };
+  CameraPath() = default;
+  // Index k of the segment [t_k, t_k+1] holding t (t already clamped), and the keyframe hit if any.
+  std::size_t segmentOf(double t_s) const;
+  int keyframeAt(double t_s) const;  // index, or -1 when t is not exactly a keyframe time
+
+  std::vector<PathKeyframe> keys_;
+  std::vector<Key> prepared_;
+};
+
+}  // namespace globe

@@ -1,0 +1,38 @@
+#pragma once
+// Writes a file so that readers never see it half-written: the content goes to a temporary file
+// beside the target, which is renamed over the target only once complete. An interrupted write
+// (error, crash, kill) leaves no target file and, through the destructor, no temporary either.
+#include "planet/core/error.h"
+
+#include <string>
+
+namespace globe {
+
+class AtomicFile {
+ public:
+  // Nothing is created until tempPath() is written by the caller.
+  explicit AtomicFile(std::string targetPath);
+  ~AtomicFile();  // removes the temporary unless commit() succeeded
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  const std::string& targetPath() const { return target_; }
+  const std::string& tempPath() const { return temp_; }
+
+  // Renames the temporary over the target.
+  Status commit();
+
+ private:
+  std::string target_;
+  std::string temp_;
+  bool committed_ = false;
+};
+
+// Fails with a one-line Error when `path`'s directory does not exist or is not writable, so a
+// command can refuse before it spends time computing an output it cannot store.
+Status checkWritable(const std::string& path, const std::string& field);
+
+// Writes `content` to `path` atomically.
+Status writeFileAtomically(const std::string& path, const std::string& content, const std::string& field);
+
+}  // namespace globe

@@ -1,0 +1,57 @@
+#pragma once
+// Surface colour of a planet by elevation and slope: the `[[colour_ramp]]`, `[rock]` and `[snow]`
+// parts of a planet file (docs/planet-files.md). Plain data; packColourRamp turns it into the
+// fixed-size struct the shaders read (shaders/include/colour_ramp.h) and rampColour is the
+// reference evaluation (used by `globe planet export --png` and mirrored by shaders).
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "planet/core/error.h"
+#include "shaders/include/colour_ramp.h"
+
+namespace globe {
+
+inline constexpr int kMaxColourStops = GLOBE_MAX_COLOUR_STOPS;
+
+struct ColourRampStop {
+  double elevation_m = 0.0;         // elevation above radius_m, metres, [-1e7, 1e7]
+  glm::vec3 colour = glm::vec3(0);  // linear RGB, each in [0, 1]
+
+  bool operator==(const ColourRampStop&) const = default;
+};
+
+// The ramp used when a planet file has none: an Earth-like ocean / lowland / highland / peak ramp
+// over -6000 .. +5000 m (the terrain renderer has the same idea).
+std::vector<ColourRampStop> defaultColourRampStops();
+
+struct ColourRamp {
+  // 2 .. kMaxColourStops stops, elevations strictly increasing; colours between stops are
+  // interpolated linearly, outside the end stops they are clamped.
+  std::vector<ColourRampStop> stops = defaultColourRampStops();
+  // Rock on steep ground: none below rock_slope_deg - rock_blend_deg / 2, full above + blend / 2.
+  double rock_slope_deg = 35.0;  // degrees from horizontal, [0, 90]
+  double rock_blend_deg = 10.0;  // degrees, [0, 90]
+  glm::vec3 rock_colour = glm::vec3(0.22f, 0.20f, 0.18f);
+  // Snow above snow_elevation_m (full at + snow_blend_m) where the slope is at most max_slope_deg.
+  bool snow = false;                 // true when the file has a [snow] table
+  double snow_elevation_m = 4000.0;  // metres, [-1e7, 1e7]
+  double snow_blend_m = 500.0;       // metres, [0, 1e7]
+  double snow_max_slope_deg = 50.0;  // degrees, [0, 90]
+  glm::vec3 snow_colour = glm::vec3(0.90f, 0.92f, 0.95f);
+
+  bool operator==(const ColourRamp&) const = default;
+};
+
+// Every problem with the ramp, each an Error with `field` set (e.g. "colour_ramp[2].elevation_m").
+void appendColourRampErrors(const ColourRamp& ramp, std::vector<Error>& errors);
+
+// Packs a valid ramp (appendColourRampErrors adds nothing) into the shaders' struct.
+gpu::ColourRampParams packColourRamp(const ColourRamp& ramp);
+
+// The reference evaluation (see shaders/include/colour_ramp.h): linear RGB at elevation
+// `elevation_m` (metres above radius_m) on ground whose normal makes cos_slope with the vertical.
+glm::vec3 rampColour(const gpu::ColourRampParams& ramp, double elevation_m, double cos_slope);
+
+}  // namespace globe

@@ -1,0 +1,134 @@
+#include "planet/elevation/elevation.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include "planet/elevation/gradient_noise.h"
+
+namespace globe {
+
+std::uint32_t layerSeed(std::uint64_t planet_seed, int layer_index) {
+  const auto lo = static_cast<std::uint32_t>(planet_seed & 0xffffffffULL);
+  const auto hi = static_cast<std::uint32_t>(planet_seed >> 32);
+  const auto index = static_cast<std::uint32_t>(layer_index + 1);
+  return hashMix32(hashMix32(lo + 0x85ebca6bU * index) ^ hashMix32(hi + 0xc2b2ae35U));
+}
+
+gpu::ElevationParams packElevationParams(const PlanetDescription& planet) {
+  assert(validatePlanet(planet).ok());
+  gpu::ElevationParams p{};
+  p.radius_m = planet.radius_m;
+  p.sea_level_m = planet.sea_level_m;
+  p.layer_count = static_cast<gpu::uint>(planet.layers.size());
+  for (std::size_t i = 0; i < planet.layers.size() && i < GLOBE_MAX_ELEVATION_LAYERS; ++i) {
+    const ElevationLayer& l = planet.layers[i];
+    gpu::ElevationLayerParams& g = p.layers[i];
+    g.frequency = 1.0 / l.wavelength_m;
+    g.lacunarity = l.lacunarity;
+    g.gain = l.gain;
+    g.amplitude_m = l.amplitude_m;
+    g.offset_m = l.offset_m;
+    g.seed = layerSeed(planet.seed, static_cast<int>(i));
+    g.octaves = static_cast<gpu::uint>(l.octaves);
+    g.kind = static_cast<gpu::uint>(l.kind);
+    g.modulator = l.modulated_by >= 0 ? l.modulated_by : GLOBE_NO_MODULATOR;
+    if (l.modulated_by >= 0) {
+      g.modulation_low_m = l.modulation_low_m;
+      g.modulation_inv_range = 1.0 / (l.modulation_high_m - l.modulation_low_m);
+      g.modulation_floor = l.modulation_floor;
+    } else {  // a scale of exactly 1, should the modulator ever be read
+      g.modulation_floor = 1.0;
+    }
+  }
+  return p;
+}
+
+ElevationSpecialization elevationSpecialization(const gpu::ElevationParams& params) {
+  ElevationSpecialization s{};
+  s[GLOBE_ELEVATION_SPEC_LAYER_COUNT] = params.layer_count;
+  for (int l = 0; l < GLOBE_MAX_ELEVATION_LAYERS; ++l) {
+    const gpu::ElevationLayerParams& layer = params.layers[l];
+    s[GLOBE_ELEVATION_SPEC_OCTAVES + l] = layer.octaves;
+    s[GLOBE_ELEVATION_SPEC_KIND + l] = layer.kind;
+    s[GLOBE_ELEVATION_SPEC_MODULATOR + l] = static_cast<std::uint32_t>(layer.modulator);
+  }
+  return s;
+}
+
+namespace {
+
+// The elevation function. Mirrored statement by statement in shaders/include/elevation.glsl:
+// keep the operation order identical (no FMA contraction: -ffp-contract=off / `precise`).
+template <class Real>
+Real evaluateElevation(const gpu::ElevationParams& p, Real dx, Real dy, Real dz) {
+  const Real radius = static_cast<Real>(p.radius_m);
+  const Real px = dx * radius;
+  const Real py = dy * radius;
+  const Real pz = dz * radius;
+  Real values[GLOBE_MAX_ELEVATION_LAYERS] = {};
+  Real total = Real(0);
+  for (gpu::uint l = 0; l < p.layer_count; ++l) {
+    const gpu::ElevationLayerParams& layer = p.layers[l];
+    const Real lacunarity = static_cast<Real>(layer.lacunarity);
+    const Real gain = static_cast<Real>(layer.gain);
+    Real frequency = static_cast<Real>(layer.frequency);
+    Real amplitude = static_cast<Real>(layer.amplitude_m);
+    std::uint32_t seed = layer.seed;
+    // The modulation scale comes first (its modulator is an earlier layer): where it is exactly 0
+    // the octaves are skipped. Same value as summing them: sum * 0 is +-0, and +-0 + offset equals
+    // 0 + offset for every offset (-0 + +0 = +0), so this is bit-identical to always summing. It
+    // saves the mountains' octaves on the ~70 % of earthlike below its 200 m mask threshold (the
+    // GPU skips only when all lanes of a subgroup do, which coherent payload samples mostly do).
+    Real scale = Real(1);
+    if (layer.modulator >= 0) {
+      const Real low = static_cast<Real>(layer.modulation_low_m);
+      const Real inv_range = static_cast<Real>(layer.modulation_inv_range);
+      const Real floor_scale = static_cast<Real>(layer.modulation_floor);
+      Real m = (values[layer.modulator] - low) * inv_range;
+      m = std::min(std::max(m, Real(0)), Real(1));
+      const Real s = m * m * (Real(3) - Real(2) * m);
+      scale = floor_scale + (Real(1) - floor_scale) * s;
+    }
+    const gpu::uint octaves = scale == Real(0) ? 0U : layer.octaves;
+    Real sum = Real(0);
+    for (gpu::uint o = 0; o < octaves; ++o) {
+      const Real n = gradientNoise(px * frequency, py * frequency, pz * frequency, seed);
+      Real t = n;
+      if (layer.kind == GLOBE_LAYER_RIDGED) {
+        const Real c = Real(1) - std::abs(n);
+        t = c * c;
+      } else if (layer.kind == GLOBE_LAYER_BILLOW) {
+        t = std::abs(n);
+      }
+      sum = sum + amplitude * t;
+      frequency = frequency * lacunarity;
+      amplitude = amplitude * gain;
+      seed = seed + 0x9e3779b9U;
+    }
+    if (layer.modulator >= 0) sum = sum * scale;
+    const Real value = sum + static_cast<Real>(layer.offset_m);
+    values[l] = value;
+    total = total + value;
+  }
+  return total;
+}
+
+}  // namespace
+
+ElevationModel::ElevationModel(const PlanetDescription& planet)
+    : params_(packElevationParams(planet)), bounds_(elevationBounds(planet)) {}
+
+double ElevationModel::elevation_m(const glm::dvec3& unit_direction) const {
+  return evaluateElevation<double>(params_, unit_direction.x, unit_direction.y, unit_direction.z);
+}
+
+glm::dvec3 ElevationModel::surfacePosition(const glm::dvec3& unit_direction) const {
+  return unit_direction * (params_.radius_m + elevation_m(unit_direction));
+}
+
+float ElevationModel::elevationFloat_m(const glm::vec3& unit_direction) const {
+  return evaluateElevation<float>(params_, unit_direction.x, unit_direction.y, unit_direction.z);
+}
+
+}  // namespace globe

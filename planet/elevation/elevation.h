@@ -1,0 +1,60 @@
+#pragma once
+// CPU reference of the elevation function: double precision, deterministic, no fast-math. The GPU
+// mirror (shaders/include/elevation.glsl) must reproduce it to <= 1e-6 m; both evaluate from the same
+// packed gpu::ElevationParams (shaders/include/elevation_params.h).
+//
+// Evaluation, for a unit direction d (operation order is part of the contract, see elevation.cpp):
+//   p = d * radius_m                                    (metres, the point on the sphere)
+//   for each layer l:  sum = sum_i amp_i * t(noise(p * freq_i, seed_i))
+//                      sum *= floor + (1 - floor) * smoothstep((value[mod] - low) / (high - low))
+//                      value[l] = sum + offset_m;   elevation += value[l]
+// with t(n) = n (fbm), (1 - |n|)^2 (ridged), |n| (billow); freq_{i+1} = freq_i * lacunarity,
+// amp_{i+1} = amp_i * gain, seed_{i+1} = seed_i + 0x9e3779b9 (mod 2^32).
+#include <array>
+#include <cstdint>
+#include <glm/vec3.hpp>
+
+#include "planet/elevation/planet_description.h"
+#include "shaders/include/elevation_params.h"
+
+namespace globe {
+
+// The 32-bit noise seed of a layer, derived from the planet seed and the layer's index.
+std::uint32_t layerSeed(std::uint64_t planet_seed, int layer_index);
+
+// Packs a (valid, see validatePlanet) description into the struct the shaders read; unused layer
+// slots are zero. frequency = 1 / wavelength_m, modulation_inv_range = 1 / (high - low).
+gpu::ElevationParams packElevationParams(const PlanetDescription& planet);
+
+// The specialization constants every elevation kernel is built with (value i = constant id i, see
+// GLOBE_ELEVATION_SPEC_* in elevation_params.h): layer count, then per layer slot the octave count,
+// kind and modulator (int bits) of `params`.
+using ElevationSpecialization = std::array<std::uint32_t, GLOBE_ELEVATION_SPEC_COUNT>;
+ElevationSpecialization elevationSpecialization(const gpu::ElevationParams& params);
+
+class ElevationModel {
+ public:
+  // `planet` must be valid (validatePlanet); checked by assert.
+  explicit ElevationModel(const PlanetDescription& planet);
+
+  // Elevation above radius_m at a unit direction, metres. |unit_direction| = 1 is the caller's job
+  // (the result scales with the point d * radius_m).
+  double elevation_m(const glm::dvec3& unit_direction) const;
+  // unit_direction * (radius_m + elevation_m), metres, planet-centred.
+  glm::dvec3 surfacePosition(const glm::dvec3& unit_direction) const;
+  // The same evaluation carried out entirely in float (radius, point, frequencies, noise): only to
+  // measure what double buys (docs/elevation.md); never use it for geometry.
+  float elevationFloat_m(const glm::vec3& unit_direction) const;
+
+  double radius_m() const { return params_.radius_m; }
+  double seaLevel_m() const { return params_.sea_level_m; }
+  const gpu::ElevationParams& params() const { return params_; }
+  // Conservative range of elevation_m (see elevationBounds).
+  ElevationRange bounds() const { return bounds_; }
+
+ private:
+  gpu::ElevationParams params_{};
+  ElevationRange bounds_{};
+};
+
+}  // namespace globe

@@ -1,0 +1,65 @@
+#include "planet/elevation/planet_file_writer.h"
+
+#include <fmt/format.h>
+#include <cassert>
+#include <iterator>
+
+namespace globe {
+namespace {
+
+// TOML basic string: escape what TOML requires (quote, backslash, control characters).
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+      out += fmt::format("\\u{:04x}", static_cast<unsigned>(static_cast<unsigned char>(c)));
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
+// fmt's "{}" is the shortest text that parses back to the same double ("6371000", "0.64", "1e+30").
+std::string number(double v) { return fmt::format("{}", v); }
+std::string colour(const glm::vec3& c) { return fmt::format("[{}, {}, {}]", c.x, c.y, c.z); }
+
+}  // namespace
+
+std::string formatPlanetToml(const PlanetDescription& planet) {
+  assert(validatePlanet(planet).ok());
+  std::string out;
+  auto line = std::back_inserter(out);
+  fmt::format_to(line, "name = {}\nradius_m = {}\nseed = {}\nsea_level_m = {}\ndefault_quality = \"{}\"\n",
+                 quoted(planet.name), number(planet.radius_m), planet.seed, number(planet.sea_level_m),
+                 qualityPresetName(planet.default_quality));
+  for (const ElevationLayer& l : planet.layers) {
+    fmt::format_to(line,
+                   "\n[[layers]]\nname = {}\nkind = \"{}\"\noctaves = {}\nwavelength_m = {}\nlacunarity = {}\n"
+                   "gain = {}\namplitude_m = {}\noffset_m = {}\n",
+                   quoted(l.name), layerKindName(l.kind), l.octaves, number(l.wavelength_m), number(l.lacunarity),
+                   number(l.gain), number(l.amplitude_m), number(l.offset_m));
+    if (l.modulated_by >= 0) {
+      fmt::format_to(line, "modulated_by = {}\nmodulation_low_m = {}\nmodulation_high_m = {}\nmodulation_floor = {}\n",
+                     quoted(planet.layers[static_cast<std::size_t>(l.modulated_by)].name), number(l.modulation_low_m),
+                     number(l.modulation_high_m), number(l.modulation_floor));
+    }
+  }
+  const ColourRamp& ramp = planet.colour_ramp;
+  for (const ColourRampStop& s : ramp.stops) {
+    fmt::format_to(line, "\n[[colour_ramp]]\nelevation_m = {}\ncolour = {}\n", number(s.elevation_m), colour(s.colour));
+  }
+  fmt::format_to(line, "\n[rock]\nslope_deg = {}\nblend_deg = {}\ncolour = {}\n", number(ramp.rock_slope_deg),
+                 number(ramp.rock_blend_deg), colour(ramp.rock_colour));
+  if (ramp.snow) {
+    fmt::format_to(line, "\n[snow]\nelevation_m = {}\nblend_m = {}\nmax_slope_deg = {}\ncolour = {}\n",
+                   number(ramp.snow_elevation_m), number(ramp.snow_blend_m), number(ramp.snow_max_slope_deg),
+                   colour(ramp.snow_colour));
+  }
+  return out;
+}
+
+}  // namespace globe

@@ -1,0 +1,80 @@
+#pragma once
+// CDLOD view ranges (Strugar 2009; primary source §3.3.1) and morph constants, computed in one place.
+//
+// refineRange(d): a node at depth d is subdivided when its bounds meet the ball of this radius around
+// the camera. Nominal: baseRange * ratio^(maxDepth - 1 - d) * distanceMultiplier. They then grow so
+// that R(d) >= (R(d+1) + D(d+1)) * (1 + 1e-9) + 1 mm for every d, D(k) being the largest bounds
+// diagonal observed at depth k: this is what makes the selection a restricted quadtree (edge
+// neighbours differ by at most one level) even over tall terrain — a node at depth d+2 is only
+// selected within R(d+1) + D(d+1) of the camera, and a depth-d node only beyond R(d).
+//
+// A node drawn at depth d (full) lives between R(d) and R(d-1) and morphs towards its parent's
+// resolution over the last `morphFraction` of that band: morphEnd = R(d-1), morphStart = morphEnd -
+// morphFraction * (R(d-1) - R(d)). Depth 0 never morphs (start = end = +infinity).
+#include <array>
+
+#include "planet/core/error.h"
+#include "planet/geometry/node_id.h"
+
+namespace globe {
+
+struct LodRangeConfig {
+  int maxDepth = 20;                // deepest level selected (0 .. kMaxNodeLevel)
+  double baseRange_m = 0.0;         // R(maxDepth - 1) before the multiplier; 0 = auto (see below)
+  double rangeRatio = 2.0;          // R(d) / R(d+1) before growth; >= 1
+  double distanceMultiplier = 1.0;  // scales every range: > 1 = finer detail farther away
+  double morphFraction = 0.5;       // (0, 1]: last part of each band that morphs (source: half)
+};
+
+// Auto base range: this many max-depth node widths (nominal edge arc length). Chosen with the
+// selection benchmark (docs/lod.md): ~6 gives ~1000 selected nodes for a ground camera with a 90°
+// frustum at depth 20, and a 128-cell node's samples ~1–4 px apart on a 1920-px, 60° view.
+inline constexpr double kAutoBaseRangeInNodeWidths = 6.0;
+
+struct MorphRange {
+  double start_m = 0.0;  // distance where k leaves 0
+  double end_m = 0.0;    // distance where k reaches 1 (the parent's resolution)
+};
+
+// k in [0, 1] for a vertex at distance_m; 0 when the range does not morph (infinite start).
+double morphFactor(const MorphRange& morph, double distance_m);
+
+// Nominal width of a node at `depth` (metres): the rhombus edge arc on a sphere of radius_m / 2^depth.
+double nominalNodeWidth(int depth, double radius_m);
+// "cm per sample": nominal sample spacing (metres) of a node grid of gridCells cells at `depth`.
+// Depth 20, 128 cells, R = 6371 km gives ≈ 0.031 m (the source's "≈ 3 cm").
+double metresPerSample(int depth, int gridCells, double radius_m);
+
+class LodRanges {
+ public:
+  // radius_m: planet radius (> 0, finite), used by the auto base range. Bad values are an Error.
+  static Result<LodRanges> create(const LodRangeConfig& config, double radius_m);
+
+  int maxDepth() const { return config_.maxDepth; }
+  const LodRangeConfig& config() const { return config_; }
+  // R(d) (metres) for d in [0, maxDepth); +infinity is never returned.
+  double refineRange(int depth) const { return range_[static_cast<size_t>(depth)]; }
+  // Morph band of a node drawn at the resolution of `depth` (a partial node at depth d uses d - 1).
+  MorphRange morph(int depth) const { return morph_[static_cast<size_t>(depth)]; }
+
+  // Record a node's bounds diagonal (metres); returns true when a range grew (callers that need the
+  // restriction guarantee for this frame re-run their selection).
+  bool observeDiagonal(int depth, double diagonal_m) {
+    if (diagonal_m <= maxDiagonal_[static_cast<size_t>(depth)]) return false;
+    maxDiagonal_[static_cast<size_t>(depth)] = diagonal_m;
+    return recompute();
+  }
+  double maxDiagonal(int depth) const { return maxDiagonal_[static_cast<size_t>(depth)]; }
+  // Forget observed diagonals (e.g. after switching planets).
+  void resetObservedDiagonals();
+
+ private:
+  bool recompute();  // true when any range changed
+  LodRangeConfig config_;
+  std::array<double, kMaxNodeLevel + 1> nominal_{};
+  std::array<double, kMaxNodeLevel + 1> range_{};
+  std::array<double, kMaxNodeLevel + 1> maxDiagonal_{};
+  std::array<MorphRange, kMaxNodeLevel + 1> morph_{};  // per drawn depth, derived from range_
+};
+
+}  // namespace globe

@@ -1,0 +1,217 @@
+#include "planet/lod/selection.h"
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "planet/geometry/triacontahedron.h"
+
+namespace globe {
+namespace {
+
+constexpr uint32_t kMaxPasses = 4;  // range growth converges fast; a cap keeps the frame bounded
+
+bool isFinite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+}  // namespace
+
+struct LodSelector::Context {
+  glm::dvec3 camera;
+  const Frustum* frustum;
+  HorizonCone horizon;
+  NodeResidency* residency;
+  Selection* out;
+  bool grew;
+};
+
+Result<LodSelector> LodSelector::create(const LodConfig& c, const FaceMapping& mapping) {
+  const auto bad = [](const char* field, const char* message) { return Error{"", 0, 0, field, message}; };
+  if (!(std::isfinite(c.radius_m) && c.radius_m > 0.0)) return bad("radius", "must be finite and > 0");
+  if (!(std::isfinite(c.minElevation_m) && std::isfinite(c.maxElevation_m))) {
+    return bad("elevation", "min and max elevation must be finite");
+  }
+  if (c.minElevation_m > c.maxElevation_m) return bad("elevation", "min elevation is above max elevation");
+  if (c.radius_m + c.minElevation_m < 0.0) return bad("minElevation", "reaches below the planet centre");
+  if (!(std::isfinite(c.prefetch.nextLevelRangeFactor) && c.prefetch.nextLevelRangeFactor >= 1.0)) {
+    return bad("prefetch.nextLevelRangeFactor", "must be finite and >= 1");
+  }
+  if (!(c.prefetch.ringRangeFactor >= 0.0 && c.prefetch.ringRangeFactor <= 1.0)) {
+    return bad("prefetch.ringRangeFactor", "must be in [0, 1]");
+  }
+  Result<LodRanges> ranges = LodRanges::create(c.ranges, c.radius_m);
+  if (!ranges) return ranges.error();
+  return LodSelector(c, mapping, std::move(ranges.value()));
+}
+
+LodSelector::LodSelector(const LodConfig& config, const FaceMapping& mapping, LodRanges ranges)
+    : config_(config),
+      mapping_(&mapping),
+      ranges_(std::move(ranges)),
+      defaultRange_{config.radius_m + config.minElevation_m, config.radius_m + config.maxElevation_m} {
+  for (int f = 0; f < kFaceCount; ++f) {
+    rootBounds_[static_cast<size_t>(f)] =
+        NodeBounds::forNode(mapping, {static_cast<uint8_t>(f), 0, 0, 0}, defaultRange_);
+  }
+}
+
+NodeBounds LodSelector::boundsFor(const NodeId& node, const NodeResidency& residency) const {
+  return NodeBounds::forNode(*mapping_, node, residency.knownRadiusRange(node).value_or(defaultRange_));
+}
+
+Status LodSelector::select(const SelectionCamera& camera, NodeResidency& residency, Selection& out) {
+  out.nodes.clear();
+  out.stats = {};
+  if (!isFinite(camera.position_m)) return Error{"", 0, 0, "camera", "position is not finite"};
+  Context ctx{camera.position_m,
+              camera.frustum,
+              HorizonCone(camera.position_m, config_.horizonCulling ? defaultRange_.min_m : 0.0),
+              &residency,
+              &out,
+              false};
+  // A range that grows mid-pass may have let an earlier decision break the restriction: redo.
+  do {
+    ctx.grew = false;
+    out.nodes.clear();
+    const uint32_t passes = out.stats.passes + 1;
+    out.stats = {};
+    out.stats.passes = passes;
+    selectOnce(ctx);
+  } while (ctx.grew && out.stats.passes < kMaxPasses);
+  // Morph bands also depend on the diagonals observed during the pass (crack-freedom, see
+  // LodRanges); they never change which nodes are selected, so they are written from the final ranges.
+  for (SelectedNode& n : out.nodes) n.morph = ranges_.morph(n.partial ? n.id.level - 1 : n.id.level);
+  return Ok{};
+}
+
+void LodSelector::selectOnce(Context& ctx) {
+  for (int f = 0; f < kFaceCount; ++f) {
+    const NodeId root{static_cast<uint8_t>(f), 0, 0, 0};
+    const std::optional<RadiusRange> known = ctx.residency->knownRadiusRange(root);
+    NodeBounds b = rootBounds_[static_cast<size_t>(f)];
+    if (known) b.tighten(*known);
+    visit(root, b, known.has_value(), false, ctx.frustum == nullptr, false, ctx);
+  }
+}
+
+void LodSelector::visit(const NodeId& id, const NodeBounds& b, bool knownRange, bool partial, bool insideFrustum,
+                        bool fullyVisible, Context& ctx) {
+  SelectionStats& stats = ctx.out->stats;
+  ++stats.visited;
+  if (!insideFrustum) {
+    const Containment c = ctx.frustum->classify(b);
+    if (c == Containment::kOutside) {
+      ++stats.frustumCulled;
+      if (config_.prefetch.enabled && config_.prefetch.ringRangeFactor > 0.0) prefetchVisit(id, b, fullyVisible, ctx);
+      return;
+    }
+    insideFrustum = c == Containment::kInside;
+  }
+  if (!fullyVisible) {
+    const HorizonVisibility h = ctx.horizon.classify(b);
+    if (h == HorizonVisibility::kHidden) {
+      ++stats.horizonCulled;
+      return;
+    }
+    fullyVisible = h == HorizonVisibility::kFullyVisible;
+  }
+  const int depth = id.level;
+  if (knownRange && ranges_.observeDiagonal(depth, b.diagonal())) ctx.grew = true;
+
+  const auto add = [&](bool isPartial) {
+    ctx.out->nodes.push_back({id, ranges_.morph(isPartial ? depth - 1 : depth), isPartial,
+                              static_cast<uint8_t>(depth > 0 ? id.quadrant() : 0)});
+    ++stats.selected;
+    if (isPartial) ++stats.partial;
+  };
+  if (partial) {
+    add(true);
+    return;
+  }
+  if (depth == 0 && !ctx.residency->isResident(id)) {
+    ctx.residency->request(id, RequestPriority::kRoot, distanceToBounds(b, ctx.camera));
+    ++stats.requests;
+    return;
+  }
+  const double range = depth < ranges_.maxDepth() ? ranges_.refineRange(depth) : 0.0;
+  if (depth >= ranges_.maxDepth() || !intersectsSphere(b, ctx.camera, range)) {
+    add(false);
+    // Look-ahead (a): the camera is about to come within this node's refine range.
+    if (depth < ranges_.maxDepth() && config_.prefetch.enabled && config_.prefetch.nextLevelRangeFactor > 1.0 &&
+        intersectsSphere(b, ctx.camera, range * config_.prefetch.nextLevelRangeFactor)) {
+      prefetchChildren(id, distanceToBounds(b, ctx.camera), ctx);
+    }
+    return;
+  }
+  std::array<NodeId, 4> children;
+  bool allResident = true;
+  for (int q = 0; q < 4; ++q) {
+    children[static_cast<size_t>(q)] = id.child(q);
+    allResident = ctx.residency->isResident(children[static_cast<size_t>(q)]) && allResident;
+  }
+  if (!allResident) {
+    const double distance = distanceToBounds(b, ctx.camera);
+    for (const NodeId& child : children) {
+      if (ctx.residency->isResident(child)) continue;
+      ctx.residency->request(child, RequestPriority::kVisible, distance);
+      ++stats.requests;
+    }
+    ++stats.fallbacks;
+    add(false);
+    return;
+  }
+
+  std::array<std::optional<RadiusRange>, 4> known;
+  std::array<RadiusRange, 4> childRadius;
+  for (size_t q = 0; q < 4; ++q) {
+    known[q] = ctx.residency->knownRadiusRange(children[q]);
+    childRadius[q] = known[q].value_or(defaultRange_);
+  }
+  const std::array<NodeBounds, 4> bounds = childBounds(*mapping_, id, b, childRadius);
+  for (size_t q = 0; q < 4; ++q) {
+    const bool inRange = intersectsSphere(bounds[q], ctx.camera, range);
+    visit(children[q], bounds[q], known[q].has_value(), !inRange, insideFrustum, fullyVisible, ctx);
+  }
+}
+
+bool LodSelector::prefetchChildren(const NodeId& id, double distance_m, Context& ctx) {
+  bool allResident = true;
+  for (int q = 0; q < 4; ++q) {
+    const NodeId child = id.child(q);
+    if (ctx.residency->isResidentForPrefetch(child)) continue;
+    allResident = false;
+    ctx.residency->request(child, RequestPriority::kPrefetch, distance_m);
+    ++ctx.out->stats.prefetchRequests;
+  }
+  return allResident;
+}
+
+void LodSelector::prefetchVisit(const NodeId& id, const NodeBounds& b, bool fullyVisible, Context& ctx) {
+  // The selection's refinement rule with scaled ranges, minus everything about drawing: no partial
+  // nodes, no restriction bookkeeping (nothing here is drawn), no diagonals observed (the ranges
+  // stay a function of what is drawn). The horizon test stays: turning does not reveal what it hides.
+  SelectionStats& stats = ctx.out->stats;
+  ++stats.prefetchVisited;
+  if (!fullyVisible) {
+    const HorizonVisibility h = ctx.horizon.classify(b);
+    if (h == HorizonVisibility::kHidden) return;
+    fullyVisible = h == HorizonVisibility::kFullyVisible;
+  }
+  const int depth = id.level;
+  if (depth == 0 && !ctx.residency->isResidentForPrefetch(id)) {
+    ctx.residency->request(id, RequestPriority::kPrefetch, distanceToBounds(b, ctx.camera));
+    ++stats.prefetchRequests;
+    return;
+  }
+  if (depth >= ranges_.maxDepth()) return;
+  const double range = ranges_.refineRange(depth) * config_.prefetch.ringRangeFactor;
+  if (!intersectsSphere(b, ctx.camera, range)) return;
+  if (!prefetchChildren(id, distanceToBounds(b, ctx.camera), ctx)) return;
+  std::array<RadiusRange, 4> childRadius;
+  for (size_t q = 0; q < 4; ++q) {
+    childRadius[q] = ctx.residency->knownRadiusRange(id.child(static_cast<int>(q))).value_or(defaultRange_);
+  }
+  const std::array<NodeBounds, 4> bounds = childBounds(*mapping_, id, b, childRadius);
+  for (size_t q = 0; q < 4; ++q) prefetchVisit(id.child(static_cast<int>(q)), bounds[q], fullyVisible, ctx);
+}
+
+}  // namespace globe

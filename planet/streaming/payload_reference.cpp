@@ -1,0 +1,212 @@
+#include "planet/streaming/payload_reference.h"
+
+#include "planet/elevation/gradient_noise.h"
+#include "planet/geometry/triacontahedron.h"
+#include "planet/lod/lod_ranges.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cassert>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace globe {
+
+double payloadQuantum_m(int level, double radius_m) {
+  double width = nominalNodeWidth(level, radius_m);
+  return std::ldexp(1.0, int(std::ceil(std::log2(width))) - 18);
+}
+
+glm::dvec3 payloadCentre(const NodeId& node, const ElevationModel& model) {
+  double q = payloadQuantum_m(node.level, model.radius_m());
+  glm::dvec3 c = model.surfacePosition(nodeCentreDirection(RhombusFaceMapping::get(), node));
+  return {std::floor(c.x / q + 0.5) * q, std::floor(c.y / q + 0.5) * q, std::floor(c.z / q + 0.5) * q};
+}
+
+gpu::PayloadJob makePayloadJob(const NodeId& node, uint32_t slot, const ElevationModel& model) {
+  gpu::PayloadJob job{};
+  glm::dvec3 c = payloadCentre(node, model);
+  job.centre = {c.x, c.y, c.z, payloadQuantum_m(node.level, model.radius_m())};
+  job.uv = {node.uMin(), node.vMin(), node.size(), 0.0};
+  job.face = node.face;
+  job.slot = slot;
+  job.level = node.level;
+  const auto& face = Triacontahedron::get().face(node.face);
+  uint32_t n[4];
+  for (int e = 0; e < 4; ++e)
+    n[e] = uint32_t(face.neighbour[size_t(e)].face) | (uint32_t(face.neighbour[size_t(e)].edge) << 8);
+  job.neighbour = {n[0], n[1], n[2], n[3]};
+  return job;
+}
+
+namespace {
+
+// (edge, s along it from corner e to e+1, depth d inside) -> (u, v) on a face. Exact for dyadics.
+void edgeToUv(uint32_t edge, double s, double d, double& u, double& v) {
+  switch (edge) {
+    case 0:
+      u = s;
+      v = d;
+      break;
+    case 1:
+      u = 1.0 - d;
+      v = s;
+      break;
+    case 2:
+      u = 1.0 - s;
+      v = 1.0 - d;
+      break;
+    default:
+      u = d;
+      v = 1.0 - s;
+      break;
+  }
+}
+
+glm::dvec3 normalised(const glm::dvec3& p) {
+  const double inverseLength = 1.0 / std::sqrt((p.x * p.x + p.y * p.y) + p.z * p.z);
+  return {p.x * inverseLength, p.y * inverseLength, p.z * inverseLength};
+}
+
+}  // namespace
+
+glm::dvec3 payloadSampleDirection(const gpu::PayloadJob& job, uint32_t cells, int i, int j) {
+  const double invCells = 1.0 / double(cells);  // exact: cells is a power of two
+  double u = job.uv.x + job.uv.z * (double(i) * invCells);
+  double v = job.uv.y + job.uv.z * (double(j) * invCells);
+  const auto& mapping = RhombusFaceMapping::get();
+  bool uOut = u < 0.0 || u > 1.0, vOut = v < 0.0 || v > 1.0;
+  if (!uOut && !vOut) return mapping.unitPoint(int(job.face), u, v);
+  if (uOut != vOut) {
+    // Beyond one face edge: the same point on the neighbouring face, which walks the shared edge the
+    // other way (s' = 1 - s) and lies at the same depth d past it.
+    uint32_t edge;
+    double s, d;
+    if (v < 0.0) {
+      edge = 0;
+      s = u;
+      d = -v;
+    } else if (u > 1.0) {
+      edge = 1;
+      s = v;
+      d = u - 1.0;
+    } else if (v > 1.0) {
+      edge = 2;
+      s = 1.0 - u;
+      d = v - 1.0;
+    } else {
+      edge = 3;
+      s = 1.0 - v;
+      d = -u;
+    }
+    uint32_t packed = (&job.neighbour.x)[edge];
+    double nu, nv;
+    edgeToUv(packed >> 8, 1.0 - s, d, nu, nv);
+    return mapping.unitPoint(int(packed & 0xffu), nu, nv);
+  }
+  // Diagonal ring corner beyond a polyhedron vertex: no unique neighbour; extrapolate this face's
+  // plane (used only by the ring's corner normals, which copy the nearest vertex anyway).
+  glm::dvec3 c0 = mapping.flatPoint(int(job.face), 0.0, 0.0);
+  glm::dvec3 c1 = mapping.flatPoint(int(job.face), 1.0, 0.0);
+  glm::dvec3 c3 = mapping.flatPoint(int(job.face), 0.0, 1.0);
+  glm::dvec3 p{(c0.x + u * (c1.x - c0.x)) + v * (c3.x - c0.x), (c0.y + u * (c1.y - c0.y)) + v * (c3.y - c0.y),
+               (c0.z + u * (c1.z - c0.z)) + v * (c3.z - c0.z)};
+  return normalised(p);
+}
+
+double unresolvedRelief_m(const gpu::ElevationParams& params, double sampleSpacing_m) {
+  double relief = 0.0;
+  for (uint32_t l = 0; l < params.layer_count; ++l) {
+    const auto& layer = params.layers[l];
+    double frequency = layer.frequency, amplitude = std::abs(layer.amplitude_m);
+    for (uint32_t o = 0; o < layer.octaves; ++o) {
+      if (1.0 / frequency < 4.0 * sampleSpacing_m) relief += amplitude * kGradientNoiseBound;
+      frequency *= layer.lacunarity;
+      amplitude *= std::abs(layer.gain);
+    }
+  }
+  double sag = sampleSpacing_m * sampleSpacing_m / (8.0 * params.radius_m);
+  return relief + sag;
+}
+
+RadiusRange paddedRadiusRange(const gpu::ElevationParams& params, const RadiusRange& payload, int level,
+                              uint32_t cells) {
+  double pad = unresolvedRelief_m(params, metresPerSample(level, int(cells), params.radius_m));
+  return {std::max(0.0, payload.min_m - pad), payload.max_m + pad};
+}
+
+RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
+                                 std::span<glm::vec4> slot) {
+  const int n = int(cells);
+  const int s = n + 3;
+  assert(slot.size() >= size_t(GLOBE_PAYLOAD_VEC4_PER_SLOT(cells)));
+  const glm::dvec3 centre{job.centre.x, job.centre.y, job.centre.z};
+  const double q = job.centre.w;
+  std::vector<glm::dvec3> positions(size_t(s) * size_t(s));
+  RadiusRange range{std::numeric_limits<double>::infinity(), 0.0};
+  for (int j = -1; j <= n + 1; ++j) {
+    for (int i = -1; i <= n + 1; ++i) {
+      size_t index = size_t(j + 1) * size_t(s) + size_t(i + 1);
+      glm::dvec3 dir = payloadSampleDirection(job, cells, i, j);
+      double h = model.elevation_m(dir);
+      glm::dvec3 p = model.surfacePosition(dir);
+      positions[index] = p;
+      glm::dvec3 rel = p - centre;
+      glm::dvec3 quantised{std::floor(rel.x / q + 0.5) * q, std::floor(rel.y / q + 0.5) * q,
+                           std::floor(rel.z / q + 0.5) * q};
+      slot[index] = glm::vec4(float(quantised.x), float(quantised.y), float(quantised.z), float(h));
+      if (i >= 0 && i <= n && j >= 0 && j <= n) {
+        double r = std::sqrt((p.x * p.x + p.y * p.y) + p.z * p.z);
+        range.min_m = std::min(range.min_m, r);
+        range.max_m = std::max(range.max_m, r);
+      }
+    }
+  }
+  const size_t normals = size_t(s) * size_t(s);
+  for (int j = -1; j <= n + 1; ++j) {
+    for (int i = -1; i <= n + 1; ++i) {
+      int vi = std::clamp(i, 0, n), vj = std::clamp(j, 0, n);  // ring: the nearest vertex's normal
+      auto at = [&](int a, int b) { return positions[size_t(b + 1) * size_t(s) + size_t(a + 1)]; };
+      glm::dvec3 du = at(vi + 1, vj) - at(vi - 1, vj);
+      glm::dvec3 dv = at(vi, vj + 1) - at(vi, vj - 1);
+      glm::dvec3 c{du.y * dv.z - du.z * dv.y, du.z * dv.x - du.x * dv.z, du.x * dv.y - du.y * dv.x};
+      glm::dvec3 nrm = normalised(c);
+      slot[normals + size_t(j + 1) * size_t(s) + size_t(i + 1)] =
+          glm::vec4(float(nrm.x), float(nrm.y), float(nrm.z), 0.0f);
+    }
+  }
+  return range;
+}
+
+double drawnSurfaceRadius(const ElevationModel& model, const glm::dvec3& unitDirection, int level, uint32_t cells) {
+  const FacePoint at = RhombusFaceMapping::get().locate(unitDirection);
+  const NodeId node = nodeAt(at, level);
+  const gpu::PayloadJob job = makePayloadJob(node, 0, model);
+  const int n = int(cells);
+  const double fu = (at.u - job.uv.x) / job.uv.z * double(n), fv = (at.v - job.uv.y) / job.uv.z * double(n);
+  const int i = std::clamp(int(std::floor(fu)), 0, n - 1), j = std::clamp(int(std::floor(fv)), 0, n - 1);
+  auto sample = [&](int a, int b) { return model.surfacePosition(payloadSampleDirection(job, cells, a, b)); };
+  const glm::dvec3 p00 = sample(i, j), p10 = sample(i + 1, j), p11 = sample(i + 1, j + 1), p01 = sample(i, j + 1);
+  // Ray from the centre along the direction against the cell's two triangles (Moller-Trumbore); the
+  // (u, v) cell and the flat triangles can disagree by a hair at their edges, hence the fallback.
+  double best = -1.0, fallback = 0.0;
+  for (const auto& [a, b, c] : {std::array{p00, p10, p11}, std::array{p00, p11, p01}}) {
+    const glm::dvec3 e1 = b - a, e2 = c - a, pv = glm::cross(unitDirection, e2);
+    const double det = glm::dot(e1, pv);
+    if (std::abs(det) < 1e-300) continue;
+    const glm::dvec3 tv = -a;
+    const double bu = glm::dot(tv, pv) / det;
+    const glm::dvec3 qv = glm::cross(tv, e1);
+    const double bv = glm::dot(unitDirection, qv) / det;
+    const double t = glm::dot(e2, qv) / det;
+    fallback = std::max(fallback, t);
+    const double slack = 1e-9;
+    if (bu >= -slack && bv >= -slack && bu + bv <= 1.0 + slack) best = std::max(best, t);
+  }
+  return best > 0.0 ? best : fallback;
+}
+
+}  // namespace globe

@@ -1,0 +1,56 @@
+#pragma once
+// The CPU reference of a node payload (shaders/include/payload_layout.h): the same samples, ring,
+// quantisation, normals and radius range the compute shader (shaders/payload_generate.comp)
+// produces, in double. Tests compare the GPU payloads with it; tests that need payloads without a
+// GPU generator fill slots with it.
+#include "planet/elevation/elevation.h"
+#include "planet/geometry/face_mapping.h"
+#include "planet/geometry/node_bounds.h"
+#include "planet/geometry/node_id.h"
+#include "shaders/include/payload_layout.h"
+
+#include <glm/vec4.hpp>
+#include <span>
+
+namespace globe {
+
+// Quantum (metres) of positions and node centres at `level`: 2^(ceil(log2(node width)) - 18), so
+// a float holds positions up to 64 node widths from the centre exactly.
+double payloadQuantum_m(int level, double radius_m);
+
+// The node centre payloads are relative to: the surface point (CPU reference) at the node's centre
+// direction, snapped to the level's quantum. On the surface, not the sphere, so that relief never
+// pushes relative positions out of float's exact range.
+glm::dvec3 payloadCentre(const NodeId& node, const ElevationModel& model);
+
+// The generation job for `node` into `slot`: snapped centre, (u, v) square, neighbour faces.
+gpu::PayloadJob makePayloadJob(const NodeId& node, uint32_t slot, const ElevationModel& model);
+
+// Unit direction of sample (i, j), i, j in [-1, cells + 1], of a job's node: on its own face, or on
+// the neighbouring face for ring samples beyond a face edge (bit-identical to that face's samples).
+glm::dvec3 payloadSampleDirection(const gpu::PayloadJob& job, uint32_t cells, int i, int j);
+
+// Elevation detail finer than the samples (metres): the amplitude bound of every octave whose
+// wavelength is below four sample spacings, plus what a flat triangle between samples can sag below
+// the sphere. Pads a payload's radius range so it also holds its children's finer surface.
+double unresolvedRelief_m(const gpu::ElevationParams& params, double sampleSpacing_m);
+
+// Fills one slot (GLOBE_PAYLOAD_VEC4_PER_SLOT(cells) entries) like the shader does and returns the
+// node's radius range (vertices only, unpadded).
+RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
+                                 std::span<glm::vec4> slot);
+
+// The radius range a pool should use for a node: the payload's range padded by unresolvedRelief_m.
+RadiusRange paddedRadiusRange(const gpu::ElevationParams& params, const RadiusRange& payload, int level,
+                              uint32_t cells);
+
+// Radius (metres from the planet centre) of the surface the renderer draws along `unitDirection`
+// where the nodes are at `level` with `cells` cells per side and unmorphed (the view around a ground
+// camera): the flat triangle of the payload grid the direction passes through, each cell split
+// along its (i, j)-(i+1, j+1) diagonal like the renderer. It differs from the true ground
+// (ElevationModel) by the relief finer than the samples (decimetres on Earth at depth 20, metres on
+// a 7e7 m planet), so a camera "1 mm above the ground" must be placed above the higher of the two
+// or it is under the drawn mesh and sees through it (docs/tradeoffs.md, "Stability at the extremes").
+double drawnSurfaceRadius(const ElevationModel& model, const glm::dvec3& unitDirection, int level, uint32_t cells);
+
+}  // namespace globe

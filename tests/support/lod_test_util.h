@@ -1,0 +1,119 @@
+#pragma once
+// Helpers shared by the LOD tests: spherical areas, residency fakes, seeded cameras.
+#include <cmath>
+#include <cstring>
+#include <numbers>
+#include <random>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include "planet/geometry/face_mapping.h"
+#include "planet/geometry/node_id.h"
+#include "planet/geometry/triacontahedron.h"
+#include "planet/lod/lod_ranges.h"
+#include "planet/lod/node_residency.h"
+
+namespace globe::testing {
+
+inline constexpr double kEarthRadius_m = 6371000.0;
+
+// Solid angle (steradians) of the spherical triangle with unit corners a, b, c (Van Oosterom &
+// Strackee), using differences so tiny deep-level triangles keep their precision.
+inline double sphericalTriangleArea(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+  const double triple = glm::dot(a, glm::cross(b - a, c - a));
+  const double denominator = 1.0 + glm::dot(a, b) + glm::dot(b, c) + glm::dot(c, a);
+  return 2.0 * std::atan2(std::abs(triple), denominator);
+}
+
+// Node edges are great-circle arcs, so the node is the spherical quadrilateral of its corners.
+inline double nodeSolidAngle(const NodeId& id) {
+  const FaceMapping& m = RhombusFaceMapping::get();
+  const glm::dvec3 c0 = nodeCornerDirection(m, id, 0), c1 = nodeCornerDirection(m, id, 1);
+  const glm::dvec3 c2 = nodeCornerDirection(m, id, 2), c3 = nodeCornerDirection(m, id, 3);
+  return sphericalTriangleArea(c0, c1, c2) + sphericalTriangleArea(c0, c2, c3);
+}
+
+inline glm::dvec3 fromLatLon(double latDeg, double lonDeg) {
+  const double lat = latDeg * std::numbers::pi / 180.0;
+  const double lon = lonDeg * std::numbers::pi / 180.0;
+  return {std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
+}
+
+// Bitwise equality: seam exactness means the same bits, not merely equal values.
+inline bool bitEqual(const glm::dvec3& a, const glm::dvec3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// (u, v) of parameter s along face edge e, walked from corner e to corner e+1.
+inline std::pair<double, double> onEdge(int e, double s) {
+  switch (e) {
+    case 0:
+      return {s, 0.0};
+    case 1:
+      return {1.0, s};
+    case 2:
+      return {1.0 - s, 1.0};
+    default:
+      return {0.0, 1.0 - s};
+  }
+}
+
+inline glm::dvec3 randomDirection(std::mt19937_64& rng) {
+  std::normal_distribution<double> n(0.0, 1.0);
+  for (;;) {
+    const glm::dvec3 d(n(rng), n(rng), n(rng));
+    const double l = glm::length(d);
+    if (l > 1e-3) return d / l;
+  }
+}
+
+// A terrain whose real radius range over a node shrinks with the node: |elevation| up to
+// min(amplitude, relief * width), with a per-node wobble so diagonals differ between nodes.
+struct SyntheticTerrain {
+  double radius_m = kEarthRadius_m;
+  double amplitude_m = 8000.0;
+  double relief = 0.05;
+  RadiusRange rangeOf(const NodeId& id) const {
+    const double wobble = 0.5 + 0.5 * static_cast<double>(NodeIdHash{}(id) % 1024) / 1023.0;
+    const double a = std::min(amplitude_m, relief * nominalNodeWidth(id.level, radius_m)) * wobble;
+    return {radius_m - a, radius_m + a};
+  }
+};
+
+// Every node resident; known ranges from a synthetic terrain (or a smooth sphere when relief = 0).
+class AllResident : public NodeResidency {
+ public:
+  explicit AllResident(SyntheticTerrain terrain = {}) : terrain_(terrain) {}
+  bool isResident(const NodeId&) const override { return true; }
+  void request(const NodeId&, RequestPriority, double) override { ++requests; }
+  std::optional<RadiusRange> knownRadiusRange(const NodeId& id) const override { return terrain_.rangeOf(id); }
+  int requests = 0;
+
+ private:
+  SyntheticTerrain terrain_;
+};
+
+// Levels <= fullLevel resident; deeper nodes resident unless their hash says otherwise.
+class PartlyResident : public NodeResidency {
+ public:
+  PartlyResident(int fullLevel, SyntheticTerrain terrain) : fullLevel_(fullLevel), terrain_(terrain) {}
+  bool isResident(const NodeId& id) const override { return id.level <= fullLevel_ || NodeIdHash{}(id) % 5 != 0; }
+  void request(const NodeId& id, RequestPriority, double distance_m) override {
+    requested.push_back(id);
+    distances.push_back(distance_m);
+  }
+  std::optional<RadiusRange> knownRadiusRange(const NodeId& id) const override {
+    if (!isResident(id)) return std::nullopt;
+    return terrain_.rangeOf(id);
+  }
+  std::vector<NodeId> requested;
+  std::vector<double> distances;
+
+ private:
+  int fullLevel_;
+  SyntheticTerrain terrain_;
+};
+
+}  // namespace globe::testing
