@@ -17,6 +17,11 @@ function(globe_configure_target target)
       target_compile_options(${target} PRIVATE -Wno-error=restrict)
     endif()
   endif()
+  if(GLOBE_BUILD_FUZZERS)
+    # Coverage for libFuzzer in every library; the fuzz targets add -fsanitize=fuzzer at link time.
+    target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer)
+    target_link_options(${target} PUBLIC -fsanitize=address,undefined)
+  endif()
   if(GLOBE_SANITIZE)
     target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer
                                              -fno-sanitize-recover=undefined)
