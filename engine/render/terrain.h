@@ -46,9 +46,9 @@ class Terrain {
 
   // CPU part of frame `frame` (strictly increasing): collects finished generations, selects,
   // requests, starts new generations under the budget. The first call primes the terrain first
-  // (TerrainSettings::primeRounds): it blocks until the roots and the first view's nodes are resident. `completedFrame`: the newest frame whose GPU
-  // work has finished (slots only older frames used may be regenerated). Returns the statistics
-  // known so far (selection and streaming); record() adds the draw's.
+  // (TerrainSettings::primeRounds): it blocks until the roots and the first view's nodes are resident.
+  // `completedFrame`: the newest frame whose GPU work has finished (slots only older frames used may be regenerated).
+  // Returns the statistics known so far (selection and streaming); record() adds the draw's.
   const FrameStats& update(uint64_t frame, const Camera& camera, uint64_t completedFrame);
   // Records the draw of the last update(). `frameIndex`: which per-frame buffers to use (frame % 2).
   void record(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex);

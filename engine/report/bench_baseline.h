@@ -11,8 +11,8 @@
 namespace globe {
 
 struct BenchBaseline {
-  std::string file;                // the summary.json read (DIR/summary.json)
-  std::string commit;              // "" when the earlier run did not record it
+  std::string file;    // the summary.json read (DIR/summary.json)
+  std::string commit;  // "" when the earlier run did not record it
   std::string dateUtc;
   std::string device;
   std::string mode;

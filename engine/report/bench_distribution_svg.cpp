@@ -59,8 +59,8 @@ std::string frameTimeCdfSvg(std::span<const BenchFrame> frames) {
                     "\" font-family=\"sans-serif\" font-size=\"11\" fill=\"#222\">\n";
   out += "<rect x=\"0\" y=\"0\" width=\"" + svgNumber(kWidth) + "\" height=\"" + svgNumber(kHeight) +
          "\" fill=\"#ffffff\"/>\n";
-  out += label(kLeft, 18, "Frame-time distribution: share of frames at or below each frame time",
-               "font-weight=\"bold\"");
+  out +=
+      label(kLeft, 18, "Frame-time distribution: share of frames at or below each frame time", "font-weight=\"bold\"");
   for (int pct = 0; pct <= 100; pct += 25) {
     out += svgHorizontalTick(y(pct / 100.0), kLeft, kLeft + kPlotWidth, std::to_string(pct) + " %");
   }

@@ -44,7 +44,8 @@ constexpr BenchMetric kMetrics[] = {
      [](const BenchFrame& f) { return f.stats.gpu_terrain_ms; }},
     {"gpu_skirts_ms", "ms", "of gpu_ms: the skirts at level changes", MetricKind::Real, 4,
      [](const BenchFrame& f) { return f.stats.gpu_skirts_ms; }},
-    {"gpu_sky_ms", "ms", "of gpu_ms: the sky", MetricKind::Real, 4, [](const BenchFrame& f) { return f.stats.gpu_sky_ms; }},
+    {"gpu_sky_ms", "ms", "of gpu_ms: the sky", MetricKind::Real, 4,
+     [](const BenchFrame& f) { return f.stats.gpu_sky_ms; }},
     {"gpu_generation_ms", "ms", "GPU time of the generation batches collected this frame", MetricKind::Real, 4,
      [](const BenchFrame& f) { return f.stats.gpu_generation_ms; }},
 };

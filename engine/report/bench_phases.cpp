@@ -9,8 +9,8 @@ namespace globe {
 
 namespace {
 
-constexpr double kRateWindow_s = 0.25;      // altitude and speed rates are taken over ±0.25 s
-constexpr double kClimbRate_per_s = 0.1;    // ln(altitude) rising faster than 10 % per second
+constexpr double kRateWindow_s = 0.25;    // altitude and speed rates are taken over ±0.25 s
+constexpr double kClimbRate_per_s = 0.1;  // ln(altitude) rising faster than 10 % per second
 constexpr double kDescentRate_per_s = -0.1;
 constexpr double kLowPassSpeed_per_s = 1.0;  // ground speed above one altitude per second
 constexpr double kMinPhase_s = 0.5;          // shorter segments join the one before

@@ -116,9 +116,12 @@ nlohmann::ordered_json baselineJson(const BenchBaseline& baseline, std::span<con
                        {"median_ratio", ratio(now.median, before->median)},
                        {"p95_ratio", ratio(now.p95, before->p95)}};
   }
-  return {{"file", baseline.file},        {"commit", baseline.commit},
-          {"date_utc", baseline.dateUtc}, {"jank_ms", baseline.jank_ms},
-          {"jank_ratio", ratio(jankMs(frames), baseline.jank_ms)}, {"metrics", std::move(metrics)}};
+  return {{"file", baseline.file},
+          {"commit", baseline.commit},
+          {"date_utc", baseline.dateUtc},
+          {"jank_ms", baseline.jank_ms},
+          {"jank_ratio", ratio(jankMs(frames), baseline.jank_ms)},
+          {"metrics", std::move(metrics)}};
 }
 
 std::string summaryJson(const BenchRunInfo& info, std::span<const BenchFrame> frames,

@@ -13,9 +13,9 @@ namespace globe {
 
 // One replayed frame.
 struct BenchFrame {
-  uint64_t frame = 0;     // index in the replay, from 0
-  double t_s = 0;         // path time of the frame (seconds)
-  double altitude_m = 0;  // camera height above the ground below it (metres)
+  uint64_t frame = 0;          // index in the replay, from 0
+  double t_s = 0;              // path time of the frame (seconds)
+  double altitude_m = 0;       // camera height above the ground below it (metres)
   double groundSpeed_mps = 0;  // horizontal camera speed since the previous frame (m/s; 0 for the first)
   FrameStats stats;
 };

@@ -102,8 +102,9 @@ std::string summarySection(std::span<const BenchFrame> frames, const BenchRunInf
   out += infoRow("frames", std::to_string(frames.size()));
   out += infoRow("path time", formatFixed(duration_s, 2) + " s");
   std::string jank = formatFixed(jankMs(frames), 1) + " ms";
-  if (baseline) jank += " (baseline " + formatFixed(baseline->jank_ms, 1) + " ms, " +
-                        ratioText(jankMs(frames), baseline->jank_ms) + ")";
+  if (baseline)
+    jank += " (baseline " + formatFixed(baseline->jank_ms, 1) + " ms, " + ratioText(jankMs(frames), baseline->jank_ms) +
+            ")";
   out += infoRow("jank (Σ max(0, frame_ms − 33.3))", jank);
   out += infoRow("frames over 33.3 ms", std::to_string(framesOverBudget(frames)));
   const GenerationLatency& l = info.latency;
@@ -111,8 +112,9 @@ std::string summarySection(std::span<const BenchFrame> frames, const BenchRunInf
                  "p50 " + std::to_string(l.p50_frames) + ", p95 " + std::to_string(l.p95_frames) + ", p99 " +
                      std::to_string(l.p99_frames) + " over " + std::to_string(l.requests) + " requests");
   if (baseline) {
-    out += infoRow("baseline", baseline->file + " (commit " + (baseline->commit.empty() ? "unknown" : baseline->commit) +
-                                   ", " + (baseline->dateUtc.empty() ? "date unknown" : baseline->dateUtc) + ")");
+    out +=
+        infoRow("baseline", baseline->file + " (commit " + (baseline->commit.empty() ? "unknown" : baseline->commit) +
+                                ", " + (baseline->dateUtc.empty() ? "date unknown" : baseline->dateUtc) + ")");
   }
   out += "</table>\n" + metricsTable(frames, baseline);
   out +=

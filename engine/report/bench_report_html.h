@@ -1,8 +1,8 @@
 #pragma once
 // report.html: the benchmark on one page — what the figures depend on (device, driver, shader
 // cache, load, commit, date), the summary table, the frame-time distribution, the flight's phases,
-// the GPU time by pass, the timeline and the key frames — for a person. XHTML-compatible markup (every element closed, text escaped) so a plain
-// XML parser can check it.
+// the GPU time by pass, the timeline and the key frames — for a person. XHTML-compatible markup (every element closed,
+// text escaped) so a plain XML parser can check it.
 #include "engine/report/bench_report.h"
 
 #include <span>

@@ -246,8 +246,8 @@ class PanelWriter {
               "\" r=\"2.5\" fill=\"" + s.colour + "\"/>\n";
       return;
     }
-    out_ += "<polyline fill=\"none\" stroke=\"" + std::string(s.colour) +
-            "\" stroke-width=\"" + num(s.width) + "\" stroke-linejoin=\"round\" clip-path=\"url(#" + clipId + ")\" points=\"";
+    out_ += "<polyline fill=\"none\" stroke=\"" + std::string(s.colour) + "\" stroke-width=\"" + num(s.width) +
+            "\" stroke-linejoin=\"round\" clip-path=\"url(#" + clipId + ")\" points=\"";
     for (std::size_t k = 0; k < indices.size(); ++k) {
       const std::size_t i = indices[k];
       if (k > 0) out_ += ' ';

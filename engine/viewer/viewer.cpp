@@ -113,7 +113,7 @@ struct Viewer::State {
   std::vector<std::string> planetErrors;  // of the planet file on disk, while it is invalid
   FrameStats stats;
   FrameTimeLog frameTimes;
-  Clock::time_point lastPresent;                   // when the previous frame was presented
+  Clock::time_point lastPresent;                    // when the previous frame was presented
   std::optional<Clock::time_point> pathClockStart;  // path mode: when frame 0 was presented
   double pathTime_s = 0;                            // path time of the current frame
   bool pathEnded = false;                           // the current frame shows the path's end
@@ -213,7 +213,6 @@ void Viewer::State::handle(const InputEvent& e) {
 void Viewer::State::waitForReload() {
   // Scripts only: a test edits the planet file while the loop stands still, so the frame numbers
   // of its screenshots do not depend on how fast this machine renders.
-  using Clock = std::chrono::steady_clock;
   printLine("waiting for the planet file to change (frame " + std::to_string(frame) + ")");
   Clock::time_point deadline = Clock::now() + std::chrono::seconds(kMaxReloadWait_s);
   while (Clock::now() < deadline && !quit) {
