@@ -402,6 +402,8 @@ TEST(BenchReport, SvgAndHtmlAreWellFormedEvenWithHostileText) {
   info.pathFile = "paths/<script>alert('x')</script> & \"quotes\".path";
   info.device = std::string("bad utf-8 \xff\xfe and a control \x01 char; ünïcödé ok");
   info.commandLine = "globe bench --out 'a&b' --path \"<x>\"";
+  info.driver = "<b>driver</b> & co";
+  info.shaderCache = "enabled (MESA_SHADER_CACHE_DIR=/tmp/<a&b>)";
   const auto frames = syntheticFrames(1500);
   const Status s = writeBenchReport(dir.str(), info, frames, keys);
   ASSERT_TRUE(s.ok()) << s.error().format();
@@ -421,7 +423,7 @@ TEST(BenchReport, SvgAndHtmlAreWellFormedEvenWithHostileText) {
   EXPECT_EQ(htmlCheck.error, "");
   EXPECT_EQ(htmlCheck.root, "html");
   EXPECT_EQ(htmlCheck.elements.at("img"), 4);
-  EXPECT_EQ(htmlCheck.elements.at("svg"), 1);  // the timeline, inlined
+  EXPECT_EQ(htmlCheck.elements.at("svg"), 2);  // the frame-time distribution and the timeline, inlined
   EXPECT_EQ(html.find("<script>"), std::string::npos);
   for (const char* needle : {"frame_t12.png", "t = 18.00 s", "How to read this", "nodes_partial", "p99"}) {
     EXPECT_NE(html.find(needle), std::string::npos) << needle;
