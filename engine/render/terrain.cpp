@@ -71,6 +71,7 @@ void Terrain::prime(uint64_t firstFrame, const Camera& camera) {
   // planet (every root) and as much of the first view as the rounds allow. No frame is drawn in
   // between, so every earlier round counts as completed.
   primed_ = true;
+  const auto start = std::chrono::steady_clock::now();
   for (uint32_t round = 0; round < settings_.primeRounds; ++round) {
     const uint64_t poolFrame = firstFrame + round;
     updateAt(poolFrame, camera, poolFrame > 0 ? poolFrame - 1 : 0, true);
@@ -78,6 +79,7 @@ void Terrain::prime(uint64_t firstFrame, const Camera& camera) {
     if (converged()) break;
     generator_->waitIdle();
   }
+  primeWall_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 void Terrain::updateAt(uint64_t poolFrame, const Camera& camera, uint64_t poolCompletedFrame, bool requestAllRoots) {

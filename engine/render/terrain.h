@@ -81,6 +81,7 @@ class Terrain {
   const TerrainSettings& settings() const { return settings_; }
   // Generation rounds the warm-up ran (0 before the first update or with primeRounds 0).
   uint32_t primedRounds() const { return primedRounds_; }
+  double primeWall_ms() const { return primeWall_ms_; }  // wall time the warm-up took
 
  private:
   Terrain(vk::Device& device, const ElevationModel& model, const TerrainSettings& settings, LodSelector selector);
@@ -101,6 +102,7 @@ class Terrain {
   FrameStats stats_;
   bool primed_ = false;
   uint32_t primedRounds_ = 0;  // added to the caller's frame numbers: the warm-up used pool frames too
+  double primeWall_ms_ = 0;
 };
 
 }  // namespace globe
