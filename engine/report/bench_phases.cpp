@@ -28,12 +28,15 @@ void rates(std::span<const BenchFrame> f, std::size_t i, double& logRate, double
   relativeSpeed = f[i].groundSpeed_mps / std::max(f[i].altitude_m, 0.01);
 }
 
-Motion motionAt(std::span<const BenchFrame> f, std::size_t i) {
+// While the flight is still in its first descent (`approaching`), descending wins over flying fast
+// (the end of an approach is low and fast); afterwards a fast, low stretch that dips is a low pass.
+Motion motionAt(std::span<const BenchFrame> f, std::size_t i, bool approaching) {
   double logRate = 0, relativeSpeed = 0;
   rates(f, i, logRate, relativeSpeed);
-  if (logRate < kDescentRate_per_s) return kDescent;
+  if (approaching && logRate < kDescentRate_per_s) return kDescent;
   if (relativeSpeed > kLowPassSpeed_per_s) return kLowPass;
   if (logRate > kClimbRate_per_s) return kClimb;
+  if (logRate < kDescentRate_per_s) return kDescent;
   return kHover;
 }
 
@@ -59,8 +62,10 @@ std::vector<FlightPhase> flightPhases(std::span<const BenchFrame> frames) {
     std::size_t first, end;
   };
   std::vector<Run> runs;
+  bool approaching = true;
   for (std::size_t i = 0; i < frames.size(); ++i) {
-    const Motion m = motionAt(frames, i);
+    const Motion m = motionAt(frames, i, approaching);
+    approaching = approaching && m == kDescent;
     if (runs.empty() || runs.back().motion != m) runs.push_back({m, i, i});
     runs.back().end = i + 1;
   }
