@@ -5,7 +5,9 @@
 #include "engine/render/headless_renderer.h"
 #include "engine/render/quality.h"
 #include "engine/render/render_output.h"
+#include "engine/report/bench_baseline.h"
 #include "engine/report/bench_report.h"
+#include "engine/report/run_environment.h"
 #include "engine/vk/device.h"
 #include "options.h"
 #include "planet/camera/camera_path_file.h"
@@ -15,6 +17,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 namespace globe::cli {
@@ -32,8 +35,26 @@ struct BenchOptions {
   double rate_hz = 60.0;
   uint32_t gridCells = 0;  // 0 = the quality preset's
   std::string quality;     // empty = the planet's default_quality
+  std::string baseline;    // an earlier run's output directory (its summary.json), or empty
   std::string commandLine;
 };
+
+GenerationLatency generationLatency(const PayloadPool& pool) {
+  GenerationLatency latency;
+  for (uint64_t count : pool.latencyHistogram()) latency.requests += count;
+  if (latency.requests == 0) return latency;
+  latency.p50_frames = pool.latencyPercentile(0.50);
+  latency.p95_frames = pool.latencyPercentile(0.95);
+  latency.p99_frames = pool.latencyPercentile(0.99);
+  return latency;
+}
+
+// Horizontal speed between two camera positions `dt_s` apart (metres per second).
+double groundSpeed_mps(const glm::dvec3& from_m, const glm::dvec3& to_m, double dt_s) {
+  const glm::dvec3 step = to_m - from_m;
+  const glm::dvec3 up = glm::normalize(to_m);
+  return glm::length(step - glm::dot(step, up) * up) / dt_s;
+}
 
 Result<std::vector<double>> parseTimes(const std::string& text, const std::string& field) {
   std::vector<double> times;
@@ -50,7 +71,15 @@ Result<std::vector<double>> parseTimes(const std::string& text, const std::strin
 }
 
 int runBench(const BenchOptions& o) {
+  const std::string startedUtc = utcNowIso8601();
+  const std::string loadAtStart = loadAverage();
   // Everything is checked before DIR is touched: bad input writes nothing.
+  std::optional<BenchBaseline> baseline;
+  if (!o.baseline.empty()) {
+    auto read = readBenchBaseline(o.baseline);
+    if (!read) return usageError(read.error());
+    baseline = std::move(*read);
+  }
   auto planet = loadPlanetFile(o.planet);
   if (!planet) return usageError(planet.error());
   auto path = loadCameraPath(o.path);
@@ -75,9 +104,11 @@ int runBench(const BenchOptions& o) {
       path->startTime_s(), [&](const glm::dvec3& d) { return model.radius_m() + model.elevation_m(d); }));
   settings.style.ramp = planet->colour_ramp;
   vk::Device device(deviceOptions(o.device));
+  const double deviceReady_ms = millisecondsSinceProcessStart();
   auto terrain = Terrain::create(device, model, settings);
   if (!terrain) return usageError(terrain.error());
   HeadlessRenderer renderer(device, {size->width, size->height});
+  const double pipelinesReady_ms = millisecondsSinceProcessStart();
   const double aspect = double(size->width) / double(size->height);
   // Heights are above the drawn mesh, like `globe render --at` and the viewer (never under it).
   GroundRadiusFn ground = [&](const glm::dvec3& d) { return (*terrain)->cameraGroundRadius(d); };
@@ -91,13 +122,18 @@ int runBench(const BenchOptions& o) {
   std::vector<BenchFrame> rows;
   rows.reserve(frames);
   std::vector<BenchKeyFrame> keys;
+  glm::dvec3 previousPosition_m(0.0);
+  double firstFrame_ms = 0;  // process start -> frame 0 drawn (cold start, with the warm-up)
   ProgressBar progress("bench " + std::filesystem::path(o.path).filename().string());
   for (uint64_t k = 0; k < frames; ++k) {
     double t = path->startTime_s() + double(k) / o.rate_hz;
     Camera camera = path->cameraAt(t, model.radius_m(), aspect, ground);
     FrameStats stats = renderer.renderFrame(**terrain, camera, converge);
     double altitude = glm::length(camera.position_m) - ground(glm::normalize(camera.position_m));
-    rows.push_back({k, t, altitude, stats});
+    const double speed = k > 0 ? groundSpeed_mps(previousPosition_m, camera.position_m, 1.0 / o.rate_hz) : 0.0;
+    previousPosition_m = camera.position_m;
+    rows.push_back({k, t, altitude, speed, stats});
+    if (k == 0) firstFrame_ms = millisecondsSinceProcessStart();
     for (double kt : *keyTimes) {
       // The frame nearest to each key time (times outside the path are skipped).
       if (kt < path->startTime_s() || kt > path->endTime_s()) continue;
@@ -116,13 +152,26 @@ int runBench(const BenchOptions& o) {
 
   BenchRunInfo info{
       o.planet, o.path, o.mode, device.name(), o.size, settings.gridCells, o.commandLine, std::string(GLOBE_VERSION)};
-  if (auto s = writeBenchReport(o.out, info, rows, keys); !s) {
+  info.driver = device.driverName() + " " + device.driverInfo();
+  info.shaderCache = mesaShaderCacheState();
+  info.loadAverageStart = loadAtStart;
+  info.loadAverageEnd = loadAverage();
+  info.commit = GLOBE_COMMIT;
+  info.dateUtc = startedUtc;
+  info.latency = generationLatency((*terrain)->pool());
+  if (auto s = writeBenchReport(o.out, info, rows, keys, baseline ? &*baseline : nullptr); !s) {
     printError(s.error().format());
     return kExitFailure;
   }
   if (int code = validationExitCode(device); code != kExitOk) return code;
   std::printf("%llu frames of %s (%s) written to %s/report.html\n", (unsigned long long)frames, o.path.c_str(),
               o.mode.c_str(), o.out.c_str());
+  // Cold start, and where it went: device, terrain pipelines and buffers, warm-up, frame 0.
+  std::printf(
+      "first frame %.0f ms after process start: device %.0f ms, terrain set-up %.0f ms, frame 0 %.0f ms "
+      "(of which warm-up %.0f ms in %u rounds; %u nodes drawn)\n",
+      firstFrame_ms, deviceReady_ms, pipelinesReady_ms - deviceReady_ms, rows.front().stats.frame_ms,
+      (*terrain)->primeWall_ms(), (*terrain)->primedRounds(), rows.front().stats.nodes_selected);
   return kExitOk;
 }
 
@@ -151,6 +200,8 @@ void addBenchCommand(CLI::App& app, Runner& run, const std::string& commandLine)
                   "Grid cells per node side (power of two, 16..256; default: the quality preset's)");
   cmd->add_option("--quality", opts->quality,
                   "fast, balanced or exact (docs/tradeoffs.md; default: the planet's default_quality)");
+  cmd->add_option("--baseline", opts->baseline,
+                  "An earlier run's output directory: its summary.json's numbers go beside this run's, with ratios");
   addDeviceFlags(*cmd, opts->device);
   cmd->callback([opts, &run] { run = [opts] { return runBench(*opts); }; });
 }

@@ -3,6 +3,7 @@
 // sets `run` to the function that carries it out (returning the process exit code).
 #include <CLI/CLI.hpp>
 
+#include <chrono>
 #include <functional>
 #include <string>
 
@@ -24,5 +25,9 @@ constexpr int kExitUsage = 2;    // bad command-line values or input files
 
 // Prints "globe: error: MESSAGE" on one line to stderr.
 void printError(const std::string& message);
+
+// Milliseconds since the process started (static initialisation of the program): what "cold
+// start" is measured from (docs/benchmark.md).
+double millisecondsSinceProcessStart();
 
 }  // namespace globe::cli

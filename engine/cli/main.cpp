@@ -6,6 +6,15 @@
 
 namespace globe::cli {
 
+namespace {
+// Initialised before main(), after the dynamic loader: the closest the program gets to its start.
+const std::chrono::steady_clock::time_point kProcessStart = std::chrono::steady_clock::now();
+}  // namespace
+
+double millisecondsSinceProcessStart() {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - kProcessStart).count();
+}
+
 void printError(const std::string& message) {
   std::string line = message;
   for (char& c : line)

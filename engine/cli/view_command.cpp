@@ -7,7 +7,9 @@
 #include "engine/vk/device.h"
 #include "options.h"
 #include "planet/camera/camera.h"
+#include "planet/camera/camera_path_file.h"
 #include "planet/core/atomic_file.h"
+#include "planet/elevation/elevation.h"
 #include "planet/elevation/planet_file.h"
 
 #include <cstdio>
@@ -34,6 +36,9 @@ struct ViewCommandOptions {
   std::string record;
   bool noReload = false;
   bool noVsync = false;
+  std::string path;  // camera path to fly, or empty for the fly camera
+  bool holdAtPathEnd = false;
+  std::string frameTimes;  // CSV written at exit, or empty
 };
 
 // A directory option that must exist.
@@ -68,6 +73,18 @@ int runView(const ViewCommandOptions& o) {
   if (auto s = checkDirectory(o.screenshotDir, "--screenshot-dir"); !s) return usageError(s.error());
   viewer.screenshotDirectory = o.screenshotDir;
   viewer.screenshotExtension = "." + o.screenshotFormat;
+  if (!o.path.empty()) {
+    auto path = loadCameraPath(o.path);
+    if (!path) return usageError(path.error());
+    viewer.path = std::move(*path);
+  } else if (o.holdAtPathEnd) {
+    return usageError(Error{"", 0, 0, "--hold", "needs --path"});
+  }
+  viewer.holdAtPathEnd = o.holdAtPathEnd;
+  if (!o.frameTimes.empty()) {
+    if (auto s = checkWritable(o.frameTimes, "--frame-times"); !s) return usageError(s.error());
+    viewer.frameTimesPath = o.frameTimes;
+  }
   if (auto s = checkDirectory(o.recordDir, "--record-dir"); !s) return usageError(s.error());
   viewer.recordDirectory = o.recordDir;
   if (!o.record.empty()) {
@@ -99,6 +116,11 @@ int runView(const ViewCommandOptions& o) {
   // The sun of `globe render` at the starting point (about 45 degrees up): the first view is lit,
   // and a viewer screenshot matches a render of the same pose.
   scene.sunDirection = defaultSunDirection(directionFromLatLon(pose->latitude_deg, pose->longitude_deg));
+  if (viewer.path) {  // a flown path is lit like `globe bench` lights it: at its first keyframe
+    const double radius_m = ElevationModel(scene.planet).radius_m();
+    scene.sunDirection = defaultSunDirection(
+        viewer.path->positionAt(viewer.path->startTime_s(), [radius_m](const glm::dvec3&) { return radius_m; }));
+  }
 
   if (!Window::displayAvailable()) {
     printError(
@@ -169,6 +191,11 @@ void addViewCommand(CLI::App& app, Runner& run) {
       ->capture_default_str();
   cmd->add_option("--record", opts->record, "Path file R writes instead (overwritten by each recording)");
   cmd->add_flag("--no-vsync", opts->noVsync, "Present without waiting for vertical blank when the surface allows");
+  cmd->add_option("--path", opts->path,
+                  "Fly this camera path (docs/camera-paths.md) in real time, then quit at its end");
+  cmd->add_flag("--hold", opts->holdAtPathEnd, "With --path: stay open at the path's last pose");
+  cmd->add_option("--frame-times", opts->frameTimes,
+                  "Write per-frame times to FILE.csv at exit (frame, wall_s, path_t_s, frame_ms, nodes, triangles)");
   addDeviceFlags(*cmd, opts->device);
   cmd->callback([opts, &run] { run = [opts] { return runView(*opts); }; });
 }

@@ -2,9 +2,35 @@
 
 #include "engine/vk/vk_check.h"
 
+#include <array>
 #include <chrono>
 
 namespace globe {
+
+namespace {
+
+// Query layout: frame begin, the terrain renderer's pass marks, frame end.
+constexpr uint32_t kFrameBeginQuery = 0;
+constexpr uint32_t kFirstPassQuery = 1;
+constexpr uint32_t kFrameEndQuery = kFirstPassQuery + kTerrainPassMarks;
+constexpr uint32_t kQueryCount = kFrameEndQuery + 1;
+
+// Fills gpu_ms and its split by pass from the frame's timestamps (left zero when not available).
+void readGpuTimes(VkDevice device, VkQueryPool queries, double timestampPeriod_ns, FrameStats& stats) {
+  std::array<uint64_t, kQueryCount> t{};
+  if (vkGetQueryPoolResults(device, queries, 0, kQueryCount, sizeof(t), t.data(), sizeof(uint64_t),
+                            VK_QUERY_RESULT_64_BIT) != VK_SUCCESS)
+    return;
+  const auto ms = [&](uint32_t from, uint32_t to) {
+    return t[to] >= t[from] ? double(t[to] - t[from]) * timestampPeriod_ns * 1e-6 : 0.0;
+  };
+  stats.gpu_ms = ms(kFrameBeginQuery, kFrameEndQuery);
+  stats.gpu_terrain_ms = ms(kFirstPassQuery + kMarkGridsBegin, kFirstPassQuery + kMarkSkirtsBegin);
+  stats.gpu_skirts_ms = ms(kFirstPassQuery + kMarkSkirtsBegin, kFirstPassQuery + kMarkSkyBegin);
+  stats.gpu_sky_ms = ms(kFirstPassQuery + kMarkSkyBegin, kFirstPassQuery + kMarkSkyEnd);
+}
+
+}  // namespace
 
 HeadlessRenderer::HeadlessRenderer(vk::Device& device, VkExtent2D extent) : device_(device), target_(device, extent) {
   VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
@@ -24,7 +50,7 @@ HeadlessRenderer::HeadlessRenderer(vk::Device& device, VkExtent2D extent) : devi
   fence_ = vk::UniqueFence(device.device(), fence);
   VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
   queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
-  queryInfo.queryCount = 2;
+  queryInfo.queryCount = kQueryCount;
   VkQueryPool queries;
   GLOBE_VK_CHECK(vkCreateQueryPool(device.device(), &queryInfo, nullptr, &queries));
   queries_ = vk::UniqueQueryPool(device.device(), queries);
@@ -51,16 +77,18 @@ FrameStats HeadlessRenderer::renderFrame(Terrain& terrain, const Camera& camera,
     frame_ += 1;
     terrain.update(frame_, camera, frame_ - 1);
   }
-  vkResetQueryPool(device_.device(), queries_, 0, 2);
+  vkResetQueryPool(device_.device(), queries_, 0, kQueryCount);
   GLOBE_VK_CHECK(vkResetCommandBuffer(cmd_, 0));
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   GLOBE_VK_CHECK(vkBeginCommandBuffer(cmd_, &begin));
-  vkCmdWriteTimestamp2(cmd_, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, queries_, 0);
+  vkCmdWriteTimestamp2(cmd_, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, queries_, kFrameBeginQuery);
   target_.begin(cmd_, clear_.data());
+  terrain.renderer().setPassTimestamps({queries_, kFirstPassQuery});
   terrain.record(cmd_, camera, uint32_t(frame_ % 2));
+  terrain.renderer().setPassTimestamps({});  // the terrain may be drawn elsewhere next (tests)
   target_.end(cmd_);
-  vkCmdWriteTimestamp2(cmd_, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, queries_, 1);
+  vkCmdWriteTimestamp2(cmd_, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, queries_, kFrameEndQuery);
   GLOBE_VK_CHECK(vkEndCommandBuffer(cmd_));
   VkFence fence = fence_;
   GLOBE_VK_CHECK(vkResetFences(device_.device(), 1, &fence));
@@ -72,11 +100,7 @@ FrameStats HeadlessRenderer::renderFrame(Terrain& terrain, const Camera& camera,
 
   FrameStats stats = terrain.stats();
   stats.converged = terrain.converged();
-  uint64_t stamps[2] = {0, 0};
-  if (vkGetQueryPoolResults(device_.device(), queries_, 0, 2, sizeof(stamps), stamps, sizeof(uint64_t),
-                            VK_QUERY_RESULT_64_BIT) == VK_SUCCESS &&
-      stamps[1] >= stamps[0])
-    stats.gpu_ms = double(stamps[1] - stamps[0]) * double(device_.properties().limits.timestampPeriod) * 1e-6;
+  readGpuTimes(device_.device(), queries_, double(device_.properties().limits.timestampPeriod), stats);
   stats.frame_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return stats;
 }

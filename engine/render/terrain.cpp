@@ -1,5 +1,6 @@
 #include "engine/render/terrain.h"
 
+#include "planet/geometry/triacontahedron.h"
 #include "planet/lod/frustum.h"
 #include "planet/streaming/payload_reference.h"
 
@@ -60,8 +61,32 @@ Terrain::~Terrain() {
 }
 
 const FrameStats& Terrain::update(uint64_t frame, const Camera& camera, uint64_t completedFrame) {
+  if (!primed_) prime(frame, camera);
+  updateAt(frame + primedRounds_, camera, completedFrame + primedRounds_, false);
+  return stats_;
+}
+
+void Terrain::prime(uint64_t firstFrame, const Camera& camera) {
+  // Rounds of the normal chain, each waited for, so the first drawn frame already has the whole
+  // planet (every root) and as much of the first view as the rounds allow. No frame is drawn in
+  // between, so every earlier round counts as completed.
+  primed_ = true;
+  const auto start = std::chrono::steady_clock::now();
+  for (uint32_t round = 0; round < settings_.primeRounds; ++round) {
+    const uint64_t poolFrame = firstFrame + round;
+    updateAt(poolFrame, camera, poolFrame > 0 ? poolFrame - 1 : 0, true);
+    primedRounds_ = round + 1;
+    if (converged()) break;
+    generator_->waitIdle();
+  }
+  primeWall_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+void Terrain::updateAt(uint64_t poolFrame, const Camera& camera, uint64_t poolCompletedFrame, bool requestAllRoots) {
   stats_ = FrameStats{};
-  pool_->beginFrame(frame, camera.position_m, completedFrame);
+  const double generationBefore_ms = generator_->gpuTime_ms();  // cumulative over collected batches
+  pool_->beginFrame(poolFrame, camera.position_m, poolCompletedFrame);
+  stats_.gpu_generation_ms = generator_->gpuTime_ms() - generationBefore_ms;
 
   auto start = std::chrono::steady_clock::now();
   auto frustum = Frustum::fromViewProjection(camera.projection() * camera.viewFromWorld(glm::dvec3(0.0)));
@@ -70,6 +95,14 @@ const FrameStats& Terrain::update(uint64_t frame, const Camera& camera, uint64_t
   stats_.select_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (!selected) selection_.nodes.clear();  // a non-finite camera draws nothing (the caller validated it)
 
+  if (requestAllRoots) {
+    // The selection asks only for the roots in view; the warm-up makes the whole planet resident so
+    // turning round never shows a hole (roots are never evicted).
+    for (int face = 0; face < kFaceCount; ++face) {
+      const NodeId root{uint8_t(face), 0, 0, 0};
+      if (!pool_->isResident(root)) pool_->request(root, RequestPriority::kRoot, glm::length(camera.position_m));
+    }
+  }
   pool_->markUsed(selection_.nodes);
   pool_->dispatch();
 
@@ -91,7 +124,6 @@ const FrameStats& Terrain::update(uint64_t frame, const Camera& camera, uint64_t
     if (!slot) continue;  // the selection only draws resident nodes; guard anyway
     drawNodes_.push_back({n.id, *slot, n.morph, n.partial, generator_->slotCentre(*slot)});
   }
-  return stats_;
 }
 
 void Terrain::record(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex) {

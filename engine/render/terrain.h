@@ -26,6 +26,11 @@ struct TerrainSettings {
   GenerationPrecision generation = GenerationPrecision::kDouble;  // kFloat only to measure (globe trade)
   VertexPositions vertexPositions = VertexPositions::kStored;     // kReprojected only to measure
   uint32_t payloadSlotsPerPage = 0;  // cap on slots per payload page (0: one binding's worth; tests)
+  // Warm-up before the first frame (Terrain::update's first call): generation rounds, each
+  // dispatched and waited for, that make all 30 roots resident and then refine the first view,
+  // so no frame shows an empty planet. Rounds, not milliseconds, so replays stay deterministic.
+  // 0: start empty (tests of cold streaming).
+  uint32_t primeRounds = 12;
 };
 
 // Bad settings and planets are reported as an Error naming the field.
@@ -40,9 +45,10 @@ class Terrain {
   ~Terrain();
 
   // CPU part of frame `frame` (strictly increasing): collects finished generations, selects,
-  // requests, starts new generations under the budget. `completedFrame`: the newest frame whose GPU
-  // work has finished (slots only older frames used may be regenerated). Returns the statistics
-  // known so far (selection and streaming); record() adds the draw's.
+  // requests, starts new generations under the budget. The first call primes the terrain first
+  // (TerrainSettings::primeRounds): it blocks until the roots and the first view's nodes are resident.
+  // `completedFrame`: the newest frame whose GPU work has finished (slots only older frames used may be regenerated).
+  // Returns the statistics known so far (selection and streaming); record() adds the draw's.
   const FrameStats& update(uint64_t frame, const Camera& camera, uint64_t completedFrame);
   // Records the draw of the last update(). `frameIndex`: which per-frame buffers to use (frame % 2).
   void record(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex);
@@ -73,9 +79,15 @@ class Terrain {
   // The payload generator (its payload buffer and slot centres), for tests and tools.
   const GpuPayloadGenerator& generator() const { return *generator_; }
   const TerrainSettings& settings() const { return settings_; }
+  // Generation rounds the warm-up ran (0 before the first update or with primeRounds 0).
+  uint32_t primedRounds() const { return primedRounds_; }
+  double primeWall_ms() const { return primeWall_ms_; }  // wall time the warm-up took
 
  private:
   Terrain(vk::Device& device, const ElevationModel& model, const TerrainSettings& settings, LodSelector selector);
+  // One round of the chain in the pool's own frame numbering (the caller's plus the warm-up's rounds).
+  void updateAt(uint64_t poolFrame, const Camera& camera, uint64_t poolCompletedFrame, bool requestAllRoots);
+  void prime(uint64_t firstFrame, const Camera& camera);
 
   vk::Device& device_;
   const ElevationModel& model_;
@@ -88,6 +100,9 @@ class Terrain {
   std::vector<DrawNode> drawNodes_;
   FloatingOrigin origin_;
   FrameStats stats_;
+  bool primed_ = false;
+  uint32_t primedRounds_ = 0;  // added to the caller's frame numbers: the warm-up used pool frames too
+  double primeWall_ms_ = 0;
 };
 
 }  // namespace globe

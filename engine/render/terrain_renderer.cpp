@@ -205,6 +205,8 @@ DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, con
                                   std::span<const DrawNode> nodes, const PayloadPages& payloads, uint32_t frameIndex) {
   assert(frameIndex < kFramesInFlight);
   DrawStats stats;
+  uint32_t nextMark = kMarkGridsBegin;
+  writeMarks(cmd, nextMark, kMarkGridsBegin);
   // The sky goes last, behind everything: its fullscreen triangle lies at the far plane (depth 0),
   // so the depth test keeps only the pixels no terrain covered, and those are the only ones shaded.
   struct SkyLast {
@@ -212,12 +214,16 @@ DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, con
     VkCommandBuffer cmd;
     const Camera& camera;
     DrawStats& stats;
+    uint32_t& nextMark;
     ~SkyLast() {
-      if (!renderer.style_.sky) return;
-      renderer.recordSky(cmd, camera);
-      ++stats.drawCalls;
+      renderer.writeMarks(cmd, nextMark, kMarkSkyBegin);
+      if (renderer.style_.sky) {
+        renderer.recordSky(cmd, camera);
+        ++stats.drawCalls;
+      }
+      renderer.writeMarks(cmd, nextMark, kMarkSkyEnd);
     }
-  } skyLast{*this, cmd, camera, stats};
+  } skyLast{*this, cmd, camera, stats, nextMark};
   if (nodes.empty()) return stats;
   const bool skirts = style_.skirtOutward > 0.0f || style_.skirtDrop > 0.0f;
   // Skirted edges of full nodes, then of partial ones (one skirt instance each).
@@ -315,6 +321,7 @@ DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, con
   const bool wireframe = view == TerrainDebugView::kWireframe;
   vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
   for (uint32_t r = 0; r < 4; ++r) {
+    if (r == 2) writeMarks(cmd, nextMark, kMarkSkirtsBegin);  // ranges 0, 1 are grids; 2, 3 skirts
     for (uint32_t page = 0; page < pageCount; ++page) {
       const size_t g = size_t(r) * pageCount + page;
       if (instancesOf_[g] == 0) continue;
@@ -335,10 +342,18 @@ DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, con
       stats.triangles += uint64_t(count_[r] / 3) * instancesOf_[g];
     }
   }
+  writeMarks(cmd, nextMark, kMarkSkyBegin);
   stats.nodes = uint32_t(nodes.size());
   stats.partialNodes = partial;
   stats.skirtEdges = skirtEdges[0] + skirtEdges[1];
   return stats;
+}
+
+void TerrainRenderer::writeMarks(VkCommandBuffer cmd, uint32_t& next, uint32_t mark) const {
+  for (; next <= mark; ++next) {
+    if (timestamps_.pool != VK_NULL_HANDLE)
+      vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, timestamps_.pool, timestamps_.firstQuery + next);
+  }
 }
 
 }  // namespace globe

@@ -67,6 +67,14 @@ struct DrawNode {
   glm::dvec3 centre_m{0.0};  // node centre the payload was generated with (PayloadJob::centre)
 };
 
+// Timestamps written between the renderer's passes, at `firstQuery` + TerrainPassMark in `pool`
+// (for the benchmark's GPU split; VK_NULL_HANDLE writes none). All four are written every record().
+enum TerrainPassMark : uint32_t { kMarkGridsBegin, kMarkSkirtsBegin, kMarkSkyBegin, kMarkSkyEnd, kTerrainPassMarks };
+struct PassTimestamps {
+  VkQueryPool pool = VK_NULL_HANDLE;
+  uint32_t firstQuery = 0;
+};
+
 struct DrawStats {
   uint64_t triangles = 0;  // submitted, including skirts and the degenerate ones of morphed cells
   uint32_t drawCalls = 0;
@@ -99,6 +107,7 @@ class TerrainRenderer {
   const TerrainStyle& style() const { return style_; }
   void setStyle(const TerrainStyle& style) { style_ = style; }
   void setDebugView(TerrainDebugView view) { style_.debug = view; }
+  void setPassTimestamps(PassTimestamps timestamps) { timestamps_ = timestamps; }
   bool wireframeSupported() const { return wireframe_ != nullptr; }
   uint32_t gridCells() const { return cells_; }
   // Index counts of the full and the half-resolution grids, and of one skirt strip (one node edge) of each.
@@ -124,6 +133,9 @@ class TerrainRenderer {
   vk::Device& device_;
   uint32_t cells_;
   TerrainStyle style_;
+  PassTimestamps timestamps_;
+  // Writes the pass marks from `next` up to and including `mark` (none without a query pool).
+  void writeMarks(VkCommandBuffer cmd, uint32_t& next, uint32_t mark) const;
   vk::GraphicsPipeline solid_;   // grids, back faces culled
   vk::GraphicsPipeline skirts_;  // skirt strips, both sides
   std::unique_ptr<vk::GraphicsPipeline> wireframe_;

@@ -21,7 +21,7 @@ constexpr BenchMetric kMetrics[] = {
      [](const BenchFrame& f) { return f.stats.gpu_ms; }},
     {"nodes_selected", "", "quadtree nodes drawn", MetricKind::Integer, 0,
      [](const BenchFrame& f) { return static_cast<double>(f.stats.nodes_selected); }},
-    {"nodes_partial", "", "nodes drawn at half resolution while their payload generates", MetricKind::Integer, 0,
+    {"nodes_partial", "", "of those, drawn at half resolution: beyond their own level's range", MetricKind::Integer, 0,
      [](const BenchFrame& f) { return static_cast<double>(f.stats.nodes_partial); }},
     {"triangles", "", "triangles submitted", MetricKind::Integer, 0,
      [](const BenchFrame& f) { return static_cast<double>(f.stats.triangles); }},
@@ -37,6 +37,17 @@ constexpr BenchMetric kMetrics[] = {
      [](const BenchFrame& f) { return static_cast<double>(f.stats.evicted); }},
     {"resident_mib", "MiB", "payload memory resident on the GPU", MetricKind::Real, 3,
      [](const BenchFrame& f) { return f.stats.resident_mib; }},
+    // Added after the first schema: appended so column positions stay.
+    {"ground_speed_mps", "m/s", "camera speed along the ground (horizontal)", MetricKind::Real, 3,
+     [](const BenchFrame& f) { return f.groundSpeed_mps; }},
+    {"gpu_terrain_ms", "ms", "of gpu_ms: the node grids", MetricKind::Real, 4,
+     [](const BenchFrame& f) { return f.stats.gpu_terrain_ms; }},
+    {"gpu_skirts_ms", "ms", "of gpu_ms: the skirts at level changes", MetricKind::Real, 4,
+     [](const BenchFrame& f) { return f.stats.gpu_skirts_ms; }},
+    {"gpu_sky_ms", "ms", "of gpu_ms: the sky", MetricKind::Real, 4,
+     [](const BenchFrame& f) { return f.stats.gpu_sky_ms; }},
+    {"gpu_generation_ms", "ms", "GPU time of the generation batches collected this frame", MetricKind::Real, 4,
+     [](const BenchFrame& f) { return f.stats.gpu_generation_ms; }},
 };
 
 }  // namespace

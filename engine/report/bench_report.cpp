@@ -1,6 +1,8 @@
 #include "engine/report/bench_report.h"
 
+#include "engine/report/bench_baseline.h"
 #include "engine/report/bench_metrics.h"
+#include "engine/report/bench_phases.h"
 #include "engine/report/bench_report_html.h"
 #include "engine/report/bench_timeline_svg.h"
 #include "planet/core/atomic_file.h"
@@ -84,8 +86,46 @@ nlohmann::ordered_json statValue(double v, const BenchMetric& m) {
   return v;
 }
 
+nlohmann::ordered_json phasesJson(std::span<const BenchFrame> frames) {
+  nlohmann::ordered_json phases = nlohmann::ordered_json::array();
+  for (const PhaseSummary& p : summarizePhases(frames)) {
+    phases.push_back({{"name", p.phase.name},
+                      {"t_start_s", p.tStart_s},
+                      {"t_end_s", p.tEnd_s},
+                      {"frames", p.phase.endFrame - p.phase.firstFrame},
+                      {"frame_ms_median", p.frameMedian_ms},
+                      {"frame_ms_p95", p.frameP95_ms},
+                      {"nodes_median", static_cast<uint64_t>(p.nodesMedian)},
+                      {"triangles_median", static_cast<uint64_t>(p.trianglesMedian)}});
+  }
+  return phases;
+}
+
+// The earlier run's medians and p95s beside this run's, with ratios (this / baseline; 0 when the
+// baseline's value is 0).
+nlohmann::ordered_json baselineJson(const BenchBaseline& baseline, std::span<const BenchFrame> frames) {
+  using Json = nlohmann::ordered_json;
+  const auto ratio = [](double now, double before) { return before != 0 ? now / before : 0.0; };
+  Json metrics = Json::object();
+  for (const BenchMetric& m : benchMetrics()) {
+    const MetricSummary* before = baseline.metric(m.name);
+    if (!before) continue;
+    const MetricSummary now = summarizeMetric(frames, m);
+    metrics[m.name] = {{"median", before->median},
+                       {"p95", before->p95},
+                       {"median_ratio", ratio(now.median, before->median)},
+                       {"p95_ratio", ratio(now.p95, before->p95)}};
+  }
+  return {{"file", baseline.file},
+          {"commit", baseline.commit},
+          {"date_utc", baseline.dateUtc},
+          {"jank_ms", baseline.jank_ms},
+          {"jank_ratio", ratio(jankMs(frames), baseline.jank_ms)},
+          {"metrics", std::move(metrics)}};
+}
+
 std::string summaryJson(const BenchRunInfo& info, std::span<const BenchFrame> frames,
-                        std::span<const BenchKeyFrame> keyFrames) {
+                        std::span<const BenchKeyFrame> keyFrames, const BenchBaseline* baseline) {
   using Json = nlohmann::ordered_json;  // keys in the order written: readable, and stable bytes
   Json run = {{"planet_file", info.planetFile},
               {"path_file", info.pathFile},
@@ -94,7 +134,13 @@ std::string summaryJson(const BenchRunInfo& info, std::span<const BenchFrame> fr
               {"size", info.size},
               {"grid_cells", info.gridCells},
               {"command_line", info.commandLine},
-              {"globe_version", info.globeVersion}};
+              {"globe_version", info.globeVersion},
+              {"driver", info.driver},
+              {"shader_cache", info.shaderCache},
+              {"load_average_start", info.loadAverageStart},
+              {"load_average_end", info.loadAverageEnd},
+              {"commit", info.commit},
+              {"date_utc", info.dateUtc}};
   Json metrics = Json::object();
   for (const BenchMetric& m : benchMetrics()) {
     const MetricSummary s = summarizeMetric(frames, m);
@@ -114,6 +160,12 @@ std::string summaryJson(const BenchRunInfo& info, std::span<const BenchFrame> fr
                   {"jank_ms", jankMs(frames)},           {"frames_over_33ms", framesOverBudget(frames)},
                   {"percentile_method", "nearest-rank"}, {"metrics", std::move(metrics)},
                   {"key_frames", std::move(keys)}};
+  summary["generation_latency_frames"] = {{"requests", info.latency.requests},
+                                          {"p50", info.latency.p50_frames},
+                                          {"p95", info.latency.p95_frames},
+                                          {"p99", info.latency.p99_frames}};
+  summary["phases"] = phasesJson(frames);
+  if (baseline) summary["baseline"] = baselineJson(*baseline, frames);
   // Invalid UTF-8 in a file name or command line would make dump() throw; replace it instead.
   return summary.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
@@ -129,7 +181,7 @@ Status writeTemporary(AtomicFile& file, const std::string& content) {
 }  // namespace
 
 Status writeBenchReport(const std::string& dir, const BenchRunInfo& info, std::span<const BenchFrame> frames,
-                        std::span<const BenchKeyFrame> keyFrames) {
+                        std::span<const BenchKeyFrame> keyFrames, const BenchBaseline* baseline) {
   if (auto s = validateFrames(frames); !s) return s;
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) return Error{dir, 0, 0, "", "report directory does not exist"};
@@ -143,10 +195,10 @@ Status writeBenchReport(const std::string& dir, const BenchRunInfo& info, std::s
   try {
     const std::string svg = benchTimelineSvg(info, frames, keyFrames);
     outputs.push_back({"frames.csv", framesCsv(frames)});
-    outputs.push_back({"summary.json", summaryJson(info, frames, keyFrames)});
+    outputs.push_back({"summary.json", summaryJson(info, frames, keyFrames, baseline)});
     outputs.push_back({"timeline.svg", "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n" + svg});
     // Last, so an existing report.html means the files it links to exist too.
-    outputs.push_back({"report.html", benchReportHtml(info, frames, keyFrames, svg)});
+    outputs.push_back({"report.html", benchReportHtml(info, frames, keyFrames, svg, baseline)});
   } catch (const std::exception& e) {  // nlohmann or allocation: never out of here
     return Error{dir, 0, 0, "", std::string("cannot build the report: ") + e.what()};
   }

@@ -2,6 +2,7 @@
 
 #include "engine/report/bench_metrics.h"
 #include "engine/report/markup_escape.h"
+#include "engine/report/svg_axis.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,6 +30,7 @@ struct Series {
   const char* label;
   const char* colour;
   double (*value)(const BenchFrame&);
+  double width = 1.2;  // stroke width: a wide pale line under a thin one keeps both visible where equal
 };
 
 struct Panel {
@@ -43,12 +45,18 @@ double metricValue(const char* name, const BenchFrame& f) { return benchMetric(n
 std::vector<Panel> timelinePanels() {
   // Colour-blind-safe-ish (Tableau 10); one colour per role so panels read alike.
   return {
+      // gpu_ms is often equal to frame_ms (lavapipe): drawn wide and pale underneath, frame_ms on top.
       {"Frame time (ms)",
-       {{"frame_ms", "#1f77b4", [](const BenchFrame& f) { return metricValue("frame_ms", f); }},
+       {{"gpu_ms", "#98df8a", [](const BenchFrame& f) { return metricValue("gpu_ms", f); }, 3.5},
         {"select_ms", "#ff7f0e", [](const BenchFrame& f) { return metricValue("select_ms", f); }},
-        {"gpu_ms", "#2ca02c", [](const BenchFrame& f) { return metricValue("gpu_ms", f); }}},
+        {"frame_ms", "#1f77b4", [](const BenchFrame& f) { return metricValue("frame_ms", f); }}},
        false,
        true},
+      {"GPU time by pass (ms)",
+       {{"gpu_terrain_ms", "#2ca02c", [](const BenchFrame& f) { return metricValue("gpu_terrain_ms", f); }},
+        {"gpu_skirts_ms", "#9467bd", [](const BenchFrame& f) { return metricValue("gpu_skirts_ms", f); }},
+        {"gpu_sky_ms", "#17becf", [](const BenchFrame& f) { return metricValue("gpu_sky_ms", f); }},
+        {"gpu_generation_ms", "#d62728", [](const BenchFrame& f) { return metricValue("gpu_generation_ms", f); }}}},
       {"Nodes drawn",
        {{"nodes_selected", "#1f77b4", [](const BenchFrame& f) { return metricValue("nodes_selected", f); }},
         {"nodes_partial", "#d62728", [](const BenchFrame& f) { return metricValue("nodes_partial", f); }},
@@ -70,27 +78,7 @@ std::vector<Panel> timelinePanels() {
   };
 }
 
-std::string num(double v) { return formatFixed(v, 1); }
-
-// 1, 2 or 5 times a power of ten, giving about `targetTicks` intervals over `range`.
-double niceStep(double range, double targetTicks) {
-  if (!(range > 0)) return 1;
-  const double raw = range / targetTicks;
-  const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
-  const double normalised = raw / magnitude;
-  const double factor = normalised < 1.5 ? 1 : normalised < 3 ? 2 : normalised < 7 ? 5 : 10;
-  return factor * magnitude;
-}
-
-int decimalsFor(double step) { return std::max(0, static_cast<int>(-std::floor(std::log10(step) + 1e-9))); }
-
-// Tick label with k/M suffixes so large counts stay short; the step sets the decimals.
-std::string tickLabel(double value, double step) {
-  if (value == 0) return "0";
-  if (step >= 1e6) return formatFixed(value / 1e6, decimalsFor(step / 1e6)) + "M";
-  if (step >= 1e3) return formatFixed(value / 1e3, decimalsFor(step / 1e3)) + "k";
-  return formatFixed(value, decimalsFor(step));
-}
+std::string num(double v) { return svgNumber(v); }
 
 // Multiples of a nice step within [t0, t1], computed from an integer index so they don't drift.
 std::vector<double> timeTicks(double t0, double t1, double& step) {
@@ -229,12 +217,7 @@ class PanelWriter {
   // A horizontal grid line with its label at the left.
   void tick(double y, const std::string& label, double plotTop) {
     if (y < plotTop - 0.5) return;
-    out_ += "<line x1=\"" + num(kLeft) + "\" y1=\"" + num(y) + "\" x2=\"" + num(kLeft + kPlotWidth) + "\" y2=\"" +
-            num(y) + "\" stroke=\"#e0e0e0\" stroke-width=\"1\"/>\n";
-    if (!label.empty()) {
-      out_ += "<text x=\"" + num(kLeft - 5) + "\" y=\"" + num(y + 3.5) + "\" text-anchor=\"end\">" +
-              escapeMarkup(label) + "</text>\n";
-    }
+    out_ += svgHorizontalTick(y, kLeft, kLeft + kPlotWidth, label);
   }
 
   void verticalGrid(double plotTop, double plotBottom, bool labelKeyFrames) {
@@ -263,8 +246,8 @@ class PanelWriter {
               "\" r=\"2.5\" fill=\"" + s.colour + "\"/>\n";
       return;
     }
-    out_ += "<polyline fill=\"none\" stroke=\"" + std::string(s.colour) +
-            "\" stroke-width=\"1.2\" stroke-linejoin=\"round\" clip-path=\"url(#" + clipId + ")\" points=\"";
+    out_ += "<polyline fill=\"none\" stroke=\"" + std::string(s.colour) + "\" stroke-width=\"" + num(s.width) +
+            "\" stroke-linejoin=\"round\" clip-path=\"url(#" + clipId + ")\" points=\"";
     for (std::size_t k = 0; k < indices.size(); ++k) {
       const std::size_t i = indices[k];
       if (k > 0) out_ += ' ';

@@ -3,6 +3,7 @@
 #include "engine/io/image_io.h"
 #include "engine/render/render_output.h"
 #include "engine/viewer/fly_camera.h"
+#include "engine/viewer/frame_time_log.h"
 #include "engine/viewer/overlay.h"
 #include "engine/viewer/path_recorder.h"
 #include "engine/viewer/swapchain.h"
@@ -59,6 +60,8 @@ std::unique_ptr<ViewerScene> makeScene(vk::Device& device, ViewerSceneOptions op
 
 }  // namespace
 
+using Clock = std::chrono::steady_clock;
+
 struct Viewer::State {
   State(Window& w, vk::Device& d, ViewerOptions o)
       : window(w),
@@ -82,6 +85,10 @@ struct Viewer::State {
   void toggleRecording(const Camera& cam);
   void stopRecording();
   void waitForReload();
+  Camera frameCamera(double step_s, Clock::time_point now);
+  void describeCamera(OverlayView& view, const Camera& cam) const;
+  void logFrame(Clock::time_point runStart);
+  Status writeFrameTimes() const;
 
   Window& window;
   vk::Device& device;
@@ -105,7 +112,68 @@ struct Viewer::State {
   std::string message;                    // shown in the overlay
   std::vector<std::string> planetErrors;  // of the planet file on disk, while it is invalid
   FrameStats stats;
+  FrameTimeLog frameTimes;
+  Clock::time_point lastPresent;                    // when the previous frame was presented
+  std::optional<Clock::time_point> pathClockStart;  // path mode: when frame 0 was presented
+  double pathTime_s = 0;                            // path time of the current frame
+  bool pathEnded = false;                           // the current frame shows the path's end
 };
+
+Camera Viewer::State::frameCamera(double step_s, Clock::time_point now) {
+  const VkExtent2D extent = target->extent();
+  const double aspect = double(extent.width) / double(extent.height);
+  if (options.path) {
+    // Frame 0 shows the start; then the wall clock drives the path (the warm-up before frame 0
+    // does not count), or 1/60 s per frame for deterministic runs.
+    const CameraPath& path = *options.path;
+    if (frame == 0 || !pathClockStart) {
+      pathTime_s = path.startTime_s();
+    } else if (options.fixedStep) {
+      pathTime_s += kFixedStep_s;
+    } else {
+      pathTime_s = path.startTime_s() + std::chrono::duration<double>(now - *pathClockStart).count();
+    }
+    pathEnded = pathTime_s >= path.endTime_s();
+    pathTime_s = std::min(pathTime_s, path.endTime_s());
+    return path.cameraAt(pathTime_s, scene->radius_m(), aspect,
+                         [this](const glm::dvec3& dir) { return scene->groundRadius(dir); });
+  }
+  // Keys move, left-drag turns.
+  FlyControls controls;
+  controls.forward = input.axis(GLFW_KEY_W, GLFW_KEY_S);
+  controls.right = input.axis(GLFW_KEY_D, GLFW_KEY_A);
+  controls.up = input.axis(GLFW_KEY_E, GLFW_KEY_Q);
+  controls.boost = input.down(GLFW_KEY_LEFT_SHIFT) || input.down(GLFW_KEY_RIGHT_SHIFT);
+  controls.turnRight_px = input.dragX_px;
+  controls.turnUp_px = -input.dragY_px;
+  input.dragX_px = input.dragY_px = 0;
+  camera.update(controls, step_s);
+  return camera.camera(aspect);
+}
+
+void Viewer::State::describeCamera(OverlayView& view, const Camera& cam) const {
+  const glm::dvec3 up = glm::normalize(cam.position_m);
+  view.altitude_m = options.path ? glm::length(cam.position_m) - scene->groundRadius(up) : camera.altitude_m();
+  const glm::dvec2 latLon = latLonFromPosition(cam.position_m);
+  view.latitude_deg = latLon.x;
+  view.longitude_deg = latLon.y;
+  view.speed_mps = camera.speed_mps();
+}
+
+void Viewer::State::logFrame(Clock::time_point runStart) {
+  const Clock::time_point now = Clock::now();
+  const double frame_ms = std::chrono::duration<double, std::milli>(now - lastPresent).count();
+  lastPresent = now;
+  if (options.path && !pathClockStart) pathClockStart = now;
+  frameTimes.add(std::chrono::duration<double>(now - runStart).count(), options.path ? pathTime_s : 0.0, frame_ms,
+                 stats);
+}
+
+Status Viewer::State::writeFrameTimes() const {
+  printLine(frameTimes.summaryLine());
+  if (options.frameTimesPath.empty()) return Ok{};
+  return frameTimes.write(options.frameTimesPath);
+}
 
 void Viewer::State::handle(const InputEvent& e) {
   switch (e.type) {
@@ -145,7 +213,6 @@ void Viewer::State::handle(const InputEvent& e) {
 void Viewer::State::waitForReload() {
   // Scripts only: a test edits the planet file while the loop stands still, so the frame numbers
   // of its screenshots do not depend on how fast this machine renders.
-  using Clock = std::chrono::steady_clock;
   printLine("waiting for the planet file to change (frame " + std::to_string(frame) + ")");
   Clock::time_point deadline = Clock::now() + std::chrono::seconds(kMaxReloadWait_s);
   while (Clock::now() < deadline && !quit) {
@@ -281,8 +348,9 @@ uint64_t Viewer::framesRendered() const { return s_->frame; }
 
 Status Viewer::run() {
   State& s = *s_;
-  using Clock = std::chrono::steady_clock;
   Clock::time_point previous = Clock::now();
+  const Clock::time_point runStart = previous;
+  s.lastPresent = previous;
   Camera lastCamera = s.camera.camera(double(s.target->extent().width) / s.target->extent().height);
 
   while (!s.quit && !(s.options.frames && s.frame >= s.options.frames)) {
@@ -318,19 +386,8 @@ Status Viewer::run() {
       continue;
     }
 
-    // Camera: keys move, left-drag turns.
-    FlyControls controls;
-    controls.forward = s.input.axis(GLFW_KEY_W, GLFW_KEY_S);
-    controls.right = s.input.axis(GLFW_KEY_D, GLFW_KEY_A);
-    controls.up = s.input.axis(GLFW_KEY_E, GLFW_KEY_Q);
-    controls.boost = s.input.down(GLFW_KEY_LEFT_SHIFT) || s.input.down(GLFW_KEY_RIGHT_SHIFT);
-    controls.turnRight_px = s.input.dragX_px;
-    controls.turnUp_px = -s.input.dragY_px;
-    s.input.dragX_px = s.input.dragY_px = 0;
     double step_s = s.options.fixedStep ? kFixedStep_s : std::min(wall_s, 0.25);
-    s.camera.update(controls, step_s);
-    VkExtent2D extent = s.target->extent();
-    Camera cam = s.camera.camera(double(extent.width) / double(extent.height));
+    Camera cam = s.frameCamera(step_s, now);
 
     // Path recording in camera time: what the camera advanced by is what the replay advances by.
     if (s.recordToggleRequested) {
@@ -348,11 +405,7 @@ Status Viewer::run() {
     OverlayView view;
     view.stats = s.stats;  // the previous frame's complete statistics (draws are counted in record)
     view.stats.frame_ms = wall_s * 1000.0;
-    view.altitude_m = s.camera.altitude_m();
-    glm::dvec2 latLon = s.camera.latLon_deg();
-    view.latitude_deg = latLon.x;
-    view.longitude_deg = latLon.y;
-    view.speed_mps = s.camera.speed_mps();
+    s.describeCamera(view, cam);
     view.debugView = s.scene->debugViewName();
     view.deviceName = s.device.name();
     view.planet = s.scene->planet().name + " (" + s.scene->planetPath() + ")";
@@ -371,7 +424,9 @@ Status Viewer::run() {
     s.ring.submit(s.frame, s.swapchain.renderFinished(*image));
     if (!s.swapchain.present(*image)) s.swapchainStale = true;
     lastCamera = cam;
+    s.logFrame(runStart);
     ++s.frame;
+    if (s.pathEnded && !s.options.holdAtPathEnd) s.quit = true;  // the path's end is drawn
 
     if (s.screenshotRequested) {
       s.screenshotRequested = false;
@@ -394,6 +449,7 @@ Status Viewer::run() {
   if (s.recorder.recording()) s.stopRecording();
   GLOBE_VK_CHECK(vkDeviceWaitIdle(s.device.device()));
   s.releases.releaseAll();
+  if (Status st = s.writeFrameTimes(); !st) return st;
   if (!s.options.screenshotPath.empty()) {
     if (s.frame == 0) return Error{"", 0, 0, "--screenshot", "no frame was rendered"};
     return s.saveScreenshot(s.options.screenshotPath, lastCamera);

@@ -9,9 +9,11 @@
 #include "engine/viewer/viewer_scene.h"
 #include "engine/vk/device.h"
 #include "planet/camera/camera.h"
+#include "planet/camera/camera_path.h"
 #include "planet/core/error.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace globe {
@@ -30,6 +32,11 @@ struct ViewerOptions {
   std::string recordDirectory = ".";         // where R writes globe-path-YYYYmmdd-HHMMSS.path
   std::string recordFile;                    // when set, R writes this file instead (overwriting)
   bool vsync = true;                         // FIFO presentation; false prefers MAILBOX/IMMEDIATE
+  // Fly this camera path instead of the fly camera: path time follows the wall clock from the first
+  // frame (1/60 s per frame with fixedStep), and the viewer quits once it has drawn the path's end.
+  std::optional<CameraPath> path;
+  bool holdAtPathEnd = false;  // stay open at the path's last pose instead of quitting there
+  std::string frameTimesPath;  // per-frame times written here at exit (CSV) when not empty
 };
 
 class Viewer {
@@ -40,8 +47,9 @@ class Viewer {
   Viewer(const Viewer&) = delete;
   Viewer& operator=(const Viewer&) = delete;
 
-  // Runs until Esc, the window closes or the frame limit; then writes the exit screenshot.
-  // An error is a screenshot that could not be written.
+  // Runs until Esc, the window closes, the frame limit or the path's end; then writes the exit
+  // screenshot and the frame times, and prints "frames N median_ms X p95_ms Y" on stdout.
+  // An error is a screenshot or frame-time file that could not be written.
   Status run();
 
   uint64_t framesRendered() const;

@@ -194,6 +194,13 @@ Device::Device(const DeviceOptions& options) {
     if (physical_ == VK_NULL_HANDLE)
       throw std::runtime_error("Vulkan device '" + lastName + "' lacks " + lastMissing + ", which globe requires");
     vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
+    // Driver name and version (Vulkan 1.2 core): benchmark figures depend on them.
+    VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+    VkPhysicalDeviceProperties2 props2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+    props2.pNext = &driver;
+    vkGetPhysicalDeviceProperties2(physical_, &props2);
+    driverName_ = driver.driverName;
+    driverInfo_ = driver.driverInfo;
 
     // One queue that does graphics and compute (every Vulkan implementation has one), and
     // presents when there is a window.

@@ -41,6 +41,9 @@ class Device {
   VkSurfaceKHR surface() const { return surface_; }  // VK_NULL_HANDLE when headless
   const VkPhysicalDeviceProperties& properties() const { return properties_; }
   std::string name() const { return properties_.deviceName; }
+  // VkPhysicalDeviceDriverProperties: e.g. "llvmpipe" and "Mesa 22.3.6 (LLVM 15.0.6)".
+  const std::string& driverName() const { return driverName_; }
+  const std::string& driverInfo() const { return driverInfo_; }
   ValidationRecorder& validation() { return recorder_; }
   bool validationEnabled() const { return messenger_ != VK_NULL_HANDLE; }
 
@@ -66,6 +69,8 @@ class Device {
   uint32_t queueFamily_ = 0;
   VkPhysicalDeviceProperties properties_{};
   VkPhysicalDeviceMemoryProperties memory_{};
+  std::string driverName_;
+  std::string driverInfo_;
   UniqueCommandPool oneShotPool_;
   UniqueFence oneShotFence_;
   ValidationRecorder recorder_;

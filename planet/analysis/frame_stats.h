@@ -1,17 +1,24 @@
 #pragma once
-// What one frame cost and what it did: filled by the frame loop (and, once the terrain renderer
-// lands, by selection, drawing and streaming), shown by the viewer's overlay and written by the
-// benchmark. Plain data; zero means "not measured / nothing happened".
+// What one frame cost and what it did: filled by the frame loop, selection, drawing and
+// streaming, shown by the viewer's overlay and written by the benchmark. Plain data; zero means "not measured / nothing
+// happened".
 #include <cstdint>
 
 namespace globe {
 
 struct FrameStats {
-  double frame_ms = 0;          // wall time since the previous frame (milliseconds)
-  double select_ms = 0;         // CPU time of LOD selection (milliseconds)
-  double gpu_ms = 0;            // GPU time of the frame's work (milliseconds)
-  uint32_t nodes_selected = 0;  // quadtree nodes drawn
-  uint32_t nodes_partial = 0;   // of those, drawn at half resolution (payload still generating)
+  double frame_ms = 0;   // wall time since the previous frame (milliseconds)
+  double select_ms = 0;  // CPU time of LOD selection (milliseconds)
+  double gpu_ms = 0;     // GPU time of the frame's work (milliseconds)
+  // gpu_ms split by pass (milliseconds; zero where not measured, e.g. the viewer).
+  double gpu_terrain_ms = 0;     // the node grids, full and partial
+  double gpu_skirts_ms = 0;      // the skirt strips at level changes
+  double gpu_sky_ms = 0;         // the sky behind the terrain
+  double gpu_generation_ms = 0;  // payload generation batches collected this frame (own submits)
+  uint32_t nodes_selected = 0;   // quadtree nodes drawn
+  // Of those, drawn at half resolution (their parent's LOD): children of a refined node that lie
+  // beyond their own level's range. Not a payload still generating (the parent is drawn then).
+  uint32_t nodes_partial = 0;
   uint64_t triangles = 0;       // triangles submitted
   uint32_t draw_calls = 0;      // draw commands recorded
   uint32_t gen_dispatched = 0;  // payload generation jobs dispatched this frame

@@ -20,7 +20,7 @@ for f in frames.csv summary.json timeline.svg report.html keyframe_00.00s.png ke
   [[ -s "$WORK/a/$f" ]] || fail "missing $f"
 done
 header=$(head -1 "$WORK/a/frames.csv")
-expected="frame,t,altitude_m,frame_ms,select_ms,gpu_ms,nodes_selected,nodes_partial,triangles,draw_calls,gen_dispatched,gen_in_flight,gen_completed,evicted,resident_mib"
+expected="frame,t,altitude_m,frame_ms,select_ms,gpu_ms,nodes_selected,nodes_partial,triangles,draw_calls,gen_dispatched,gen_in_flight,gen_completed,evicted,resident_mib,ground_speed_mps,gpu_terrain_ms,gpu_skirts_ms,gpu_sky_ms,gpu_generation_ms"
 [[ "$header" == "$expected" ]] || fail "frames.csv header: $header"
 rows=$(($(wc -l <"$WORK/a/frames.csv") - 1))
 [[ $rows -eq 11 ]] || fail "frames.csv has $rows rows, expected 11 (0.5 s at 20 Hz)"
@@ -29,11 +29,33 @@ for key in '"frame_ms"' '"jank_ms"' '"p99"' '"median"' '"nodes_selected"'; do
 done
 grep -q '<svg' "$WORK/a/timeline.svg" || fail "timeline.svg is not SVG"
 grep -q '</html>' "$WORK/a/report.html" || fail "report.html is incomplete"
-# Determinism: everything but the timing columns (frame_ms, select_ms, gpu_ms) is identical.
-cut -d, -f1-3,7-15 "$WORK/a/frames.csv" >"$WORK/a.cols"
-cut -d, -f1-3,7-15 "$WORK/b/frames.csv" >"$WORK/b.cols"
+# The run environment is recorded; frame 0 already draws the planet (the terrain's warm-up).
+for key in '"driver"' '"shader_cache"' '"load_average_start"' '"load_average_end"' '"commit"' '"date_utc"' \
+  '"generation_latency_frames"' '"phases"'; do
+  grep -q "$key" "$WORK/a/summary.json" || fail "summary.json lacks $key"
+done
+nodes0=$(sed -n 2p "$WORK/a/frames.csv" | cut -d, -f7)
+[[ $nodes0 -ge 1 ]] || fail "frame 0 draws $nodes0 nodes"
+# Determinism: everything but the timing columns (*_ms) is identical.
+cut -d, -f1-3,7-16 "$WORK/a/frames.csv" >"$WORK/a.cols"
+cut -d, -f1-3,7-16 "$WORK/b/frames.csv" >"$WORK/b.cols"
 cmp -s "$WORK/a.cols" "$WORK/b.cols" || { fail "replays differ"; diff "$WORK/a.cols" "$WORK/b.cols" | head; }
 for f in keyframe_00.00s.png keyframe_00.25s.png; do cmp -s "$WORK/a/$f" "$WORK/b/$f" || fail "$f differs between replays"; done
+
+# --baseline: an earlier run's numbers beside this one's; a bad baseline is one line, exit 2, nothing written.
+"$GLOBE" bench --path "$SRC/tests/data/short.path" --out "$WORK/c" --size 96x64 --keyframes 0 --rate 20 \
+  --baseline "$WORK/a" >/dev/null 2>"$WORK/err" || { fail "bench --baseline"; cat "$WORK/err"; }
+grep -q '"median_ratio"' "$WORK/c/summary.json" || fail "--baseline: no ratios in summary.json"
+grep -q 'baseline median' "$WORK/c/report.html" || fail "--baseline: no baseline column in report.html"
+mkdir -p "$WORK/garbled" && printf '{ nope' >"$WORK/garbled/summary.json"
+for base in "$WORK/none" "$WORK/garbled"; do
+  "$GLOBE" bench --path "$SRC/tests/data/short.path" --out "$WORK/out-base" --baseline "$base" >/dev/null 2>"$WORK/err"
+  code=$?
+  [[ $code -eq 2 ]] || fail "--baseline $base: exit $code, expected 2"
+  [[ $(wc -l <"$WORK/err") -eq 1 ]] && grep -q "^globe: error: $base/summary.json: " "$WORK/err" ||
+    fail "--baseline $base: $(cat "$WORK/err")"
+  [[ ! -e "$WORK/out-base" ]] || fail "--baseline $base: wrote output"
+done
 
 # Malformed paths: file:line: message, non-zero exit, nothing written.
 bad() {  # bad NAME CONTENT PATTERN

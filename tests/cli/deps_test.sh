@@ -29,15 +29,22 @@ done
 
 failures=0
 check_file() {  # check_file PATH WHY
-  local path="$1" why="$2" real pkg
+  local path="$1" why="$2" real owners pkg
   real=$(readlink -f "$path")
-  pkg=$(dpkg -S "$real" 2>/dev/null | head -1 | cut -d: -f1)
-  [[ -z "$pkg" ]] && pkg=$(dpkg -S "$path" 2>/dev/null | head -1 | cut -d: -f1)
+  # "pkg1:arch, pkg2, ...: /path": every owner (a directory has many).
+  owners=$(dpkg -S "$real" 2>/dev/null | head -1 | sed -E 's/: \/.*$//')
+  [[ -z "$owners" ]] && owners=$(dpkg -S "$path" 2>/dev/null | head -1 | sed -E 's/: \/.*$//')
+  pkg=$(echo "$owners" | cut -d: -f1 | cut -d, -f1)
   if [[ -z "$pkg" ]]; then
     case "$path" in /usr/local/* | /root/* | /opt/*) echo "FAIL: $why: $path is not from a Debian package"; failures=$((failures + 1)) ;; esac
     return
   fi
-  pkg="${pkg%%,*}"
+  # A directory (/usr/include) belongs to every package with files in it: it is covered when any
+  # of them is listed, so installing an unrelated -dev package elsewhere does not fail the check.
+  local owner
+  for owner in ${owners//,/ }; do
+    [[ -n "${CLOSURE[${owner%%:*}]:-}" ]] && return
+  done
   if [[ -z "${CLOSURE[$pkg]:-}" ]]; then
     echo "FAIL: $why: $path comes from Debian package '$pkg', which scripts/install-deps.sh does not install"
     failures=$((failures + 1))

@@ -2,7 +2,7 @@
 # The windowed viewer under a virtual X server: `globe view` flies the terrain with scripted input
 # and Vulkan validation on (any message fails the command), exits 0, and its screenshots show
 # terrain; a recorded path replays the same view in `globe render`; the sphere mode draws its grid;
-# Esc quits early; without a display it refuses with one line; bad values exit 2.
+# a camera path flies in real time with --frame-times; Esc quits early; without a display it refuses with one line; bad values exit 2.
 # Needs xvfb-run (Debian package xvfb, which uses xauth); works with no display in the environment.
 # Usage: viewer_test.sh GLOBE SCREENSHOT_CHECK SCRIPT RECORD_SCRIPT WORKDIR
 set -uo pipefail
@@ -68,14 +68,41 @@ printf '5 KEY ESCAPE down\n' >"$WORK/esc.txt"
   { fail "Esc run failed"; cat "$WORK/esc.out"; }
 grep -q "viewed 5 frames" "$WORK/esc.out" || { fail "Esc did not quit at frame 5"; cat "$WORK/esc.out"; }
 
-# 5. No display: one line, exit 1, before any window or device is made.
+# 5. Fly a camera path in real time (tests/data/short.path, 0.5 s) with --frame-times: the viewer
+# quits at the path's end by itself, the CSV has its header and one line per frame ending at the
+# path's end, and the exit line gives the frame count and times.
+SHORT_PATH="$(dirname "$SCRIPT")/../data/short.path"
+"${XVFB[@]}" "$GLOBE" view --validate --path "$SHORT_PATH" --frame-times "$WORK/times.csv" --size 160x120 \
+  >"$WORK/path.out" 2>&1
+code=$?
+cat "$WORK/path.out"
+[[ $code -eq 0 ]] || fail "path flight exited $code"
+grep -qi "validation" "$WORK/path.out" && fail "validation messages in the path flight"
+if ! exit_line=$(grep -E "^frames [0-9]+ median_ms [0-9.]+ p95_ms [0-9.]+$" "$WORK/path.out"); then
+  fail "no 'frames N median_ms X p95_ms Y' line"
+elif [[ ! -f "$WORK/times.csv" ]]; then
+  fail "--frame-times wrote no file"
+else
+  frames=$(echo "$exit_line" | cut -d' ' -f2)
+  [[ $(head -1 "$WORK/times.csv") == "frame,wall_s,path_t_s,frame_ms,nodes_selected,triangles" ]] ||
+    fail "frame-times header: $(head -1 "$WORK/times.csv")"
+  [[ $(($(wc -l <"$WORK/times.csv") - 1)) -eq $frames ]] || fail "frame-times rows differ from the $frames frames"
+  [[ $frames -ge 2 ]] || fail "a path flight of $frames frame(s)"
+  # The last frame shows the path's end (0.5 s); every frame draws some of the planet.
+  [[ $(tail -1 "$WORK/times.csv" | cut -d, -f3) == "0.500000" ]] || fail "last frame is not at the path's end"
+  awk -F, 'NR > 1 && $5 == 0 { bad = 1 } END { exit bad }' "$WORK/times.csv" || fail "a frame drew no nodes"
+  grep -q "viewed $frames frames" "$WORK/path.out" || fail "exit line and viewed count differ"
+fi
+ls -a "$WORK" | grep -q '^\.times\.csv\.tmp' && fail "a frame-times temporary was left behind"
+
+# 6. No display: one line, exit 1, before any window or device is made.
 env -u DISPLAY -u WAYLAND_DISPLAY "$GLOBE" view --frames 1 >"$WORK/nodisp.out" 2>"$WORK/nodisp.err"
 code=$?
 if [[ $code -ne 1 || $(wc -l <"$WORK/nodisp.err") -ne 1 ]] || ! grep -q "^globe: error: no display" "$WORK/nodisp.err"; then
   fail "no display: exit $code, stderr:"; cat "$WORK/nodisp.err"
 fi
 
-# 6. Bad values: one line, exit 2 (checked before the display, so no X server needed).
+# 7. Bad values: one line, exit 2 (checked before the display, so no X server needed).
 printf '3 KEY NOSUCHKEY down\n' >"$WORK/bad_script.txt"
 expect_usage() {  # expect_usage PATTERN ARGS...
   local pattern="$1"
@@ -97,6 +124,9 @@ expect_usage "--screenshot: '.*shot.jpg' must end in .png or .exr" --screenshot 
 expect_usage "--screenshot-dir: '/nonexistent' is not a directory" --screenshot-dir /nonexistent
 expect_usage "--record-dir: '/nonexistent' is not a directory" --record-dir /nonexistent
 expect_usage "--grid: must be a power of two" --grid 33
+expect_usage "--frame-times: directory '/nonexistent' does not exist" --frame-times /nonexistent/t.csv
+expect_usage "missing.path: cannot open camera path file" --path "$WORK/missing.path"
+expect_usage "--hold: needs --path" --hold
 expect_usage "--mode: .*" --mode cube
 expect_usage "--screenshot-format: .*" --screenshot-format jpg
 { cat "$(dirname "$SCRIPT")/../../assets/planets/earthlike.toml"; printf 'no_such_key = 1\n'; } >"$WORK/bad_planet.toml"

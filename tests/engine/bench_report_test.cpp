@@ -293,8 +293,9 @@ TEST(BenchReport, CsvHeaderIsExactWithOneRowPerFrame) {
   ASSERT_EQ(rows.size(), frames.size() + 1);
   EXPECT_EQ(rows[0],
             "frame,t,altitude_m,frame_ms,select_ms,gpu_ms,nodes_selected,nodes_partial,triangles,draw_calls,"
-            "gen_dispatched,gen_in_flight,gen_completed,evicted,resident_mib");
-  for (std::size_t i = 1; i < rows.size(); ++i) ASSERT_EQ(split(rows[i], ',').size(), 15U) << rows[i];
+            "gen_dispatched,gen_in_flight,gen_completed,evicted,resident_mib,ground_speed_mps,gpu_terrain_ms,"
+            "gpu_skirts_ms,gpu_sky_ms,gpu_generation_ms");
+  for (std::size_t i = 1; i < rows.size(); ++i) ASSERT_EQ(split(rows[i], ',').size(), 20U) << rows[i];
   // Frame 2 of the synthetic run, column by column.
   const auto f = split(rows[3], ',');
   EXPECT_EQ(f[0], "2");
@@ -325,8 +326,9 @@ TEST(BenchReport, SummaryJsonHasEveryKey) {
   EXPECT_EQ(json["frame_count"], 600);
   EXPECT_EQ(json["percentile_method"], "nearest-rank");
   const std::vector<std::string> columns = {
-      "altitude_m", "frame_ms",       "select_ms",     "gpu_ms",        "nodes_selected", "nodes_partial", "triangles",
-      "draw_calls", "gen_dispatched", "gen_in_flight", "gen_completed", "evicted",        "resident_mib"};
+      "altitude_m",   "frame_ms",         "select_ms",      "gpu_ms",        "nodes_selected", "nodes_partial",
+      "triangles",    "draw_calls",       "gen_dispatched", "gen_in_flight", "gen_completed",  "evicted",
+      "resident_mib", "ground_speed_mps", "gpu_terrain_ms", "gpu_skirts_ms", "gpu_sky_ms",     "gpu_generation_ms"};
   ASSERT_EQ(json["metrics"].size(), columns.size());
   for (const auto& c : columns) {
     ASSERT_TRUE(json["metrics"].contains(c)) << c;
@@ -400,6 +402,8 @@ TEST(BenchReport, SvgAndHtmlAreWellFormedEvenWithHostileText) {
   info.pathFile = "paths/<script>alert('x')</script> & \"quotes\".path";
   info.device = std::string("bad utf-8 \xff\xfe and a control \x01 char; ünïcödé ok");
   info.commandLine = "globe bench --out 'a&b' --path \"<x>\"";
+  info.driver = "<b>driver</b> & co";
+  info.shaderCache = "enabled (MESA_SHADER_CACHE_DIR=/tmp/<a&b>)";
   const auto frames = syntheticFrames(1500);
   const Status s = writeBenchReport(dir.str(), info, frames, keys);
   ASSERT_TRUE(s.ok()) << s.error().format();
@@ -419,7 +423,7 @@ TEST(BenchReport, SvgAndHtmlAreWellFormedEvenWithHostileText) {
   EXPECT_EQ(htmlCheck.error, "");
   EXPECT_EQ(htmlCheck.root, "html");
   EXPECT_EQ(htmlCheck.elements.at("img"), 4);
-  EXPECT_EQ(htmlCheck.elements.at("svg"), 1);  // the timeline, inlined
+  EXPECT_EQ(htmlCheck.elements.at("svg"), 2);  // the frame-time distribution and the timeline, inlined
   EXPECT_EQ(html.find("<script>"), std::string::npos);
   for (const char* needle : {"frame_t12.png", "t = 18.00 s", "How to read this", "nodes_partial", "p99"}) {
     EXPECT_NE(html.find(needle), std::string::npos) << needle;
