@@ -129,8 +129,9 @@ Result<std::unique_ptr<Mp4Writer>> Mp4Writer::open(const std::string& file, uint
 Status Mp4Writer::addFrame(const ImageRgba& image) {
   Impl& m = *impl_;
   if (int(image.width) != m.codec->width || int(image.height) != m.codec->height)
-    return Error{m.file, 0, 0, "", fmt::format("frame is {}x{}, the movie {}x{}", image.width, image.height,
-                                               m.codec->width, m.codec->height)};
+    return Error{
+        m.file, 0, 0, "",
+        fmt::format("frame is {}x{}, the movie {}x{}", image.width, image.height, m.codec->width, m.codec->height)};
   std::vector<uint8_t> rgb(std::size_t(image.width) * image.height * 3);
   for (std::size_t p = 0; p < std::size_t(image.width) * image.height; ++p)
     for (std::size_t c = 0; c < 3; ++c) rgb[p * 3 + c] = linearToSrgb8(image.rgba[p * 4 + c]);

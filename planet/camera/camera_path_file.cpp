@@ -73,7 +73,8 @@ Result<OptionalColumns> parseHeader(const std::vector<std::string_view>& fields,
   bool fixedOk = fields.size() >= kColumns.size();
   for (std::size_t i = 0; fixedOk && i < kColumns.size(); ++i) fixedOk = fields[i] == kColumns[i];
   if (!fixedOk)
-    return Error{file, line, 0, "", fmt::format("expected the header '{}', got '{}'", kCameraPathHeader, joined(fields))};
+    return Error{file, line, 0, "",
+                 fmt::format("expected the header '{}', got '{}'", kCameraPathHeader, joined(fields))};
   OptionalColumns columns;
   for (std::size_t i = kColumns.size(); i < fields.size(); ++i) {
     bool known = std::find(kOptionalColumns.begin(), kOptionalColumns.end(), fields[i]) != kOptionalColumns.end();
@@ -105,7 +106,9 @@ Status parseOptionalField(std::string_view name, std::string_view text, PathKeyf
 Result<PathKeyframe> parseKeyframe(const std::vector<std::string_view>& fields, const OptionalColumns& optional,
                                    const std::string& file, int line) {
   const std::size_t expected = kColumns.size() + optional.names.size();
-  auto columnName = [&](std::size_t i) { return i < kColumns.size() ? kColumns[i] : optional.names[i - kColumns.size()]; };
+  auto columnName = [&](std::size_t i) {
+    return i < kColumns.size() ? kColumns[i] : optional.names[i - kColumns.size()];
+  };
   if (fields.size() < expected)
     return Error{file, line, 0, "",
                  fmt::format("missing field {} (expected {} fields, found {})", columnName(fields.size()), expected,

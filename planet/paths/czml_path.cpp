@@ -3,8 +3,8 @@
 #include "planet/camera/camera_orientation.h"
 #include "planet/paths/text_position.h"
 
-#include <GeographicLib/Geocentric.hpp>
 #include <fmt/format.h>
+#include <GeographicLib/Geocentric.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -37,8 +37,10 @@ std::vector<std::size_t> packetOffsets(std::string_view text) {
   for (std::size_t i = 0; i < text.size(); ++i) {
     char c = text[i];
     if (inString) {
-      if (c == '\\') ++i;
-      else if (c == '"') inString = false;
+      if (c == '\\')
+        ++i;
+      else if (c == '"')
+        inString = false;
       continue;
     }
     if (c == '"') inString = true;
@@ -54,7 +56,7 @@ std::vector<std::size_t> packetOffsets(std::string_view text) {
 
 // One time-tagged property: times in absolute seconds (or none for a constant) and values.
 struct Samples {
-  std::vector<double> times_s;               // empty for a constant
+  std::vector<double> times_s;              // empty for a constant
   std::vector<std::vector<double>> values;  // one per time (or one constant)
 };
 
@@ -85,16 +87,17 @@ struct CzmlReader {
     const std::size_t n = array.size();
     const bool constant = n == width;
     if (!constant && (n == 0 || n % (width + 1) != 0))
-      return errorAt(key, fmt::format("expected {} numbers, or samples of a time and {} numbers, got {} values", width,
-                                      width, n));
+      return errorAt(
+          key, fmt::format("expected {} numbers, or samples of a time and {} numbers, got {} values", width, width, n));
     const std::size_t stride = constant ? width : width + 1;
     for (std::size_t i = 0; i < n; i += stride) {
       if (!constant) {
         const json& t = array[i];
-        std::optional<double> time =
-            t.is_number() ? std::optional<double>(epoch_s + t.get<double>())
-                          : t.is_string() ? parseIso8601_s(t.get<std::string>()) : std::nullopt;
-        if (!time) return errorAt(key, fmt::format("sample {}: time must be seconds or an ISO 8601 string", i / stride));
+        std::optional<double> time = t.is_number()   ? std::optional<double>(epoch_s + t.get<double>())
+                                     : t.is_string() ? parseIso8601_s(t.get<std::string>())
+                                                     : std::nullopt;
+        if (!time)
+          return errorAt(key, fmt::format("sample {}: time must be seconds or an ISO 8601 string", i / stride));
         if (!out.times_s.empty() && !(*time > out.times_s.back()))
           return errorAt(key, fmt::format("sample {}: times must increase", i / stride));
         out.times_s.push_back(*time);

@@ -200,8 +200,8 @@ Result<CameraPath> parseKmlTour(std::string_view text, const std::string& fileNa
   auto keys = readPlaylist(reader, playlist);
   if (!keys) return keys.error();
   if (keys->size() < 2)
-    return reader.errorAt(playlist, fmt::format("a camera path needs at least 2 views (gx:FlyTo or gx:Wait), found {}",
-                                                keys->size()));
+    return reader.errorAt(
+        playlist, fmt::format("a camera path needs at least 2 views (gx:FlyTo or gx:Wait), found {}", keys->size()));
   return CameraPath::create(std::move(*keys), fileName);
 }
 

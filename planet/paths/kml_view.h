@@ -29,16 +29,16 @@ inline constexpr double kOnGroundHeight_m = 0.01;        // a clamped Camera: 1 
 struct KmlLookAt {
   double longitude_deg = 0, latitude_deg = 0, altitude_m = 0;  // the target point
   double range_m = 0;                                          // camera to target, metres
-  double tilt_deg = 0;     // 0 looks straight down at the target, 90 horizontally
-  double heading_deg = 0;  // direction the camera looks, clockwise from north
+  double tilt_deg = 0;                                         // 0 looks straight down at the target, 90 horizontally
+  double heading_deg = 0;                                      // direction the camera looks, clockwise from north
   KmlAltitudeMode altitudeMode = KmlAltitudeMode::clampToGround;
 };
 
 struct KmlCamera {
   double longitude_deg = 0, latitude_deg = 0, altitude_m = 0;  // the eye
-  double heading_deg = 0;  // clockwise from north
-  double tilt_deg = 0;     // 0 straight down, 90 horizon, 180 straight up
-  double roll_deg = 0;     // about the view axis, right-handed about KML's backward z: positive rolls left
+  double heading_deg = 0;                                      // clockwise from north
+  double tilt_deg = 0;                                         // 0 straight down, 90 horizon, 180 straight up
+  double roll_deg = 0;  // about the view axis, right-handed about KML's backward z: positive rolls left
   KmlAltitudeMode altitudeMode = KmlAltitudeMode::clampToGround;
 };
 

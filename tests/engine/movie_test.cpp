@@ -74,9 +74,9 @@ class MovieTest : public testing::GpuTest {
  protected:
   // A 0.3 s descent over the plateau: 10 frames at 30 fps.
   CameraPath path() const {
-    auto p = parseCameraPath(std::string(kCameraPathHeader) +
-                                 "\n0 22.0 -98.5 3000 60 -20 0\n0.3 22.001 -98.499 2500 62 -19 0\n",
-                             "movie.path");
+    auto p = parseCameraPath(
+        std::string(kCameraPathHeader) + "\n0 22.0 -98.5 3000 60 -20 0\n0.3 22.001 -98.499 2500 62 -19 0\n",
+        "movie.path");
     EXPECT_TRUE(p.ok());
     return *p;
   }

@@ -8,9 +8,9 @@
 #include "planet/paths/kml_tour.h"
 #include "planet/paths/kml_view.h"
 
+#include <gtest/gtest.h>
 #include <GeographicLib/Geocentric.hpp>
 #include <GeographicLib/LocalCartesian.hpp>
-#include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
@@ -94,8 +94,9 @@ TEST(KmlImport, LookAtRelativeToGroundIsTheCameraAtRangeFromTheTarget) {
   EXPECT_NEAR(pose.roll_deg, 0.0, kAngle_deg);
   EXPECT_EQ(path.keyframes()[0].heightReference, HeightReference::ground);
   // On raised ground the whole view rises with it.
-  EXPECT_LT(glm::length(path.positionAt(0, groundAt(3000), kR) - glm::normalize(want.eye) * (glm::length(want.eye) + 3000)),
-            kPosition_m);
+  EXPECT_LT(
+      glm::length(path.positionAt(0, groundAt(3000), kR) - glm::normalize(want.eye) * (glm::length(want.eye) + 3000)),
+      kPosition_m);
 }
 
 TEST(KmlImport, CameraAndWaitGiveTheWrittenPoseAndHold) {
@@ -137,9 +138,7 @@ TEST(KmlImport, BounceFlyTosAndTheTourEndsComeToRest) {
 }
 
 // The CZML body axes (x forward, y left, z up) in the Earth-fixed frame.
-glm::dvec3 czmlForward(double x, double y, double z, double w) {
-  return glm::dquat(w, x, y, z) * glm::dvec3(1, 0, 0);
-}
+glm::dvec3 czmlForward(double x, double y, double z, double w) { return glm::dquat(w, x, y, z) * glm::dvec3(1, 0, 0); }
 
 TEST(CzmlImport, SampledCartographicPositionsAndQuaternions) {
   CameraPath path = load("track.czml");
@@ -266,9 +265,8 @@ TEST(PathFileColumns, HeightReferenceAndStopRoundTrip) {
 
 TEST(PathFileColumns, Errors) {
   auto bad = [](const std::string& extra, const std::string& row) {
-    auto r = parseCameraPath(std::string(kCameraPathHeader) + extra + "\n0 1 2 3 4 5 6" + row + "\n1 1 2 3 4 5 6" +
-                                 row + "\n",
-                             "x.path");
+    auto r = parseCameraPath(
+        std::string(kCameraPathHeader) + extra + "\n0 1 2 3 4 5 6" + row + "\n1 1 2 3 4 5 6" + row + "\n", "x.path");
     return r.ok() ? std::string("ok") : r.error().format();
   };
   EXPECT_EQ(bad(" speed", " 1"),
