@@ -4,6 +4,7 @@ extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
 #include <libavutil/imgutils.h>
+#include <libavutil/log.h>
 #include <libavutil/opt.h>
 #include <libswscale/swscale.h>
 }
@@ -102,6 +103,7 @@ const std::string& Mp4Writer::encoderDescription() const { return impl_->descrip
 Result<std::unique_ptr<Mp4Writer>> Mp4Writer::open(const std::string& file, uint32_t width, uint32_t height, int fps) {
   if (width % 2 || height % 2)
     return Error{file, 0, 0, "", fmt::format("MP4 frames need an even width and height, got {}x{}", width, height)};
+  av_log_set_level(AV_LOG_ERROR);  // the encoder's statistics are noise on a command line
   auto impl = std::make_unique<Impl>();
   impl->file = file;
   if (int r = avformat_alloc_output_context2(&impl->format, nullptr, "mp4", file.c_str()); r < 0)

@@ -39,7 +39,7 @@ grep -q '<gx:Tour>' "$WORK/tour.kml" && grep -q '<gx:flyToMode>smooth</gx:flyToM
 # Bad input.
 expect 2 "tests/data/bad_paths/tilt.kml:7:12: tilt: 'abc' is not a finite number" "$WORK/bad.path" -- \
   "$GLOBE" path import "$DATA/bad_paths/tilt.kml" --out "$WORK/bad.path"
-expect 2 "bad_paths/syntax.czml:3:71: invalid JSON" "$WORK/bad.path" -- \
+expect 2 "bad_paths/syntax.czml:3:73: invalid JSON" "$WORK/bad.path" -- \
   "$GLOBE" path import "$DATA/bad_paths/syntax.czml" --out "$WORK/bad.path"
 expect 2 "FILE: import reads .kml" "$WORK/bad.path" -- "$GLOBE" path import "$DATA/short.path" --out "$WORK/bad.path"
 expect 2 "--out: must name a .path file" "$WORK/bad.txt" -- "$GLOBE" path import "$DATA/tour.kml" --out "$WORK/bad.txt"

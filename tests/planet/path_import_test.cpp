@@ -235,9 +235,9 @@ TEST(PathImportErrors, NameFileLineColumnAndField) {
   EXPECT_EQ(errorOf("syntax.kml"), "syntax.kml:6:7: invalid XML: Start-end tags mismatch");
   EXPECT_EQ(errorOf("tilt.kml"), "tilt.kml:7:12: tilt: 'abc' is not a finite number");
   EXPECT_EQ(errorOf("no_tour.kml"), "no_tour.kml:1: gx:Tour: no tour in this KML file (expected a gx:Tour element)");
-  EXPECT_EQ(errorOf("syntax.czml").substr(0, 29), "syntax.czml:3:71: invalid JSO");
+  EXPECT_EQ(errorOf("syntax.czml").substr(0, 29), "syntax.czml:3:73: invalid JSO");
   EXPECT_EQ(errorOf("quaternion.czml"),
-            "quaternion.czml:6:22: unitQuaternion: expected 4 numbers, or samples of a time and 4 numbers, got 9 "
+            "quaternion.czml:6:21: unitQuaternion: expected 4 numbers, or samples of a time and 4 numbers, got 9 "
             "values");
 }
 
