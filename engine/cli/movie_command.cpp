@@ -8,6 +8,7 @@
 #include "planet/core/atomic_file.h"
 #include "planet/elevation/planet_file.h"
 #include "progress_bar.h"
+#include "signal_cleanup.h"
 
 #include <fmt/format.h>
 
@@ -15,6 +16,7 @@
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 namespace globe::cli {
 
@@ -77,6 +79,9 @@ int runMovie(const MovieOptions& o) {
   auto settings = movieSettings(o, *planet);
   if (!settings) return usageError(settings.error());
 
+  // Ctrl-C during an MP4 leaves no temporary behind (AtomicFile names it the same in this process).
+  std::optional<RemoveOnSignal> cleanup;
+  if (settings->format == MovieFormat::mp4) cleanup.emplace(AtomicFile(o.out).tempPath());
   vk::Device device(deviceOptions(o.device));
   ProgressBar progress("movie " + std::filesystem::path(o.path).filename().string());
   auto summary = renderMovie(device, *planet, *path, *settings,
