@@ -88,6 +88,8 @@ int runMovie(const MovieOptions& o) {
                              [&](uint64_t done, uint64_t total) { progress.update(double(done) / double(total)); });
   progress.finish();
   if (!summary) {
+    // An --out directory holding another movie is bad input (nothing was written); the rest failed.
+    if (summary.error().field == "--out") return usageError(summary.error());
     printError(summary.error().format());
     return kExitFailure;
   }

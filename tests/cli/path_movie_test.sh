@@ -63,6 +63,9 @@ cat "$WORK/movie.out"
 "$GLOBE" movie --path "$DATA/short.path" --size 64x48 --fps 24 --quality fast --out "$WORK/frames" >"$WORK/movie.out" ||
   fail "movie (resume)"
 grep -q "0 rendered, 13 kept" "$WORK/movie.out" || fail "a complete sequence was rendered again: $(cat "$WORK/movie.out")"
+expect 2 "frames/movie.txt: --out: this directory holds frames of another movie" "" -- \
+  "$GLOBE" movie --path "$DATA/short.path" --size 64x48 --fps 25 --quality fast --out "$WORK/frames"
+[[ $(ls "$WORK/frames" | grep -c '^frame_') -eq 13 ]] || fail "a refused resume changed the frames"
 "$GLOBE" movie --path "$DATA/short.path" --size 64x48 --fps 24 --quality fast --out "$WORK/short.mp4" >"$WORK/mp4.out" ||
   fail "movie (MP4)"
 cat "$WORK/mp4.out"
