@@ -14,6 +14,8 @@ PACKAGES=(
   libglm-dev libgeographiclib-dev
   # file formats and command line
   libopenexr-dev libstb-dev libtomlplusplus-dev libcli11-dev libfmt-dev nlohmann-json3-dev
+  # KML camera tours (XML); MP4 movies through FFmpeg's libraries (H.264 by libx264 inside libavcodec)
+  libpugixml-dev libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
   # overlay of the windowed viewer; vertex-cache order of the terrain grid
   libimgui-dev libmeshoptimizer-dev
   # tests and benchmarks (libnoise is the benchmark's comparison peer)

@@ -17,6 +17,8 @@ void addPlanetCommand(CLI::App& app, Runner& run);  // globe planet check|stats|
 // `commandLine`: the whole invocation, recorded in the benchmark report.
 void addBenchCommand(CLI::App& app, Runner& run, const std::string& commandLine);
 void addTradeCommand(CLI::App& app, Runner& run);  // globe trade: speed/accuracy sweep
+void addPathCommand(CLI::App& app, Runner& run);   // globe path import|export: KML tours, CZML
+void addMovieCommand(CLI::App& app, Runner& run);  // globe movie: PNG/EXR sequences, MP4
 
 // Exit codes shared by every command.
 constexpr int kExitOk = 0;

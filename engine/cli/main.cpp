@@ -41,6 +41,8 @@ int main(int argc, char** argv) {
   for (int i = 0; i < argc; ++i) commandLine += (i ? " " : "") + std::string(argv[i]);
   addBenchCommand(app, run, commandLine);
   addTradeCommand(app, run);
+  addPathCommand(app, run);
+  addMovieCommand(app, run);
 
   try {
     app.parse(argc, argv);

@@ -3,26 +3,40 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace globe::cli {
 
-ProgressBar::ProgressBar(std::string label) : label_(std::move(label)), enabled_(::isatty(STDERR_FILENO) == 1) {}
+ProgressBar::ProgressBar(std::string label)
+    : label_(std::move(label)), enabled_(::isatty(STDERR_FILENO) == 1), start_(std::chrono::steady_clock::now()) {}
 
-ProgressBar::~ProgressBar() {
+ProgressBar::~ProgressBar() { finish(); }
+
+void ProgressBar::finish() {
   if (enabled_ && last_percent_ >= 0) std::fputc('\n', stderr);
+  last_percent_ = -1;
+  enabled_ = false;
 }
 
 void ProgressBar::update(double fraction) {
   if (!enabled_) return;
-  const int percent = static_cast<int>(std::clamp(fraction, 0.0, 1.0) * 100.0);
+  fraction = std::clamp(fraction, 0.0, 1.0);
+  const int percent = static_cast<int>(fraction * 100.0);
   if (percent == last_percent_) return;
   last_percent_ = percent;
   constexpr int kWidth = 40;
   const int filled = percent * kWidth / 100;
   std::string bar(static_cast<std::size_t>(filled), '#');
   bar.resize(kWidth, '.');
-  std::fprintf(stderr, "\r%s [%s] %3d%%", label_.c_str(), bar.c_str(), percent);
+  // Time left at the average rate so far: total time scales as elapsed / fraction.
+  const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  char eta[32] = "";
+  if (fraction > 0 && fraction < 1) {
+    const long left_s = std::lround(elapsed_s * (1.0 - fraction) / fraction);
+    std::snprintf(eta, sizeof(eta), " ETA %ld:%02ld", left_s / 60, left_s % 60);
+  }
+  std::fprintf(stderr, "\r%s [%s] %3d%%%-12s", label_.c_str(), bar.c_str(), percent, eta);
   std::fflush(stderr);
 }
 

@@ -86,7 +86,9 @@ std::string poseProblem(const PathKeyframe& k) {
   if (std::abs(p.latitude_deg) > 90.0) return "lat_deg must be within [-90, 90]";
   if (!std::isfinite(p.longitude_deg)) return "lon_deg must be finite";
   if (!std::isfinite(p.height_m)) return "height_m must be finite";
-  if (p.height_m <= 0.0 || p.height_m > 1e12) return "height_m must be within (0, 1e12] metres above the ground";
+  if (p.height_m <= 0.0 || p.height_m > 1e12)
+    return k.heightReference == HeightReference::sphere ? "height_m must be within (0, 1e12] metres above the sphere"
+                                                        : "height_m must be within (0, 1e12] metres above the ground";
   if (!std::isfinite(p.heading_deg)) return "heading_deg must be finite";
   if (!std::isfinite(p.pitch_deg)) return "pitch_deg must be finite";
   if (std::abs(p.pitch_deg) > 90.0) return "pitch_deg must be within [-90, 90]";
@@ -114,6 +116,7 @@ Result<CameraPath> CameraPath::create(std::vector<PathKeyframe> keyframes, const
     key.direction = directionFromLatLon(k.pose.latitude_deg, k.pose.longitude_deg);
     key.logHeight = std::log(k.pose.height_m);
     key.orientation = orientationFromBasis(basisFromPose(k.pose));
+    key.sphereWeight = k.heightReference == HeightReference::sphere ? 1.0 : 0.0;
     if (i == 0) continue;
     const Key& prev = path.prepared_[i - 1];
     double arc_deg = angleBetween(prev.direction, key.direction) / kDeg;
@@ -155,6 +158,10 @@ Result<CameraPath> CameraPath::create(std::vector<PathKeyframe> keyframes, const
       glm::dvec3 before = -logMap(key.direction, path.prepared_[i - 1].direction) / dt(i - 1);
       key.directionTangent = limitedTangent(before, dt(i - 1), chordVelocity(i), dt(i));
       key.logHeightSlope = limitedSlope(chordSlope(i - 1), dt(i - 1), chordSlope(i), dt(i));
+    }
+    if (keyframes[i].stop) {
+      key.directionTangent = glm::dvec3(0.0);
+      key.logHeightSlope = 0.0;
     }
   }
   path.keys_ = std::move(keyframes);
@@ -239,6 +246,28 @@ GeodeticPose CameraPath::poseAt(double t_s) const {
   return pose;
 }
 
+double CameraPath::sphereWeightAt(double t_s) const {
+  t_s = std::clamp(t_s, startTime_s(), endTime_s());
+  std::size_t i = segmentOf(t_s);
+  double wa = prepared_[i].sphereWeight, wb = prepared_[i + 1].sphereWeight;
+  if (wa == wb) return wa;
+  // Smoothstep: the reference radius changes with zero rate at both keyframes (C1 position).
+  double s = (t_s - keys_[i].time_s) / (keys_[i + 1].time_s - keys_[i].time_s);
+  double blend = s * s * (3.0 - 2.0 * s);
+  return wa + (wb - wa) * blend;
+}
+
+double CameraPath::referenceRadiusAt(double t_s, const GroundRadiusFn& groundRadius, double sphereRadius_m) const {
+  double w = sphereWeightAt(t_s);
+  if (w == 1.0) return sphereRadius_m;
+  double ground = groundRadius(directionAt(t_s));
+  return w == 0.0 ? ground : ground + w * (sphereRadius_m - ground);
+}
+
+glm::dvec3 CameraPath::positionAt(double t_s, const GroundRadiusFn& groundRadius, double sphereRadius_m) const {
+  return directionAt(t_s) * (referenceRadiusAt(t_s, groundRadius, sphereRadius_m) + heightAt(t_s));
+}
+
 glm::dvec3 CameraPath::positionAt(double t_s, const GroundRadiusFn& groundRadius) const {
   glm::dvec3 d = directionAt(t_s);
   return d * (groundRadius(d) + heightAt(t_s));
@@ -246,7 +275,7 @@ glm::dvec3 CameraPath::positionAt(double t_s, const GroundRadiusFn& groundRadius
 
 Camera CameraPath::cameraAt(double t_s, double sphereRadius_m, double aspect,
                             const GroundRadiusFn& groundRadius) const {
-  return cameraFromPose(poseAt(t_s), groundRadius(directionAt(t_s)), sphereRadius_m, aspect);
+  return cameraFromPose(poseAt(t_s), referenceRadiusAt(t_s, groundRadius, sphereRadius_m), sphereRadius_m, aspect);
 }
 
 }  // namespace globe

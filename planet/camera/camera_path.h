@@ -15,6 +15,8 @@
 //    camera by the smallest rotation taking its keyframe's up direction to the current one, so
 //    level keyframes give a level flight between them even over long arcs or across a pole. C0.
 // The camera's position is direction * (groundRadius(direction) + height): it follows the terrain.
+// A keyframe may instead give its height above the planet's reference sphere (KML "absolute"); a
+// segment between the two kinds blends the reference radius with a smoothstep, so it stays C1.
 #include "planet/camera/camera.h"
 #include "planet/core/error.h"
 
@@ -31,10 +33,19 @@ namespace globe {
 // model's surface, or a constant sphere. Camera paths don't depend on the elevation model itself.
 using GroundRadiusFn = std::function<double(const glm::dvec3& unitDirection)>;
 
+// What a keyframe's height_m is measured from.
+enum class HeightReference {
+  ground,  // the terrain below the camera (the default, and all a path could say before)
+  sphere,  // the planet's reference sphere, radius_m (elevation 0; KML altitudeMode "absolute")
+};
+
 struct PathKeyframe {
   double time_s = 0;  // path time, seconds; strictly increasing along a path
   GeodeticPose pose;  // pitch must not be NaN (no "look at the horizon" default in paths)
   int line = 0;       // 1-based line in the source file for errors, 0 when built in memory
+  HeightReference heightReference = HeightReference::ground;
+  // The camera comes to rest here: zero velocity and height rate (a KML "bounce" FlyTo's ends).
+  bool stop = false;
 };
 
 class CameraPath {
@@ -60,11 +71,19 @@ class CameraPath {
   // that keyframe as written (bit-exact, longitude not wrapped).
   GeodeticPose poseAt(double t_s) const;
   glm::dvec3 directionAt(double t_s) const;    // unit, planet-fixed
-  double heightAt(double t_s) const;           // metres above the ground
+  double heightAt(double t_s) const;           // metres above the reference (sphereWeightAt)
   glm::dquat orientationAt(double t_s) const;  // camera axes -> planet-fixed (camera_orientation.h)
-  // direction * (groundRadius(direction) + height), metres, planet-centred.
+  // How much the height is measured from the sphere rather than the ground: 0 between ground
+  // keyframes, 1 between sphere keyframes, a smoothstep in between.
+  double sphereWeightAt(double t_s) const;
+  // The radius heights are measured from (metres from the centre) at time t.
+  double referenceRadiusAt(double t_s, const GroundRadiusFn& groundRadius, double sphereRadius_m) const;
+  // direction * (referenceRadius + height), metres, planet-centred.
+  glm::dvec3 positionAt(double t_s, const GroundRadiusFn& groundRadius, double sphereRadius_m) const;
+  // Same, measuring sphere-referenced heights from the ground too: exact for ground-only paths, and
+  // its direction is always exact (what `globe bench` lights the scene from).
   glm::dvec3 positionAt(double t_s, const GroundRadiusFn& groundRadius) const;
-  // The camera at time t: cameraFromPose(poseAt(t), groundRadius(directionAt(t)), sphereRadius_m, aspect).
+  // The camera at time t: cameraFromPose(poseAt(t), referenceRadiusAt(t, ...), sphereRadius_m, aspect).
   Camera cameraAt(double t_s, double sphereRadius_m, double aspect, const GroundRadiusFn& groundRadius) const;
 
  private:
@@ -74,6 +93,7 @@ class CameraPath {
     double logHeight = 0;              // ln(height_m)
     double logHeightSlope = 0;         // d ln(height)/dt, 1/s
     glm::dquat orientation{1, 0, 0, 0};
+    double sphereWeight = 0;  // 1 for a sphere-referenced height, 0 for a ground one
   };
   CameraPath() = default;
   // Index k of the segment [t_k, t_k+1] holding t (t already clamped), and the keyframe hit if any.

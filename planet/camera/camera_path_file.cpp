@@ -1,20 +1,28 @@
 #include "planet/camera/camera_path_file.h"
 
 #include "planet/core/atomic_file.h"
+#include "planet/paths/czml_path.h"
+#include "planet/paths/kml_tour.h"
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <vector>
 
 namespace globe {
 
 namespace {
+// Columns a header may add after the fixed seven (docs/camera-paths.md): what height_m is measured
+// from, and where the camera comes to rest.
+constexpr std::array<std::string_view, 2> kOptionalColumns = {"height_ref", "stop"};
 constexpr std::array<std::string_view, 7> kColumns = {"t_s",         "lat_deg",   "lon_deg", "height_m",
                                                       "heading_deg", "pitch_deg", "roll_deg"};
 
@@ -53,11 +61,76 @@ std::string joined(const std::vector<std::string_view>& fields) {
   for (auto f : fields) s += (s.empty() ? "" : " ") + std::string(f);
   return s;
 }
+
+// Which optional columns a file's header adds after the seven fixed ones, in their order.
+struct OptionalColumns {
+  std::vector<std::string_view> names;  // each of kOptionalColumns at most once
+};
+
+Result<OptionalColumns> parseHeader(const std::vector<std::string_view>& fields, const std::string& file, int line) {
+  // The header names the columns so a reader of the file needs no documentation to edit it;
+  // requiring it exactly also catches files that are not camera paths at all.
+  bool fixedOk = fields.size() >= kColumns.size();
+  for (std::size_t i = 0; fixedOk && i < kColumns.size(); ++i) fixedOk = fields[i] == kColumns[i];
+  if (!fixedOk)
+    return Error{file, line, 0, "",
+                 fmt::format("expected the header '{}', got '{}'", kCameraPathHeader, joined(fields))};
+  OptionalColumns columns;
+  for (std::size_t i = kColumns.size(); i < fields.size(); ++i) {
+    bool known = std::find(kOptionalColumns.begin(), kOptionalColumns.end(), fields[i]) != kOptionalColumns.end();
+    bool repeated = std::find(columns.names.begin(), columns.names.end(), fields[i]) != columns.names.end();
+    if (!known || repeated)
+      return Error{file, line, 0, "",
+                   fmt::format("{} column '{}' in the header (after the seven fixed columns only height_ref and "
+                               "stop may follow, once each)",
+                               repeated ? "repeated" : "unknown", fields[i])};
+    columns.names.push_back(fields[i]);
+  }
+  return columns;
+}
+
+// Sets the optional column `name` of `key` from its text.
+Status parseOptionalField(std::string_view name, std::string_view text, PathKeyframe& key, const std::string& file,
+                          int line) {
+  if (name == "height_ref") {
+    if (text != "ground" && text != "sphere")
+      return Error{file, line, 0, "", fmt::format("height_ref must be 'ground' or 'sphere', got '{}'", text)};
+    key.heightReference = text == "sphere" ? HeightReference::sphere : HeightReference::ground;
+  } else {
+    if (text != "0" && text != "1") return Error{file, line, 0, "", fmt::format("stop must be 0 or 1, got '{}'", text)};
+    key.stop = text == "1";
+  }
+  return Ok{};
+}
+
+Result<PathKeyframe> parseKeyframe(const std::vector<std::string_view>& fields, const OptionalColumns& optional,
+                                   const std::string& file, int line) {
+  const std::size_t expected = kColumns.size() + optional.names.size();
+  auto columnName = [&](std::size_t i) {
+    return i < kColumns.size() ? kColumns[i] : optional.names[i - kColumns.size()];
+  };
+  if (fields.size() < expected)
+    return Error{file, line, 0, "",
+                 fmt::format("missing field {} (expected {} fields, found {})", columnName(fields.size()), expected,
+                             fields.size())};
+  if (fields.size() > expected)
+    return Error{file, line, 0, "", fmt::format("too many fields (expected {}, found {})", expected, fields.size())};
+  std::array<double, 7> v{};
+  for (std::size_t i = 0; i < kColumns.size(); ++i) {
+    auto number = parseNumber(fields[i], kColumns[i], file, line);
+    if (!number) return number.error();
+    v[i] = *number;
+  }
+  PathKeyframe key{v[0], GeodeticPose{v[1], v[2], v[3], v[4], v[5], v[6]}, line};
+  for (std::size_t i = kColumns.size(); i < expected; ++i)
+    if (auto s = parseOptionalField(columnName(i), fields[i], key, file, line); !s) return s.error();
+  return key;
+}
 }  // namespace
 
 Result<CameraPath> parseCameraPath(std::string_view text, const std::string& fileName) {
   std::vector<PathKeyframe> keyframes;
-  bool sawHeader = false;
+  std::optional<OptionalColumns> header;
   int lineNumber = 0;
   std::size_t pos = 0;
   while (pos < text.size()) {
@@ -67,32 +140,18 @@ Result<CameraPath> parseCameraPath(std::string_view text, const std::string& fil
     ++lineNumber;
     std::vector<std::string_view> fields = fieldsOf(line);
     if (fields.empty()) continue;
-    if (!sawHeader) {
-      // The header names the columns so a reader of the file needs no documentation to edit it;
-      // requiring it exactly also catches files that are not camera paths at all.
-      if (joined(fields) != kCameraPathHeader)
-        return Error{fileName, lineNumber, 0, "",
-                     fmt::format("expected the header '{}', got '{}'", kCameraPathHeader, joined(fields))};
-      sawHeader = true;
+    if (!header) {
+      auto parsed = parseHeader(fields, fileName, lineNumber);
+      if (!parsed) return parsed.error();
+      header = *parsed;
       continue;
     }
-    if (fields.size() < kColumns.size())
-      return Error{fileName, lineNumber, 0, "",
-                   fmt::format("missing field {} (expected {} fields, found {})", kColumns[fields.size()],
-                               kColumns.size(), fields.size())};
-    if (fields.size() > kColumns.size())
-      return Error{fileName, lineNumber, 0, "",
-                   fmt::format("too many fields (expected {}, found {})", kColumns.size(), fields.size())};
-    std::array<double, 7> v{};
-    for (std::size_t i = 0; i < kColumns.size(); ++i) {
-      auto number = parseNumber(fields[i], kColumns[i], fileName, lineNumber);
-      if (!number) return number.error();
-      v[i] = *number;
-    }
-    keyframes.push_back(PathKeyframe{v[0], GeodeticPose{v[1], v[2], v[3], v[4], v[5], v[6]}, lineNumber});
+    auto key = parseKeyframe(fields, *header, fileName, lineNumber);
+    if (!key) return key.error();
+    keyframes.push_back(*key);
   }
   const int lastLine = std::max(lineNumber, 1);
-  if (!sawHeader)
+  if (!header)
     return Error{fileName, lastLine, 0, "",
                  fmt::format("empty camera path: expected the header '{}'", kCameraPathHeader)};
   if (keyframes.size() < 2)
@@ -111,18 +170,35 @@ Result<CameraPath> loadCameraPath(const std::string& path) {
   std::ostringstream content;
   content << in.rdbuf();
   if (in.bad()) return Error{path, 0, 0, "", "cannot read camera path file"};
+  // One place that knows every camera path format, so each command taking --path reads them all.
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension == ".kml") return parseKmlTour(content.str(), path);
+  if (extension == ".czml") return parseCzmlPath(content.str(), path);
   return parseCameraPath(content.str(), path);
 }
 
 std::string formatCameraPath(const CameraPath& path) {
+  // The optional columns only when a keyframe needs them, so ground-only paths keep the seven.
+  bool anySphere = false, anyStop = false;
+  for (const PathKeyframe& k : path.keyframes()) {
+    anySphere = anySphere || k.heightReference == HeightReference::sphere;
+    anyStop = anyStop || k.stop;
+  }
   std::string out = "# globe camera path (format: docs/camera-paths.md)\n";
   out += kCameraPathHeader;
+  out += anySphere ? " height_ref" : "";
+  out += anyStop ? " stop" : "";
   out += '\n';
   for (const PathKeyframe& k : path.keyframes()) {
     const GeodeticPose& p = k.pose;
     // %.17g: enough digits that every double reads back to itself.
-    out += fmt::format("{:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g}\n", k.time_s, p.latitude_deg,
+    out += fmt::format("{:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g}", k.time_s, p.latitude_deg,
                        p.longitude_deg, p.height_m, p.heading_deg, p.pitch_deg, p.roll_deg);
+    if (anySphere) out += k.heightReference == HeightReference::sphere ? " sphere" : " ground";
+    if (anyStop) out += k.stop ? " 1" : " 0";
+    out += '\n';
   }
   return out;
 }

@@ -21,7 +21,8 @@ namespace globe {
 // The header line naming the columns, in order.
 inline constexpr std::string_view kCameraPathHeader = "t_s lat_deg lon_deg height_m heading_deg pitch_deg roll_deg";
 
-// Reads and validates a path file.
+// Reads and validates a path file: .kml (a Google Earth tour, planet/paths/kml_tour.h) and .czml
+// (planet/paths/czml_path.h) by their extension, any other name as a .path file.
 Result<CameraPath> loadCameraPath(const std::string& path);
 
 // Same, from text already in memory; `fileName` is the name used in errors.

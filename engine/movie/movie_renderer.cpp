@@ -1,0 +1,152 @@
+#include "engine/movie/movie_renderer.h"
+
+#include "engine/movie/mp4_writer.h"
+#include "engine/render/headless_renderer.h"
+#include "engine/render/render_output.h"
+#include "planet/core/atomic_file.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace globe {
+
+namespace fs = std::filesystem;
+
+bool isSupportedFrameRate(int fps) {
+  return std::find(std::begin(kMovieFrameRates), std::end(kMovieFrameRates), fps) != std::end(kMovieFrameRates);
+}
+
+uint64_t movieFrameCount(double duration_s, int fps) {
+  // The epsilon absorbs rounding in duration * fps (0.3 s at 30 fps is 8.999999999999998).
+  return uint64_t(std::floor(duration_s * double(fps) + 1e-9)) + 1;
+}
+
+std::string movieFrameName(uint64_t frame, MovieFormat format) {
+  return fmt::format("frame_{:06d}.{}", frame, format == MovieFormat::exr ? "exr" : "png");
+}
+
+namespace {
+
+// The file beside a sequence saying which movie its frames belong to: resuming with other
+// settings would mix two movies in one directory.
+constexpr const char* kManifestName = "movie.txt";
+
+Status claimDirectory(const MovieSettings& s) {
+  std::error_code ec;
+  fs::create_directories(s.out, ec);
+  if (ec) return Error{"", 0, 0, "--out", fmt::format("cannot create '{}': {}", s.out, ec.message())};
+  const std::string manifest = (fs::path(s.out) / kManifestName).string();
+  const std::string content = s.description + "\n";
+  std::ifstream in(manifest, std::ios::binary);
+  if (in) {
+    std::ostringstream old;
+    old << in.rdbuf();
+    if (old.str() != content)
+      return Error{manifest, 0, 0, "--out",
+                   "this directory holds frames of another movie (its settings differ); choose another --out or "
+                   "empty it"};
+    return Ok{};
+  }
+  return writeFileAtomically(manifest, content, "--out");
+}
+
+bool frameExists(const fs::path& file) {
+  std::error_code ec;
+  return fs::is_regular_file(file, ec) && fs::file_size(file, ec) > 0;
+}
+
+// Everything a frame needs: the terrain, the renderer and the camera's ground.
+struct FrameSource {
+  vk::Device& device;
+  ElevationModel model;
+  std::unique_ptr<Terrain> terrain;
+  std::unique_ptr<HeadlessRenderer> renderer;
+  GroundRadiusFn ground;
+
+  ImageRgba render(const CameraPath& path, double t_s, double aspect) {
+    Camera camera = path.cameraAt(t_s, model.radius_m(), aspect, ground);
+    renderer->renderFrame(*terrain, camera, true);
+    return toImage(renderer->readback(), camera);
+  }
+};
+
+Result<std::unique_ptr<FrameSource>> makeFrameSource(vk::Device& device, const PlanetDescription& planet,
+                                                     const CameraPath& path, MovieSettings& s) {
+  auto source = std::unique_ptr<FrameSource>(new FrameSource{device, ElevationModel(planet), nullptr, nullptr, {}});
+  ElevationModel& model = source->model;
+  // One sun for the whole movie, lighting the region of the path's first keyframe (as globe bench).
+  s.terrain.style.sunDirection = defaultSunDirection(path.positionAt(
+      path.startTime_s(), [&](const glm::dvec3& d) { return model.radius_m() + model.elevation_m(d); },
+      model.radius_m()));
+  s.terrain.style.ramp = planet.colour_ramp;
+  auto terrain = Terrain::create(device, model, s.terrain);
+  if (!terrain) return terrain.error();
+  source->terrain = std::move(*terrain);
+  source->renderer = std::make_unique<HeadlessRenderer>(device, VkExtent2D{s.width, s.height});
+  Terrain* t = source->terrain.get();
+  // Heights are above the drawn mesh, like globe render --at and globe bench.
+  source->ground = [t](const glm::dvec3& d) { return t->cameraGroundRadius(d); };
+  return source;
+}
+
+Result<MovieSummary> renderSequence(FrameSource& source, const CameraPath& path, const MovieSettings& s,
+                                    const MovieProgressFn& progress) {
+  MovieSummary summary;
+  summary.frames = movieFrameCount(path.duration_s(), s.fps);
+  const double aspect = double(s.width) / double(s.height);
+  for (uint64_t k = 0; k < summary.frames; ++k) {
+    const fs::path file = fs::path(s.out) / movieFrameName(k, s.format);
+    if (frameExists(file)) {
+      ++summary.kept;
+    } else {
+      ImageRgba image = source.render(path, path.startTime_s() + double(k) / s.fps, aspect);
+      Status written = s.format == MovieFormat::exr ? writeExr(file.string(), image) : writePng(file.string(), image);
+      if (!written) return written.error();
+      ++summary.rendered;
+    }
+    if (progress) progress(k + 1, summary.frames);
+  }
+  return summary;
+}
+
+Result<MovieSummary> renderMp4(FrameSource& source, const CameraPath& path, const MovieSettings& s,
+                               const MovieProgressFn& progress) {
+  AtomicFile file(s.out);
+  auto writer = Mp4Writer::open(file.tempPath(), s.width, s.height, s.fps);
+  if (!writer) return writer.error();
+  MovieSummary summary;
+  summary.frames = movieFrameCount(path.duration_s(), s.fps);
+  summary.encoder = (*writer)->encoderDescription();
+  const double aspect = double(s.width) / double(s.height);
+  for (uint64_t k = 0; k < summary.frames; ++k) {
+    ImageRgba image = source.render(path, path.startTime_s() + double(k) / s.fps, aspect);
+    if (Status st = (*writer)->addFrame(image); !st) return st.error();
+    ++summary.rendered;
+    if (progress) progress(k + 1, summary.frames);
+  }
+  if (Status st = (*writer)->finish(); !st) return st.error();
+  if (Status st = file.commit(); !st) return st.error();
+  return summary;
+}
+}  // namespace
+
+Result<MovieSummary> renderMovie(vk::Device& device, const PlanetDescription& planet, const CameraPath& path,
+                                 MovieSettings settings, const MovieProgressFn& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  if (settings.format != MovieFormat::mp4)
+    if (Status s = claimDirectory(settings); !s) return s.error();
+  auto source = makeFrameSource(device, planet, path, settings);
+  if (!source) return source.error();
+  auto summary = settings.format == MovieFormat::mp4 ? renderMp4(**source, path, settings, progress)
+                                                     : renderSequence(**source, path, settings, progress);
+  if (summary) summary->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return summary;
+}
+
+}  // namespace globe

@@ -1,0 +1,52 @@
+#pragma once
+// Frame-accurate movies of a camera path: frame k shows path time start + k / fps, each frame
+// rendered converged (every payload it needs resident, no coarser fallback), so a frame depends only
+// on its camera and the same inputs give the same frames. Output is a numbered PNG or EXR sequence
+// (resumable: frames already in the directory are kept, each frame is written atomically) or one
+// MP4 file (written to a temporary and renamed when complete).
+#include "engine/render/terrain.h"
+#include "engine/vk/device.h"
+#include "planet/camera/camera_path.h"
+#include "planet/elevation/planet_description.h"
+
+#include <functional>
+#include <string>
+
+namespace globe {
+
+enum class MovieFormat { png, exr, mp4 };
+
+struct MovieSettings {
+  uint32_t width = 640, height = 360;
+  int fps = 30;  // one of kMovieFrameRates
+  MovieFormat format = MovieFormat::png;
+  std::string out;          // a directory for png/exr, a file for mp4
+  std::string description;  // what the movie is made of (path, planet, quality), kept beside a sequence
+  TerrainSettings terrain;  // quality preset; sun and colour ramp are set from the path and planet
+};
+
+inline constexpr int kMovieFrameRates[] = {24, 25, 30, 50, 60};
+bool isSupportedFrameRate(int fps);
+
+// Frames of a path `duration_s` long at `fps`: both ends included, floor(duration * fps) + 1.
+uint64_t movieFrameCount(double duration_s, int fps);
+// "frame_000042.png": six digits, so names sort in frame order (more when there are more frames).
+std::string movieFrameName(uint64_t frame, MovieFormat format);
+
+struct MovieSummary {
+  uint64_t frames = 0;    // in the movie
+  uint64_t rendered = 0;  // by this run
+  uint64_t kept = 0;      // already in the directory (resumed)
+  double seconds = 0;     // wall time of this run's rendering and writing
+  std::string encoder;    // MP4 only: the libavcodec encoder used
+};
+
+// Called after each frame with (frames done, frames in the movie).
+using MovieProgressFn = std::function<void(uint64_t done, uint64_t total)>;
+
+// Errors: unwritable output, a directory holding another movie's frames (settings.description
+// differs), encoder failures. Vulkan failures throw as everywhere.
+Result<MovieSummary> renderMovie(vk::Device& device, const PlanetDescription& planet, const CameraPath& path,
+                                 MovieSettings settings, const MovieProgressFn& progress = {});
+
+}  // namespace globe

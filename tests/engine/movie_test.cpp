@@ -1,0 +1,160 @@
+// Movies of camera paths (engine/movie): the MP4 writer's files read back with libavformat have
+// the frames, size and duration written; a PNG sequence is deterministic (two runs, identical
+// bytes) and resumes (a deleted frame is the only one rendered again, identically).
+#include "engine/movie/movie_info.h"
+#include "engine/movie/movie_renderer.h"
+#include "engine/movie/mp4_writer.h"
+#include "engine/render/quality.h"
+#include "planet/camera/camera_path_file.h"
+#include "tests/support/gpu_test.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace globe {
+namespace {
+
+namespace fs = std::filesystem;
+
+class TempDir {
+ public:
+  explicit TempDir(const std::string& name)
+      : path_(fs::temp_directory_path() / ("globe_movie_" + name + "_" + std::to_string(::getpid()))) {
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~TempDir() { fs::remove_all(path_); }
+  fs::path operator/(const std::string& name) const { return path_ / name; }
+
+ private:
+  fs::path path_;
+};
+
+std::string bytesOf(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Ten 64x48 frames fading to red, encoded to `file`; returns the encoder's description.
+std::string writeGradient(const std::string& file) {
+  auto writer = Mp4Writer::open(file, 64, 48, 30);
+  EXPECT_TRUE(writer.ok()) << writer.error().format();
+  if (!writer) return "";
+  for (int k = 0; k < 10; ++k) {
+    ImageRgba image{64, 48, std::vector<float>(64 * 48 * 4, 0.0f), {}};
+    for (std::size_t p = 0; p < 64 * 48; ++p) image.rgba[p * 4 + 0] = float(k) / 10.0f;
+    EXPECT_TRUE((*writer)->addFrame(image).ok());
+  }
+  EXPECT_TRUE((*writer)->finish().ok());
+  return (*writer)->encoderDescription();
+}
+
+TEST(Mp4Writer, FramesSizeAndDurationReadBack) {
+  TempDir dir("writer");
+  const std::string file = (dir / "gradient.mp4").string();
+  EXPECT_EQ(writeGradient(file).rfind("libx264", 0), 0u);  // Debian's libavcodec has libx264
+  auto info = readMovieInfo(file);
+  ASSERT_TRUE(info.ok()) << info.error().format();
+  EXPECT_EQ(info->frames, 10);
+  EXPECT_EQ(info->width, 64u);
+  EXPECT_EQ(info->height, 48u);
+  EXPECT_NEAR(info->duration_s, 10.0 / 30.0, 1e-3);
+  EXPECT_NEAR(info->frameRate_hz, 30.0, 1e-6);
+  EXPECT_EQ(info->codec, "h264");
+  // Deterministic: the same frames give the same bytes.
+  writeGradient((dir / "again.mp4").string());
+  EXPECT_EQ(bytesOf(file), bytesOf(dir / "again.mp4"));
+  EXPECT_FALSE(Mp4Writer::open((dir / "odd.mp4").string(), 65, 48, 30).ok());
+}
+
+TEST(MovieFrames, CountAndNames) {
+  EXPECT_EQ(movieFrameCount(0.3, 30), 10u);  // both ends: t = 0, 1/30, ..., 9/30
+  EXPECT_EQ(movieFrameCount(20.0, 60), 1201u);
+  EXPECT_EQ(movieFrameName(42, MovieFormat::png), "frame_000042.png");
+  EXPECT_FALSE(isSupportedFrameRate(29));
+}
+
+class MovieTest : public testing::GpuTest {
+ protected:
+  // A 0.3 s descent over the plateau: 10 frames at 30 fps.
+  CameraPath path() const {
+    auto p = parseCameraPath(
+        std::string(kCameraPathHeader) + "\n0 22.0 -98.5 3000 60 -20 0\n0.3 22.001 -98.499 2500 62 -19 0\n",
+        "movie.path");
+    EXPECT_TRUE(p.ok());
+    return *p;
+  }
+  MovieSettings settings(const std::string& out, MovieFormat format) const {
+    MovieSettings s;
+    s.width = 64;
+    s.height = 48;
+    s.fps = 30;
+    s.format = format;
+    s.out = out;
+    s.description = "movie_test";
+    s.terrain = terrainSettingsFor(QualityPreset::Fast);
+    return s;
+  }
+  PlanetDescription planet() const {
+    return *loadPlanetFile(std::string(GLOBE_SOURCE_DIR) + "/assets/planets/earthlike.toml");
+  }
+};
+
+TEST_F(MovieTest, PngSequenceIsDeterministicAndResumes) {
+  TempDir dir("png");
+  const std::string a = (dir / "a").string(), b = (dir / "b").string();
+  auto first = renderMovie(device(), planet(), path(), settings(a, MovieFormat::png));
+  ASSERT_TRUE(first.ok()) << first.error().format();
+  EXPECT_EQ(first->frames, 10u);
+  EXPECT_EQ(first->rendered, 10u);
+  auto second = renderMovie(device(), planet(), path(), settings(b, MovieFormat::png));
+  ASSERT_TRUE(second.ok());
+  for (uint64_t k = 0; k < 10; ++k)
+    EXPECT_EQ(bytesOf(fs::path(a) / movieFrameName(k, MovieFormat::png)),
+              bytesOf(fs::path(b) / movieFrameName(k, MovieFormat::png)))
+        << "frame " << k;
+  // The first and last frames differ: the camera moved.
+  EXPECT_NE(bytesOf(fs::path(a) / movieFrameName(0, MovieFormat::png)),
+            bytesOf(fs::path(a) / movieFrameName(9, MovieFormat::png)));
+
+  fs::remove(fs::path(a) / movieFrameName(6, MovieFormat::png));
+  auto resumed = renderMovie(device(), planet(), path(), settings(a, MovieFormat::png));
+  ASSERT_TRUE(resumed.ok());
+  EXPECT_EQ(resumed->rendered, 1u);
+  EXPECT_EQ(resumed->kept, 9u);
+  EXPECT_EQ(bytesOf(fs::path(a) / movieFrameName(6, MovieFormat::png)),
+            bytesOf(fs::path(b) / movieFrameName(6, MovieFormat::png)));
+
+  // Another movie's settings in the same directory are refused, nothing rendered.
+  MovieSettings other = settings(a, MovieFormat::png);
+  other.description = "another movie";
+  EXPECT_FALSE(renderMovie(device(), planet(), path(), other).ok());
+}
+
+TEST_F(MovieTest, Mp4HasEveryFrame) {
+  TempDir dir("mp4");
+  const std::string file = (dir / "descent.mp4").string();
+  auto summary = renderMovie(device(), planet(), path(), settings(file, MovieFormat::mp4));
+  ASSERT_TRUE(summary.ok()) << summary.error().format();
+  EXPECT_FALSE(summary->encoder.empty());
+  auto info = readMovieInfo(file);
+  ASSERT_TRUE(info.ok()) << info.error().format();
+  EXPECT_EQ(info->frames, 10);
+  EXPECT_EQ(info->width, 64u);
+  EXPECT_EQ(info->height, 48u);
+  EXPECT_NEAR(info->duration_s, 10.0 / 30.0, 1e-3);
+  EXPECT_EQ(info->codec, "h264");
+  // Only the finished file is left: the temporary was renamed.
+  int files = 0;
+  for (const auto& e : fs::directory_iterator(fs::path(file).parent_path())) files += e.is_regular_file() ? 1 : 0;
+  EXPECT_EQ(files, 1);
+}
+
+}  // namespace
+}  // namespace globe
