@@ -1,10 +1,9 @@
 #include "engine/report/bench_baseline.h"
+#include "planet/core/input_file.h"
 
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace globe {
 
@@ -29,11 +28,13 @@ Result<MetricSummary> readMetric(const std::string& file, const std::string& nam
 }
 
 Result<Json> parseFile(const std::string& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return Error{file, 0, 0, "--baseline", "cannot open an earlier run's summary.json"};
-  std::stringstream text;
-  text << in.rdbuf();
-  Json json = Json::parse(text.str(), nullptr, false);
+  Result<std::string> text = readInputFile(file, "an earlier run's summary.json");
+  if (!text) {
+    Error e = text.error();
+    e.field = "--baseline";
+    return e;
+  }
+  Json json = Json::parse(*text, nullptr, false);
   if (json.is_discarded()) return Error{file, 0, 0, "--baseline", "not valid JSON"};
   const std::string schema = stringOr(json, "schema");
   if (schema.rfind("globe-bench-summary/", 0) != 0)

@@ -1,4 +1,5 @@
 #include "engine/viewer/input_script.h"
+#include "planet/core/input_file.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -7,7 +8,6 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <sstream>
 
@@ -129,11 +129,13 @@ Result<InputScript> parseInputScript(const std::string& text, const std::string&
 }
 
 Result<InputScript> loadInputScript(const std::string& path, const std::string& field) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) return Error{"", 0, 0, field, "cannot read script '" + path + "'"};
-  std::stringstream content;
-  content << file.rdbuf();
-  return parseInputScript(content.str(), path);
+  Result<std::string> content = readInputFile(path, "input script");
+  if (!content) {
+    Error e = content.error();
+    e.field = field;
+    return e;
+  }
+  return parseInputScript(*content, path);
 }
 
 std::vector<InputEvent> InputScript::take(uint64_t frame) {

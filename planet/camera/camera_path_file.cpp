@@ -1,4 +1,5 @@
 #include "planet/camera/camera_path_file.h"
+#include "planet/core/input_file.h"
 
 #include "planet/core/atomic_file.h"
 #include "planet/paths/czml_path.h"
@@ -12,9 +13,7 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <optional>
-#include <sstream>
 #include <vector>
 
 namespace globe {
@@ -161,22 +160,15 @@ Result<CameraPath> parseCameraPath(std::string_view text, const std::string& fil
 }
 
 Result<CameraPath> loadCameraPath(const std::string& path) {
-  // A directory opens as a stream that reads as empty: say what it is instead of "empty path".
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    return Error{path, 0, 0, "", "cannot read camera path file: it is a directory"};
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return Error{path, 0, 0, "", "cannot open camera path file"};
-  std::ostringstream content;
-  content << in.rdbuf();
-  if (in.bad()) return Error{path, 0, 0, "", "cannot read camera path file"};
+  Result<std::string> content = readInputFile(path, "camera path file");
+  if (!content) return content.error();
   // One place that knows every camera path format, so each command taking --path reads them all.
   std::string extension = std::filesystem::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (extension == ".kml") return parseKmlTour(content.str(), path);
-  if (extension == ".czml") return parseCzmlPath(content.str(), path);
-  return parseCameraPath(content.str(), path);
+  if (extension == ".kml") return parseKmlTour(*content, path);
+  if (extension == ".czml") return parseCzmlPath(*content, path);
+  return parseCameraPath(*content, path);
 }
 
 std::string formatCameraPath(const CameraPath& path) {

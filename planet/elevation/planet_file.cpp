@@ -1,15 +1,14 @@
 #include "planet/elevation/planet_file.h"
+#include "planet/core/input_file.h"
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <optional>
 #include <set>
-#include <sstream>
 #include <vector>
 
 namespace globe {
@@ -471,19 +470,13 @@ PlanetFileCheck checkPlanetToml(std::string_view text, std::string_view source_n
 }
 
 PlanetFileCheck checkPlanetFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  PlanetFileCheck check;
-  if (!in) {
-    check.errors.push_back(Error{path, 0, 0, "", "cannot open planet file"});
+  Result<std::string> text = readInputFile(path, "planet file");
+  if (!text) {
+    PlanetFileCheck check;
+    check.errors.push_back(text.error());
     return check;
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) {
-    check.errors.push_back(Error{path, 0, 0, "", "cannot read planet file"});
-    return check;
-  }
-  return checkPlanetToml(text.str(), path);
+  return checkPlanetToml(*text, path);
 }
 
 Result<PlanetDescription> parsePlanetToml(std::string_view text, std::string_view source_name) {

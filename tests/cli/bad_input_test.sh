@@ -50,6 +50,18 @@ expect 2 "--at: height must be within" "$O" -- "$GLOBE" render --at 0,0,-1 --out
 expect 2 "--at: latitude must be finite" "$O" -- "$GLOBE" render --at nan,0,10 --out "$O" --size 64x64
 expect 2 "--at: longitude must be finite" "$O" -- "$GLOBE" render --at 0,inf,10 --out "$O" --size 64x64
 expect 2 "--at: expected LAT,LON,HEIGHT" "$O" -- "$GLOBE" render --at 1,2 --out "$O" --size 64x64
+# Input files that are not regular files: refused at once (timeout: a FIFO used to block forever).
+mkfifo "$WORK/fifo.toml" "$WORK/fifo.path"
+expect 2 "fifo.toml: cannot read planet file: it is a FIFO" "$O" -- timeout 60 "$GLOBE" render --planet "$WORK/fifo.toml" --out "$O" --size 64x64
+expect 2 "fifo.path: cannot read camera path file: it is a FIFO" "" -- timeout 60 "$GLOBE" bench --path "$WORK/fifo.path" --out "$WORK/bench"
+expect 2 "/dev/zero: cannot read planet file: it is a device" "$O" -- timeout 60 "$GLOBE" render --planet /dev/zero --out "$O" --size 64x64
+expect 2 "cannot read planet file: it is a directory" "$O" -- timeout 60 "$GLOBE" render --planet "$WORK" --out "$O" --size 64x64
+if ! timeout 60 "$GLOBE" planet check "$WORK/fifo.toml" 2>"$WORK/stderr" && grep -q "it is a FIFO" "$WORK/stderr"; then
+  echo "ok: planet check FIFO -> $(head -1 "$WORK/stderr")"
+else
+  echo "FAIL: planet check of a FIFO"; cat "$WORK/stderr"; failures=$((failures + 1))
+fi
+rm -f "$WORK/fifo.toml" "$WORK/fifo.path"
 # Unknown options and subcommands.
 expect 2 "bogus" "" -- "$GLOBE" render --bogus
 expect 2 "frobnicate" "" -- "$GLOBE" frobnicate

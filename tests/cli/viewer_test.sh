@@ -118,7 +118,7 @@ expect_usage() {  # expect_usage PATTERN ARGS...
 expect_usage "--frames: must be 0" --frames -3
 expect_usage "--size: expected WxH" --size big
 expect_usage "--at: latitude must be within" --at 95,0,100
-expect_usage "--script: cannot read script" --script "$WORK/missing.txt"
+expect_usage "--script: cannot open input script" --script "$WORK/missing.txt"
 expect_usage "bad_script.txt:1: unknown key 'NOSUCHKEY'" --script "$WORK/bad_script.txt"
 expect_usage "--screenshot: '.*shot.jpg' must end in .png or .exr" --screenshot "$WORK/shot.jpg"
 expect_usage "--screenshot-dir: '/nonexistent' is not a directory" --screenshot-dir /nonexistent

@@ -184,7 +184,7 @@ TEST(CameraPathFile, AcceptsCommentsBlankLinesTabsCrLfAndSigns) {
 TEST(CameraPathFile, UnreadableFile) {
   auto r = loadCameraPath("/nonexistent/dir/x.path");
   ASSERT_FALSE(r.ok());
-  EXPECT_EQ(r.error().format(), "/nonexistent/dir/x.path: cannot open camera path file");
+  EXPECT_EQ(r.error().format(), "/nonexistent/dir/x.path: cannot open camera path file: No such file or directory");
   auto d = loadCameraPath(assetPath(""));  // a directory
   ASSERT_FALSE(d.ok());
   EXPECT_EQ(d.error().format(), assetPath("") + ": cannot read camera path file: it is a directory");

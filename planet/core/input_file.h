@@ -1,0 +1,20 @@
+#pragma once
+// Reads a user-named input file (planet, camera path, input script, bench summary) whole, refusing
+// what is not a regular file or is too large, so hostile input neither blocks nor exhausts memory.
+#include "planet/core/error.h"
+
+#include <cstddef>
+#include <string>
+
+namespace globe {
+
+// Planet files, camera paths and scripts are hand-written text: 16 MiB is far above any real one.
+inline constexpr std::size_t kMaxInputFileBytes = std::size_t{16} << 20;
+
+// The content of `path`. A FIFO, device, socket or directory is an Error naming the file (the file
+// is opened non-blocking, so a FIFO without a writer never blocks); so is a file over `maxBytes`.
+// `what` names the file's role in messages ("planet file", "camera path file").
+Result<std::string> readInputFile(const std::string& path, const std::string& what,
+                                  std::size_t maxBytes = kMaxInputFileBytes);
+
+}  // namespace globe
