@@ -49,7 +49,7 @@ int runCheck(const std::vector<std::string>& files) {
       std::printf("%s: ok\n", file.c_str());
       continue;
     }
-    for (const Error& e : check.errors) std::fprintf(stderr, "%s\n", e.format().c_str());
+    for (const std::string& line : formatErrorList(check.errors)) std::fprintf(stderr, "%s\n", line.c_str());
     std::fprintf(stderr, "%s: %zu problem%s\n", file.c_str(), check.errors.size(), check.errors.size() == 1 ? "" : "s");
     code = kExitUsage;
   }

@@ -96,8 +96,9 @@ int runView(const ViewCommandOptions& o) {
   // then keeps the planet on screen). Every error at once, like `globe planet check`.
   PlanetFileCheck planet = checkPlanetFile(o.planet);
   if (!planet.ok()) {
-    for (size_t i = 1; i < planet.errors.size(); ++i) printError(planet.errors[i - 1].format());
-    return usageError(planet.errors.back());
+    const std::vector<std::string> lines = formatErrorList(planet.errors);
+    for (size_t i = 0; i + 1 < lines.size(); ++i) printError(lines[i]);
+    return usageError(Error{"", 0, 0, "", lines.back()});
   }
   ViewerSceneOptions& scene = viewer.scene;
   scene.mode = o.mode == "sphere" ? ViewerMode::kSphere : ViewerMode::kTerrain;

@@ -21,4 +21,11 @@ std::string Error::format() const {
   return out;
 }
 
+std::vector<std::string> formatErrorList(const std::vector<Error>& errors, std::size_t maxShown) {
+  std::vector<std::string> lines;
+  for (std::size_t i = 0; i < errors.size() && i < maxShown; ++i) lines.push_back(errors[i].format());
+  if (errors.size() > maxShown) lines.push_back("\u2026 and " + std::to_string(errors.size() - maxShown) + " more");
+  return lines;
+}
+
 }  // namespace globe

@@ -1,9 +1,11 @@
 #pragma once
 // Errors for bad input data (files, command-line values, camera positions). Bad data returns an
 // Error naming where it came from; programmer mistakes are asserts. Nothing here throws.
+#include <cstddef>
 #include <string>
 #include <utility>
 #include <variant>
+#include <vector>
 
 namespace globe {
 
@@ -17,6 +19,12 @@ struct Error {
   // "file:line:column: field: message", omitting the parts that are empty or zero. One line.
   std::string format() const;
 };
+
+// How many errors of one file a command prints: a hostile file can hold millions.
+inline constexpr std::size_t kMaxErrorsShown = 20;
+
+// One formatted line per error, at most `maxShown` of them, then "… and N more" for the rest.
+std::vector<std::string> formatErrorList(const std::vector<Error>& errors, std::size_t maxShown = kMaxErrorsShown);
 
 // A value or an Error. Small on purpose: std::expected is C++23.
 template <class T>

@@ -62,6 +62,16 @@ else
   echo "FAIL: planet check of a FIFO"; cat "$WORK/stderr"; failures=$((failures + 1))
 fi
 rm -f "$WORK/fifo.toml" "$WORK/fifo.path"
+# A planet file with many unknown keys: the first 20 problems, then a count of the rest.
+cp "$(dirname "$0")/../../assets/planets/earthlike.toml" "$WORK/many.toml"
+for i in $(seq 1 30); do echo "unknown_key_$i = 1" >>"$WORK/many.toml"; done
+"$GLOBE" planet check "$WORK/many.toml" 2>"$WORK/stderr"
+if [[ $(wc -l <"$WORK/stderr") -eq 22 ]] && grep -q "and 10 more" "$WORK/stderr"; then
+  echo "ok: planet check caps its error list"
+else
+  echo "FAIL: planet check error list not capped:"; head -30 "$WORK/stderr"; failures=$((failures + 1))
+fi
+rm -f "$WORK/many.toml"
 # Unknown options and subcommands.
 expect 2 "bogus" "" -- "$GLOBE" render --bogus
 expect 2 "frobnicate" "" -- "$GLOBE" frobnicate

@@ -17,6 +17,15 @@ TEST(Error, IsAlwaysOneLine) {
   EXPECT_EQ(e.format().find('\n'), std::string::npos);
 }
 
+TEST(Error, ListIsCappedWithACountOfTheRest) {
+  std::vector<Error> errors(25, Error{"f", 1, 0, "k", "unknown key"});
+  const std::vector<std::string> lines = formatErrorList(errors, 20);
+  ASSERT_EQ(lines.size(), 21U);
+  EXPECT_EQ(lines[0], "f:1: k: unknown key");
+  EXPECT_EQ(lines.back(), "\u2026 and 5 more");
+  EXPECT_EQ(formatErrorList(std::vector<Error>(3, errors[0]), 20).size(), 3U);
+}
+
 TEST(Result, HoldsValueOrError) {
   Result<int> a = 4;
   ASSERT_TRUE(a.ok());
