@@ -43,11 +43,14 @@ Status writePng(const std::string& path, const ImageRgba& image) {
     bytes[i] = (i % 4 == 3) ? uint8_t(std::lround(std::clamp(image.rgba[i], 0.0f, 1.0f) * 255.0f))
                             : linearToSrgb8(image.rgba[i]);
   }
-  AtomicFile file(path);
-  if (!stbi_write_png(file.tempPath().c_str(), int(image.width), int(image.height), 4, bytes.data(),
-                      int(image.width * 4)))
-    return Error{path, 0, 0, "", "cannot write PNG"};
-  return file.commit();
+  // Encoded in memory, then written by the checked atomic writer: stbi_write_png ignores write errors.
+  std::string png;
+  auto append = [](void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<size_t>(size));
+  };
+  if (!stbi_write_png_to_func(append, &png, int(image.width), int(image.height), 4, bytes.data(), int(image.width * 4)))
+    return Error{path, 0, 0, "", "cannot encode PNG"};
+  return writeFileAtomically(path, png, "");
 }
 
 Status writeExr(const std::string& path, const ImageRgba& image) {

@@ -1,12 +1,13 @@
 #include "planet/core/atomic_file.h"
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
+#include <string_view>
 
 namespace globe {
 
@@ -40,15 +41,44 @@ Status checkWritable(const std::string& path, const std::string& field) {
   return Ok{};
 }
 
-Status writeFileAtomically(const std::string& path, const std::string& content, const std::string& field) {
+namespace {
+
+Error writeError(const std::string& path, const std::string& field) {
+  return Error{path, 0, 0, field, std::string("cannot write: ") + std::strerror(errno)};
+}
+
+// Every step is checked: a full disk (ENOSPC), a file size limit (EFBIG) or a failing close must not
+// leave a truncated file that commit() would rename over a good one.
+Status writeAll(const std::string& tempPath, std::string_view content, const std::string& target,
+                const std::string& field) {
+  const int fd = ::open(tempPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) return writeError(target, field);
+  while (!content.empty()) {
+    const ssize_t n = ::write(fd, content.data(), content.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      if (n == 0) errno = EIO;
+      Error e = writeError(target, field);
+      ::close(fd);
+      return e;
+    }
+    content.remove_prefix(static_cast<size_t>(n));  // a short write: write the rest
+  }
+  if (::fsync(fd) != 0) {
+    Error e = writeError(target, field);
+    ::close(fd);
+    return e;
+  }
+  if (::close(fd) != 0) return writeError(target, field);
+  return Ok{};
+}
+
+}  // namespace
+
+Status writeFileAtomically(const std::string& path, std::string_view content, const std::string& field) {
   if (auto s = checkWritable(path, field); !s) return s;
   AtomicFile file(path);
-  {
-    std::ofstream out(file.tempPath(), std::ios::binary);
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
-    out.flush();
-    if (!out) return Error{path, 0, 0, field, "write failed"};
-  }
+  if (auto s = writeAll(file.tempPath(), content, path, field); !s) return s;
   return file.commit();
 }
 

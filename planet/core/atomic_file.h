@@ -5,6 +5,7 @@
 #include "planet/core/error.h"
 
 #include <string>
+#include <string_view>
 
 namespace globe {
 
@@ -32,7 +33,8 @@ class AtomicFile {
 // command can refuse before it spends time computing an output it cannot store.
 Status checkWritable(const std::string& path, const std::string& field);
 
-// Writes `content` to `path` atomically.
-Status writeFileAtomically(const std::string& path, const std::string& content, const std::string& field);
+// Writes `content` to `path` atomically. Every write, the fsync and the close are checked: on any
+// failure (ENOSPC, EFBIG, EIO) the Error names `path` and the reason, and the old file is untouched.
+Status writeFileAtomically(const std::string& path, std::string_view content, const std::string& field);
 
 }  // namespace globe

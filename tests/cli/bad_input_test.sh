@@ -72,6 +72,17 @@ else
   echo "FAIL: planet check error list not capped:"; head -30 "$WORK/stderr"; failures=$((failures + 1))
 fi
 rm -f "$WORK/many.toml"
+# A write that fails keeps the earlier file: a file size limit (EFBIG, SIGXFSZ ignored) stands in
+# for a full disk (ENOSPC); both go through the same checked writer.
+limited() { bash -c 'trap "" XFSZ; ulimit -f "$0"; exec "$@"' "$@"; }
+"$GLOBE" render --size 64x48 --out "$WORK/keep.png" >/dev/null 2>&1 && cp "$WORK/keep.png" "$WORK/keep.orig"
+expect 1 "keep.png: cannot write: File too large" "" -- limited 16 "$GLOBE" render --size 1024x768 --out "$WORK/keep.png"
+cmp -s "$WORK/keep.png" "$WORK/keep.orig" || { echo "FAIL: a failed render write changed keep.png"; failures=$((failures + 1)); }
+"$GLOBE" planet export --width 64 --out "$WORK/map.exr" --png "$WORK/keep.png" >/dev/null 2>&1
+cp "$WORK/keep.png" "$WORK/keep.orig"
+expect 1 "keep.png: cannot write: File too large" "" -- limited 16 "$GLOBE" planet export --width 64 --out "$WORK/map.exr" --png "$WORK/keep.png" --png-width 2048
+cmp -s "$WORK/keep.png" "$WORK/keep.orig" || { echo "FAIL: a failed export write changed keep.png"; failures=$((failures + 1)); }
+rm -f "$WORK/keep.png" "$WORK/keep.orig" "$WORK/map.exr"
 # Unknown options and subcommands.
 expect 2 "bogus" "" -- "$GLOBE" render --bogus
 expect 2 "frobnicate" "" -- "$GLOBE" frobnicate
