@@ -3,21 +3,46 @@
 #include "commands.h"
 #include "planet/core/data_directory.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <charconv>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
+#include <string_view>
 
 namespace globe::cli {
 
+namespace {
+
+// A whole number of digits only; nullopt on anything else, overflow included (sscanf's %u wraps
+// 4294967312 to 16).
+std::optional<std::uint64_t> parsePixels(std::string_view digits) {
+  if (digits.empty() || digits.find_first_not_of("0123456789") != std::string_view::npos) return std::nullopt;
+  std::uint64_t value = 0;
+  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  if (ec != std::errc() || end != digits.data() + digits.size()) return std::nullopt;
+  return value;
+}
+
+}  // namespace
+
 Result<ImageSize> parseSize(const std::string& text, const std::string& field) {
-  unsigned w = 0, h = 0;
-  char x = 0, extra = 0;
-  if (std::sscanf(text.c_str(), "%u%c%u%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') ||
-      text.find_first_not_of("0123456789xX") != std::string::npos)
-    return Error{"", 0, 0, field, "expected WxH (for example 1280x720), got '" + text + "'"};
-  if (w < 16 || h < 16 || w > 16384 || h > 16384)
-    return Error{"", 0, 0, field, "width and height must be within [16, 16384] pixels, got '" + text + "'"};
-  return ImageSize{w, h};
+  const size_t x = text.find_first_of("xX");
+  const auto w = x == std::string::npos ? std::nullopt : parsePixels(std::string_view(text).substr(0, x));
+  const auto h = x == std::string::npos ? std::nullopt : parsePixels(std::string_view(text).substr(x + 1));
+  if (!w || !h) return Error{"", 0, 0, field, "expected WxH (for example 1280x720), got '" + text + "'"};
+  if (*w < kMinImageSidePx || *h < kMinImageSidePx || *w > kMaxImageSidePx || *h > kMaxImageSidePx)
+    return Error{"", 0, 0, field,
+                 fmt::format("width and height must be within [{}, {}] pixels, got '{}'", kMinImageSidePx,
+                             kMaxImageSidePx, text)};
+  const std::uint64_t needMiB = (*w * *h * kRenderBytesPerPixel) >> 20;
+  if (needMiB > kMaxImageMemoryMiB)
+    return Error{"", 0, 0, field,
+                 fmt::format("{} would need about {} MiB of image memory, more than the limit of {} MiB", text, needMiB,
+                             kMaxImageMemoryMiB)};
+  return ImageSize{static_cast<uint32_t>(*w), static_cast<uint32_t>(*h)};
 }
 
 Status checkOutputDirectory(const std::string& dir, const std::string& field) {

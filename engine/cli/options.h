@@ -14,7 +14,15 @@ struct ImageSize {
   uint32_t height = 0;
 };
 
-// "WxH" with 16 <= W, H <= 16384.
+// Image sides: 16384 is the common maxImageDimension2D of Vulkan devices.
+inline constexpr std::uint64_t kMinImageSidePx = 16;
+inline constexpr std::uint64_t kMaxImageSidePx = 16384;
+// Host + device memory per output pixel of a render (colour, depth, readback, encoding), from issue
+// 21: 16384x16384 reached 17 GB. The cap keeps a render within a small machine's memory (8192x8192).
+inline constexpr std::uint64_t kRenderBytesPerPixel = 64;
+inline constexpr std::uint64_t kMaxImageMemoryMiB = 4096;
+
+// "WxH" with 16 <= W, H <= 16384 and W * H * kRenderBytesPerPixel within kMaxImageMemoryMiB.
 Result<ImageSize> parseSize(const std::string& text, const std::string& field);
 
 // An output directory: created later by the command, so it must be a directory or not exist yet, and

@@ -50,6 +50,10 @@ expect 2 "--at: height must be within" "$O" -- "$GLOBE" render --at 0,0,-1 --out
 expect 2 "--at: latitude must be finite" "$O" -- "$GLOBE" render --at nan,0,10 --out "$O" --size 64x64
 expect 2 "--at: longitude must be finite" "$O" -- "$GLOBE" render --at 0,inf,10 --out "$O" --size 64x64
 expect 2 "--at: expected LAT,LON,HEIGHT" "$O" -- "$GLOBE" render --at 1,2 --out "$O" --size 64x64
+# Sizes that wrap modulo 2^32 or need more memory than the limit.
+expect 2 "--size: width and height must be within" "$O" -- "$GLOBE" render --size 4294967312x16 --out "$O"
+expect 2 "--size: expected WxH" "$O" -- "$GLOBE" render --size 99999999999999999999999x16 --out "$O"
+expect 2 "--size: 16384x16384 would need about 16384 MiB" "$O" -- "$GLOBE" render --size 16384x16384 --out "$O"
 # Input files that are not regular files: refused at once (timeout: a FIFO used to block forever).
 mkfifo "$WORK/fifo.toml" "$WORK/fifo.path"
 expect 2 "fifo.toml: cannot read planet file: it is a FIFO" "$O" -- timeout 60 "$GLOBE" render --planet "$WORK/fifo.toml" --out "$O" --size 64x64
