@@ -14,6 +14,8 @@
 #include "planet/elevation/planet_file.h"
 #include "progress_bar.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -23,6 +25,9 @@
 namespace globe::cli {
 
 namespace {
+
+// One hour of path at 60 Hz (docs/reliability.md): longer runs are a mistake, not a benchmark.
+constexpr uint64_t kMaxBenchFrames = 216000;
 
 struct BenchOptions {
   DeviceFlags device;
@@ -89,6 +94,12 @@ int runBench(const BenchOptions& o) {
   auto keyTimes = parseTimes(o.keyFrames, "--keyframes");
   if (!keyTimes) return usageError(keyTimes.error());
   if (!(o.rate_hz >= 1 && o.rate_hz <= 1000)) return usageError({"", 0, 0, "--rate", "must be within [1, 1000] Hz"});
+  // Fixed time step in path time: frame k shows t = start + k / rate.
+  const uint64_t frames = uint64_t(std::floor(path->duration_s() * o.rate_hz + 1e-9)) + 1;
+  if (frames > kMaxBenchFrames)
+    return usageError({"", 0, 0, "--rate",
+                       fmt::format("{:g} s of path at {:g} Hz is {} frames, more than the limit of {}",
+                                   path->duration_s(), o.rate_hz, frames, kMaxBenchFrames)});
   auto quality = chooseQualityPreset(o.quality, *planet);
   if (!quality) return usageError(quality.error());
   TerrainSettings settings = terrainSettingsFor(*quality);
@@ -117,8 +128,6 @@ int runBench(const BenchOptions& o) {
   std::filesystem::create_directories(dir, ec);
   if (ec) return usageError({"", 0, 0, "--out", "cannot create '" + o.out + "': " + ec.message()});
 
-  // Fixed time step in path time: frame k shows t = start + k / rate.
-  const uint64_t frames = uint64_t(std::floor(path->duration_s() * o.rate_hz + 1e-9)) + 1;
   std::vector<BenchFrame> rows;
   rows.reserve(frames);
   std::vector<BenchKeyFrame> keys;

@@ -82,9 +82,13 @@ Error keyError(const std::string& file, const PathKeyframe& k, std::size_t index
 std::string poseProblem(const PathKeyframe& k) {
   const GeodeticPose& p = k.pose;
   if (!std::isfinite(k.time_s)) return "t_s must be finite";
+  if (std::abs(k.time_s) > CameraPath::kMaxTime_s)
+    return fmt::format("t_s must be within [-{0:.0f}, {0:.0f}] seconds", CameraPath::kMaxTime_s);
   if (!std::isfinite(p.latitude_deg)) return "lat_deg must be finite";
   if (std::abs(p.latitude_deg) > 90.0) return "lat_deg must be within [-90, 90]";
   if (!std::isfinite(p.longitude_deg)) return "lon_deg must be finite";
+  if (std::abs(p.longitude_deg) > CameraPath::kMaxLongitude_deg)
+    return fmt::format("lon_deg must be within [-{0:g}, {0:g}]", CameraPath::kMaxLongitude_deg);
   if (!std::isfinite(p.height_m)) return "height_m must be finite";
   if (p.height_m <= 0.0 || p.height_m > 1e12)
     return k.heightReference == HeightReference::sphere ? "height_m must be within (0, 1e12] metres above the sphere"
@@ -136,6 +140,10 @@ Result<CameraPath> CameraPath::create(std::vector<PathKeyframe> keyframes, const
                                   "{:g}); add keyframes between them",
                                   turn_deg, kMaxSegmentTurn_deg));
   }
+
+  if (const double span_s = keyframes.back().time_s - keyframes.front().time_s; span_s > kMaxDuration_s)
+    return Error{file, keyframes.back().line, 0, "",
+                 fmt::format("the path lasts {:.0f} s, more than the limit of {:.0f} s", span_s, kMaxDuration_s)};
 
   // Tangents: one per keyframe, shared by the segments on both sides (that is what makes it C1).
   const std::size_t n = keyframes.size();

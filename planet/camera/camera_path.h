@@ -53,6 +53,13 @@ class CameraPath {
   // Consecutive keyframes may be at most this far apart on the sphere (degrees of arc): the shortest
   // great circle between nearly antipodal points is ill-defined.
   static constexpr double kMaxSegmentArc_deg = 150.0;
+  // Input limits (docs/reliability.md): keyframe times within +-kMaxTime_s, a path at most
+  // kMaxDuration_s long (one hour: 216 000 frames at 60 Hz), longitudes within +-kMaxLongitude_deg
+  // (one turn either way, so unwrapped antimeridian crossings still parse; sin/cos of 1e308 do not
+  // give the intended place).
+  static constexpr double kMaxTime_s = 1e6;
+  static constexpr double kMaxDuration_s = 3600.0;
+  static constexpr double kMaxLongitude_deg = 360.0;
   // ... and may turn the camera by less than this (degrees): slerp takes the shorter way round, so
   // a half turn is ambiguous. Split larger turns with extra keyframes.
   static constexpr double kMaxSegmentTurn_deg = 179.0;
