@@ -45,6 +45,11 @@ Result<ImageSize> parseSize(const std::string& text, const std::string& field) {
   return ImageSize{static_cast<uint32_t>(*w), static_cast<uint32_t>(*h)};
 }
 
+CLI::Validator nonEmptyValue() {
+  return CLI::Validator([](const std::string& value) { return value.empty() ? std::string("must not be empty") : ""; },
+                        "", "NONEMPTY");
+}
+
 Status checkOutputDirectory(const std::string& dir, const std::string& field) {
   std::filesystem::path path(dir);
   std::error_code ec;

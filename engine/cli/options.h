@@ -42,6 +42,10 @@ vk::DeviceOptions deviceOptions(const DeviceFlags& flags);
 // With validation on, any message makes the command fail after it has reported them.
 int validationExitCode(vk::Device& device);
 
+// Refuses an empty value of an option whose absence means "the default" (--quality ""): an empty
+// value is a mistake, not a request for the default.
+CLI::Validator nonEmptyValue();
+
 // Prints the error and returns kExitUsage.
 int usageError(const Error& error);
 

@@ -137,7 +137,8 @@ void addPlanetExportCommand(CLI::App& planet, std::function<int()>& run) {
   cmd->add_option("--width", o->width, "Map width W in pixels, even, [2, 65536]; the height is W/2")->required();
   cmd->add_option("--out", o->out, "Output .exr file (written atomically)")->required();
   cmd->add_option("--png", o->png, "Also write a shaded, ramp-coloured preview .png");
-  cmd->add_option("--png-width", o->png_width, "Preview width in pixels (default: min(W, 4096))");
+  cmd->add_option("--png-width", o->png_width, "Preview width in pixels (default: min(W, 4096))")
+      ->check(CLI::Range(2U, 65536U));
   addThreadsOption(*cmd, o->threads);
   cmd->callback([o, &run] { run = [o] { return runExport(*o); }; });
 }

@@ -111,9 +111,11 @@ void addRenderCommand(CLI::App& app, Runner& run) {
       ->check(CLI::IsMember({"terrain", "sphere"}))
       ->capture_default_str();
   cmd->add_option("--grid", opts->gridCells,
-                  "Grid cells per node side (power of two, 16..256; default: the quality preset's)");
+                  "Grid cells per node side (power of two, 16..256; default: the quality preset's)")
+      ->check(CLI::Range(16U, 256U));
   cmd->add_option("--quality", opts->quality,
-                  "fast, balanced or exact (docs/tradeoffs.md; default: the planet's default_quality)");
+                  "fast, balanced or exact (docs/tradeoffs.md; default: the planet's default_quality)")
+      ->check(nonEmptyValue());
   addDeviceFlags(*cmd, opts->device);
   cmd->callback([opts, &run] { run = [opts] { return runRender(*opts); }; });
 }

@@ -300,11 +300,13 @@ void addTradeCommand(CLI::App& app, Runner& run) {
   cmd->add_option("--out", opts->out, "Output directory (trade.csv, pareto.svg)")->capture_default_str();
   cmd->add_flag("--quick", opts->quick, "Few configurations, two cameras, 320x180: about a minute");
   cmd->add_option("--quality", opts->quality,
-                  "Baseline preset: fast, balanced or exact (default: the planet's default_quality)");
+                  "Baseline preset: fast, balanced or exact (default: the planet's default_quality)")
+      ->check(nonEmptyValue());
   cmd->add_option("--size", opts->size, "Image size WxH (default 1280x720, --quick 320x180)");
   cmd->add_option("--frames", opts->frames,
                   "Timed converged frames per configuration and camera (default 11, --quick 3)");
-  cmd->add_option("--stride", opts->stride, "Screen error sampled every N-th pixel in x and y (default 4)");
+  cmd->add_option("--stride", opts->stride, "Screen error sampled every N-th pixel in x and y (default 4)")
+      ->check(CLI::Range(1U, 64U));
   cmd->add_option("--cameras", opts->cameras,
                   "Only these cameras, comma-separated (orbit, 100km, 10km, 1km, 2m, path@7s, path@12s)");
   cmd->add_option("--configs", opts->configs, "Run only the first N configurations (0 = all)");

@@ -184,9 +184,11 @@ void addViewCommand(CLI::App& app, Runner& run) {
       ->check(CLI::IsMember({"terrain", "sphere"}))
       ->capture_default_str();
   cmd->add_option("--grid", opts->gridCells,
-                  "Grid cells per node side (power of two, 16..256; default: the quality preset's)");
+                  "Grid cells per node side (power of two, 16..256; default: the quality preset's)")
+      ->check(CLI::Range(16U, 256U));
   cmd->add_option("--quality", opts->quality,
-                  "fast, balanced or exact (docs/tradeoffs.md; default: the planet's default_quality)");
+                  "fast, balanced or exact (docs/tradeoffs.md; default: the planet's default_quality)")
+      ->check(nonEmptyValue());
   cmd->add_option("--record-dir", opts->recordDir,
                   "Directory where R (start/stop recording) writes globe-path-YYYYmmdd-HHMMSS.path")
       ->capture_default_str();

@@ -50,6 +50,12 @@ expect 2 "--at: height must be within" "$O" -- "$GLOBE" render --at 0,0,-1 --out
 expect 2 "--at: latitude must be finite" "$O" -- "$GLOBE" render --at nan,0,10 --out "$O" --size 64x64
 expect 2 "--at: longitude must be finite" "$O" -- "$GLOBE" render --at 0,inf,10 --out "$O" --size 64x64
 expect 2 "--at: expected LAT,LON,HEIGHT" "$O" -- "$GLOBE" render --at 1,2 --out "$O" --size 64x64
+# Zero or empty values are errors, not a silent "the default" (leave the option out for that).
+expect 2 "--grid: .*0" "$O" -- "$GLOBE" render --grid 0 --out "$O" --size 64x64
+expect 2 "--quality: .*must not be empty" "$O" -- "$GLOBE" render --quality "" --out "$O" --size 64x64
+expect 2 "--quality: .*must not be empty" "" -- "$GLOBE" bench --quality "" --out "$WORK/bench"
+expect 2 "--stride: .*0" "" -- "$GLOBE" trade --quick --stride 0 --out "$WORK/trade"
+expect 2 "--png-width: .*0" "$WORK/p.png" -- "$GLOBE" planet export --width 64 --out "$WORK/m.exr" --png "$WORK/p.png" --png-width 0
 # Sizes that wrap modulo 2^32 or need more memory than the limit.
 expect 2 "--size: width and height must be within" "$O" -- "$GLOBE" render --size 4294967312x16 --out "$O"
 expect 2 "--size: expected WxH" "$O" -- "$GLOBE" render --size 99999999999999999999999x16 --out "$O"
