@@ -14,11 +14,19 @@ std::string Error::format() const {
   }
   if (!field.empty()) out += field + ": ";
   out += message;
-  // One line, always: a message built from input text must not smuggle newlines.
-  for (char& c : out) {
-    if (c == '\n' || c == '\r') c = ' ';
+  // One line of plain text, always: a message built from input text (a planet name, a key) must not
+  // smuggle newlines or terminal escape sequences, so control characters are shown as \xNN.
+  std::string escaped;
+  for (char c : out) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 || byte == 0x7f) {
+      static constexpr char kHex[] = "0123456789abcdef";
+      escaped += {'\\', 'x', kHex[byte >> 4], kHex[byte & 15]};
+    } else {
+      escaped += c;
+    }
   }
-  return out;
+  return escaped;
 }
 
 std::vector<std::string> formatErrorList(const std::vector<Error>& errors, std::size_t maxShown) {

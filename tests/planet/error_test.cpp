@@ -17,6 +17,12 @@ TEST(Error, IsAlwaysOneLine) {
   EXPECT_EQ(e.format().find('\n'), std::string::npos);
 }
 
+TEST(Error, EscapesControlCharacters) {
+  // A planet named "\x1b]0;pwned\x07" must not reach the terminal as an escape sequence.
+  Error e{"f", 0, 0, "name", "bad \x1b]0;x\x07 and\ttab"};
+  EXPECT_EQ(e.format(), "f: name: bad \\x1b]0;x\\x07 and\\x09tab");
+}
+
 TEST(Error, ListIsCappedWithACountOfTheRest) {
   std::vector<Error> errors(25, Error{"f", 1, 0, "k", "unknown key"});
   const std::vector<std::string> lines = formatErrorList(errors, 20);
