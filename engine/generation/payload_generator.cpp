@@ -94,11 +94,14 @@ void GpuPayloadGenerator::reserveSlots(uint32_t slots, uint32_t maxSlotsPerPage)
 GpuPayloadGenerator::Batch& GpuPayloadGenerator::freeBatch() {
   for (Batch& b : batches_)
     if (!b.busy) return b;
-  // Every batch is running: the caller exceeded the in-flight cap it promised. Wait for the oldest.
+  // Every batch is running (one generate() call longer than the in-flight cap): wait for the oldest
+  // and reuse it; its results wait for the next collect().
   Batch& oldest = batches_[order_.front()];
   VkFence fence = oldest.fence;
   GLOBE_VK_CHECK(vkWaitForFences(device_.device(), 1, &fence, VK_TRUE, UINT64_MAX));
-  throw std::logic_error("GpuPayloadGenerator: more batches in flight than configured");
+  order_.pop_front();
+  finish(oldest, waitedResults_);
+  return oldest;
 }
 
 void GpuPayloadGenerator::generate(std::span<const GenerationJob> jobs) {
@@ -169,6 +172,9 @@ void GpuPayloadGenerator::finish(Batch& batch, std::vector<GenerationResult>& fi
 }
 
 void GpuPayloadGenerator::collect(std::vector<GenerationResult>& finished) {
+  // Batches freeBatch() finished early come first: they were submitted first.
+  finished.insert(finished.end(), waitedResults_.begin(), waitedResults_.end());
+  waitedResults_.clear();
   // Batches finish in submission order on one queue: stop at the first that is still running.
   while (!order_.empty()) {
     Batch& batch = batches_[order_.front()];

@@ -81,7 +81,8 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   double timestampPeriod_ns_ = 1.0;
   std::vector<Batch> batches_;
   std::vector<glm::dvec3> slotCentres_;
-  std::deque<uint32_t> order_;  // busy batches, oldest first
+  std::deque<uint32_t> order_;                   // busy batches, oldest first
+  std::vector<GenerationResult> waitedResults_;  // of batches freeBatch() waited for, until collect()
   double gpuTime_ms_ = 0.0;
   uint64_t nodesGenerated_ = 0;
 };

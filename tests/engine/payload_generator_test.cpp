@@ -8,6 +8,7 @@
 #include "planet/streaming/payload_reference.h"
 #include "tests/support/gpu_test.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -212,6 +213,23 @@ TEST_F(PayloadGeneratorTest, NeighboursAgreeExactlyOnSharedEdges) {
   }
   EXPECT_GT(seams, 30);
   std::printf("[ info ] %d shared edge vertices compared, %d face-seam pairs\n", compared, seams);
+}
+
+TEST_F(PayloadGeneratorTest, MoreBatchesThanInFlightWaitForTheOldest) {
+  // 40 jobs at 8 per submit with 2 in flight: generate() must reuse finished batches, not throw,
+  // and collect() must return every job exactly once.
+  GpuPayloadGenerator gen(device(), *model_, kCells, 8, 2);
+  gen.reserveSlots(40);
+  std::vector<NodeId> nodes = testNodes();
+  nodes.resize(40, NodeId{3, 2, 1, 1});
+  std::vector<GenerationResult> results;
+  ASSERT_NO_THROW(generate(gen, nodes, results));
+  ASSERT_EQ(results.size(), 40U);
+  std::vector<uint32_t> slots;
+  for (const GenerationResult& r : results) slots.push_back(r.slot);
+  std::sort(slots.begin(), slots.end());
+  for (uint32_t k = 0; k < 40; ++k) EXPECT_EQ(slots[k], k);
+  EXPECT_EQ(gen.nodesGenerated(), 40U);
 }
 
 TEST_F(PayloadGeneratorTest, ShortFlightThroughThePool) {
