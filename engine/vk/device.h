@@ -57,9 +57,11 @@ class Device {
   // Names a handle for validation messages and debuggers (no-op without debug utils).
   void setName(VkObjectType type, uint64_t handle, const char* name) const;
 
- private:
-  void destroy();  // releases whatever was created; safe on a partly constructed Device
+  // Releases whatever was created; safe on a partly constructed Device and twice. validation()
+  // stays readable afterwards, so messages raised by the teardown itself can be checked.
+  void destroy();
 
+ private:
   VkInstance instance_ = VK_NULL_HANDLE;
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
   VkSurfaceKHR surface_ = VK_NULL_HANDLE;
