@@ -68,4 +68,8 @@ UniqueShaderModule loadShaderModule(Device& device, const std::string& name);
 void transitionImage(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
                      VkImageLayout to);
 
+// Makes device writes by `srcStage` (e.g. a transfer into a readback buffer) visible to host reads
+// after the fence: ALL_COMMANDS does not include the host stage.
+void hostReadBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess);
+
 }  // namespace globe::vk
