@@ -80,8 +80,9 @@ int runStats(const StatsOptions& o) {
   const ElevationRange bounds = model.bounds();
   std::string out;
   auto line = std::back_inserter(out);
-  fmt::format_to(line, "planet {}: radius {} m, sea level {} m, default quality {}\n", planet->name, planet->radius_m,
-                 planet->sea_level_m, qualityPresetName(planet->default_quality));
+  fmt::format_to(line, "planet {}: radius {} m, sea level {} m, default quality {}\n",
+                 escapeControlCharacters(planet->name), planet->radius_m, planet->sea_level_m,
+                 qualityPresetName(planet->default_quality));
   fmt::format_to(line, "samples: {} uniform directions (Fibonacci sphere), {} threads, {:.2f} s ({:.2f} M/s)\n",
                  s.samples, o.threads, seconds, static_cast<double>(s.samples) / seconds * 1e-6);
   fmt::format_to(line, "elevation: min {:.1f} m, max {:.1f} m, mean {:.1f} m\n", s.min_m, s.max_m, s.mean_m);

@@ -2,6 +2,20 @@
 
 namespace globe {
 
+std::string escapeControlCharacters(std::string_view text) {
+  std::string escaped;
+  for (char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 || byte == 0x7f) {
+      static constexpr char kHex[] = "0123456789abcdef";
+      escaped += {'\\', 'x', kHex[byte >> 4], kHex[byte & 15]};
+    } else {
+      escaped += c;
+    }
+  }
+  return escaped;
+}
+
 std::string Error::format() const {
   std::string out;
   if (!file.empty()) {
@@ -15,18 +29,8 @@ std::string Error::format() const {
   if (!field.empty()) out += field + ": ";
   out += message;
   // One line of plain text, always: a message built from input text (a planet name, a key) must not
-  // smuggle newlines or terminal escape sequences, so control characters are shown as \xNN.
-  std::string escaped;
-  for (char c : out) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (byte < 0x20 || byte == 0x7f) {
-      static constexpr char kHex[] = "0123456789abcdef";
-      escaped += {'\\', 'x', kHex[byte >> 4], kHex[byte & 15]};
-    } else {
-      escaped += c;
-    }
-  }
-  return escaped;
+  // smuggle newlines or terminal escape sequences.
+  return escapeControlCharacters(out);
 }
 
 std::vector<std::string> formatErrorList(const std::vector<Error>& errors, std::size_t maxShown) {

@@ -3,6 +3,7 @@
 // Error naming where it came from; programmer mistakes are asserts. Nothing here throws.
 #include <cstddef>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -19,6 +20,10 @@ struct Error {
   // "file:line:column: field: message", omitting the parts that are empty or zero. One line.
   std::string format() const;
 };
+
+// `text` with every control character (bytes < 0x20 and DEL, newlines too) shown as \xNN: for input
+// text printed to a terminal (planet names, keys), which must not carry escape sequences.
+std::string escapeControlCharacters(std::string_view text);
 
 // How many errors of one file a command prints: a hostile file can hold millions.
 inline constexpr std::size_t kMaxErrorsShown = 20;

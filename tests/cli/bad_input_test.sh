@@ -99,6 +99,14 @@ expect 2 "--rate: 3000 s of path at 100 Hz is 300001 frames, more than the limit
 printf '%s\n' "t_s lat_deg lon_deg height_m heading_deg pitch_deg roll_deg" "0 0 1e308 100 0 0 0" "1 0 0 100 0 0 0" >"$WORK/far.path"
 expect 2 "far.path:2: lon_deg must be within \[-360, 360\]" "" -- "$GLOBE" bench --path "$WORK/far.path" --out "$WORK/bench"
 rm -f "$WORK/long.path" "$WORK/far.path"
+# A planet name with terminal escape sequences is printed escaped (\xNN), never raw.
+sed 's/^name = "earthlike"/name = "x\\u001b]0;pwned\\u0007"/' "$(dirname "$0")/../../assets/planets/earthlike.toml" >"$WORK/name.toml"
+if "$GLOBE" planet stats "$WORK/name.toml" --samples 1000 2>&1 | grep -q $'\x1b'; then
+  echo "FAIL: planet stats printed a raw ESC of the planet name"; failures=$((failures + 1))
+else
+  echo "ok: planet stats escapes the planet name"
+fi
+rm -f "$WORK/name.toml"
 # Unknown options and subcommands.
 expect 2 "bogus" "" -- "$GLOBE" render --bogus
 expect 2 "frobnicate" "" -- "$GLOBE" frobnicate

@@ -23,6 +23,11 @@ TEST(Error, EscapesControlCharacters) {
   EXPECT_EQ(e.format(), "f: name: bad \\x1b]0;x\\x07 and\\x09tab");
 }
 
+TEST(Error, EscapeControlCharactersLeavesOtherTextAlone) {
+  EXPECT_EQ(escapeControlCharacters("Terra \xc3\xa9 1"), "Terra \xc3\xa9 1");  // UTF-8 stays
+  EXPECT_EQ(escapeControlCharacters("a\x1b[2Jb\x7f"), "a\\x1b[2Jb\\x7f");
+}
+
 TEST(Error, ListIsCappedWithACountOfTheRest) {
   std::vector<Error> errors(25, Error{"f", 1, 0, "k", "unknown key"});
   const std::vector<std::string> lines = formatErrorList(errors, 20);
