@@ -104,6 +104,12 @@ class Reader {
   }
 
   void remember(const std::string& field, const toml::source_region& where) { where_[field] = where; }
+  // A value the file gives through another key (wavelength_m = 1 / frequency_per_m): its errors
+  // name the key that is in the file.
+  void rememberAs(const std::string& field, const std::string& keyInFile, const toml::source_region& where) {
+    where_[field] = where;
+    spelledAs_[field] = keyInFile;
+  }
 
   // Adds validatePlanetAll's findings at the positions of the values they name.
   void addValidationErrors(std::vector<Error> found) {
@@ -114,6 +120,12 @@ class Reader {
       if (it != where_.end()) {
         e.line = static_cast<int>(it->second.begin.line);
         e.column = static_cast<int>(it->second.begin.column);
+      }
+      if (auto spelled = spelledAs_.find(e.field); spelled != spelledAs_.end()) {
+        const std::string shortName = e.field.substr(e.field.rfind('.') + 1);
+        const std::string keyInFile = spelled->second.substr(spelled->second.rfind('.') + 1);
+        e.message = fmt::format("gives {} = 1 / {}, which {}", shortName, keyInFile, e.message);
+        e.field = spelled->second;
       }
       errors_.push_back(std::move(e));
     }
@@ -202,6 +214,7 @@ class Reader {
   std::vector<Error> errors_;
   std::set<std::string> failed_fields_;
   std::map<std::string, toml::source_region> where_;
+  std::map<std::string, std::string> spelledAs_;  // field -> the key in the file that gave it
 };
 
 void readLayer(Reader& r, const toml::table& t, std::size_t index, PlanetDescription& planet) {
@@ -259,7 +272,7 @@ void readLayer(Reader& r, const toml::table& t, std::size_t index, PlanetDescrip
           r.fail(node.source(), field, "must be > 0");
         } else {
           layer.wavelength_m = 1.0 / *v;
-          r.remember(p + "wavelength_m", node.source());
+          r.rememberAs(p + "wavelength_m", field, node.source());
         }
       }
     } else if (k == "lacunarity") {

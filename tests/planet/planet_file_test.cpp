@@ -100,6 +100,9 @@ const BadCase kBadCases[] = {
      "missing"},
     {"wavelength and frequency", "radius_m = 5e6\n" LAYER "frequency_per_m = 0.1\n", 7, 19, "layers[0].frequency_per_m",
      "not both"},
+    // 1 / 4e-320 is infinite: the error names the key in the file, not wavelength_m.
+    {"denormal frequency", "radius_m = 5e6\n[[layers]]\noctaves = 1\nfrequency_per_m = 4e-320\namplitude_m = 1\n", 4,
+     19, "layers[0].frequency_per_m", "gives wavelength_m = 1 / frequency_per_m, which must be finite"},
     {"unknown kind", "radius_m = 5e6\n" LAYER "kind = \"perlin\"\n", 7, 8, "layers[0].kind", "unknown kind"},
     {"modulator not earlier",
      "radius_m = 5e6\n" LAYER "modulated_by = \"base\"\nmodulation_low_m = 0\n"
