@@ -11,7 +11,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <vector>
 
@@ -170,14 +169,6 @@ std::string summaryJson(const BenchRunInfo& info, std::span<const BenchFrame> fr
   return summary.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
-Status writeTemporary(AtomicFile& file, const std::string& content) {
-  std::ofstream out(file.tempPath(), std::ios::binary);
-  out.write(content.data(), static_cast<std::streamsize>(content.size()));
-  out.flush();
-  if (!out) return Error{file.targetPath(), 0, 0, "", "cannot write"};
-  return Ok{};
-}
-
 }  // namespace
 
 Status writeBenchReport(const std::string& dir, const BenchRunInfo& info, std::span<const BenchFrame> frames,
@@ -210,7 +201,7 @@ Status writeBenchReport(const std::string& dir, const BenchRunInfo& info, std::s
     const std::string path = (fs::path(dir) / o.name).string();
     if (auto s = checkWritable(path, ""); !s) return Error{path, 0, 0, "", s.error().message};
     files.push_back(std::make_unique<AtomicFile>(path));
-    if (auto s = writeTemporary(*files.back(), o.content); !s) return s;
+    if (auto s = files.back()->write(o.content); !s) return s;
   }
   for (auto& file : files) {
     if (auto s = file->commit(); !s) return s;

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 
 namespace globe {
@@ -193,10 +192,7 @@ Status writeTradeReport(const std::string& dir, const std::vector<TradeRow>& row
     const std::string path = (fs::path(dir) / name).string();
     if (auto s = checkWritable(path, ""); !s) return Error{path, 0, 0, "", s.error().message};
     files.push_back(std::make_unique<AtomicFile>(path));
-    std::ofstream out(files.back()->tempPath(), std::ios::binary);
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
-    out.flush();
-    if (!out) return Error{path, 0, 0, "", "cannot write"};
+    if (auto s = files.back()->write(content); !s) return s;
   }
   for (auto& file : files)
     if (auto s = file->commit(); !s) return s;

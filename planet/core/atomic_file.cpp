@@ -75,6 +75,8 @@ Status writeAll(const std::string& tempPath, std::string_view content, const std
 
 }  // namespace
 
+Status AtomicFile::write(std::string_view content) { return writeAll(temp_, content, target_, ""); }
+
 Status writeFileAtomically(const std::string& path, std::string_view content, const std::string& field) {
   if (auto s = checkWritable(path, field); !s) return s;
   AtomicFile file(path);

@@ -20,6 +20,10 @@ class AtomicFile {
   const std::string& targetPath() const { return target_; }
   const std::string& tempPath() const { return temp_; }
 
+  // Writes `content` to the temporary, checking every write, the fsync and the close (ENOSPC, EFBIG,
+  // EIO); the Error names the target and strerror.
+  Status write(std::string_view content);
+
   // Renames the temporary over the target.
   Status commit();
 

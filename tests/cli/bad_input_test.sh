@@ -93,6 +93,8 @@ cp "$WORK/keep.png" "$WORK/keep.orig"
 expect 1 "keep.png: cannot write: File too large" "" -- limited 16 "$GLOBE" planet export --width 64 --out "$WORK/map.exr" --png "$WORK/keep.png" --png-width 2048
 cmp -s "$WORK/keep.png" "$WORK/keep.orig" || { echo "FAIL: a failed export write changed keep.png"; failures=$((failures + 1)); }
 rm -f "$WORK/keep.png" "$WORK/keep.orig" "$WORK/map.exr"
+expect 1 "cannot write: File too large" "" -- limited 8 "$GLOBE" bench --path "$(dirname "$0")/../data/short.path" --size 64x64 --keyframes 99 --out "$WORK/small_bench"
+rm -rf "$WORK/small_bench"
 # Paths and benches beyond the limits of docs/reliability.md ("Input limits"), refused up front.
 printf '%s\n' "t_s lat_deg lon_deg height_m heading_deg pitch_deg roll_deg" "0 0 0 100 0 0 0" "3000 0 0.01 100 0 0 0" >"$WORK/long.path"
 expect 2 "--rate: 3000 s of path at 100 Hz is 300001 frames, more than the limit of 216000" "" -- "$GLOBE" bench --path "$WORK/long.path" --rate 100 --out "$WORK/bench"
