@@ -39,7 +39,7 @@ struct ViewCommandOptions {
 // A directory option that must exist.
 Status checkDirectory(const std::string& dir, const std::string& field) {
   std::error_code ec;
-  if (!std::filesystem::is_directory(dir, ec)) return Error{"", 0, 0, field, "'" + dir + "' is not a directory"};
+  if (!std::filesystem::is_directory(dir, ec)) return Error::inField(field, "'" + dir + "' is not a directory");
   return Ok{};
 }
 

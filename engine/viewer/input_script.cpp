@@ -84,7 +84,7 @@ Result<InputScript> parseInputScript(const std::string& text, const std::string&
     std::vector<std::string> w;
     for (std::string word; words >> word;) w.push_back(word);
     if (w.empty()) continue;
-    auto fail = [&](const std::string& message) { return Error{file, lineNo, 0, "", message}; };
+    auto fail = [&](const std::string& message) { return Error::atLine(file, lineNo, message); };
     ScriptedEvent e;
     if (!parseFrame(w[0], e.frame)) return fail("expected a frame number, got '" + w[0] + "'");
     std::string verb = w.size() > 1 ? upper(w[1]) : "";
@@ -130,7 +130,7 @@ Result<InputScript> parseInputScript(const std::string& text, const std::string&
 
 Result<InputScript> loadInputScript(const std::string& path, const std::string& field) {
   std::ifstream file(path, std::ios::binary);
-  if (!file) return Error{"", 0, 0, field, "cannot read script '" + path + "'"};
+  if (!file) return Error::inField(field, "cannot read script '" + path + "'");
   std::stringstream content;
   content << file.rdbuf();
   return parseInputScript(content.str(), path);

@@ -52,7 +52,7 @@ void printLine(const std::string& line) {
 
 std::unique_ptr<ViewerScene> makeScene(vk::Device& device, ViewerSceneOptions options) {
   auto scene = ViewerScene::create(device, std::move(options));
-  // The command validated the settings and the planet; what is left is a programming error.
+  // The command validated the settings and the planet; what is left is a device failure.
   if (!scene) throw std::runtime_error(scene.error().format());
   return std::move(*scene);
 }
@@ -395,7 +395,7 @@ Status Viewer::run() {
   GLOBE_VK_CHECK(vkDeviceWaitIdle(s.device.device()));
   s.releases.releaseAll();
   if (!s.options.screenshotPath.empty()) {
-    if (s.frame == 0) return Error{"", 0, 0, "--screenshot", "no frame was rendered"};
+    if (s.frame == 0) return Error::inField("--screenshot", "no frame was rendered");
     return s.saveScreenshot(s.options.screenshotPath, lastCamera);
   }
   return Ok{};

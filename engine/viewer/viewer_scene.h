@@ -41,7 +41,7 @@ struct ReloadOutcome {
 
 class ViewerScene {
  public:
-  // Throws VulkanError on device failures; bad terrain settings are an Error.
+  // Bad terrain settings and device failures (VulkanError's message) are an Error; never throws.
   static Result<std::unique_ptr<ViewerScene>> create(vk::Device& device, ViewerSceneOptions options);
   ~ViewerScene();
   ViewerScene(const ViewerScene&) = delete;

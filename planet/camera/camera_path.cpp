@@ -75,7 +75,7 @@ double limitedSlope(double before, double dtBefore, double after, double dtAfter
 }
 
 Error keyError(const std::string& file, const PathKeyframe& k, std::size_t index, std::string message) {
-  return Error{file, k.line, 0, k.line > 0 ? "" : fmt::format("keyframe {}", index + 1), std::move(message)};
+  return Error::at(file, k.line, 0, k.line > 0 ? "" : fmt::format("keyframe {}", index + 1), std::move(message));
 }
 
 // Range checks with the file's column names, so a message points at the value to edit.
@@ -98,8 +98,8 @@ std::string poseProblem(const PathKeyframe& k) {
 Result<CameraPath> CameraPath::create(std::vector<PathKeyframe> keyframes, const std::string& file) {
   if (keyframes.size() < 2) {
     int line = keyframes.empty() ? 0 : keyframes.back().line;
-    return Error{file, line, 0, "",
-                 fmt::format("a camera path needs at least 2 keyframes, found {}", keyframes.size())};
+    return Error::atLine(file, line,
+                         fmt::format("a camera path needs at least 2 keyframes, found {}", keyframes.size()));
   }
   CameraPath path;
   path.prepared_.resize(keyframes.size());

@@ -41,10 +41,10 @@ Result<double> parseNumber(std::string_view text, std::string_view column, const
   std::string_view digits = text.size() > 1 && text[0] == '+' && text[1] != '-' ? text.substr(1) : text;
   auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
   if (ec == std::errc::result_out_of_range)
-    return Error{file, line, 0, "", fmt::format("{} '{}' is out of range", column, text)};
+    return Error::atLine(file, line, fmt::format("{} '{}' is out of range", column, text));
   if (ec != std::errc() || end != digits.data() + digits.size())
-    return Error{file, line, 0, "", fmt::format("{} '{}' is not a number", column, text)};
-  if (!std::isfinite(v)) return Error{file, line, 0, "", fmt::format("{} must be finite, got '{}'", column, text)};
+    return Error::atLine(file, line, fmt::format("{} '{}' is not a number", column, text));
+  if (!std::isfinite(v)) return Error::atLine(file, line, fmt::format("{} must be finite, got '{}'", column, text));
   return v;
 }
 
@@ -71,18 +71,18 @@ Result<CameraPath> parseCameraPath(std::string_view text, const std::string& fil
       // The header names the columns so a reader of the file needs no documentation to edit it;
       // requiring it exactly also catches files that are not camera paths at all.
       if (joined(fields) != kCameraPathHeader)
-        return Error{fileName, lineNumber, 0, "",
-                     fmt::format("expected the header '{}', got '{}'", kCameraPathHeader, joined(fields))};
+        return Error::atLine(fileName, lineNumber,
+                             fmt::format("expected the header '{}', got '{}'", kCameraPathHeader, joined(fields)));
       sawHeader = true;
       continue;
     }
     if (fields.size() < kColumns.size())
-      return Error{fileName, lineNumber, 0, "",
-                   fmt::format("missing field {} (expected {} fields, found {})", kColumns[fields.size()],
-                               kColumns.size(), fields.size())};
+      return Error::atLine(fileName, lineNumber,
+                           fmt::format("missing field {} (expected {} fields, found {})", kColumns[fields.size()],
+                                       kColumns.size(), fields.size()));
     if (fields.size() > kColumns.size())
-      return Error{fileName, lineNumber, 0, "",
-                   fmt::format("too many fields (expected {}, found {})", kColumns.size(), fields.size())};
+      return Error::atLine(fileName, lineNumber,
+                           fmt::format("too many fields (expected {}, found {})", kColumns.size(), fields.size()));
     std::array<double, 7> v{};
     for (std::size_t i = 0; i < kColumns.size(); ++i) {
       auto number = parseNumber(fields[i], kColumns[i], fileName, lineNumber);
@@ -93,11 +93,11 @@ Result<CameraPath> parseCameraPath(std::string_view text, const std::string& fil
   }
   const int lastLine = std::max(lineNumber, 1);
   if (!sawHeader)
-    return Error{fileName, lastLine, 0, "",
-                 fmt::format("empty camera path: expected the header '{}'", kCameraPathHeader)};
+    return Error::atLine(fileName, lastLine,
+                         fmt::format("empty camera path: expected the header '{}'", kCameraPathHeader));
   if (keyframes.size() < 2)
-    return Error{fileName, lastLine, 0, "",
-                 fmt::format("a camera path needs at least 2 keyframes, found {}", keyframes.size())};
+    return Error::atLine(fileName, lastLine,
+                         fmt::format("a camera path needs at least 2 keyframes, found {}", keyframes.size()));
   return CameraPath::create(std::move(keyframes), fileName);
 }
 
@@ -105,12 +105,12 @@ Result<CameraPath> loadCameraPath(const std::string& path) {
   // A directory opens as a stream that reads as empty: say what it is instead of "empty path".
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
-    return Error{path, 0, 0, "", "cannot read camera path file: it is a directory"};
+    return Error::inFile(path, "cannot read camera path file: it is a directory");
   std::ifstream in(path, std::ios::binary);
-  if (!in) return Error{path, 0, 0, "", "cannot open camera path file"};
+  if (!in) return Error::inFile(path, "cannot open camera path file");
   std::ostringstream content;
   content << in.rdbuf();
-  if (in.bad()) return Error{path, 0, 0, "", "cannot read camera path file"};
+  if (in.bad()) return Error::inFile(path, "cannot read camera path file");
   return parseCameraPath(content.str(), path);
 }
 

@@ -92,7 +92,7 @@ namespace {
 bool inRange(double v, double lo, double hi) { return std::isfinite(v) && v >= lo && v <= hi; }
 
 Error fieldError(std::string field, std::string message) {
-  return Error{"", 0, 0, std::move(field), std::move(message)};
+  return Error::inField(std::move(field), std::move(message));
 }
 
 }  // namespace

@@ -25,7 +25,7 @@ struct LodSelector::Context {
 };
 
 Result<LodSelector> LodSelector::create(const LodConfig& c, const FaceMapping& mapping) {
-  const auto bad = [](const char* field, const char* message) { return Error{"", 0, 0, field, message}; };
+  const auto bad = [](const char* field, const char* message) { return Error::inField(field, message); };
   if (!(std::isfinite(c.radius_m) && c.radius_m > 0.0)) return bad("radius", "must be finite and > 0");
   if (!(std::isfinite(c.minElevation_m) && std::isfinite(c.maxElevation_m))) {
     return bad("elevation", "min and max elevation must be finite");
@@ -61,7 +61,7 @@ NodeBounds LodSelector::boundsFor(const NodeId& node, const NodeResidency& resid
 Status LodSelector::select(const SelectionCamera& camera, NodeResidency& residency, Selection& out) {
   out.nodes.clear();
   out.stats = {};
-  if (!isFinite(camera.position_m)) return Error{"", 0, 0, "camera", "position is not finite"};
+  if (!isFinite(camera.position_m)) return Error::inField("camera", "position is not finite");
   Context ctx{camera.position_m,
               camera.frustum,
               HorizonCone(camera.position_m, config_.horizonCulling ? defaultRange_.min_m : 0.0),

@@ -23,32 +23,30 @@ uint64_t hashKey(uint64_t key) {
 
 Status validateStreamingConfig(const StreamingConfig& c) {
   if (!(c.ramBudget_MiB > 0) || !std::isfinite(c.ramBudget_MiB))
-    return Error{"", 0, 0, "ram_budget_mib", "must be a finite number > 0"};
+    return Error::inField("ram_budget_mib", "must be a finite number > 0");
   if (!(c.vramBudget_MiB > 0) || !std::isfinite(c.vramBudget_MiB))
-    return Error{"", 0, 0, "vram_budget_mib", "must be a finite number > 0"};
-  if (c.dispatchBudget < 1) return Error{"", 0, 0, "dispatch_budget", "must be >= 1"};
-  if (c.maxInFlight < 1) return Error{"", 0, 0, "max_in_flight", "must be >= 1"};
+    return Error::inField("vram_budget_mib", "must be a finite number > 0");
+  if (c.dispatchBudget < 1) return Error::inField("dispatch_budget", "must be >= 1");
+  if (c.maxInFlight < 1) return Error::inField("max_in_flight", "must be >= 1");
   return Ok{};
 }
 
 Result<std::unique_ptr<PayloadPool>> PayloadPool::create(const StreamingConfig& config, PayloadGenerator& generator,
                                                          double radius_m, const FaceMapping& mapping) {
   if (auto s = validateStreamingConfig(config); !s) return s.error();
-  if (!(radius_m > 0) || !std::isfinite(radius_m)) return Error{"", 0, 0, "radius_m", "must be a finite number > 0"};
+  if (!(radius_m > 0) || !std::isfinite(radius_m)) return Error::inField("radius_m", "must be a finite number > 0");
   size_t slotBytes = std::max<size_t>(generator.slotBytes(), 1);
   double slots = std::floor(config.vramBudget_MiB * kMiB / double(slotBytes));
   if (config.maxSlots > 0) slots = std::min(slots, double(config.maxSlots));
   // The 30 roots are pinned; below that plus one refinement of each there is no working set.
   if (slots < 30 + 4)
-    return Error{"", 0, 0, "vram_budget_mib",
-                 "too small: " + std::to_string(int64_t(slots)) + " payload slots of " + std::to_string(slotBytes) +
-                     " bytes fit, at least 34 are needed"};
+    return Error::inField("vram_budget_mib", "too small: " + std::to_string(int64_t(slots)) + " payload slots of " +
+                                                 std::to_string(slotBytes) + " bytes fit, at least 34 are needed");
   // The hash table is twice the node capacity (load <= 0.5) and counts against the RAM budget.
   double nodes = std::floor(config.ramBudget_MiB * kMiB / (2.0 * sizeof(NodeRecord)));
   if (nodes < slots + 256)
-    return Error{"", 0, 0, "ram_budget_mib",
-                 "too small for the VRAM budget: " + std::to_string(int64_t(nodes)) + " nodes fit, " +
-                     std::to_string(int64_t(slots) + 256) + " are needed"};
+    return Error::inField("ram_budget_mib", "too small for the VRAM budget: " + std::to_string(int64_t(nodes)) +
+                                                " nodes fit, " + std::to_string(int64_t(slots) + 256) + " are needed");
   nodes = std::min(nodes, 1.0 * (1u << 30));
   return std::unique_ptr<PayloadPool>(
       new PayloadPool(config, generator, radius_m, mapping, uint32_t(slots), uint32_t(nodes)));
