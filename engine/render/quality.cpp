@@ -26,10 +26,8 @@ TerrainSettings terrainSettingsFor(QualityPreset preset) {
 }
 
 Result<QualityPreset> parseQualityPreset(const std::string& text, const std::string& field) {
-  if (text == "fast") return QualityPreset::Fast;
-  if (text == "balanced") return QualityPreset::Balanced;
-  if (text == "exact") return QualityPreset::Exact;
-  return Error{"", 0, 0, field, "unknown quality '" + text + "' (fast, balanced, exact)"};
+  if (auto preset = qualityPresetFromName(text)) return *preset;
+  return Error::inField(field, "unknown quality '" + text + "' (fast, balanced, exact)");
 }
 
 Result<QualityPreset> chooseQualityPreset(const std::string& option, const PlanetDescription& planet,

@@ -21,6 +21,12 @@ std::string_view qualityPresetName(QualityPreset preset) {
   return "unknown";
 }
 
+std::optional<QualityPreset> qualityPresetFromName(std::string_view name) {
+  for (QualityPreset p : {QualityPreset::Fast, QualityPreset::Balanced, QualityPreset::Exact})
+    if (qualityPresetName(p) == name) return p;
+  return std::nullopt;
+}
+
 std::string_view layerKindName(LayerKind kind) {
   switch (kind) {
     case LayerKind::Fbm:

@@ -33,6 +33,8 @@ enum class QualityPreset : std::uint32_t { Fast = 0, Balanced = 1, Exact = 2 };
 
 // "fast", "balanced", "exact".
 std::string_view qualityPresetName(QualityPreset preset);
+// The inverse of qualityPresetName; nullopt for any other text. The one parser of quality names.
+std::optional<QualityPreset> qualityPresetFromName(std::string_view name);
 
 // One layer: `octaves` octaves of gradient noise; octave i has wavelength wavelength_m / lacunarity^i
 // and amplitude amplitude_m * gain^i.
