@@ -101,7 +101,7 @@ std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::st
   }
   // The presets and the knobs that do not change the triangle count much first: --configs N keeps
   // the first N.
-  for (QualityPreset p : {QualityPreset::Fast, QualityPreset::Balanced, QualityPreset::Exact})
+  for (QualityPreset p : {QualityPreset::kFast, QualityPreset::kBalanced, QualityPreset::kExact})
     add(std::string(qualityPresetName(p)), terrainSettingsFor(p));
   vary(depth, {16, 20, 24});
   vary(morph, {0.25, 0.5});

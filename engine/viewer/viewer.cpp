@@ -109,7 +109,7 @@ struct Viewer::State {
 
 void Viewer::State::handle(const InputEvent& e) {
   switch (e.type) {
-    case InputEvent::Type::Key:
+    case InputEvent::Type::kKey:
       if (e.down) {
         input.keysDown.insert(e.code);
         if (e.code == GLFW_KEY_ESCAPE) quit = true;
@@ -120,11 +120,11 @@ void Viewer::State::handle(const InputEvent& e) {
         input.keysDown.erase(e.code);
       }
       break;
-    case InputEvent::Type::MouseButton:
+    case InputEvent::Type::kMouseButton:
       if (e.code == GLFW_MOUSE_BUTTON_LEFT)
         input.dragging = e.down && !overlay->wantsMouse();  // drags on the overlay are its own
       break;
-    case InputEvent::Type::MouseMove:
+    case InputEvent::Type::kMouseMove:
       if (input.haveCursor && input.dragging) {
         input.dragX_px += e.x - input.cursorX;
         input.dragY_px += e.y - input.cursorY;
@@ -133,10 +133,10 @@ void Viewer::State::handle(const InputEvent& e) {
       input.cursorY = e.y;
       input.haveCursor = true;
       break;
-    case InputEvent::Type::Resize:
+    case InputEvent::Type::kResize:
       window.setSize(uint32_t(e.x), uint32_t(e.y));
       break;
-    case InputEvent::Type::WaitReload:
+    case InputEvent::Type::kWaitReload:
       waitForReloadRequested = true;
       break;
   }

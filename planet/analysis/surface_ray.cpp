@@ -83,14 +83,14 @@ SurfaceRayHit SurfaceRayCaster::cast(const glm::dvec3& origin, const glm::dvec3&
   double f = heightAbove(origin + t * dir);
   ++out.evaluations;
   if (f <= 0) {  // starts inside the terrain
-    out.kind = SurfaceRayHit::Kind::Hit;
+    out.kind = SurfaceRayHit::Kind::kHit;
     out.distance_m = t;
     out.normal = normalAt(origin + t * dir, options.tolerance_m);
     return out;
   }
   for (uint32_t step = 0;; ++step) {
     if (step >= options.maxSteps) {
-      out.kind = SurfaceRayHit::Kind::Unresolved;
+      out.kind = SurfaceRayHit::Kind::kUnresolved;
       return out;
     }
     glm::dvec3 p = origin + t * dir;
@@ -109,7 +109,7 @@ SurfaceRayHit SurfaceRayCaster::cast(const glm::dvec3& origin, const glm::dvec3&
     (heightAbove(origin + mid * dir) > 0 ? lo : hi) = mid;
     ++out.evaluations;
   }
-  out.kind = SurfaceRayHit::Kind::Hit;
+  out.kind = SurfaceRayHit::Kind::kHit;
   out.distance_m = 0.5 * (lo + hi);
   out.normal = normalAt(origin + out.distance_m * dir, std::max(out.distance_m * options.pixelAngle_rad, 1e-3));
   return out;

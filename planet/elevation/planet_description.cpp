@@ -11,29 +11,29 @@ namespace globe {
 
 std::string_view qualityPresetName(QualityPreset preset) {
   switch (preset) {
-    case QualityPreset::Fast:
+    case QualityPreset::kFast:
       return "fast";
-    case QualityPreset::Balanced:
+    case QualityPreset::kBalanced:
       return "balanced";
-    case QualityPreset::Exact:
+    case QualityPreset::kExact:
       return "exact";
   }
   return "unknown";
 }
 
 std::optional<QualityPreset> qualityPresetFromName(std::string_view name) {
-  for (QualityPreset p : {QualityPreset::Fast, QualityPreset::Balanced, QualityPreset::Exact})
+  for (QualityPreset p : {QualityPreset::kFast, QualityPreset::kBalanced, QualityPreset::kExact})
     if (qualityPresetName(p) == name) return p;
   return std::nullopt;
 }
 
 std::string_view layerKindName(LayerKind kind) {
   switch (kind) {
-    case LayerKind::Fbm:
+    case LayerKind::kFbm:
       return "fbm";
-    case LayerKind::Ridged:
+    case LayerKind::kRidged:
       return "ridged";
-    case LayerKind::Billow:
+    case LayerKind::kBillow:
       return "billow";
   }
   return "unknown";
@@ -67,14 +67,14 @@ ElevationRange elevationBounds(const PlanetDescription& planet) {
     double lo = 0.0;
     double hi = 0.0;
     switch (layer.kind) {
-      case LayerKind::Fbm:
+      case LayerKind::kFbm:
         lo = -sum * kGradientNoiseBound;
         hi = sum * kGradientNoiseBound;
         break;
-      case LayerKind::Ridged:  // (1 - |n|)^2 <= max(1, (1 - bound)^2) = 1
+      case LayerKind::kRidged:  // (1 - |n|)^2 <= max(1, (1 - bound)^2) = 1
         hi = sum;
         break;
-      case LayerKind::Billow:
+      case LayerKind::kBillow:
         hi = sum * kGradientNoiseBound;
         break;
     }

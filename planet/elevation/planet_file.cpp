@@ -232,11 +232,11 @@ void readLayer(Reader& r, const toml::table& t, std::size_t index, PlanetDescrip
     } else if (k == "kind") {
       if (auto v = r.string(node, field)) {
         if (*v == "fbm") {
-          layer.kind = LayerKind::Fbm;
+          layer.kind = LayerKind::kFbm;
         } else if (*v == "ridged") {
-          layer.kind = LayerKind::Ridged;
+          layer.kind = LayerKind::kRidged;
         } else if (*v == "billow") {
-          layer.kind = LayerKind::Billow;
+          layer.kind = LayerKind::kBillow;
         } else {
           r.fail(node.source(), field, fmt::format("unknown kind '{}' (fbm, ridged, billow)", *v));
         }
@@ -395,11 +395,11 @@ void readTopLevel(Reader& r, const std::string& k, const toml::node& node, Plane
   } else if (k == "default_quality") {
     if (auto v = r.string(node, k)) {
       if (*v == "fast") {
-        planet.default_quality = QualityPreset::Fast;
+        planet.default_quality = QualityPreset::kFast;
       } else if (*v == "balanced") {
-        planet.default_quality = QualityPreset::Balanced;
+        planet.default_quality = QualityPreset::kBalanced;
       } else if (*v == "exact") {
-        planet.default_quality = QualityPreset::Exact;
+        planet.default_quality = QualityPreset::kExact;
       } else {
         r.fail(node.source(), k, fmt::format("unknown quality '{}' (fast, balanced, exact)", *v));
       }

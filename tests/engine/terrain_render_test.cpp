@@ -44,7 +44,7 @@ PlanetDescription testPlanet() {
   continents.amplitude_m = 3000.0;
   ElevationLayer hills;
   hills.name = "hills";
-  hills.kind = LayerKind::Ridged;
+  hills.kind = LayerKind::kRidged;
   hills.octaves = 6;
   hills.wavelength_m = 40000.0;
   hills.amplitude_m = 600.0;
