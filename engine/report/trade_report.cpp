@@ -184,23 +184,8 @@ std::string paretoSvg(const std::vector<TradeRow>& rows, const std::string& titl
 }
 
 Status writeTradeReport(const std::string& dir, const std::vector<TradeRow>& rows, const std::string& title) {
-  namespace fs = std::filesystem;
-  const std::pair<std::string, std::string> outputs[] = {{"trade.csv", tradeCsv(rows)},
-                                                         {"pareto.svg", paretoSvg(rows, title)}};
-  // Every temporary is written before any is renamed: a failure leaves neither file.
-  std::vector<std::unique_ptr<AtomicFile>> files;
-  for (const auto& [name, content] : outputs) {
-    const std::string path = (fs::path(dir) / name).string();
-    if (auto s = checkWritable(path, ""); !s) return Error{path, 0, 0, "", s.error().message};
-    files.push_back(std::make_unique<AtomicFile>(path));
-    std::ofstream out(files.back()->tempPath(), std::ios::binary);
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
-    out.flush();
-    if (!out) return Error{path, 0, 0, "", "cannot write"};
-  }
-  for (auto& file : files)
-    if (auto s = file->commit(); !s) return s;
-  return Ok{};
+  const NamedContent outputs[] = {{"trade.csv", tradeCsv(rows)}, {"pareto.svg", paretoSvg(rows, title)}};
+  return writeFilesAtomically(dir, outputs);
 }
 
 }  // namespace globe

@@ -7,6 +7,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <memory>
+#include <vector>
 
 namespace globe {
 
@@ -50,6 +52,22 @@ Status writeFileAtomically(const std::string& path, const std::string& content, 
     if (!out) return Error::inFileField(path, field, "write failed");
   }
   return file.commit();
+}
+
+Status writeFilesAtomically(const std::string& dir, std::span<const NamedContent> files) {
+  std::vector<std::unique_ptr<AtomicFile>> written;
+  for (const NamedContent& f : files) {
+    const std::string path = (fs::path(dir) / f.name).string();
+    if (auto s = checkWritable(path, ""); !s) return Error::inFile(path, s.error().message);
+    written.push_back(std::make_unique<AtomicFile>(path));
+    std::ofstream out(written.back()->tempPath(), std::ios::binary);
+    out.write(f.content.data(), static_cast<std::streamsize>(f.content.size()));
+    out.flush();
+    if (!out) return Error::inFile(path, "cannot write");
+  }
+  for (auto& file : written)
+    if (auto s = file->commit(); !s) return s;
+  return Ok{};
 }
 
 }  // namespace globe
