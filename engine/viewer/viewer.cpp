@@ -82,6 +82,10 @@ struct Viewer::State {
   void toggleRecording(const Camera& cam);
   void stopRecording();
   void waitForReload();
+  bool processInput();  // false: quit
+  Camera stepCamera(double wall_s);
+  void buildOverlay(double wall_s);
+  void takeRequestedScreenshot(const Camera& cam);
 
   Window& window;
   vk::Device& device;
@@ -181,7 +185,7 @@ void Viewer::State::renderFrame(uint32_t image, VkCommandBuffer cmd, const Camer
   GLOBE_VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
 
   // Scene: HDR colour and reversed-Z depth. The terrain's per-frame buffers are indexed by
-  // frame % 2, the FrameRing slot whose fence begin() waited for.
+  // frame % kFramesInFlight, the FrameRing slot whose fence begin() waited for.
   target->begin(cmd, kSpaceColour);
   scene->record(cmd, cam, uint32_t(frame % vk::kFramesInFlight));
   target->end(cmd);  // colour is now TRANSFER_SRC_OPTIMAL
@@ -279,6 +283,84 @@ Viewer::~Viewer() {
 
 uint64_t Viewer::framesRendered() const { return s_->frame; }
 
+// Input: the window's events, then the script's for this frame.
+bool Viewer::State::processInput() {
+  for (const InputEvent& e : window.pollEvents()) handle(e);
+  for (const InputEvent& e : options.script.take(frame)) handle(e);
+  if (waitForReloadRequested) {
+    waitForReloadRequested = false;
+    waitForReload();
+  }
+  if (window.shouldClose()) quit = true;
+  return !quit;
+}
+
+// Camera: keys move, left-drag turns; `wall_s` is the real time since the last frame.
+Camera Viewer::State::stepCamera(double wall_s) {
+  FlyControls controls;
+  controls.forward = input.axis(GLFW_KEY_W, GLFW_KEY_S);
+  controls.right = input.axis(GLFW_KEY_D, GLFW_KEY_A);
+  controls.up = input.axis(GLFW_KEY_E, GLFW_KEY_Q);
+  controls.boost = input.down(GLFW_KEY_LEFT_SHIFT) || input.down(GLFW_KEY_RIGHT_SHIFT);
+  controls.turnRight_px = input.dragX_px;
+  controls.turnUp_px = -input.dragY_px;
+  input.dragX_px = input.dragY_px = 0;
+  double step_s = options.fixedStep ? kFixedStep_s : std::min(wall_s, 0.25);
+  camera.update(controls, step_s);
+  VkExtent2D extent = target->extent();
+  Camera cam = camera.camera(double(extent.width) / double(extent.height));
+
+  // Path recording in camera time: what the camera advanced by is what the replay advances by.
+  if (recordToggleRequested) {
+    recordToggleRequested = false;
+    toggleRecording(cam);
+  } else if (recorder.recording()) {
+    recorder.advance(step_s, currentPose(cam));
+  }
+  return cam;
+}
+
+void Viewer::State::buildOverlay(double wall_s) {
+  OverlayView view;
+  view.stats = stats;  // the previous frame's complete statistics (draws are counted in record)
+  view.stats.frame_ms = wall_s * 1000.0;
+  view.altitude_m = camera.altitude_m();
+  glm::dvec2 latLon = camera.latLon_deg();
+  view.latitude_deg = latLon.x;
+  view.longitude_deg = latLon.y;
+  view.speed_mps = camera.speed_mps();
+  view.debugView = scene->debugViewName();
+  view.deviceName = device.name();
+  view.planet = scene->planet().name + " (" + scene->planetPath() + ")";
+  if (recorder.recording()) {
+    char text[96];
+    std::snprintf(text, sizeof text, "recording... %.1f s, %zu keyframes (R stops)", recorder.elapsed_s(),
+                  recorder.keyframeCount());
+    view.recording = text;
+  }
+  view.message = message;
+  view.errors = planetErrors;
+  overlay->build(view);
+}
+
+// F12/P: the frame just submitted, named by its number.
+void Viewer::State::takeRequestedScreenshot(const Camera& cam) {
+  if (!screenshotRequested) return;
+  screenshotRequested = false;
+  char name[64];
+  std::snprintf(name, sizeof name, "globe-frame%06llu%s", static_cast<unsigned long long>(frame - 1),
+                options.screenshotExtension.c_str());
+  std::string path = (std::filesystem::path(options.screenshotDirectory) / name).string();
+  if (Status st = saveScreenshot(path, cam); st) {
+    message = "saved " + path;
+    // Tests compare screenshots of still views: say whether the terrain had converged.
+    printLine("screenshot " + path + (scene->converged() ? " (converged)" : " (streaming)"));
+  } else {
+    message = st.error().format();
+    std::fprintf(stderr, "globe: warning: %s\n", message.c_str());
+  }
+}
+
 Status Viewer::run() {
   State& s = *s_;
   using Clock = std::chrono::steady_clock;
@@ -286,16 +368,7 @@ Status Viewer::run() {
   Camera lastCamera = s.camera.camera(double(s.target->extent().width) / s.target->extent().height);
 
   while (!s.quit && !(s.options.frames && s.frame >= s.options.frames)) {
-    // Input: the window's events, then the script's for this frame.
-    for (const InputEvent& e : s.window.pollEvents()) s.handle(e);
-    for (const InputEvent& e : s.options.script.take(s.frame)) s.handle(e);
-    if (s.waitForReloadRequested) {
-      s.waitForReloadRequested = false;
-      s.waitForReload();
-    }
-    if (s.window.shouldClose()) s.quit = true;
-    if (s.quit) break;
-
+    if (!s.processInput()) break;
     Clock::time_point now = Clock::now();
     double wall_s = std::chrono::duration<double>(now - previous).count();
     previous = now;
@@ -305,7 +378,6 @@ Status Viewer::run() {
 
     vk::FrameRing::Slot slot = s.ring.begin(s.frame);
     if (s.frame >= vk::kFramesInFlight) s.releases.collect(s.frame - vk::kFramesInFlight);
-
     if (s.window.takeResized() || s.swapchainStale) {
       if (!s.recreateSwapchain()) {
         glfwWaitEventsTimeout(0.05);  // minimised: sleep until something changes
@@ -317,54 +389,12 @@ Status Viewer::run() {
       s.swapchainStale = true;
       continue;
     }
-
-    // Camera: keys move, left-drag turns.
-    FlyControls controls;
-    controls.forward = s.input.axis(GLFW_KEY_W, GLFW_KEY_S);
-    controls.right = s.input.axis(GLFW_KEY_D, GLFW_KEY_A);
-    controls.up = s.input.axis(GLFW_KEY_E, GLFW_KEY_Q);
-    controls.boost = s.input.down(GLFW_KEY_LEFT_SHIFT) || s.input.down(GLFW_KEY_RIGHT_SHIFT);
-    controls.turnRight_px = s.input.dragX_px;
-    controls.turnUp_px = -s.input.dragY_px;
-    s.input.dragX_px = s.input.dragY_px = 0;
-    double step_s = s.options.fixedStep ? kFixedStep_s : std::min(wall_s, 0.25);
-    s.camera.update(controls, step_s);
-    VkExtent2D extent = s.target->extent();
-    Camera cam = s.camera.camera(double(extent.width) / double(extent.height));
-
-    // Path recording in camera time: what the camera advanced by is what the replay advances by.
-    if (s.recordToggleRequested) {
-      s.recordToggleRequested = false;
-      s.toggleRecording(cam);
-    } else if (s.recorder.recording()) {
-      s.recorder.advance(step_s, s.currentPose(cam));
-    }
-
+    Camera cam = s.stepCamera(wall_s);
     // FrameRing::begin waited for frame - kFramesInFlight. The terrain counts frames from
     // kFramesInFlight, so its completed frame (its own numbering) is `s.frame` and never underflows:
     // terrain frames below kFramesInFlight never existed, so nothing they "used" can be in flight.
     s.scene->update(s.frame + vk::kFramesInFlight, cam, s.frame);
-
-    OverlayView view;
-    view.stats = s.stats;  // the previous frame's complete statistics (draws are counted in record)
-    view.stats.frame_ms = wall_s * 1000.0;
-    view.altitude_m = s.camera.altitude_m();
-    glm::dvec2 latLon = s.camera.latLon_deg();
-    view.latitude_deg = latLon.x;
-    view.longitude_deg = latLon.y;
-    view.speed_mps = s.camera.speed_mps();
-    view.debugView = s.scene->debugViewName();
-    view.deviceName = s.device.name();
-    view.planet = s.scene->planet().name + " (" + s.scene->planetPath() + ")";
-    if (s.recorder.recording()) {
-      char text[96];
-      std::snprintf(text, sizeof text, "recording... %.1f s, %zu keyframes (R stops)", s.recorder.elapsed_s(),
-                    s.recorder.keyframeCount());
-      view.recording = text;
-    }
-    view.message = s.message;
-    view.errors = s.planetErrors;
-    s.overlay->build(view);
+    s.buildOverlay(wall_s);
 
     s.renderFrame(*image, slot.cmd, cam);
     s.stats = s.scene->stats();
@@ -372,22 +402,7 @@ Status Viewer::run() {
     if (!s.swapchain.present(*image)) s.swapchainStale = true;
     lastCamera = cam;
     ++s.frame;
-
-    if (s.screenshotRequested) {
-      s.screenshotRequested = false;
-      char name[64];
-      std::snprintf(name, sizeof name, "globe-frame%06llu%s", static_cast<unsigned long long>(s.frame - 1),
-                    s.options.screenshotExtension.c_str());
-      std::string path = (std::filesystem::path(s.options.screenshotDirectory) / name).string();
-      if (Status st = s.saveScreenshot(path, cam); st) {
-        s.message = "saved " + path;
-        // Tests compare screenshots of still views: say whether the terrain had converged.
-        printLine("screenshot " + path + (s.scene->converged() ? " (converged)" : " (streaming)"));
-      } else {
-        s.message = st.error().format();
-        std::fprintf(stderr, "globe: warning: %s\n", s.message.c_str());
-      }
-    }
+    s.takeRequestedScreenshot(cam);
   }
 
   // Quitting while recording keeps the flight.
