@@ -1,5 +1,6 @@
 #include "planet/streaming/payload_pool.h"
 
+#include "planet/core/hash.h"
 #include "planet/lod/lod_ranges.h"
 
 #include <algorithm>
@@ -12,13 +13,6 @@ namespace globe {
 namespace {
 constexpr double kMiB = 1024.0 * 1024.0;
 constexpr size_t kLatencyBuckets = 64;
-
-uint64_t hashKey(uint64_t key) {
-  uint64_t z = key + 0x9e3779b97f4a7c15ull;
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-  return z ^ (z >> 31);
-}
 }  // namespace
 
 Status validateStreamingConfig(const StreamingConfig& c) {
@@ -76,7 +70,7 @@ PayloadPool::PayloadPool(const StreamingConfig& config, PayloadGenerator& genera
 
 int64_t PayloadPool::find(uint64_t key) const {
   size_t mask = table_.size() - 1;
-  for (size_t i = hashKey(key) & mask, probes = 0; probes < table_.size(); i = (i + 1) & mask, ++probes) {
+  for (size_t i = mix64(key) & mask, probes = 0; probes < table_.size(); i = (i + 1) & mask, ++probes) {
     if (table_[i].key == key) return int64_t(i);
     if (table_[i].key == kEmptyKey) return -1;
   }
@@ -88,7 +82,7 @@ int64_t PayloadPool::insert(const NodeId& node) {
   if (tombstones_ > table_.size() / 4) rehash();
   size_t mask = table_.size() - 1;
   uint64_t key = node.key();
-  for (size_t i = hashKey(key) & mask;; i = (i + 1) & mask) {
+  for (size_t i = mix64(key) & mask;; i = (i + 1) & mask) {
     if (table_[i].key == kEmptyKey || table_[i].key == kTombstone) {
       if (table_[i].key == kTombstone) --tombstones_;
       NodeRecord& r = table_[i];
@@ -118,7 +112,7 @@ void PayloadPool::rehash() {
   size_t mask = scratchTable_.size() - 1;
   for (const NodeRecord& r : table_) {
     if (r.key == kEmptyKey || r.key == kTombstone) continue;
-    size_t i = hashKey(r.key) & mask;
+    size_t i = mix64(r.key) & mask;
     while (scratchTable_[i].key != kEmptyKey) i = (i + 1) & mask;
     scratchTable_[i] = r;
   }
