@@ -306,7 +306,7 @@ void PayloadPool::evictCandidate(size_t index) {
   ++stats_.evicted;
 }
 
-void PayloadPool::dispatch() {
+void PayloadPool::dropUnrequestedAndSort() {
   // Requests not repeated this frame are no longer needed: nothing is generated that the current
   // view did not ask for.
   for (size_t k = 0; k < pending_.size();) {
@@ -326,15 +326,9 @@ void PayloadPool::dispatch() {
     if (ra.distance_m != rb.distance_m) return ra.distance_m < rb.distance_m;
     return ra.key < rb.key;  // deterministic order
   });
+}
 
-  jobs_.clear();
-  const uint32_t budget = config_.dispatchBudget;
-  const uint32_t maxInFlight = config_.maxInFlight;
-  // Prefetch leaves one frame's dispatch budget of in-flight room to the next frame's visible
-  // requests (at least half of the cap stays usable by prefetch when the budget is that large).
-  const uint32_t prefetchInFlightCap = std::max(maxInFlight / 2, maxInFlight - std::min(maxInFlight, budget));
-  uint32_t room = std::min<uint32_t>(budget, maxInFlight - std::min(maxInFlight, inFlight_));
-  uint32_t want = std::min<uint32_t>(room, uint32_t(pending_.size()));
+size_t PayloadPool::evictForUrgent(uint32_t want) {
   uint32_t urgent = 0;
   for (uint32_t k = 0; k < want; ++k)
     if (table_[size_t(pending_[k])].priority != RequestPriority::kPrefetch) ++urgent;
@@ -346,6 +340,15 @@ void PayloadPool::dispatch() {
     uint32_t urgentNeed = urgent > freeSlots_.size() ? urgent - uint32_t(freeSlots_.size()) : 0;
     for (; nextVictim < std::min<size_t>(urgentNeed, candidates_.size()); ++nextVictim) evictCandidate(nextVictim);
   }
+  return nextVictim;
+}
+
+size_t PayloadPool::startJobs(size_t nextVictim) {
+  const uint32_t budget = config_.dispatchBudget;
+  const uint32_t maxInFlight = config_.maxInFlight;
+  // Prefetch leaves one frame's dispatch budget of in-flight room to the next frame's visible
+  // requests (at least half of the cap stays usable by prefetch when the budget is that large).
+  const uint32_t prefetchInFlightCap = std::max(maxInFlight / 2, maxInFlight - std::min(maxInFlight, budget));
   size_t taken = 0;
   for (; taken < pending_.size(); ++taken) {
     if (jobs_.size() >= budget || inFlight_ >= maxInFlight) break;
@@ -372,16 +375,30 @@ void PayloadPool::dispatch() {
     ++inFlight_;
     jobs_.push_back({NodeId::fromKey(r.key), r.slot});
   }
-  candidates_.clear();
-  pending_.erase(pending_.begin(), pending_.begin() + std::ptrdiff_t(taken));
-  if (!jobs_.empty()) generator_.generate(jobs_);
+  return taken;
+}
 
+void PayloadPool::updateDispatchStats() {
   stats_.dispatched = uint32_t(jobs_.size());
   stats_.inFlight = inFlight_;
   stats_.queueLength = uint32_t(pending_.size());
   uint32_t used = slotCapacity_ - uint32_t(freeSlots_.size()) - uint32_t(retiredSlots_.size());
   stats_.residentNodes = used - inFlight_;
   stats_.residentMiB = double(used) * double(generator_.slotBytes()) / kMiB;
+}
+
+void PayloadPool::dispatch() {
+  dropUnrequestedAndSort();
+  jobs_.clear();
+  const uint32_t maxInFlight = config_.maxInFlight;
+  uint32_t room = std::min<uint32_t>(config_.dispatchBudget, maxInFlight - std::min(maxInFlight, inFlight_));
+  uint32_t want = std::min<uint32_t>(room, uint32_t(pending_.size()));
+  const size_t nextVictim = evictForUrgent(want);
+  const size_t taken = startJobs(nextVictim);
+  candidates_.clear();
+  pending_.erase(pending_.begin(), pending_.begin() + std::ptrdiff_t(taken));
+  if (!jobs_.empty()) generator_.generate(jobs_);
+  updateDispatchStats();
 }
 
 void PayloadPool::invalidateAll() {

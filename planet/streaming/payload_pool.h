@@ -130,6 +130,13 @@ class PayloadPool final : public NodeResidency {
   void gatherCandidates(size_t count);
   // Evicts candidates_[index] (gathered this dispatch; still a valid victim).
   void evictCandidate(size_t index);
+  // dispatch()'s steps: drop requests not repeated this frame and sort the rest (priority, then
+  // distance); evict for the `want` first requests, returning the index of the next unused victim;
+  // start generations, returning how many pending requests were taken; refresh the stats.
+  void dropUnrequestedAndSort();
+  size_t evictForUrgent(uint32_t want);
+  size_t startJobs(size_t nextVictim);
+  void updateDispatchStats();
   // floor(2 log2(distance / node width)): larger buckets are evicted first.
   int distanceBucket(const NodeRecord& r) const;
   void setWarning(const std::string& message);
