@@ -1,5 +1,7 @@
 #include "planet/analysis/surface_ray.h"
 
+#include "planet/core/parallel_for.h"
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -138,12 +140,11 @@ SurfaceTruth castSurfaceTruth(const ElevationModel& model, const Camera& camera,
   SurfaceRayOptions options;
   options.pixelAngle_rad = camera.verticalFov_rad / double(height);
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-  std::atomic<uint32_t> nextRow{0};
   std::atomic<uint64_t> evaluations{0};
   // Rows are handed out one at a time: cost varies a lot between rows (sky vs grazing ground).
-  auto work = [&] {
+  parallelFor(truth.rows, 1, threads, [&](size_t firstRow, size_t endRow) {
     uint64_t local = 0;
-    for (uint32_t row; (row = nextRow.fetch_add(1)) < truth.rows;) {
+    for (auto row = uint32_t(firstRow); row < endRow; ++row) {
       for (uint32_t column = 0; column < truth.columns; ++column) {
         uint32_t x = std::min(truth.pixelX(column), width - 1), y = std::min(truth.pixelY(row), height - 1);
         SurfaceRayHit hit = caster.cast(camera.position_m, pixelRay(camera, width, height, x, y), options);
@@ -152,11 +153,7 @@ SurfaceTruth castSurfaceTruth(const ElevationModel& model, const Camera& camera,
       }
     }
     evaluations += local;
-  };
-  std::vector<std::thread> pool;
-  for (unsigned i = 1; i < threads; ++i) pool.emplace_back(work);
-  work();
-  for (auto& th : pool) th.join();
+  });
   truth.evaluations = evaluations;
   truth.cast_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return truth;
