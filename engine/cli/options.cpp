@@ -62,6 +62,20 @@ int validationExitCode(vk::Device& device) {
   return kExitFailure;
 }
 
+Result<TerrainSettings> terrainSettingsFromOptions(const std::string& quality, uint32_t gridCells,
+                                                   const PlanetDescription& planet) {
+  auto preset = chooseQualityPreset(quality, planet);
+  if (!preset) return preset.error();
+  TerrainSettings settings = terrainSettingsFor(*preset);
+  if (gridCells) settings.gridCells = gridCells;
+  if (auto s = validateTerrainSettings(settings); !s) {
+    Error e = s.error();
+    if (e.field == "grid_cells") e.field = "--grid";
+    return e;
+  }
+  return settings;
+}
+
 int usageError(const Error& error) {
   printError(error.format());
   return kExitUsage;
