@@ -6,7 +6,7 @@
 // values, each an fBm-like sum of octaves of 3-D gradient noise evaluated at the point d * radius_m
 // (so there are no seams and no polar artefacts). A layer may be *modulated* by an earlier layer:
 // its octave sum is scaled by a smooth mask of the modulator's value (mountains only where the
-// continents are high) — the primary source's 4 continent octaves modulating 8 detail octaves.
+// continents are high) — the 4 continent octaves modulating 8 detail octaves of [Frasson 2018].
 #include <cstdint>
 #include <optional>
 #include <string>

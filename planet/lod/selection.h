@@ -1,5 +1,5 @@
 #pragma once
-// CDLOD node selection over the 30 face quadtrees (Strugar 2009; primary source §3.3.1, Listing 3.1).
+// CDLOD node selection over the 30 face quadtrees [Strugar 2009; Frasson 2018, §3.3.1, Listing 3.1].
 // Depth-first from the roots: a node culled by the frustum or the horizon is dropped with its subtree;
 // a node at max depth, or whose bounds miss the ball of radius R(depth) around the camera, is selected;
 // otherwise its four children are visited — those that miss that same ball are selected as *partial*

@@ -1,5 +1,5 @@
 #pragma once
-// The node/payload pool (primary source §3.5): fixed-capacity tables of nodes and payload slots
+// The node/payload pool [Frasson 2018, §3.5.2]: fixed-capacity tables of nodes and payload slots
 // sized from a RAM and a VRAM budget, a prioritised request queue drained under a per-frame dispatch
 // budget with a cap on generations in flight, and eviction by distance and level (least recently
 // used among equals). It is the selection's NodeResidency: a node is drawable only once its payload

@@ -1,6 +1,6 @@
-// Stability at the extremes (issue 8): the real frame (Terrain + HeadlessRenderer, GPU payloads,
-// converged) on three radii — the asteroid (1 km), earthlike (6371 km) and gasgiant-core (7e7 m)
-// presets — with cameras from 1 mm to 1e11 m above the ground, over the 32 polyhedron vertices
+// Stability at the extremes (docs/rendering.md, "Floating origin and precision"; docs/lod.md): the real frame (Terrain
+// + HeadlessRenderer, GPU payloads, converged) on three radii — the asteroid (1 km), earthlike (6371 km) and
+// gasgiant-core (7e7 m) presets — with cameras from 1 mm to 1e11 m above the ground, over the 32 polyhedron vertices
 // (the poles are vertices 0 and 11), face seams and ±180°. Per frame: no NaN/Inf in the read-back
 // colour and depth, the selection, the drawn nodes' payloads and the instance data; zero background
 // pixels inside the silhouette of the lowest drawn surface; payload elevations = CPU reference;

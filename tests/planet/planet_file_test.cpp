@@ -27,7 +27,7 @@ TEST(PlanetFile, EarthlikeLoads) {
   EXPECT_EQ(p.layers[1].kind, LayerKind::kRidged);
   EXPECT_EQ(p.layers[1].modulated_by, 0);
   EXPECT_EQ(p.layers[2].modulated_by, 0);
-  // Twelve octaves like the primary source: 4 continent octaves modulating 8 detail octaves.
+  // Twelve octaves like [Frasson 2018]: 4 continent octaves modulating 8 detail octaves.
   EXPECT_EQ(p.layers[0].octaves + p.layers[1].octaves + p.layers[2].octaves, 12);
   EXPECT_LE(finestWavelength_m(p.layers[2]), 1.0);  // sub-metre detail
   const ElevationRange b = elevationBounds(p);
