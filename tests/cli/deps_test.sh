@@ -29,19 +29,28 @@ done
 
 failures=0
 check_file() {  # check_file PATH WHY
-  local path="$1" why="$2" real pkg
+  local path="$1" why="$2" real owners pkg owner list
   real=$(readlink -f "$path")
-  pkg=$(dpkg -S "$real" 2>/dev/null | head -1 | cut -d: -f1)
-  [[ -z "$pkg" ]] && pkg=$(dpkg -S "$path" 2>/dev/null | head -1 | cut -d: -f1)
-  if [[ -z "$pkg" ]]; then
+  # "pkg1:arch, pkg2, ...: PATH": a directory such as /usr/include has many owners.
+  owners=$(dpkg -S "$real" 2>/dev/null | head -1)
+  [[ -z "$owners" ]] && owners=$(dpkg -S "$path" 2>/dev/null | head -1)
+  owners="${owners%: *}"
+  if [[ -z "$owners" ]]; then
     case "$path" in /usr/local/* | /root/* | /opt/*) echo "FAIL: $why: $path is not from a Debian package"; failures=$((failures + 1)) ;; esac
     return
   fi
-  pkg="${pkg%%,*}"
-  if [[ -z "${CLOSURE[$pkg]:-}" ]]; then
-    echo "FAIL: $why: $path comes from Debian package '$pkg', which scripts/install-deps.sh does not install"
-    failures=$((failures + 1))
-  fi
+  # Covered when any owner is installed by scripts/install-deps.sh (a shared directory is there
+  # whichever of its packages put it there).
+  pkg=""
+  IFS=',' read -ra list <<<"$owners"
+  for owner in "${list[@]}"; do
+    owner="${owner# }"
+    owner="${owner%%:*}"
+    [[ -z "$pkg" ]] && pkg="$owner"
+    [[ -n "${CLOSURE[$owner]:-}" ]] && return
+  done
+  echo "FAIL: $why: $path comes from Debian package '$pkg', which scripts/install-deps.sh does not install"
+  failures=$((failures + 1))
 }
 
 checked=0
