@@ -14,9 +14,9 @@ Result<ImageSize> parseSize(const std::string& text, const std::string& field) {
   char x = 0, extra = 0;
   if (std::sscanf(text.c_str(), "%u%c%u%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') ||
       text.find_first_not_of("0123456789xX") != std::string::npos)
-    return Error{"", 0, 0, field, "expected WxH (for example 1280x720), got '" + text + "'"};
+    return Error::inField(field, "expected WxH (for example 1280x720), got '" + text + "'");
   if (w < 16 || h < 16 || w > 16384 || h > 16384)
-    return Error{"", 0, 0, field, "width and height must be within [16, 16384] pixels, got '" + text + "'"};
+    return Error::inField(field, "width and height must be within [16, 16384] pixels, got '" + text + "'");
   return ImageSize{w, h};
 }
 
@@ -24,17 +24,17 @@ Status checkOutputDirectory(const std::string& dir, const std::string& field) {
   std::filesystem::path path(dir);
   std::error_code ec;
   if (std::filesystem::exists(path, ec) && !std::filesystem::is_directory(path, ec))
-    return Error{"", 0, 0, field, "'" + dir + "' exists and is not a directory"};
+    return Error::inField(field, "'" + dir + "' exists and is not a directory");
   std::filesystem::path parent = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
   if (!std::filesystem::is_directory(parent, ec))
-    return Error{"", 0, 0, field, "directory '" + parent.string() + "' does not exist"};
+    return Error::inField(field, "directory '" + parent.string() + "' does not exist");
   return Ok{};
 }
 
 Status checkImageExtension(const std::string& path, const std::string& field) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if (ext != ".png" && ext != ".exr") return Error{"", 0, 0, field, "'" + path + "' must end in .png or .exr"};
+  if (ext != ".png" && ext != ".exr") return Error::inField(field, "'" + path + "' must end in .png or .exr");
   return Ok{};
 }
 
@@ -60,6 +60,20 @@ int validationExitCode(vk::Device& device) {
   std::string first = device.validation().messages().front();
   printError("vulkan validation " + first + (n > 1 ? " (and " + std::to_string(n - 1) + " more)" : ""));
   return kExitFailure;
+}
+
+Result<TerrainSettings> terrainSettingsFromOptions(const std::string& quality, uint32_t gridCells,
+                                                   const PlanetDescription& planet) {
+  auto preset = chooseQualityPreset(quality, planet);
+  if (!preset) return preset.error();
+  TerrainSettings settings = terrainSettingsFor(*preset);
+  if (gridCells) settings.gridCells = gridCells;
+  if (auto s = validateTerrainSettings(settings); !s) {
+    Error e = s.error();
+    if (e.field == "grid_cells") e.field = "--grid";
+    return e;
+  }
+  return settings;
 }
 
 int usageError(const Error& error) {

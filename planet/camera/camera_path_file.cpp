@@ -49,10 +49,10 @@ Result<double> parseNumber(std::string_view text, std::string_view column, const
   std::string_view digits = text.size() > 1 && text[0] == '+' && text[1] != '-' ? text.substr(1) : text;
   auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
   if (ec == std::errc::result_out_of_range)
-    return Error{file, line, 0, "", fmt::format("{} '{}' is out of range", column, text)};
+    return Error::atLine(file, line, fmt::format("{} '{}' is out of range", column, text));
   if (ec != std::errc() || end != digits.data() + digits.size())
-    return Error{file, line, 0, "", fmt::format("{} '{}' is not a number", column, text)};
-  if (!std::isfinite(v)) return Error{file, line, 0, "", fmt::format("{} must be finite, got '{}'", column, text)};
+    return Error::atLine(file, line, fmt::format("{} '{}' is not a number", column, text));
+  if (!std::isfinite(v)) return Error::atLine(file, line, fmt::format("{} must be finite, got '{}'", column, text));
   return v;
 }
 
@@ -152,11 +152,11 @@ Result<CameraPath> parseCameraPath(std::string_view text, const std::string& fil
   }
   const int lastLine = std::max(lineNumber, 1);
   if (!header)
-    return Error{fileName, lastLine, 0, "",
-                 fmt::format("empty camera path: expected the header '{}'", kCameraPathHeader)};
+    return Error::atLine(fileName, lastLine,
+                         fmt::format("empty camera path: expected the header '{}'", kCameraPathHeader));
   if (keyframes.size() < 2)
-    return Error{fileName, lastLine, 0, "",
-                 fmt::format("a camera path needs at least 2 keyframes, found {}", keyframes.size())};
+    return Error::atLine(fileName, lastLine,
+                         fmt::format("a camera path needs at least 2 keyframes, found {}", keyframes.size()));
   return CameraPath::create(std::move(keyframes), fileName);
 }
 
@@ -164,12 +164,12 @@ Result<CameraPath> loadCameraPath(const std::string& path) {
   // A directory opens as a stream that reads as empty: say what it is instead of "empty path".
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
-    return Error{path, 0, 0, "", "cannot read camera path file: it is a directory"};
+    return Error::inFile(path, "cannot read camera path file: it is a directory");
   std::ifstream in(path, std::ios::binary);
-  if (!in) return Error{path, 0, 0, "", "cannot open camera path file"};
+  if (!in) return Error::inFile(path, "cannot open camera path file");
   std::ostringstream content;
   content << in.rdbuf();
-  if (in.bad()) return Error{path, 0, 0, "", "cannot read camera path file"};
+  if (in.bad()) return Error::inFile(path, "cannot read camera path file");
   // One place that knows every camera path format, so each command taking --path reads them all.
   std::string extension = std::filesystem::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),

@@ -4,6 +4,7 @@
 // (error, crash, kill) leaves no target file and, through the destructor, no temporary either.
 #include "planet/core/error.h"
 
+#include <span>
 #include <string>
 
 namespace globe {
@@ -34,5 +35,17 @@ Status checkWritable(const std::string& path, const std::string& field);
 
 // Writes `content` to `path` atomically.
 Status writeFileAtomically(const std::string& path, const std::string& content, const std::string& field);
+
+// One file of a multi-file output: its name inside the output directory and its whole content.
+struct NamedContent {
+  std::string name;
+  std::string content;
+};
+
+// Writes every file into `dir` so that a failure changes none of them: all temporaries are written
+// first, then renamed in order (so the last file's existence means the earlier ones are complete).
+// On failure the existing files are untouched and no temporaries remain. The one way to write a
+// multi-file output (trade.csv + pareto.svg; the bench report should use it too).
+Status writeFilesAtomically(const std::string& dir, std::span<const NamedContent> files);
 
 }  // namespace globe

@@ -1,5 +1,5 @@
 #pragma once
-// The node/payload pool (primary source §3.5): fixed-capacity tables of nodes and payload slots
+// The node/payload pool [Frasson 2018, §3.5.2]: fixed-capacity tables of nodes and payload slots
 // sized from a RAM and a VRAM budget, a prioritised request queue drained under a per-frame dispatch
 // budget with a cap on generations in flight, and eviction by distance and level (least recently
 // used among equals). It is the selection's NodeResidency: a node is drawable only once its payload
@@ -130,6 +130,13 @@ class PayloadPool final : public NodeResidency {
   void gatherCandidates(size_t count);
   // Evicts candidates_[index] (gathered this dispatch; still a valid victim).
   void evictCandidate(size_t index);
+  // dispatch()'s steps: drop requests not repeated this frame and sort the rest (priority, then
+  // distance); evict for the `want` first requests, returning the index of the next unused victim;
+  // start generations, returning how many pending requests were taken; refresh the stats.
+  void dropUnrequestedAndSort();
+  size_t evictForUrgent(uint32_t want);
+  size_t startJobs(size_t nextVictim);
+  void updateDispatchStats();
   // floor(2 log2(distance / node width)): larger buckets are evicted first.
   int distanceBucket(const NodeRecord& r) const;
   void setWarning(const std::string& message);
