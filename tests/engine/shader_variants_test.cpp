@@ -5,9 +5,11 @@
 // guard counts the entries of a cache pointed at an empty directory: after a few warm-up frames,
 // 20 frames at 20 different cameras (moving floating origin, altitudes from 2 m to 2e7 m so the
 // morph ranges change, sun directions, debug views, generation batches of different sizes) plus
-// elevation batches and sphere previews of different sizes must add none. No timing is asserted.
+// elevation batches and sphere previews with the latitude/longitude grid, of different sizes, must
+// add none. No timing is asserted.
 #include "engine/generation/elevation_sampler.h"
 #include "engine/render/headless_renderer.h"
+#include "engine/render/sphere_grid.h"
 #include "engine/render/sphere_preview.h"
 #include "engine/vk/offscreen_target.h"
 #include "tests/support/gpu_test.h"
@@ -93,6 +95,7 @@ void renderViews(const std::vector<View>& views) {
   HeadlessRenderer renderer(device, {w, h});
   vk::OffscreenTarget sphereTarget(device, {w, h});
   SpherePreview sphere(device);
+  SphereGrid grid(device);
   ElevationSampler sampler(device, model.params(), 512);
   int k = 0;
   for (const View& v : views) {
@@ -107,6 +110,7 @@ void renderViews(const std::vector<View>& views) {
     device.submitAndWait([&](VkCommandBuffer cmd) {
       sphereTarget.begin(cmd, clear);
       sphere.record(cmd, camera, model.radius_m() * (1.0 + 1e-3 * k), v.sun);
+      grid.record(cmd, camera, model.radius_m(), 5.0 + k);
       sphereTarget.end(cmd);
     });
     sampler.sample(std::vector<glm::dvec3>(size_t(1 + 13 * k), glm::normalize(camera.position_m)));
