@@ -31,7 +31,6 @@ namespace {
 
 // The viewer indexes the terrain's per-frame buffers with its FrameRing slot. Two constants until
 // TerrainRenderer takes vk::kFramesInFlight: they must agree.
-static_assert(TerrainRenderer::kFramesInFlight == vk::kFramesInFlight);
 
 constexpr double kFixedStep_s = 1.0 / 60.0;
 constexpr float kSpaceColour[4] = {0.0f, 0.0f, 0.0f, 1.0f};

@@ -128,7 +128,7 @@ void PayloadPool::adjustParentCount(const NodeId& node, int delta) {
   int64_t p = find(node.parent().key());
   if (p < 0) return;
   auto& count = table_[size_t(p)].activeChildren;
-  if (delta < 0 && count == 0) return;  // counts were reset by invalidateAll
+  assert(delta > 0 || count > 0);
   count = uint16_t(int(count) + delta);
 }
 
@@ -215,7 +215,7 @@ void PayloadPool::beginFrame(uint64_t frame, const glm::dvec3& camera_m, uint64_
   camera_m_ = camera_m;
   stats_ = StreamingStats{};
 
-  // Slots retired by invalidateAll become free once the frames that read them are done.
+  // Slots released while a frame in flight still read them become free once those frames are done.
   for (size_t k = 0; k < retiredSlots_.size();) {
     if (retiredSlots_[k].second <= completedFrame_) {
       freeSlots_.push_back(retiredSlots_[k].first);
@@ -231,9 +231,8 @@ void PayloadPool::beginFrame(uint64_t frame, const glm::dvec3& camera_m, uint64_
   for (const GenerationResult& done : finished_) {
     --inFlight_;
     int64_t i = find(done.node.key());
-    if (i < 0 || table_[size_t(i)].state != State::kInFlight || table_[size_t(i)].slot != done.slot ||
-        table_[size_t(i)].generation != generation_) {
-      // Stale (invalidated while generating): the generator is done with the slot, nobody draws it.
+    if (i < 0 || table_[size_t(i)].state != State::kInFlight || table_[size_t(i)].slot != done.slot) {
+      // Not the job this pool started (never expected): the generator is done with the slot, nobody draws it.
       freeSlots_.push_back(done.slot);
       slotOwner_[done.slot] = kEmptyKey;
       if (i >= 0 && table_[size_t(i)].state == State::kInFlight && table_[size_t(i)].slot == done.slot) erase(i);
@@ -371,7 +370,6 @@ size_t PayloadPool::startJobs(size_t nextVictim) {
     freeSlots_.pop_back();
     slotOwner_[r.slot] = r.key;
     r.state = State::kInFlight;
-    r.generation = generation_;
     ++inFlight_;
     jobs_.push_back({NodeId::fromKey(r.key), r.slot});
   }
@@ -399,30 +397,6 @@ void PayloadPool::dispatch() {
   pending_.erase(pending_.begin(), pending_.begin() + std::ptrdiff_t(taken));
   if (!jobs_.empty()) generator_.generate(jobs_);
   updateDispatchStats();
-}
-
-void PayloadPool::invalidateAll() {
-  ++generation_;
-  for (size_t i = 0; i < table_.size(); ++i) {
-    NodeRecord& r = table_[i];
-    if (r.key == kEmptyKey || r.key == kTombstone) continue;
-    if (r.state == State::kResident) {
-      releaseSlot(r.slot, r.lastUsedFrame);
-      r.key = kTombstone;
-      r.state = State::kFree;
-      --liveNodes_;
-      ++tombstones_;
-    } else if (r.state == State::kQueued) {
-      r.key = kTombstone;
-      r.state = State::kFree;
-      --liveNodes_;
-      ++tombstones_;
-    }
-    // In-flight records stay until their (now stale) results come back and free their slots.
-  }
-  for (auto& r : table_)
-    if (r.key != kEmptyKey && r.key != kTombstone) r.activeChildren = 0;
-  pending_.clear();
 }
 
 uint32_t PayloadPool::latencyPercentile(double fraction) const {

@@ -91,8 +91,6 @@ class PayloadPool final : public NodeResidency {
   uint32_t latencyPercentile(double fraction) const;
   // Set once, when the pool first had to skip a request because no slot could be freed.
   const std::string& exhaustionWarning() const { return exhaustionWarning_; }
-  // Drops every payload (e.g. the planet changed); in-flight results are discarded when they arrive.
-  void invalidateAll();
 
  private:
   PayloadPool(const StreamingConfig& config, PayloadGenerator& generator, double radius_m, const FaceMapping& mapping,
@@ -105,7 +103,6 @@ class PayloadPool final : public NodeResidency {
     uint8_t level = 0;
     uint16_t activeChildren = 0;  // children queued-for-generation, in flight or resident
     uint32_t slot = kNoSlot;
-    uint32_t generation = 0;                // bumped by invalidateAll; stale results are dropped
     uint64_t firstRequestFrame = 0;         // first visible (non-prefetch) request
     bool visibleRequested = false;          // a kVisible/kRoot request arrived before resident
     mutable bool prefetchedUnused = false;  // resident from prefetch alone, not yet asked for by the view
@@ -160,7 +157,7 @@ class PayloadPool final : public NodeResidency {
     uint64_t key;
   };
   std::vector<EvictionCandidate> candidates_;  // scratch for dispatch()
-  // Slots dropped by invalidateAll while a frame in flight may still read them: (slot, last use).
+  // Slots released while a frame in flight may still read them: (slot, last use).
   std::vector<std::pair<uint32_t, uint64_t>> retiredSlots_;
   std::vector<NodeRecord> scratchTable_;  // rehash target, same size as table_
   std::vector<int64_t> pending_;          // table indices requested this frame (deduplicated)
@@ -169,7 +166,6 @@ class PayloadPool final : public NodeResidency {
   std::vector<uint64_t> latency_;
   uint64_t frame_ = 0;
   uint64_t completedFrame_ = 0;
-  uint32_t generation_ = 0;
   uint32_t inFlight_ = 0;
   mutable uint64_t prefetchHits_ = 0;
   uint64_t prefetchCompleted_ = 0;
