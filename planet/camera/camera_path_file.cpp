@@ -73,17 +73,18 @@ Result<OptionalColumns> parseHeader(const std::vector<std::string_view>& fields,
   bool fixedOk = fields.size() >= kColumns.size();
   for (std::size_t i = 0; fixedOk && i < kColumns.size(); ++i) fixedOk = fields[i] == kColumns[i];
   if (!fixedOk)
-    return Error{file, line, 0, "",
-                 fmt::format("expected the header '{}', got '{}'", kCameraPathHeader, joined(fields))};
+    return Error::atLine(file, line,
+                         fmt::format("expected the header '{}', got '{}'", kCameraPathHeader, joined(fields)));
   OptionalColumns columns;
   for (std::size_t i = kColumns.size(); i < fields.size(); ++i) {
     bool known = std::find(kOptionalColumns.begin(), kOptionalColumns.end(), fields[i]) != kOptionalColumns.end();
     bool repeated = std::find(columns.names.begin(), columns.names.end(), fields[i]) != columns.names.end();
     if (!known || repeated)
-      return Error{file, line, 0, "",
-                   fmt::format("{} column '{}' in the header (after the seven fixed columns only height_ref and "
-                               "stop may follow, once each)",
-                               repeated ? "repeated" : "unknown", fields[i])};
+      return Error::atLine(
+          file, line,
+          fmt::format("{} column '{}' in the header (after the seven fixed columns only height_ref and "
+                      "stop may follow, once each)",
+                      repeated ? "repeated" : "unknown", fields[i]));
     columns.names.push_back(fields[i]);
   }
   return columns;
@@ -94,10 +95,11 @@ Status parseOptionalField(std::string_view name, std::string_view text, PathKeyf
                           int line) {
   if (name == "height_ref") {
     if (text != "ground" && text != "sphere")
-      return Error{file, line, 0, "", fmt::format("height_ref must be 'ground' or 'sphere', got '{}'", text)};
+      return Error::atLine(file, line, fmt::format("height_ref must be 'ground' or 'sphere', got '{}'", text));
     key.heightReference = text == "sphere" ? HeightReference::sphere : HeightReference::ground;
   } else {
-    if (text != "0" && text != "1") return Error{file, line, 0, "", fmt::format("stop must be 0 or 1, got '{}'", text)};
+    if (text != "0" && text != "1")
+      return Error::atLine(file, line, fmt::format("stop must be 0 or 1, got '{}'", text));
     key.stop = text == "1";
   }
   return Ok{};
@@ -110,11 +112,11 @@ Result<PathKeyframe> parseKeyframe(const std::vector<std::string_view>& fields, 
     return i < kColumns.size() ? kColumns[i] : optional.names[i - kColumns.size()];
   };
   if (fields.size() < expected)
-    return Error{file, line, 0, "",
-                 fmt::format("missing field {} (expected {} fields, found {})", columnName(fields.size()), expected,
-                             fields.size())};
+    return Error::atLine(file, line,
+                         fmt::format("missing field {} (expected {} fields, found {})", columnName(fields.size()),
+                                     expected, fields.size()));
   if (fields.size() > expected)
-    return Error{file, line, 0, "", fmt::format("too many fields (expected {}, found {})", expected, fields.size())};
+    return Error::atLine(file, line, fmt::format("too many fields (expected {}, found {})", expected, fields.size()));
   std::array<double, 7> v{};
   for (std::size_t i = 0; i < kColumns.size(); ++i) {
     auto number = parseNumber(fields[i], kColumns[i], file, line);
