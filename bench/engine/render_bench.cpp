@@ -25,7 +25,7 @@ const PlanetDescription& planet() { return bench::earthlike(); }
 void BM_TerrainFrame(benchmark::State& state) {
   const int index = int(state.range(0));
   static const ElevationModel model(planet());
-  QualityPreset quality = QualityPreset::Balanced;
+  QualityPreset quality = QualityPreset::kBalanced;
   if (const char* q = std::getenv("GLOBE_BENCH_QUALITY")) {
     auto parsed = parseQualityPreset(q, "GLOBE_BENCH_QUALITY");
     if (!parsed) {

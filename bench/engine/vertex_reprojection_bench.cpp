@@ -1,4 +1,4 @@
-// The primary source's design decision, measured on the CPU (docs/tradeoffs.md): per vertex per
+// The design decision of [Frasson 2018, §3.3], measured on the CPU (docs/tradeoffs.md): per vertex per
 // frame, either read a stored node-relative float position (what globe does: offset + position,
 // minus the camera as a float pair), or re-project a stored height in double every frame (face
 // mapping of the grid point, normalise, scale by R + h, subtract the camera in double, round).

@@ -1,4 +1,4 @@
-// Tessellation quality and mapping cost (docs/tessellation.md; issue 8). One command prints the table:
+// Tessellation quality and mapping cost (docs/tessellation.md). One command prints the table:
 //   build/tess/bin/planet_bench --benchmark_filter=Tessellation
 // Tessellation/Quality/<mapping>: one measurement of the 128-cells-per-edge grid per iteration; the
 //   counters are the table's columns (area max/min, area CV, angle min/max in degrees, edge max/min).

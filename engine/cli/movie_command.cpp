@@ -43,7 +43,7 @@ bool endsWithMp4(const std::string& file) {
 Result<MovieSettings> movieSettings(const MovieOptions& o, const PlanetDescription& planet) {
   MovieSettings s;
   if (!isSupportedFrameRate(o.fps))
-    return Error{"", 0, 0, "--fps", fmt::format("must be 24, 25, 30, 50 or 60, got {}", o.fps)};
+    return Error::inField("--fps", fmt::format("must be 24, 25, 30, 50 or 60, got {}", o.fps));
   s.fps = o.fps;
   auto size = parseSize(o.size, "--size");
   if (!size) return size.error();
@@ -52,13 +52,13 @@ Result<MovieSettings> movieSettings(const MovieOptions& o, const PlanetDescripti
   if (endsWithMp4(o.out)) {
     s.format = MovieFormat::mp4;
     if (s.width % 2 || s.height % 2)
-      return Error{"", 0, 0, "--size", fmt::format("H.264 needs an even width and height, got {}", o.size)};
+      return Error::inField("--size", fmt::format("H.264 needs an even width and height, got {}", o.size));
     if (auto st = checkWritable(o.out, "--out"); !st) return st.error();
   } else {
     if (std::filesystem::path(o.out).has_extension())
-      return Error{"", 0, 0, "--out", "must be a directory (for a frame sequence) or a .mp4 file, got '" + o.out + "'"};
+      return Error::inField("--out", "must be a directory (for a frame sequence) or a .mp4 file, got '" + o.out + "'");
     if (o.format != "png" && o.format != "exr")
-      return Error{"", 0, 0, "--format", "must be png or exr, got '" + o.format + "'"};
+      return Error::inField("--format", "must be png or exr, got '" + o.format + "'");
     s.format = o.format == "exr" ? MovieFormat::exr : MovieFormat::png;
     if (auto st = checkOutputDirectory(o.out, "--out"); !st) return st.error();
   }

@@ -32,16 +32,15 @@ Result<ImageSize> parseSize(const std::string& text, const std::string& field) {
   const size_t x = text.find_first_of("xX");
   const auto w = x == std::string::npos ? std::nullopt : parsePixels(std::string_view(text).substr(0, x));
   const auto h = x == std::string::npos ? std::nullopt : parsePixels(std::string_view(text).substr(x + 1));
-  if (!w || !h) return Error{"", 0, 0, field, "expected WxH (for example 1280x720), got '" + text + "'"};
+  if (!w || !h) return Error::inField(field, "expected WxH (for example 1280x720), got '" + text + "'");
   if (*w < kMinImageSidePx || *h < kMinImageSidePx || *w > kMaxImageSidePx || *h > kMaxImageSidePx)
-    return Error{"", 0, 0, field,
-                 fmt::format("width and height must be within [{}, {}] pixels, got '{}'", kMinImageSidePx,
-                             kMaxImageSidePx, text)};
+    return Error::inField(field, fmt::format("width and height must be within [{}, {}] pixels, got '{}'",
+                                             kMinImageSidePx, kMaxImageSidePx, text));
   const std::uint64_t needMiB = (*w * *h * kRenderBytesPerPixel) >> 20;
   if (needMiB > kMaxImageMemoryMiB)
-    return Error{"", 0, 0, field,
-                 fmt::format("{} would need about {} MiB of image memory, more than the limit of {} MiB", text, needMiB,
-                             kMaxImageMemoryMiB)};
+    return Error::inField(
+        field, fmt::format("{} would need about {} MiB of image memory, more than the limit of {} MiB", text, needMiB,
+                           kMaxImageMemoryMiB));
   return ImageSize{static_cast<uint32_t>(*w), static_cast<uint32_t>(*h)};
 }
 
@@ -54,17 +53,17 @@ Status checkOutputDirectory(const std::string& dir, const std::string& field) {
   std::filesystem::path path(dir);
   std::error_code ec;
   if (std::filesystem::exists(path, ec) && !std::filesystem::is_directory(path, ec))
-    return Error{"", 0, 0, field, "'" + dir + "' exists and is not a directory"};
+    return Error::inField(field, "'" + dir + "' exists and is not a directory");
   std::filesystem::path parent = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
   if (!std::filesystem::is_directory(parent, ec))
-    return Error{"", 0, 0, field, "directory '" + parent.string() + "' does not exist"};
+    return Error::inField(field, "directory '" + parent.string() + "' does not exist");
   return Ok{};
 }
 
 Status checkImageExtension(const std::string& path, const std::string& field) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if (ext != ".png" && ext != ".exr") return Error{"", 0, 0, field, "'" + path + "' must end in .png or .exr"};
+  if (ext != ".png" && ext != ".exr") return Error::inField(field, "'" + path + "' must end in .png or .exr");
   return Ok{};
 }
 
@@ -90,6 +89,20 @@ int validationExitCode(vk::Device& device) {
   std::string first = device.validation().messages().front();
   printError("vulkan validation " + first + (n > 1 ? " (and " + std::to_string(n - 1) + " more)" : ""));
   return kExitFailure;
+}
+
+Result<TerrainSettings> terrainSettingsFromOptions(const std::string& quality, uint32_t gridCells,
+                                                   const PlanetDescription& planet) {
+  auto preset = chooseQualityPreset(quality, planet);
+  if (!preset) return preset.error();
+  TerrainSettings settings = terrainSettingsFor(*preset);
+  if (gridCells) settings.gridCells = gridCells;
+  if (auto s = validateTerrainSettings(settings); !s) {
+    Error e = s.error();
+    if (e.field == "grid_cells") e.field = "--grid";
+    return e;
+  }
+  return settings;
 }
 
 int usageError(const Error& error) {

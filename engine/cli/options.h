@@ -1,5 +1,6 @@
 #pragma once
 // Option parsing shared by the subcommands: sizes, device selection, error reporting.
+#include "engine/render/quality.h"
 #include "engine/vk/device.h"
 #include "planet/core/error.h"
 
@@ -45,6 +46,11 @@ int validationExitCode(vk::Device& device);
 // Refuses an empty value of an option whose absence means "the default" (--quality ""): an empty
 // value is a mistake, not a request for the default.
 CLI::Validator nonEmptyValue();
+
+// The settings of --quality (empty: the planet's default_quality) with --grid (0: the preset's grid)
+// applied; errors name the options.
+Result<TerrainSettings> terrainSettingsFromOptions(const std::string& quality, uint32_t gridCells,
+                                                   const PlanetDescription& planet);
 
 // Prints the error and returns kExitUsage.
 int usageError(const Error& error);

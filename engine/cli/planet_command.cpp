@@ -113,11 +113,11 @@ Result<glm::dvec2> parseLatLon(const std::string& text) {
   double lon = 0.0;
   char extra = 0;
   if (std::sscanf(text.c_str(), "%lf,%lf%c", &lat, &lon, &extra) != 2) {
-    return Error{"", 0, 0, "--at", "expected LAT,LON in degrees (for example 27.99,86.93), got '" + text + "'"};
+    return Error::inField("--at", "expected LAT,LON in degrees (for example 27.99,86.93), got '" + text + "'");
   }
   if (!std::isfinite(lat) || !std::isfinite(lon))
-    return Error{"", 0, 0, "--at", "latitude and longitude must be finite"};
-  if (lat < -90.0 || lat > 90.0) return Error{"", 0, 0, "--at", "latitude must be within [-90, 90] degrees"};
+    return Error::inField("--at", "latitude and longitude must be finite");
+  if (lat < -90.0 || lat > 90.0) return Error::inField("--at", "latitude must be within [-90, 90] degrees");
   return glm::dvec2(lat, lon);
 }
 

@@ -39,7 +39,7 @@ bool hasExtension(const std::string& path, const char* ext) {
 
 Status checkWidth(std::uint32_t width, const std::string& field) {
   if (width < 2 || width > 65536 || width % 2 != 0) {
-    return Error{"", 0, 0, field, "must be even and within [2, 65536] pixels, got " + std::to_string(width)};
+    return Error::inField(field, "must be even and within [2, 65536] pixels, got " + std::to_string(width));
   }
   return Ok{};
 }
@@ -47,15 +47,15 @@ Status checkWidth(std::uint32_t width, const std::string& field) {
 // Everything a user can get wrong is refused before any work, with nothing written.
 Status checkOptions(ExportOptions& o) {
   if (auto s = checkWidth(o.width, "--width"); !s) return s;
-  if (!hasExtension(o.out, ".exr")) return Error{"", 0, 0, "--out", "'" + o.out + "' must end in .exr"};
+  if (!hasExtension(o.out, ".exr")) return Error::inField("--out", "'" + o.out + "' must end in .exr");
   if (auto s = checkWritable(o.out, "--out"); !s) return s;
   if (!o.png.empty()) {
-    if (!hasExtension(o.png, ".png")) return Error{"", 0, 0, "--png", "'" + o.png + "' must end in .png"};
+    if (!hasExtension(o.png, ".png")) return Error::inField("--png", "'" + o.png + "' must end in .png");
     if (auto s = checkWritable(o.png, "--png"); !s) return s;
     if (o.png_width == 0) o.png_width = std::min<std::uint32_t>(o.width, 4096);
     if (auto s = checkWidth(o.png_width, "--png-width"); !s) return s;
     if (std::filesystem::absolute(o.png) == std::filesystem::absolute(o.out)) {
-      return Error{"", 0, 0, "--png", "must differ from --out"};
+      return Error::inField("--png", "must differ from --out");
     }
   }
   return Ok{};

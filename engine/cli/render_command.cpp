@@ -29,6 +29,34 @@ struct RenderOptions {
   std::string quality;     // empty = the planet's default_quality
 };
 
+// The reference sphere, lit by the default sun.
+ImageRgba renderSphere(vk::Device& device, const Camera& camera, const ElevationModel& model, const ImageSize& size) {
+  vk::OffscreenTarget target(device, {size.width, size.height});
+  SpherePreview preview(device);
+  const float clear[4] = {0, 0, 0, 1};
+  device.submitAndWait([&](VkCommandBuffer cmd) {
+    target.begin(cmd, clear);
+    preview.record(cmd, camera, model.radius_m(), defaultSunDirection(camera.position_m));
+    target.end(cmd);
+  });
+  return toImage(target.readback(), camera);
+}
+
+// One converged terrain frame: waits until every node the view needs is resident before drawing.
+Result<ImageRgba> renderTerrain(vk::Device& device, const Camera& camera, const ElevationModel& model,
+                                const PlanetDescription& planet, TerrainSettings settings, const ImageSize& size) {
+  settings.style.sunDirection = defaultSunDirection(camera.position_m);
+  settings.style.ramp = planet.colour_ramp;
+  auto terrain = Terrain::create(device, model, settings);
+  if (!terrain) return terrain.error();
+  HeadlessRenderer renderer(device, {size.width, size.height});
+  FrameStats stats = renderer.renderFrame(**terrain, camera, true);
+  std::printf("%u nodes (%u partial), %llu triangles, %u payloads resident (%.1f MiB), frame %.1f ms (GPU %.1f ms)\n",
+              stats.nodes_selected, stats.nodes_partial, (unsigned long long)stats.triangles,
+              (*terrain)->pool().stats().residentNodes, stats.resident_mib, stats.frame_ms, stats.gpu_ms);
+  return toImage(renderer.readback(), camera);
+}
+
 int runRender(const RenderOptions& o) {
   auto pose = parsePose(o.at, "--at");
   if (!pose) return usageError(pose.error());
@@ -38,15 +66,8 @@ int runRender(const RenderOptions& o) {
   if (auto s = checkImageExtension(o.out, "--out"); !s) return usageError(s.error());
   auto planet = loadPlanetFile(o.planet);
   if (!planet) return usageError(planet.error());
-  auto quality = chooseQualityPreset(o.quality, *planet);
-  if (!quality) return usageError(quality.error());
-  TerrainSettings settings = terrainSettingsFor(*quality);
-  if (o.gridCells) settings.gridCells = o.gridCells;
-  if (auto s = validateTerrainSettings(settings); !s) {
-    Error e = s.error();
-    if (e.field == "grid_cells") e.field = "--grid";
-    return usageError(e);
-  }
+  auto settings = terrainSettingsFromOptions(o.quality, o.gridCells, *planet);
+  if (!settings) return usageError(settings.error());
 
   ElevationModel model(*planet);
   double aspect = double(size->width) / double(size->height);
@@ -55,33 +76,17 @@ int runRender(const RenderOptions& o) {
   // (Terrain::cameraGroundRadius), and a low camera under it would see through the planet.
   double ground = model.radius_m() + model.elevation_m(down);
   if (o.mode == "terrain")
-    ground = std::max(ground, drawnSurfaceRadius(model, down, settings.ranges.maxDepth, settings.gridCells));
+    ground = std::max(ground, drawnSurfaceRadius(model, down, settings->ranges.maxDepth, settings->gridCells));
   Camera camera = cameraFromPose(*pose, ground, model.radius_m(), aspect);
 
   vk::Device device(deviceOptions(o.device));
   ImageRgba image;
   if (o.mode == "sphere") {
-    vk::OffscreenTarget target(device, {size->width, size->height});
-    SpherePreview preview(device);
-    const float clear[4] = {0, 0, 0, 1};
-    device.submitAndWait([&](VkCommandBuffer cmd) {
-      target.begin(cmd, clear);
-      preview.record(cmd, camera, model.radius_m(), defaultSunDirection(camera.position_m));
-      target.end(cmd);
-    });
-    image = toImage(target.readback(), camera);
+    image = renderSphere(device, camera, model, *size);
   } else {
-    settings.style.sunDirection = defaultSunDirection(camera.position_m);
-    settings.style.ramp = planet->colour_ramp;
-    auto terrain = Terrain::create(device, model, settings);
+    auto terrain = renderTerrain(device, camera, model, *planet, *settings, *size);
     if (!terrain) return usageError(terrain.error());
-    HeadlessRenderer renderer(device, {size->width, size->height});
-    // Waits until every node the view needs is resident before drawing the frame it writes.
-    FrameStats stats = renderer.renderFrame(**terrain, camera, true);
-    image = toImage(renderer.readback(), camera);
-    std::printf("%u nodes (%u partial), %llu triangles, %u payloads resident (%.1f MiB), frame %.1f ms (GPU %.1f ms)\n",
-                stats.nodes_selected, stats.nodes_partial, (unsigned long long)stats.triangles,
-                (*terrain)->pool().stats().residentNodes, stats.resident_mib, stats.frame_ms, stats.gpu_ms);
+    image = std::move(*terrain);
   }
   if (auto s = writeImage(o.out, image, "--out"); !s) {
     printError(s.error().format());

@@ -1,7 +1,7 @@
 // globe trade: measures the speed/accuracy trade of the terrain settings (docs/tradeoffs.md). Each
 // configuration is rendered converged at each camera; frame time, selection time, triangles, memory
 // and generation cost are recorded, and the read-back depth is compared with the exact planet
-// (engine/render/screen_error.h). Writes DIR/trade.csv and DIR/pareto.svg.
+// (engine/render/screen_error.h). Writes DIR/trade.csv and DIR/pareto.svg, both or neither.
 #include "commands.h"
 #include "engine/render/headless_renderer.h"
 #include "engine/render/quality.h"
@@ -34,7 +34,7 @@ struct TradeOptions {
   std::string size;      // empty = 1280x720, --quick 320x180
   std::string path;      // path sampled for extra cameras (full sweep only)
   std::string cameras;   // comma-separated camera names to keep; empty = all
-  uint32_t frames = 0;   // 0 = 11, --quick 5
+  uint32_t frames = 0;   // 0 = 11, --quick 3
   uint32_t stride = 0;   // 0 = 4
   uint32_t configs = 0;  // 0 = all
   bool quick = false;
@@ -101,7 +101,7 @@ std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::st
   }
   // The presets and the knobs that do not change the triangle count much first: --configs N keeps
   // the first N.
-  for (QualityPreset p : {QualityPreset::Fast, QualityPreset::Balanced, QualityPreset::Exact})
+  for (QualityPreset p : {QualityPreset::kFast, QualityPreset::kBalanced, QualityPreset::kExact})
     add(std::string(qualityPresetName(p)), terrainSettingsFor(p));
   vary(depth, {16, 20, 24});
   vary(morph, {0.25, 0.5});
@@ -133,33 +133,62 @@ std::string loadAverage() {
   return "unknown";
 }
 
-int runTrade(const TradeOptions& o) {
-  // Everything is checked before DIR is touched: bad input writes nothing.
-  auto planet = loadPlanetFile(o.planet);
-  if (!planet) return usageError(planet.error());
-  auto preset = chooseQualityPreset(o.quality, *planet);
-  if (!preset) return usageError(preset.error());
-  auto size = parseSize(o.size.empty() ? (o.quick ? "320x180" : "1280x720") : o.size, "--size");
-  if (!size) return usageError(size.error());
-  const uint32_t frames = o.frames ? o.frames : (o.quick ? 3 : 11);
-  const uint32_t stride = o.stride ? o.stride : 4;
-  if (frames > 1000) return usageError({"", 0, 0, "--frames", "must be within [1, 1000]"});
-  if (stride > 64) return usageError({"", 0, 0, "--stride", "must be within [1, 64]"});
+// The checked inputs of one run: everything that can be wrong with the command line or its files.
+struct TradeInputs {
+  PlanetDescription planet;
+  QualityPreset preset = QualityPreset::kBalanced;
+  ImageSize size;
+  uint32_t frames = 0;
+  uint32_t stride = 0;  // screen error sampled every `stride` px
   std::optional<CameraPath> path;
+};
+
+// Everything is checked before DIR is touched: bad input writes nothing.
+Result<TradeInputs> checkTradeInputs(const TradeOptions& o) {
+  TradeInputs in;
+  auto planet = loadPlanetFile(o.planet);
+  if (!planet) return planet.error();
+  in.planet = std::move(*planet);
+  auto preset = chooseQualityPreset(o.quality, in.planet);
+  if (!preset) return preset.error();
+  in.preset = *preset;
+  auto size = parseSize(o.size.empty() ? (o.quick ? "320x180" : "1280x720") : o.size, "--size");
+  if (!size) return size.error();
+  in.size = *size;
+  in.frames = o.frames ? o.frames : (o.quick ? 3 : 11);
+  in.stride = o.stride ? o.stride : 4;
+  if (in.frames > 1000) return Error::inField("--frames", "must be within [1, 1000]");
+  if (in.stride > 64) return Error::inField("--stride", "must be within [1, 64]");
   if (!o.quick && !o.path.empty()) {
     auto p = loadCameraPath(o.path);
-    if (!p) return usageError(p.error());
-    path = std::move(*p);
+    if (!p) return p.error();
+    in.path = std::move(*p);
   }
-  if (auto s = checkOutputDirectory(o.out, "--out"); !s) return usageError(s.error());
-  std::filesystem::path dir(o.out);
-  std::error_code ec;
+  if (auto s = checkOutputDirectory(o.out, "--out"); !s) return s.error();
+  return in;
+}
 
-  ElevationModel model(*planet);
-  TerrainSettings base = terrainSettingsFor(*preset);
-  std::vector<TradeConfig> configs = tradeConfigs(base, std::string(qualityPresetName(*preset)), o.quick);
-  if (o.configs) configs.resize(std::min<size_t>(configs.size(), o.configs));
-  const double aspect = double(size->width) / double(size->height);
+// --cameras: keeps the named cameras; an unknown name is an error listing the known ones.
+Status keepNamedCameras(const std::string& names, std::vector<TradeCamera>& cameras) {
+  if (names.empty()) return Ok{};
+  std::vector<TradeCamera> kept;
+  std::string list = "," + names + ",";
+  for (const TradeCamera& c : cameras)
+    if (list.find("," + c.name + ",") != std::string::npos) kept.push_back(c);
+  size_t count = size_t(std::count(names.begin(), names.end(), ',')) + 1;
+  if (kept.size() != count) {
+    std::string known;
+    for (const TradeCamera& c : cameras) known += (known.empty() ? "" : ", ") + c.name;
+    return Error::inField("--cameras", "unknown camera in '" + names + "' (known: " + known + ")");
+  }
+  cameras = std::move(kept);
+  return Ok{};
+}
+
+// The standard cameras (two with --quick) and, for the full sweep, two views along the path.
+Result<std::vector<TradeCamera>> tradeCameras(const TradeOptions& o, const TradeInputs& in,
+                                              const ElevationModel& model) {
+  const double aspect = double(in.size.width) / double(in.size.height);
   auto ground = [&](const glm::dvec3& d) { return model.radius_m() + model.elevation_m(d); };
   std::vector<TradeCamera> cameras;
   for (int i : o.quick ? std::vector<int>{2, 3} : std::vector<int>{0, 1, 2, 3, 4}) {
@@ -168,114 +197,120 @@ int runTrade(const TradeOptions& o) {
         {standardCameraName(i), cameraFromPose(pose, ground(directionFromLatLon(pose.latitude_deg, pose.longitude_deg)),
                                                model.radius_m(), aspect)});
   }
-  if (path)
+  if (in.path)
     for (double t : {7.0, 12.0})
-      if (t >= path->startTime_s() && t <= path->endTime_s())
-        cameras.push_back({"path@" + formatFixed(t, 0) + "s", path->cameraAt(t, model.radius_m(), aspect, ground)});
+      if (t >= in.path->startTime_s() && t <= in.path->endTime_s())
+        cameras.push_back({"path@" + formatFixed(t, 0) + "s", in.path->cameraAt(t, model.radius_m(), aspect, ground)});
+  if (auto s = keepNamedCameras(o.cameras, cameras); !s) return s.error();
+  return cameras;
+}
 
-  if (!o.cameras.empty()) {
-    std::vector<TradeCamera> kept;
-    std::string list = "," + o.cameras + ",";
-    for (const TradeCamera& c : cameras)
-      if (list.find("," + c.name + ",") != std::string::npos) kept.push_back(c);
-    size_t names = size_t(std::count(o.cameras.begin(), o.cameras.end(), ',')) + 1;
-    if (kept.size() != names) {
-      std::string known;
-      for (const TradeCamera& c : cameras) known += (known.empty() ? "" : ", ") + c.name;
-      return usageError({"", 0, 0, "--cameras", "unknown camera in '" + o.cameras + "' (known: " + known + ")"});
-    }
-    cameras = std::move(kept);
-  }
-  std::printf("globe trade: %zu configurations x %zu cameras at %ux%u, %u frames each, error every %u px; load %s\n",
-              configs.size(), cameras.size(), size->width, size->height, frames, stride, loadAverage().c_str());
-  std::fflush(stdout);
-  auto start = std::chrono::steady_clock::now();
-  // The truth does not depend on the configuration: one CPU ray cast per camera.
+// The truth does not depend on the configuration: one CPU ray cast per camera.
+std::vector<SurfaceTruth> castTruths(const ElevationModel& model, const std::vector<TradeCamera>& cameras,
+                                     const TradeInputs& in) {
   std::vector<SurfaceTruth> truths;
-  {
-    ProgressBar progress("trade: exact surface");
-    for (size_t i = 0; i < cameras.size(); ++i) {
-      truths.push_back(castSurfaceTruth(model, cameras[i].camera, size->width, size->height, stride));
-      progress.update(double(i + 1) / double(cameras.size()));
-    }
+  ProgressBar progress("trade: exact surface");
+  for (size_t i = 0; i < cameras.size(); ++i) {
+    truths.push_back(castSurfaceTruth(model, cameras[i].camera, in.size.width, in.size.height, in.stride));
+    progress.update(double(i + 1) / double(cameras.size()));
   }
-  double truth_ms = 0;
-  for (const SurfaceTruth& t : truths) truth_ms += t.cast_ms;
+  return truths;
+}
 
-  vk::Device device(deviceOptions(o.device));
-  HeadlessRenderer renderer(device, {size->width, size->height});
-  // The device's first frames pay one-time costs (pipeline compilation in the driver, first
-  // allocations): measured first, they inflated the first configuration by 1.5-2.5x. One throwaway
-  // converged frame of the first configuration takes them.
-  {
-    TerrainSettings settings = configs.front().settings;
-    settings.style.ramp = planet->colour_ramp;
-    auto terrain = Terrain::create(device, model, settings);
-    if (!terrain) return usageError(terrain.error());
-    renderer.renderFrame(**terrain, cameras.front().camera, true);
-    renderer.renderFrame(**terrain, cameras.front().camera, true);
+// The knobs of one measurement and its timings, from the frames rendered.
+TradeRow tradeRow(const TradeConfig& config, const TradeCamera& camera, const TerrainSettings& settings,
+                  const TradeInputs& in, std::vector<double> frame_ms, std::vector<double> select_ms,
+                  const FrameStats& stats) {
+  std::sort(frame_ms.begin(), frame_ms.end());
+  std::sort(select_ms.begin(), select_ms.end());
+  TradeRow row;
+  row.config = config.name;
+  row.camera = camera.name;
+  row.gridCells = settings.gridCells;
+  row.distanceMultiplier = settings.ranges.distanceMultiplier;
+  row.maxDepth = settings.ranges.maxDepth;
+  row.morphFraction = settings.ranges.morphFraction;
+  row.generation = settings.generation == GenerationPrecision::kFloat ? "float" : "double";
+  row.positions = settings.vertexPositions == VertexPositions::kReprojected ? "reprojected" : "stored";
+  row.width = in.size.width;
+  row.height = in.size.height;
+  row.frameMedian_ms = nearestRankPercentile(frame_ms, 50);
+  row.frameP95_ms = nearestRankPercentile(frame_ms, 95);
+  row.select_ms = nearestRankPercentile(select_ms, 50);
+  row.converged = stats.converged;
+  row.triangles = stats.triangles;
+  row.nodes = stats.nodes_selected;
+  row.resident_mib = stats.resident_mib;
+  return row;
+}
+
+// What one run renders with: the device, its renderer and the shared inputs.
+struct TradeRig {
+  vk::Device& device;
+  HeadlessRenderer& renderer;
+  const ElevationModel& model;
+  const TradeInputs& in;
+};
+
+// One configuration at one camera: converged, then `frames` timed frames, then the screen error.
+Result<TradeRow> measure(TradeRig& rig, const TradeConfig& config, const TradeCamera& camera,
+                         const SurfaceTruth& truth) {
+  TerrainSettings settings = config.settings;
+  settings.style.sunDirection = defaultSunDirection(camera.camera.position_m);
+  settings.style.ramp = rig.in.planet.colour_ramp;
+  // A fresh terrain per camera: resident memory and generation cost belong to this view alone.
+  auto terrain = Terrain::create(rig.device, rig.model, settings);
+  if (!terrain) return terrain.error();
+  rig.renderer.renderFrame(**terrain, camera.camera, true);  // converge + warm-up
+  std::vector<double> frame_ms, select_ms;
+  FrameStats stats;
+  for (uint32_t k = 0; k < rig.in.frames; ++k) {
+    stats = rig.renderer.renderFrame(**terrain, camera.camera, true);
+    frame_ms.push_back(stats.frame_ms);
+    select_ms.push_back(stats.select_ms);
   }
+  TradeRow row = tradeRow(config, camera, settings, rig.in, std::move(frame_ms), std::move(select_ms), stats);
+  const GpuPayloadGenerator& gen = (*terrain)->generator();
+  row.genPerNode_ms = gen.nodesGenerated() ? gen.gpuTime_ms() / double(gen.nodesGenerated()) : 0.0;
+  row.error = measureScreenError(truth, rig.renderer.readback(), camera.camera);
+  return row;
+}
+
+// The device's first frames pay one-time costs (pipeline compilation in the driver, first
+// allocations): measured first, they inflated the first configuration by 1.5-2.5x. One throwaway
+// converged frame of the first configuration takes them.
+Status warmUp(TradeRig& rig, const TradeConfig& config, const TradeCamera& camera) {
+  TerrainSettings settings = config.settings;
+  settings.style.ramp = rig.in.planet.colour_ramp;
+  auto terrain = Terrain::create(rig.device, rig.model, settings);
+  if (!terrain) return terrain.error();
+  rig.renderer.renderFrame(**terrain, camera.camera, true);
+  rig.renderer.renderFrame(**terrain, camera.camera, true);
+  return Ok{};
+}
+
+// Every configuration at every camera; each configuration's cameras are followed by their worst.
+Result<std::vector<TradeRow>> measureAll(TradeRig& rig, const std::vector<TradeConfig>& configs,
+                                         const std::vector<TradeCamera>& cameras,
+                                         const std::vector<SurfaceTruth>& truths) {
   std::vector<TradeRow> rows;
   ProgressBar progress("trade: configurations");
   size_t done = 0;
   for (const TradeConfig& config : configs) {
     std::vector<TradeRow> perCamera;
     for (size_t ci = 0; ci < cameras.size(); ++ci) {
-      const Camera& camera = cameras[ci].camera;
-      TerrainSettings settings = config.settings;
-      settings.style.sunDirection = defaultSunDirection(camera.position_m);
-      settings.style.ramp = planet->colour_ramp;
-      // A fresh terrain per camera: resident memory and generation cost belong to this view alone.
-      auto terrain = Terrain::create(device, model, settings);
-      if (!terrain) return usageError(terrain.error());
-      renderer.renderFrame(**terrain, camera, true);  // converge + warm-up
-      std::vector<double> frame_ms, select_ms;
-      FrameStats stats;
-      for (uint32_t k = 0; k < frames; ++k) {
-        stats = renderer.renderFrame(**terrain, camera, true);
-        frame_ms.push_back(stats.frame_ms);
-        select_ms.push_back(stats.select_ms);
-      }
-      std::sort(frame_ms.begin(), frame_ms.end());
-      std::sort(select_ms.begin(), select_ms.end());
-      TradeRow row;
-      row.config = config.name;
-      row.camera = cameras[ci].name;
-      row.gridCells = settings.gridCells;
-      row.distanceMultiplier = settings.ranges.distanceMultiplier;
-      row.maxDepth = settings.ranges.maxDepth;
-      row.morphFraction = settings.ranges.morphFraction;
-      row.generation = settings.generation == GenerationPrecision::kFloat ? "float" : "double";
-      row.positions = settings.vertexPositions == VertexPositions::kReprojected ? "reprojected" : "stored";
-      row.width = size->width;
-      row.height = size->height;
-      row.frameMedian_ms = nearestRankPercentile(frame_ms, 50);
-      row.frameP95_ms = nearestRankPercentile(frame_ms, 95);
-      row.select_ms = nearestRankPercentile(select_ms, 50);
-      row.converged = stats.converged;
-      row.triangles = stats.triangles;
-      row.nodes = stats.nodes_selected;
-      row.resident_mib = stats.resident_mib;
-      const GpuPayloadGenerator& gen = (*terrain)->generator();
-      row.genPerNode_ms = gen.nodesGenerated() ? gen.gpuTime_ms() / double(gen.nodesGenerated()) : 0.0;
-      row.error = measureScreenError(truths[ci], renderer.readback(), camera);
-      perCamera.push_back(row);
+      auto row = measure(rig, config, cameras[ci], truths[ci]);
+      if (!row) return row.error();
+      perCamera.push_back(std::move(*row));
       progress.update(double(++done) / double(configs.size() * cameras.size()));
     }
     rows.insert(rows.end(), perCamera.begin(), perCamera.end());
     rows.push_back(aggregateTradeRows(perCamera));
   }
-  double total_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return rows;
+}
 
-  std::filesystem::create_directories(dir, ec);
-  if (ec) return usageError({"", 0, 0, "--out", "cannot create '" + o.out + "': " + ec.message()});
-  std::string title = "globe trade: " + planet->name + ", " + std::to_string(size->width) + "x" +
-                      std::to_string(size->height) + ", " + device.name() + ", load " + loadAverage();
-  if (auto s = writeTradeReport(o.out, rows, title); !s) {
-    printError(s.error().format());
-    return kExitFailure;
-  }
-  if (int code = validationExitCode(device); code != kExitOk) return code;
+void printWorstRows(const std::vector<TradeRow>& rows) {
   std::printf("%-34s %9s %9s %9s %9s %9s %7s\n", "config (worst camera)", "median_ms", "p95_ms", "err_p50", "err_p95",
               "err_max", "triMax");
   for (const TradeRow& r : rows)
@@ -283,6 +318,48 @@ int runTrade(const TradeOptions& o) {
       std::printf("%-34s %9.2f %9.2f %9.3f %9.3f %9.2f %7llu%s\n", r.config.c_str(), r.frameMedian_ms, r.frameP95_ms,
                   r.error.p50_px, r.error.p95_px, r.error.max_px, (unsigned long long)r.triangles,
                   r.converged ? "" : "  (not converged: the pool could not hold the view)");
+}
+
+int runTrade(const TradeOptions& o) {
+  auto in = checkTradeInputs(o);
+  if (!in) return usageError(in.error());
+  ElevationModel model(in->planet);
+  std::vector<TradeConfig> configs =
+      tradeConfigs(terrainSettingsFor(in->preset), std::string(qualityPresetName(in->preset)), o.quick);
+  if (o.configs) configs.resize(std::min<size_t>(configs.size(), o.configs));
+  auto cameras = tradeCameras(o, *in, model);
+  if (!cameras) return usageError(cameras.error());
+  std::printf("globe trade: %zu configurations x %zu cameras at %ux%u, %u frames each, error every %u px; load %s\n",
+              configs.size(), cameras->size(), in->size.width, in->size.height, in->frames, in->stride,
+              loadAverage().c_str());
+  std::fflush(stdout);
+  auto start = std::chrono::steady_clock::now();
+  const std::vector<SurfaceTruth> truths = castTruths(model, *cameras, *in);
+  double truth_ms = 0;
+  for (const SurfaceTruth& t : truths) truth_ms += t.cast_ms;
+
+  vk::Device device(deviceOptions(o.device));
+  HeadlessRenderer renderer(device, {in->size.width, in->size.height});
+  TradeRig rig{device, renderer, model, *in};
+  if (auto s = warmUp(rig, configs.front(), cameras->front()); !s) return usageError(s.error());
+  auto rows = measureAll(rig, configs, *cameras, truths);
+  if (!rows) return usageError(rows.error());  // a configuration the terrain rejects
+  double total_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  std::error_code ec;
+  std::filesystem::create_directories(o.out, ec);
+  if (ec) {  // checked writable above: this is an I/O failure, not bad input
+    printError(Error::inField("--out", "cannot create '" + o.out + "': " + ec.message()).format());
+    return kExitFailure;
+  }
+  std::string title = "globe trade: " + in->planet.name + ", " + std::to_string(in->size.width) + "x" +
+                      std::to_string(in->size.height) + ", " + device.name() + ", load " + loadAverage();
+  if (auto s = writeTradeReport(o.out, *rows, title); !s) {
+    printError(s.error().format());
+    return kExitFailure;
+  }
+  if (int code = validationExitCode(device); code != kExitOk) return code;
+  printWorstRows(*rows);
   std::printf("truth ray casting %.1f s, total %.1f s; wrote %s/trade.csv and %s/pareto.svg\n", truth_ms * 1e-3,
               total_s, o.out.c_str(), o.out.c_str());
   return kExitOk;

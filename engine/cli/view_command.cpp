@@ -44,85 +44,81 @@ struct ViewCommandOptions {
 // A directory option that must exist.
 Status checkDirectory(const std::string& dir, const std::string& field) {
   std::error_code ec;
-  if (!std::filesystem::is_directory(dir, ec)) return Error{"", 0, 0, field, "'" + dir + "' is not a directory"};
+  if (!std::filesystem::is_directory(dir, ec)) return Error::inField(field, "'" + dir + "' is not a directory");
   return Ok{};
 }
 
-int runView(const ViewCommandOptions& o) {
-  auto pose = parsePose(o.at, "--at");
-  if (!pose) return usageError(pose.error());
-  auto size = parseSize(o.size, "--size");
-  if (!size) return usageError(size.error());
-  if (o.frames < 0)
-    return usageError(Error{"", 0, 0, "--frames", "must be 0 (no limit) or more, got " + std::to_string(o.frames)});
-  ViewerOptions viewer;
-  viewer.pose = *pose;
+// Frames, script, screenshots and recording; an Error names the offending option.
+Status checkViewerOptions(const ViewCommandOptions& o, ViewerOptions& viewer) {
+  if (o.frames < 0) return Error::inField("--frames", "must be 0 (no limit) or more, got " + std::to_string(o.frames));
   viewer.frames = uint64_t(o.frames);
   viewer.vsync = !o.noVsync;
   if (!o.script.empty()) {
     auto script = loadInputScript(o.script, "--script");
-    if (!script) return usageError(script.error());
+    if (!script) return script.error();
     viewer.script = std::move(*script);
     viewer.fixedStep = true;  // scripted runs replay the same camera path at any frame rate
   }
   if (!o.screenshot.empty()) {
-    if (auto s = checkWritable(o.screenshot, "--screenshot"); !s) return usageError(s.error());
-    if (auto s = checkImageExtension(o.screenshot, "--screenshot"); !s) return usageError(s.error());
+    if (auto s = checkWritable(o.screenshot, "--screenshot"); !s) return s;
+    if (auto s = checkImageExtension(o.screenshot, "--screenshot"); !s) return s;
     viewer.screenshotPath = o.screenshot;
   }
-  if (auto s = checkDirectory(o.screenshotDir, "--screenshot-dir"); !s) return usageError(s.error());
+  if (auto s = checkDirectory(o.screenshotDir, "--screenshot-dir"); !s) return s;
   viewer.screenshotDirectory = o.screenshotDir;
   viewer.screenshotExtension = "." + o.screenshotFormat;
   if (!o.path.empty()) {
     auto path = loadCameraPath(o.path);
-    if (!path) return usageError(path.error());
+    if (!path) return path.error();
     viewer.path = std::move(*path);
   } else if (o.holdAtPathEnd) {
-    return usageError(Error{"", 0, 0, "--hold", "needs --path"});
+    return Error::inField("--hold", "needs --path");
   }
   viewer.holdAtPathEnd = o.holdAtPathEnd;
   if (!o.frameTimes.empty()) {
-    if (auto s = checkWritable(o.frameTimes, "--frame-times"); !s) return usageError(s.error());
+    if (auto s = checkWritable(o.frameTimes, "--frame-times"); !s) return s;
     viewer.frameTimesPath = o.frameTimes;
   }
-  if (auto s = checkDirectory(o.recordDir, "--record-dir"); !s) return usageError(s.error());
+  if (auto s = checkDirectory(o.recordDir, "--record-dir"); !s) return s;
   viewer.recordDirectory = o.recordDir;
   if (!o.record.empty()) {
-    if (auto s = checkWritable(o.record, "--record"); !s) return usageError(s.error());
+    if (auto s = checkWritable(o.record, "--record"); !s) return s;
     viewer.recordFile = o.record;
   }
+  return Ok{};
+}
 
-  // The planet must be valid to start; later edits of the file are reloaded live (an invalid one
-  // then keeps the planet on screen). Every error at once, like `globe planet check`.
+// The planet (must be valid to start; later edits of the file are reloaded live, and an invalid one
+// then keeps the planet on screen) and the terrain settings. Every planet error at once, like
+// `globe planet check`: all but the last are printed here, the last is returned.
+Status checkSceneOptions(const ViewCommandOptions& o, const GeodeticPose& pose, const std::optional<CameraPath>& path,
+                         ViewerSceneOptions& scene) {
   PlanetFileCheck planet = checkPlanetFile(o.planet);
   if (!planet.ok()) {
     const std::vector<std::string> lines = formatErrorList(planet.errors);
     for (size_t i = 0; i + 1 < lines.size(); ++i) printError(lines[i]);
-    return usageError(Error{"", 0, 0, "", lines.back()});
+    return Error{"", 0, 0, "", lines.back()};
   }
-  ViewerSceneOptions& scene = viewer.scene;
   scene.mode = o.mode == "sphere" ? ViewerMode::kSphere : ViewerMode::kTerrain;
   scene.planetPath = o.planet;
   scene.planet = std::move(planet.planet);
   scene.watch = !o.noReload;
-  auto quality = chooseQualityPreset(o.quality, scene.planet);
-  if (!quality) return usageError(quality.error());
-  scene.terrain = terrainSettingsFor(*quality);
-  if (o.gridCells) scene.terrain.gridCells = o.gridCells;
-  if (auto s = validateTerrainSettings(scene.terrain); !s) {
-    Error e = s.error();
-    if (e.field == "grid_cells") e.field = "--grid";
-    return usageError(e);
-  }
+  auto terrain = terrainSettingsFromOptions(o.quality, o.gridCells, scene.planet);
+  if (!terrain) return terrain.error();
+  scene.terrain = *terrain;
   // The sun of `globe render` at the starting point (about 45 degrees up): the first view is lit,
   // and a viewer screenshot matches a render of the same pose.
-  scene.sunDirection = defaultSunDirection(directionFromLatLon(pose->latitude_deg, pose->longitude_deg));
-  if (viewer.path) {  // a flown path is lit like `globe bench` lights it: at its first keyframe
+  scene.sunDirection = defaultSunDirection(directionFromLatLon(pose.latitude_deg, pose.longitude_deg));
+  if (path) {  // a flown path is lit like `globe bench` lights it: at its first keyframe
     const double radius_m = ElevationModel(scene.planet).radius_m();
-    scene.sunDirection = defaultSunDirection(
-        viewer.path->positionAt(viewer.path->startTime_s(), [radius_m](const glm::dvec3&) { return radius_m; }));
+    scene.sunDirection =
+        defaultSunDirection(path->positionAt(path->startTime_s(), [radius_m](const glm::dvec3&) { return radius_m; }));
   }
+  return Ok{};
+}
 
+// Opens the window and the device and runs the viewer until it quits or its frames are done.
+int runViewer(const ViewCommandOptions& o, const ImageSize& size, ViewerOptions viewer) {
   if (!Window::displayAvailable()) {
     printError(
         "no display: $DISPLAY is not set (globe view needs an X server; run it on a desktop or under "
@@ -130,7 +126,7 @@ int runView(const ViewCommandOptions& o) {
     return kExitFailure;
   }
   // The window comes first: the Device's surface must be destroyed before the window it shows.
-  Window window(size->width, size->height, "globe");
+  Window window(size.width, size.height, "globe");
   vk::DeviceOptions deviceOpts = deviceOptions(o.device);
   deviceOpts.instanceExtensions = window.requiredInstanceExtensions();
   deviceOpts.swapchain = true;
@@ -152,6 +148,18 @@ int runView(const ViewCommandOptions& o) {
   std::printf("viewed %llu frames (%s)%s%s\n", static_cast<unsigned long long>(frames), device.name().c_str(),
               o.screenshot.empty() ? "" : ", wrote ", o.screenshot.c_str());
   return kExitOk;
+}
+
+int runView(const ViewCommandOptions& o) {
+  auto pose = parsePose(o.at, "--at");
+  if (!pose) return usageError(pose.error());
+  auto size = parseSize(o.size, "--size");
+  if (!size) return usageError(size.error());
+  ViewerOptions viewer;
+  viewer.pose = *pose;
+  if (auto s = checkViewerOptions(o, viewer); !s) return usageError(s.error());
+  if (auto s = checkSceneOptions(o, *pose, viewer.path, viewer.scene); !s) return usageError(s.error());
+  return runViewer(o, *size, std::move(viewer));
 }
 
 }  // namespace

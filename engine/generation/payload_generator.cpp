@@ -1,6 +1,7 @@
 #include "engine/generation/payload_generator.h"
 
 #include "engine/vk/vk_check.h"
+#include "engine/vk/vk_create.h"
 #include "planet/geometry/face_mapping.h"
 #include "planet/streaming/payload_reference.h"
 
@@ -30,21 +31,12 @@ GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationMode
   auto* faces = static_cast<FaceCornersGpu*>(faces_.mapped());
   for (int f = 0; f < 30; ++f) faces[f] = RhombusFaceMapping::get().gpuCorners(f);
 
-  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-  poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-  poolInfo.queueFamilyIndex = device.queueFamily();
-  VkCommandPool pool;
-  GLOBE_VK_CHECK(vkCreateCommandPool(device.device(), &poolInfo, nullptr, &pool));
-  commandPool_ = vk::UniqueCommandPool(device.device(), pool);
+  commandPool_ =
+      vk::createCommandPool(device.device(), device.queueFamily(), VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT);
 
   uint32_t batchCount = std::max<uint32_t>(maxSubmitsInFlight, 1) + 1;
-  VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
-  queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
-  queryInfo.queryCount = 2 * batchCount;
-  VkQueryPool queryPool;
-  GLOBE_VK_CHECK(vkCreateQueryPool(device.device(), &queryInfo, nullptr, &queryPool));
-  queries_ = vk::UniqueQueryPool(device.device(), queryPool);
-  vkResetQueryPool(device.device(), queryPool, 0, 2 * batchCount);
+  queries_ = vk::createTimestampQueryPool(device.device(), 2 * batchCount);
+  vkResetQueryPool(device.device(), queries_, 0, 2 * batchCount);
   timestampPeriod_ns_ = double(device.properties().limits.timestampPeriod);
 
   size_t samples = size_t(cells + 3) * size_t(cells + 3);
@@ -52,15 +44,8 @@ GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationMode
   for (uint32_t b = 0; b < batchCount; ++b) {
     Batch& batch = batches_[b];
     batch.index = b;
-    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    alloc.commandPool = pool;
-    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    alloc.commandBufferCount = 1;
-    GLOBE_VK_CHECK(vkAllocateCommandBuffers(device.device(), &alloc, &batch.cmd));
-    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    VkFence fence;
-    GLOBE_VK_CHECK(vkCreateFence(device.device(), &fenceInfo, nullptr, &fence));
-    batch.fence = vk::UniqueFence(device.device(), fence);
+    batch.cmd = vk::allocateCommandBuffer(device.device(), commandPool_);
+    batch.fence = vk::createFence(device.device());
     batch.jobs = vk::Buffer(device, maxJobs_ * sizeof(gpu::PayloadJob), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                             vk::MemoryUse::HostVisible, "payload jobs");
     batch.results = vk::Buffer(device, maxJobs_ * sizeof(gpu::PayloadResult), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,

@@ -1,7 +1,8 @@
 #pragma once
 // The GPU payload generator: fills payload slots with shaders/payload_generate.comp, asynchronously.
-// Each generate() call records one dispatch (one workgroup per node) into its own command buffer and
-// submits it with a fence; collect() polls the fences without waiting and reports the finished
+// generate() splits its jobs into batches of at most maxJobsPerSubmit; each batch records one
+// dispatch per payload page it writes (one workgroup per node) into its own command buffer and is
+// submitted with a fence. collect() polls the fences without waiting and reports the finished
 // nodes with their radius ranges (padded for unresolved detail, planet/streaming/payload_reference.h).
 // Implements planet's PayloadGenerator, so the PayloadPool drives it exactly like the CPU fake.
 #include "engine/generation/payload_pages.h"

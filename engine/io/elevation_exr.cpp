@@ -33,7 +33,7 @@ Status writeElevationExr(const ElevationModel& model, const ElevationExportOptio
   const std::uint32_t width = options.width;
   const std::uint32_t height = width / 2;
   if (width < 2 || width > 65536 || width % 2 != 0) {
-    return Error{"", 0, 0, "--width", "must be even and within [2, 65536] pixels"};
+    return Error::inField("--width", "must be even and within [2, 65536] pixels");
   }
   try {
     Imf::Header header(static_cast<int>(width), static_cast<int>(height));
@@ -64,7 +64,7 @@ Status writeElevationExr(const ElevationModel& model, const ElevationExportOptio
       }
     }
   } catch (const std::exception& e) {
-    return Error{file.targetPath(), 0, 0, "", std::string("cannot write EXR: ") + e.what()};
+    return Error::inFile(file.targetPath(), std::string("cannot write EXR: ") + e.what());
   }
   return Ok{};
 }
@@ -74,7 +74,7 @@ Result<ElevationMap> readElevationExr(const std::string& path) {
     Imf::InputFile in(path.c_str());
     const Imath::Box2i dw = in.header().dataWindow();
     if (in.header().channels().findChannel("Y") == nullptr) {
-      return Error{path, 0, 0, "", "no Y (elevation) channel"};
+      return Error::inFile(path, "no Y (elevation) channel");
     }
     ElevationMap map;
     map.width = static_cast<std::uint32_t>(dw.max.x - dw.min.x + 1);
@@ -93,7 +93,7 @@ Result<ElevationMap> readElevationExr(const std::string& path) {
     in.readPixels(dw.min.y, dw.max.y);
     return map;
   } catch (const std::exception& e) {
-    return Error{path, 0, 0, "", std::string("cannot read EXR: ") + e.what()};
+    return Error::inFile(path, std::string("cannot read EXR: ") + e.what());
   }
 }
 

@@ -49,7 +49,7 @@ Status writePng(const std::string& path, const ImageRgba& image) {
     static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<size_t>(size));
   };
   if (!stbi_write_png_to_func(append, &png, int(image.width), int(image.height), 4, bytes.data(), int(image.width * 4)))
-    return Error{path, 0, 0, "", "cannot encode PNG"};
+    return Error::inFile(path, "cannot encode PNG");
   return writeFileAtomically(path, png, "");
 }
 
@@ -85,7 +85,7 @@ Status writeExr(const std::string& path, const ImageRgba& image) {
       out.writePixels(int(image.height));
     }
   } catch (const std::exception& e) {
-    return Error{path, 0, 0, "", std::string("cannot write EXR: ") + e.what()};
+    return Error::inFile(path, std::string("cannot write EXR: ") + e.what());
   }
   return file.commit();
 }
@@ -94,13 +94,13 @@ Status writeImage(const std::string& path, const ImageRgba& image, const std::st
   std::string ext = extension(path);
   if (ext == ".png") return writePng(path, image);
   if (ext == ".exr") return writeExr(path, image);
-  return Error{"", 0, 0, field, "'" + path + "' must end in .png or .exr"};
+  return Error::inField(field, "'" + path + "' must end in .png or .exr");
 }
 
 Result<ImageRgba> readPng(const std::string& path) {
   int w = 0, h = 0, comp = 0;
   stbi_uc* data = stbi_load(path.c_str(), &w, &h, &comp, 4);
-  if (!data) return Error{path, 0, 0, "", std::string("cannot read PNG: ") + stbi_failure_reason()};
+  if (!data) return Error::inFile(path, std::string("cannot read PNG: ") + stbi_failure_reason());
   ImageRgba image;
   image.width = uint32_t(w);
   image.height = uint32_t(h);
@@ -144,7 +144,7 @@ Result<ImageRgba> readExr(const std::string& path) {
     }
     return image;
   } catch (const std::exception& e) {
-    return Error{path, 0, 0, "", std::string("cannot read EXR: ") + e.what()};
+    return Error::inFile(path, std::string("cannot read EXR: ") + e.what());
   }
 }
 

@@ -10,14 +10,14 @@ namespace globe {
 Result<MovieInfo> readMovieInfo(const std::string& file) {
   AVFormatContext* format = nullptr;
   if (avformat_open_input(&format, file.c_str(), nullptr, nullptr) < 0)
-    return Error{file, 0, 0, "", "cannot open the movie"};
+    return Error::inFile(file, "cannot open the movie");
   struct Closer {
     AVFormatContext** f;
     ~Closer() { avformat_close_input(f); }
   } closer{&format};
-  if (avformat_find_stream_info(format, nullptr) < 0) return Error{file, 0, 0, "", "cannot read the movie's streams"};
+  if (avformat_find_stream_info(format, nullptr) < 0) return Error::inFile(file, "cannot read the movie's streams");
   int video = av_find_best_stream(format, AVMEDIA_TYPE_VIDEO, -1, -1, nullptr, 0);
-  if (video < 0) return Error{file, 0, 0, "", "the movie has no video stream"};
+  if (video < 0) return Error::inFile(file, "the movie has no video stream");
   const AVStream* stream = format->streams[video];
   MovieInfo info;
   info.width = static_cast<uint32_t>(stream->codecpar->width);

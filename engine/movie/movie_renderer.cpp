@@ -40,7 +40,7 @@ constexpr const char* kManifestName = "movie.txt";
 Status claimDirectory(const MovieSettings& s) {
   std::error_code ec;
   fs::create_directories(s.out, ec);
-  if (ec) return Error{"", 0, 0, "--out", fmt::format("cannot create '{}': {}", s.out, ec.message())};
+  if (ec) return Error::inField("--out", fmt::format("cannot create '{}': {}", s.out, ec.message()));
   const std::string manifest = (fs::path(s.out) / kManifestName).string();
   const std::string content = s.description + "\n";
   std::ifstream in(manifest, std::ios::binary);
@@ -48,9 +48,10 @@ Status claimDirectory(const MovieSettings& s) {
     std::ostringstream old;
     old << in.rdbuf();
     if (old.str() != content)
-      return Error{manifest, 0, 0, "--out",
-                   "this directory holds frames of another movie (its settings differ); choose another --out or "
-                   "empty it"};
+      return Error::inFileField(
+          manifest, "--out",
+          "this directory holds frames of another movie (its settings differ); choose another --out or "
+          "empty it");
     return Ok{};
   }
   return writeFileAtomically(manifest, content, "--out");

@@ -52,7 +52,7 @@ struct Mp4Writer::Impl {
   }
 
   Error error(const std::string& what, int code) const {
-    return Error{file, 0, 0, "", fmt::format("{}: {}", what, avError(code))};
+    return Error::inFile(file, fmt::format("{}: {}", what, avError(code)));
   }
 
   // Sends `input` (nullptr flushes) and writes every packet the encoder has ready.
@@ -102,7 +102,7 @@ const std::string& Mp4Writer::encoderDescription() const { return impl_->descrip
 
 Result<std::unique_ptr<Mp4Writer>> Mp4Writer::open(const std::string& file, uint32_t width, uint32_t height, int fps) {
   if (width % 2 || height % 2)
-    return Error{file, 0, 0, "", fmt::format("MP4 frames need an even width and height, got {}x{}", width, height)};
+    return Error::inFile(file, fmt::format("MP4 frames need an even width and height, got {}x{}", width, height));
   av_log_set_level(AV_LOG_ERROR);  // the encoder's statistics are noise on a command line
   auto impl = std::make_unique<Impl>();
   impl->file = file;
@@ -110,7 +110,7 @@ Result<std::unique_ptr<Mp4Writer>> Mp4Writer::open(const std::string& file, uint
     return impl->error("cannot create an MP4 file", r);
   impl->format->flags |= AVFMT_FLAG_BITEXACT;  // no library version strings or times in the file
   const AVCodec* encoder = chooseEncoder();
-  if (!encoder) return Error{file, 0, 0, "", "libavcodec has no H.264 or MPEG-4 encoder"};
+  if (!encoder) return Error::inFile(file, "libavcodec has no H.264 or MPEG-4 encoder");
   impl->description = fmt::format("{} ({})", encoder->name, encoder->long_name ? encoder->long_name : "");
   if (Status s = impl->openCodec(encoder, width, height, fps); !s) return s.error();
   if (int r = avio_open(&impl->format->pb, file.c_str(), AVIO_FLAG_WRITE); r < 0)
@@ -131,9 +131,8 @@ Result<std::unique_ptr<Mp4Writer>> Mp4Writer::open(const std::string& file, uint
 Status Mp4Writer::addFrame(const ImageRgba& image) {
   Impl& m = *impl_;
   if (int(image.width) != m.codec->width || int(image.height) != m.codec->height)
-    return Error{
-        m.file, 0, 0, "",
-        fmt::format("frame is {}x{}, the movie {}x{}", image.width, image.height, m.codec->width, m.codec->height)};
+    return Error::inFile(m.file, fmt::format("frame is {}x{}, the movie {}x{}", image.width, image.height,
+                                             m.codec->width, m.codec->height));
   std::vector<uint8_t> rgb(std::size_t(image.width) * image.height * 3);
   for (std::size_t p = 0; p < std::size_t(image.width) * image.height; ++p)
     for (std::size_t c = 0; c < 3; ++c) rgb[p * 3 + c] = linearToSrgb8(image.rgba[p * 4 + c]);

@@ -6,18 +6,18 @@ TerrainSettings terrainSettingsFor(QualityPreset preset) {
   TerrainSettings s;
   // Values from the frontier measured by `globe trade` (docs/tradeoffs.md, "Presets").
   switch (preset) {
-    case QualityPreset::Fast:  // ~75k triangles at the 1 km camera: the cheapest useful view
+    case QualityPreset::kFast:  // ~75k triangles at the 1 km camera: the cheapest useful view
       s.gridCells = 16;
       s.ranges.distanceMultiplier = 0.25;
       break;
-    case QualityPreset::Balanced:  // ~80k triangles at 1 km: 26 ms at 1280x720 on lavapipe (goal 33)
+    case QualityPreset::kBalanced:  // ~80k triangles at 1 km: 26 ms at 1280x720 on lavapipe (goal 33)
       s.gridCells = 16;
       s.ranges.distanceMultiplier = 0.5;
       // Depth 24 instead of 20: the same nodes above ~100 m, and at the 2 m camera p95 6.1 px
       // instead of 10.5 px for the same frame time (globe trade, 2026-11-22).
       s.ranges.maxDepth = 24;
       break;
-    case QualityPreset::Exact:  // p95 screen error <= 0.5 px at 1280x720 at every standard camera
+    case QualityPreset::kExact:  // p95 screen error <= 0.5 px at 1280x720 at every standard camera
       s.gridCells = 64;
       s.ranges.distanceMultiplier = 2.0;
       break;
@@ -26,10 +26,8 @@ TerrainSettings terrainSettingsFor(QualityPreset preset) {
 }
 
 Result<QualityPreset> parseQualityPreset(const std::string& text, const std::string& field) {
-  if (text == "fast") return QualityPreset::Fast;
-  if (text == "balanced") return QualityPreset::Balanced;
-  if (text == "exact") return QualityPreset::Exact;
-  return Error{"", 0, 0, field, "unknown quality '" + text + "' (fast, balanced, exact)"};
+  if (auto preset = qualityPresetFromName(text)) return *preset;
+  return Error::inField(field, "unknown quality '" + text + "' (fast, balanced, exact)");
 }
 
 Result<QualityPreset> chooseQualityPreset(const std::string& option, const PlanetDescription& planet,

@@ -12,9 +12,9 @@ namespace globe {
 
 Status validateTerrainSettings(const TerrainSettings& s) {
   if (s.gridCells < 16 || s.gridCells > 256 || (s.gridCells & (s.gridCells - 1)) != 0)
-    return Error{"", 0, 0, "grid_cells", "must be a power of two in [16, 256], got " + std::to_string(s.gridCells)};
+    return Error::inField("grid_cells", "must be a power of two in [16, 256], got " + std::to_string(s.gridCells));
   if (!std::isfinite(s.originThreshold_m) || s.originThreshold_m < 0)
-    return Error{"", 0, 0, "origin_threshold_m", "must be a finite number >= 0"};
+    return Error::inField("origin_threshold_m", "must be a finite number >= 0");
   return validateStreamingConfig(s.streaming);
 }
 

@@ -58,8 +58,6 @@ class Terrain {
   bool converged() const;
   // Blocks until every generation submitted so far has finished.
   void waitForGeneration() { generator_->waitIdle(); }
-  // Drops every payload (the planet changed); they are regenerated as the view asks for them.
-  void invalidate() { pool_->invalidateAll(); }
 
   const FrameStats& stats() const { return stats_; }
   const Selection& selection() const { return selection_; }

@@ -145,7 +145,7 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
     auto* faces = static_cast<FaceCornersGpu*>(faces_.mapped());
     for (int f = 0; f < 30; ++f) faces[f] = RhombusFaceMapping::get().gpuCorners(f);
   }
-  for (uint32_t f = 0; f < kFramesInFlight; ++f) ensureCapacity(f, std::max(initialNodes, 1u));
+  for (uint32_t f = 0; f < vk::kFramesInFlight; ++f) ensureCapacity(f, std::max(initialNodes, 1u));
 }
 
 TerrainRenderer::~TerrainRenderer() = default;
@@ -203,57 +203,70 @@ void TerrainRenderer::recordSky(VkCommandBuffer cmd, const Camera& camera) const
 
 DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, const glm::dvec3& origin_m,
                                   std::span<const DrawNode> nodes, const PayloadPages& payloads, uint32_t frameIndex) {
-  assert(frameIndex < kFramesInFlight);
+  assert(frameIndex < vk::kFramesInFlight);
   DrawStats stats;
   uint32_t nextMark = kMarkGridsBegin;
   writeMarks(cmd, nextMark, kMarkGridsBegin);
+  if (!nodes.empty()) stats = recordTerrain(cmd, camera, origin_m, nodes, payloads, frameIndex, nextMark);
   // The sky goes last, behind everything: its fullscreen triangle lies at the far plane (depth 0),
   // so the depth test keeps only the pixels no terrain covered, and those are the only ones shaded.
-  struct SkyLast {
-    const TerrainRenderer& renderer;
-    VkCommandBuffer cmd;
-    const Camera& camera;
-    DrawStats& stats;
-    uint32_t& nextMark;
-    ~SkyLast() {
-      renderer.writeMarks(cmd, nextMark, kMarkSkyBegin);
-      if (renderer.style_.sky) {
-        renderer.recordSky(cmd, camera);
-        ++stats.drawCalls;
-      }
-      renderer.writeMarks(cmd, nextMark, kMarkSkyEnd);
-    }
-  } skyLast{*this, cmd, camera, stats, nextMark};
-  if (nodes.empty()) return stats;
+  writeMarks(cmd, nextMark, kMarkSkyBegin);
+  if (style_.sky) {
+    recordSky(cmd, camera);
+    ++stats.drawCalls;
+  }
+  writeMarks(cmd, nextMark, kMarkSkyEnd);
+  return stats;
+}
+
+DrawStats TerrainRenderer::recordTerrain(VkCommandBuffer cmd, const Camera& camera, const glm::dvec3& origin_m,
+                                         std::span<const DrawNode> nodes, const PayloadPages& payloads,
+                                         uint32_t frameIndex, uint32_t& nextMark) {
   const bool skirts = style_.skirtOutward > 0.0f || style_.skirtDrop > 0.0f;
+  const std::array<uint32_t, 2> skirtEdges = skirts ? markSkirtedEdges(nodes) : std::array<uint32_t, 2>{0, 0};
+  ensureCapacity(frameIndex, uint32_t(nodes.size()) + skirtEdges[0] + skirtEdges[1]);
+  auto* bytes = static_cast<unsigned char*>(frames_[frameIndex].mapped());
+  const TerrainDebugView view = writeFrameConstants(bytes, camera, origin_m, skirts);
+  // kReprojected: each instance's node (u, v) corner, size and face, at the same index.
+  gpu::TerrainReprojectionNode* reprojection =
+      positions_ == VertexPositions::kReprojected ? beginReprojection(frameIndex, camera) : nullptr;
+  const uint32_t pageCount = std::max(payloads.pageCount(), 1u);
+  groupInstances(nodes, payloads, pageCount, skirts);
+  const uint32_t partial = writeInstances(bytes, origin_m, nodes, payloads, pageCount, skirts, reprojection);
+  DrawStats stats = recordDraws(cmd, payloads, pageCount, frameIndex, view == TerrainDebugView::kWireframe,
+                                reprojection != nullptr, nextMark);
+  stats.nodes = uint32_t(nodes.size());
+  stats.partialNodes = partial;
+  stats.skirtEdges = skirtEdges[0] + skirtEdges[1];
+  return stats;
+}
+
+std::array<uint32_t, 2> TerrainRenderer::markSkirtedEdges(std::span<const DrawNode> nodes) {
   // Skirted edges of full nodes, then of partial ones (one skirt instance each).
   std::array<uint32_t, 2> skirtEdges{0, 0};
-  if (skirts) {
-    drawn_.clear();
-    for (const DrawNode& n : nodes) drawn_.push_back(drawnKey(n.id, n.partial));
-    std::sort(drawn_.begin(), drawn_.end());
-    skirtMask_.resize(nodes.size());
-    for (size_t k = 0; k < nodes.size(); ++k) {
-      // An edge needs no skirt when its same-level neighbour is drawn the same way (same level,
-      // both full or both partial): they share bit-identical vertices and the same morph band, so
-      // the rasteriser's fill rule leaves no gap. Gaps open only where the level or the payload
-      // quantum changes (docs/rendering.md, "Skirts").
-      uint8_t mask = 0;
-      for (int e = 0; e < 4; ++e) {
-        if (!std::binary_search(drawn_.begin(), drawn_.end(),
-                                drawnKey(edgeNeighbour(nodes[k].id, e), nodes[k].partial)))
-          mask |= uint8_t(1u << e);
-      }
-      skirtMask_[k] = mask;
-      skirtEdges[nodes[k].partial ? 1 : 0] += uint32_t(std::popcount(mask));
+  drawn_.clear();
+  for (const DrawNode& n : nodes) drawn_.push_back(drawnKey(n.id, n.partial));
+  std::sort(drawn_.begin(), drawn_.end());
+  skirtMask_.resize(nodes.size());
+  for (size_t k = 0; k < nodes.size(); ++k) {
+    // An edge needs no skirt when its same-level neighbour is drawn the same way (same level,
+    // both full or both partial): they share bit-identical vertices and the same morph band, so
+    // the rasteriser's fill rule leaves no gap. Gaps open only where the level or the payload
+    // quantum changes (docs/rendering.md, "Skirts").
+    uint8_t mask = 0;
+    for (int e = 0; e < 4; ++e) {
+      if (!std::binary_search(drawn_.begin(), drawn_.end(), drawnKey(edgeNeighbour(nodes[k].id, e), nodes[k].partial)))
+        mask |= uint8_t(1u << e);
     }
+    skirtMask_[k] = mask;
+    skirtEdges[nodes[k].partial ? 1 : 0] += uint32_t(std::popcount(mask));
   }
-  const uint32_t instanceCount = uint32_t(nodes.size()) + skirtEdges[0] + skirtEdges[1];
-  ensureCapacity(frameIndex, instanceCount);
-  vk::Buffer& buffer = frames_[frameIndex];
-  auto* bytes = static_cast<unsigned char*>(buffer.mapped());
+  return skirtEdges;
+}
 
-  // Frame constants. The view matrix has no translation: vertices arrive camera-relative.
+TerrainDebugView TerrainRenderer::writeFrameConstants(unsigned char* bytes, const Camera& camera,
+                                                      const glm::dvec3& origin_m, bool skirts) const {
+  // The view matrix has no translation: vertices arrive camera-relative.
   gpu::TerrainFrame frame{};
   const glm::mat4 clipFromCamera(camera.projection() * camera.viewFromWorld(camera.position_m));
   std::memcpy(frame.clipFromCamera.m, glm::value_ptr(clipFromCamera), sizeof(frame.clipFromCamera.m));
@@ -274,29 +287,33 @@ DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, con
   frame.skirt = {style_.skirtOutward, style_.skirtDrop, 0.0f, 0.0f};
   frame.ramp = packColourRamp(style_.ramp);
   std::memcpy(bytes, &frame, sizeof(frame));
+  return view;
+}
 
+void TerrainRenderer::groupInstances(std::span<const DrawNode> nodes, const PayloadPages& payloads, uint32_t pageCount,
+                                     bool skirts) {
   // Instances grouped by draw: index range (full grid, half grid, full skirts, half skirts), then
   // payload page (one page unless the pool outgrows one storage-buffer binding), so each draw is one
   // contiguous instance range with its page's window bound.
-  auto* instances = reinterpret_cast<gpu::TerrainInstance*>(bytes + kFrameHeaderBytes);
-  const uint32_t slotVec4 = GLOBE_PAYLOAD_VEC4_PER_SLOT(cells_);
-  const uint32_t pageCount = std::max(payloads.pageCount(), 1u);
   instancesOf_.assign(size_t(4) * pageCount, 0);
-  auto group = [&](uint32_t range, uint32_t slot) { return size_t(range) * pageCount + payloads.page(slot); };
-  uint32_t partial = 0;
   for (size_t k = 0; k < nodes.size(); ++k) {
     const uint32_t range = nodes[k].partial ? 1u : 0u;
-    partial += range;
-    ++instancesOf_[group(range, nodes[k].slot)];
-    if (skirts) instancesOf_[group(range + 2, nodes[k].slot)] += uint32_t(std::popcount(skirtMask_[k]));
+    const uint32_t page = payloads.page(nodes[k].slot);
+    ++instancesOf_[size_t(range) * pageCount + page];
+    if (skirts) instancesOf_[size_t(range + 2) * pageCount + page] += uint32_t(std::popcount(skirtMask_[k]));
   }
   firstInstance_.assign(instancesOf_.size(), 0);
   for (size_t g = 1; g < instancesOf_.size(); ++g) firstInstance_[g] = firstInstance_[g - 1] + instancesOf_[g - 1];
+}
+
+uint32_t TerrainRenderer::writeInstances(unsigned char* bytes, const glm::dvec3& origin_m,
+                                         std::span<const DrawNode> nodes, const PayloadPages& payloads,
+                                         uint32_t pageCount, bool skirts, gpu::TerrainReprojectionNode* reprojection) {
+  auto* instances = reinterpret_cast<gpu::TerrainInstance*>(bytes + kFrameHeaderBytes);
+  const uint32_t slotVec4 = GLOBE_PAYLOAD_VEC4_PER_SLOT(cells_);
   std::vector<uint32_t>& next = nextInstance_;
   next = firstInstance_;
-  // kReprojected: each instance's node (u, v) corner, size and face, at the same index.
-  gpu::TerrainReprojectionNode* reprojection = nullptr;
-  if (positions_ == VertexPositions::kReprojected) reprojection = beginReprojection(frameIndex, camera);
+  uint32_t partial = 0;
   for (size_t k = 0; k < nodes.size(); ++k) {
     const DrawNode& n = nodes[k];
     const gpu::TerrainReprojectionNode mapping{{n.id.uMin(), n.id.vMin(), n.id.size(), double(n.id.face)}};
@@ -307,7 +324,9 @@ DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, con
     inst.info = {payloads.localSlot(n.slot) * slotVec4, n.partial ? 2u : 1u,
                  uint32_t(n.id.level) - (n.partial ? 1u : 0u), 0u};
     const uint32_t range = n.partial ? 1u : 0u;
-    const size_t grid = group(range, n.slot), skirt = group(range + 2, n.slot);
+    partial += range;
+    const uint32_t page = payloads.page(n.slot);
+    const size_t grid = size_t(range) * pageCount + page, skirt = size_t(range + 2) * pageCount + page;
     if (reprojection) reprojection[next[grid]] = mapping;
     instances[next[grid]++] = inst;
     for (uint32_t e = 0; skirts && e < 4; ++e) {
@@ -317,8 +336,13 @@ DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, con
       instances[next[skirt]++] = inst;
     }
   }
+  return partial;
+}
 
-  const bool wireframe = view == TerrainDebugView::kWireframe;
+DrawStats TerrainRenderer::recordDraws(VkCommandBuffer cmd, const PayloadPages& payloads, uint32_t pageCount,
+                                       uint32_t frameIndex, bool wireframe, bool reprojected,
+                                       uint32_t& nextMark) const {
+  DrawStats stats;
   vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
   for (uint32_t r = 0; r < 4; ++r) {
     if (r == 2) writeMarks(cmd, nextMark, kMarkSkirtsBegin);  // ranges 0, 1 are grids; 2, 3 skirts
@@ -328,7 +352,7 @@ DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, con
       // Grids are drawn with back faces culled, skirts from both sides; the wireframe view shows both.
       const vk::GraphicsPipeline& pipeline = wireframe ? *wireframe_ : r < 2 ? solid_ : skirts_;
       const gpu::TerrainDrawPush push{r % 2 == 0 ? cells_ : cells_ / 2, 0};
-      if (reprojection) {
+      if (reprojected) {
         pipeline.bind(cmd,
                       {instanceDescriptor(frameIndex), payloads.window(page), constantsDescriptor(frameIndex),
                        reprojection_[frameIndex].descriptor(), faces_.descriptor()},
@@ -342,10 +366,6 @@ DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, con
       stats.triangles += uint64_t(count_[r] / 3) * instancesOf_[g];
     }
   }
-  writeMarks(cmd, nextMark, kMarkSkyBegin);
-  stats.nodes = uint32_t(nodes.size());
-  stats.partialNodes = partial;
-  stats.skirtEdges = skirtEdges[0] + skirtEdges[1];
   return stats;
 }
 

@@ -12,6 +12,7 @@
 // buffer per frame index, preallocated and grown only when a frame has more nodes than ever before.
 // The caller must have waited for the previous use of `frameIndex` before record().
 #include "engine/generation/payload_pages.h"
+#include "engine/vk/frame_ring.h"
 #include "engine/vk/graphics_pipeline.h"
 #include "planet/camera/camera.h"
 #include "planet/elevation/colour_ramp.h"
@@ -85,8 +86,6 @@ struct DrawStats {
 
 class TerrainRenderer {
  public:
-  static constexpr uint32_t kFramesInFlight = 2;
-
   // gridCells: payload grid cells per node side, a power of two in [16, 256]. initialNodes: per-frame
   // capacity allocated up front (grows when exceeded). Pipelines target OffscreenTarget's formats
   // unless `colourFormat` says otherwise (e.g. a swapchain's).
@@ -100,7 +99,7 @@ class TerrainRenderer {
   // Records the sky (if enabled) and the terrain into the current dynamic-rendering pass (viewport and
   // scissor already set). `origin_m`: the floating origin (FloatingOrigin); `payloads`: the payload
   // pages, slot s starting at vec4 localSlot(s) * GLOBE_PAYLOAD_VEC4_PER_SLOT(gridCells) of page
-  // page(s)'s window. frameIndex < kFramesInFlight.
+  // page(s)'s window. frameIndex < vk::kFramesInFlight.
   DrawStats record(VkCommandBuffer cmd, const Camera& camera, const glm::dvec3& origin_m,
                    std::span<const DrawNode> nodes, const PayloadPages& payloads, uint32_t frameIndex);
 
@@ -129,6 +128,20 @@ class TerrainRenderer {
   // per-instance array (the caller fills it in instance order).
   gpu::TerrainReprojectionNode* beginReprojection(uint32_t frameIndex, const Camera& camera);
   void recordSky(VkCommandBuffer cmd, const Camera& camera) const;
+  // record()'s steps for a non-empty node list: which edges get skirts, the frame constants (returns
+  // the debug view drawn), the instances grouped by draw and written, the draws themselves.
+  DrawStats recordTerrain(VkCommandBuffer cmd, const Camera& camera, const glm::dvec3& origin_m,
+                          std::span<const DrawNode> nodes, const PayloadPages& payloads, uint32_t frameIndex,
+                          uint32_t& nextMark);
+  std::array<uint32_t, 2> markSkirtedEdges(std::span<const DrawNode> nodes);
+  TerrainDebugView writeFrameConstants(unsigned char* bytes, const Camera& camera, const glm::dvec3& origin_m,
+                                       bool skirts) const;
+  void groupInstances(std::span<const DrawNode> nodes, const PayloadPages& payloads, uint32_t pageCount, bool skirts);
+  uint32_t writeInstances(unsigned char* bytes, const glm::dvec3& origin_m, std::span<const DrawNode> nodes,
+                          const PayloadPages& payloads, uint32_t pageCount, bool skirts,
+                          gpu::TerrainReprojectionNode* reprojection);
+  DrawStats recordDraws(VkCommandBuffer cmd, const PayloadPages& payloads, uint32_t pageCount, uint32_t frameIndex,
+                        bool wireframe, bool reprojected, uint32_t& nextMark) const;
 
   vk::Device& device_;
   uint32_t cells_;
@@ -144,11 +157,11 @@ class TerrainRenderer {
   // Index ranges: full grid, half grid, one full skirt strip, one half skirt strip.
   std::array<uint32_t, 4> first_{};
   std::array<uint32_t, 4> count_{};
-  std::array<vk::Buffer, kFramesInFlight> frames_;
-  std::array<uint32_t, kFramesInFlight> capacity_{};
+  std::array<vk::Buffer, vk::kFramesInFlight> frames_;
+  std::array<uint32_t, vk::kFramesInFlight> capacity_{};
   VertexPositions positions_;
-  std::array<vk::Buffer, kFramesInFlight> reprojection_;  // kReprojected only
-  vk::Buffer faces_;                                      // kReprojected only: the 30 faces' corners
+  std::array<vk::Buffer, vk::kFramesInFlight> reprojection_;  // kReprojected only
+  vk::Buffer faces_;                                          // kReprojected only: the 30 faces' corners
   // Per-frame scratch for the skirt test, kept to avoid allocating every frame.
   std::vector<std::pair<uint64_t, bool>> drawn_;  // (NodeId key, partial) of every drawn node, sorted
   std::vector<uint8_t> skirtMask_;                // per drawn node: bit e = edge e has a skirt

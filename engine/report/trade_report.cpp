@@ -95,12 +95,26 @@ std::string tradeCsv(const std::vector<TradeRow>& rows) {
   return s;
 }
 
-std::string paretoSvg(const std::vector<TradeRow>& rows, const std::string& title) {
-  std::vector<const TradeRow*> pts;
-  for (const TradeRow& r : rows)
-    if (r.camera == "worst") pts.push_back(&r);
-  const double W = 900, H = 600, left = 80, right = 30, top = 50, bottom = 60;
-  double maxX = 1, minY = 1e-3, maxY = 1;
+namespace {
+
+// The plot's frame (px) and axes: linear frame time (ms) in x, log p95 error (px) in y.
+struct ParetoPlot {
+  static constexpr double W = 900, H = 600, left = 80, right = 30, top = 50, bottom = 60;
+  double maxX = 1, step = 1, minY = 1e-3, maxY = 1;
+  int ticks = 1;
+
+  double sx(double x) const { return left + x / maxX * (W - left - right); }
+  double sy(double y) const {
+    double ly = std::log10(std::max(y, minY));
+    return top + (1.0 - (ly - std::log10(minY)) / (std::log10(maxY) - std::log10(minY))) * (H - top - bottom);
+  }
+};
+
+std::string f1(double v) { return formatFixed(v, 1); }
+
+ParetoPlot paretoPlot(const std::vector<const TradeRow*>& pts) {
+  ParetoPlot plot;
+  double maxX = 1, maxY = 1;
   for (const TradeRow* r : pts) {
     maxX = std::max(maxX, r->frameMedian_ms);
     maxY = std::max(maxY, r->error.p95_px);
@@ -112,91 +126,98 @@ std::string paretoSvg(const std::vector<TradeRow>& rows, const std::string& titl
       step *= m;
       break;
     }
-  const int ticks = int(std::ceil(maxX * 1.15 / step));
-  maxX = ticks * step;
+  plot.step = step;
+  plot.ticks = int(std::ceil(maxX * 1.15 / step));
+  plot.maxX = plot.ticks * step;
   // Log error axis: whole decades from 1e-3 px (or the smallest point) to above the largest.
   double lo = 1e9;
   for (const TradeRow* r : pts) lo = std::min(lo, std::max(r->error.p95_px, 1e-4));
-  minY = std::pow(10.0, std::floor(std::log10(std::min(lo, 0.1))));
-  maxY = std::pow(10.0, std::ceil(std::log10(maxY * 1.01)));
-  auto sx = [&](double x) { return left + x / maxX * (W - left - right); };
-  auto sy = [&](double y) {
-    double ly = std::log10(std::max(y, minY));
-    return top + (1.0 - (ly - std::log10(minY)) / (std::log10(maxY) - std::log10(minY))) * (H - top - bottom);
-  };
-  auto f1 = [](double v) { return formatFixed(v, 1); };
-  std::string s = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" +
-                  f1(W) + "\" height=\"" + f1(H) + "\" viewBox=\"0 0 " + f1(W) + " " + f1(H) +
-                  "\" font-family=\"sans-serif\" font-size=\"11\">\n";
-  s += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  s += "<text x=\"" + f1(W / 2) + "\" y=\"24\" text-anchor=\"middle\" font-size=\"15\">" + escapeMarkup(title) +
-       "</text>\n";
-  // Axes, grid and ticks.
-  s += "<g stroke=\"#ccc\">\n";
-  for (int i = 0; i <= ticks; ++i) {
-    double x = step * i;
-    s += "<line x1=\"" + f1(sx(x)) + "\" y1=\"" + f1(top) + "\" x2=\"" + f1(sx(x)) + "\" y2=\"" + f1(H - bottom) +
+  plot.minY = std::pow(10.0, std::floor(std::log10(std::min(lo, 0.1))));
+  plot.maxY = std::pow(10.0, std::ceil(std::log10(maxY * 1.01)));
+  return plot;
+}
+
+// Grid, tick labels, axis titles and the two dashed goal lines.
+std::string paretoAxesSvg(const ParetoPlot& p) {
+  const double W = p.W, H = p.H, left = p.left, right = p.right, top = p.top, bottom = p.bottom;
+  std::string s = "<g stroke=\"#ccc\">\n";
+  for (int i = 0; i <= p.ticks; ++i) {
+    double x = p.step * i;
+    s += "<line x1=\"" + f1(p.sx(x)) + "\" y1=\"" + f1(top) + "\" x2=\"" + f1(p.sx(x)) + "\" y2=\"" + f1(H - bottom) +
          "\"/>\n";
   }
-  for (double y = minY; y <= maxY * 1.0001; y *= 10)
-    s += "<line x1=\"" + f1(left) + "\" y1=\"" + f1(sy(y)) + "\" x2=\"" + f1(W - right) + "\" y2=\"" + f1(sy(y)) +
+  for (double y = p.minY; y <= p.maxY * 1.0001; y *= 10)
+    s += "<line x1=\"" + f1(left) + "\" y1=\"" + f1(p.sy(y)) + "\" x2=\"" + f1(W - right) + "\" y2=\"" + f1(p.sy(y)) +
          "\"/>\n";
   s += "</g>\n<g>\n";
-  for (int i = 0; i <= ticks; ++i) {
-    double x = step * i;
-    s += "<text x=\"" + f1(sx(x)) + "\" y=\"" + f1(H - bottom + 16) + "\" text-anchor=\"middle\">" + formatFixed(x, 0) +
-         "</text>\n";
+  for (int i = 0; i <= p.ticks; ++i) {
+    double x = p.step * i;
+    s += "<text x=\"" + f1(p.sx(x)) + "\" y=\"" + f1(H - bottom + 16) + "\" text-anchor=\"middle\">" +
+         formatFixed(x, 0) + "</text>\n";
   }
-  for (double y = minY; y <= maxY * 1.0001; y *= 10)
-    s += "<text x=\"" + f1(left - 6) + "\" y=\"" + f1(sy(y) + 4) + "\" text-anchor=\"end\">" +
+  for (double y = p.minY; y <= p.maxY * 1.0001; y *= 10)
+    s += "<text x=\"" + f1(left - 6) + "\" y=\"" + f1(p.sy(y) + 4) + "\" text-anchor=\"end\">" +
          formatFixed(y, std::max(0, int(-std::floor(std::log10(y) + 1e-9)))) + "</text>\n";
   s += "<text x=\"" + f1((left + W - right) / 2) + "\" y=\"" + f1(H - 18) +
        "\" text-anchor=\"middle\">median frame time at the slowest camera (ms, converged)</text>\n";
   s += "<text transform=\"translate(20," + f1((top + H - bottom) / 2) +
        ") rotate(-90)\" text-anchor=\"middle\">p95 screen error at the worst camera (px, log)</text>\n";
   // 33.3 ms budget and the 0.5 px "exact" line.
-  s += "<line x1=\"" + f1(sx(kFrameBudgetMs)) + "\" y1=\"" + f1(top) + "\" x2=\"" + f1(sx(kFrameBudgetMs)) +
+  s += "<line x1=\"" + f1(p.sx(kFrameBudgetMs)) + "\" y1=\"" + f1(top) + "\" x2=\"" + f1(p.sx(kFrameBudgetMs)) +
        "\" y2=\"" + f1(H - bottom) + "\" stroke=\"#c33\" stroke-dasharray=\"5,4\"/>\n";
-  if (0.5 >= minY && 0.5 <= maxY)
-    s += "<line x1=\"" + f1(left) + "\" y1=\"" + f1(sy(0.5)) + "\" x2=\"" + f1(W - right) + "\" y2=\"" + f1(sy(0.5)) +
-         "\" stroke=\"#36c\" stroke-dasharray=\"5,4\"/>\n";
+  if (0.5 >= p.minY && 0.5 <= p.maxY)
+    s += "<line x1=\"" + f1(left) + "\" y1=\"" + f1(p.sy(0.5)) + "\" x2=\"" + f1(W - right) + "\" y2=\"" +
+         f1(p.sy(0.5)) + "\" stroke=\"#36c\" stroke-dasharray=\"5,4\"/>\n";
   s += "</g>\n";
+  return s;
+}
+
+// The frontier polyline and every configuration as a labelled point (frontier points bold).
+std::string paretoPointsSvg(const ParetoPlot& p, const std::vector<const TradeRow*>& pts) {
+  std::string s;
   std::vector<std::pair<double, double>> xy;
   for (const TradeRow* r : pts) xy.emplace_back(r->frameMedian_ms, r->error.p95_px);
   std::vector<size_t> front = paretoFrontier(xy);
   if (!front.empty()) {
     s += "<polyline fill=\"none\" stroke=\"#d62\" stroke-width=\"2\" points=\"";
-    for (size_t i : front) s += f1(sx(xy[i].first)) + "," + f1(sy(xy[i].second)) + " ";
+    for (size_t i : front) s += f1(p.sx(xy[i].first)) + "," + f1(p.sy(xy[i].second)) + " ";
     s += "\"/>\n";
   }
   for (size_t i = 0; i < pts.size(); ++i) {
     bool onFront = std::find(front.begin(), front.end(), i) != front.end();
-    s += "<circle cx=\"" + f1(sx(xy[i].first)) + "\" cy=\"" + f1(sy(xy[i].second)) + "\" r=\"" +
+    s += "<circle cx=\"" + f1(p.sx(xy[i].first)) + "\" cy=\"" + f1(p.sy(xy[i].second)) + "\" r=\"" +
          (onFront ? "5" : "3.5") + "\" fill=\"" + (onFront ? "#d62" : "#888") + "\"/>\n";
-    s += "<text x=\"" + f1(sx(xy[i].first) + 7) + "\" y=\"" + f1(sy(xy[i].second) - 5) + "\"" +
+    s += "<text x=\"" + f1(p.sx(xy[i].first) + 7) + "\" y=\"" + f1(p.sy(xy[i].second) - 5) + "\"" +
          (onFront ? " font-weight=\"bold\"" : "") + ">" + escapeMarkup(pts[i]->config) + "</text>\n";
   }
-  s += "<text x=\"" + f1(W - right) + "\" y=\"" + f1(top - 8) +
+  return s;
+}
+
+}  // namespace
+
+std::string paretoSvg(const std::vector<TradeRow>& rows, const std::string& title) {
+  std::vector<const TradeRow*> pts;
+  for (const TradeRow& r : rows)
+    if (r.camera == "worst") pts.push_back(&r);
+  const ParetoPlot plot = paretoPlot(pts);
+  const double W = plot.W, H = plot.H;
+  std::string s = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" +
+                  f1(W) + "\" height=\"" + f1(H) + "\" viewBox=\"0 0 " + f1(W) + " " + f1(H) +
+                  "\" font-family=\"sans-serif\" font-size=\"11\">\n";
+  s += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  s += "<text x=\"" + f1(W / 2) + "\" y=\"24\" text-anchor=\"middle\" font-size=\"15\">" + escapeMarkup(title) +
+       "</text>\n";
+  s += paretoAxesSvg(plot);
+  s += paretoPointsSvg(plot, pts);
+  s += "<text x=\"" + f1(W - plot.right) + "\" y=\"" + f1(plot.top - 8) +
        "\" text-anchor=\"end\" fill=\"#d62\">orange: Pareto frontier; dashed: 33.3 ms budget, 0.5 px</text>\n";
   s += "</svg>\n";
   return s;
 }
 
 Status writeTradeReport(const std::string& dir, const std::vector<TradeRow>& rows, const std::string& title) {
-  namespace fs = std::filesystem;
-  const std::pair<std::string, std::string> outputs[] = {{"trade.csv", tradeCsv(rows)},
-                                                         {"pareto.svg", paretoSvg(rows, title)}};
-  // Every temporary is written before any is renamed: a failure leaves neither file.
-  std::vector<std::unique_ptr<AtomicFile>> files;
-  for (const auto& [name, content] : outputs) {
-    const std::string path = (fs::path(dir) / name).string();
-    if (auto s = checkWritable(path, ""); !s) return Error{path, 0, 0, "", s.error().message};
-    files.push_back(std::make_unique<AtomicFile>(path));
-    if (auto s = files.back()->write(content); !s) return s;
-  }
-  for (auto& file : files)
-    if (auto s = file->commit(); !s) return s;
-  return Ok{};
+  const NamedContent outputs[] = {{"trade.csv", tradeCsv(rows)}, {"pareto.svg", paretoSvg(rows, title)}};
+  return writeFilesAtomically(dir, outputs);
 }
 
 }  // namespace globe

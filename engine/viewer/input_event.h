@@ -7,13 +7,13 @@ namespace globe {
 
 struct InputEvent {
   enum class Type : uint8_t {
-    Key,          // `code` is a GLFW_KEY_* value
-    MouseButton,  // `code` is a GLFW_MOUSE_BUTTON_* value
-    MouseMove,    // cursor position (x, y) in window pixels, origin top-left
-    Resize,       // request a window size (x, y) in pixels (scripts only)
-    WaitReload,   // hold the frame loop until the planet file changes (scripts only: live-reload tests)
+    kKey,          // `code` is a GLFW_KEY_* value
+    kMouseButton,  // `code` is a GLFW_MOUSE_BUTTON_* value
+    kMouseMove,    // cursor position (x, y) in window pixels, origin top-left
+    kResize,       // request a window size (x, y) in pixels (scripts only)
+    kWaitReload,   // hold the frame loop until the planet file changes (scripts only: live-reload tests)
   };
-  Type type = Type::Key;
+  Type type = Type::kKey;
   int code = 0;
   bool down = false;  // Key / MouseButton: pressed (true) or released (false)
   double x = 0;

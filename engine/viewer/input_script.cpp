@@ -84,7 +84,7 @@ Result<InputScript> parseInputScript(const std::string& text, const std::string&
     std::vector<std::string> w;
     for (std::string word; words >> word;) w.push_back(word);
     if (w.empty()) continue;
-    auto fail = [&](const std::string& message) { return Error{file, lineNo, 0, "", message}; };
+    auto fail = [&](const std::string& message) { return Error::atLine(file, lineNo, message); };
     ScriptedEvent e;
     if (!parseFrame(w[0], e.frame)) return fail("expected a frame number, got '" + w[0] + "'");
     std::string verb = w.size() > 1 ? upper(w[1]) : "";
@@ -92,20 +92,20 @@ Result<InputScript> parseInputScript(const std::string& text, const std::string&
       if (w.size() != 4) return fail("expected 'FRAME KEY NAME down|up'");
       int code = keyCodeFromName(w[2]);
       if (code < 0) return fail("unknown key '" + w[2] + "'");
-      e.event.type = InputEvent::Type::Key;
+      e.event.type = InputEvent::Type::kKey;
       e.event.code = code;
       if (!parseUpDown(w[3], e.event.down)) return fail("expected down or up, got '" + w[3] + "'");
     } else if (verb == "MOUSE" && w.size() > 2 && upper(w[2]) == "MOVE") {
       if (w.size() != 5 || !parseNumber(w[3], e.event.x) || !parseNumber(w[4], e.event.y))
         return fail("expected 'FRAME MOUSE MOVE X Y' with X, Y in pixels");
-      e.event.type = InputEvent::Type::MouseMove;
+      e.event.type = InputEvent::Type::kMouseMove;
     } else if (verb == "MOUSE") {
       static const std::map<std::string, int> buttons = {
           {"LEFT", GLFW_MOUSE_BUTTON_LEFT}, {"RIGHT", GLFW_MOUSE_BUTTON_RIGHT}, {"MIDDLE", GLFW_MOUSE_BUTTON_MIDDLE}};
       if (w.size() != 4) return fail("expected 'FRAME MOUSE MOVE X Y' or 'FRAME MOUSE LEFT|RIGHT|MIDDLE down|up'");
       auto it = buttons.find(upper(w[2]));
       if (it == buttons.end()) return fail("unknown mouse button '" + w[2] + "'");
-      e.event.type = InputEvent::Type::MouseButton;
+      e.event.type = InputEvent::Type::kMouseButton;
       e.event.code = it->second;
       if (!parseUpDown(w[3], e.event.down)) return fail("expected down or up, got '" + w[3] + "'");
     } else if (verb == "RESIZE") {
@@ -113,10 +113,10 @@ Result<InputScript> parseInputScript(const std::string& text, const std::string&
           e.event.y < 16 || e.event.x > 16384 || e.event.y > 16384 || e.event.x != std::floor(e.event.x) ||
           e.event.y != std::floor(e.event.y))
         return fail("expected 'FRAME RESIZE W H' with whole W, H within [16, 16384] pixels");
-      e.event.type = InputEvent::Type::Resize;
+      e.event.type = InputEvent::Type::kResize;
     } else if (verb == "WAIT") {
       if (w.size() != 3 || upper(w[2]) != "RELOAD") return fail("expected 'FRAME WAIT RELOAD'");
-      e.event.type = InputEvent::Type::WaitReload;
+      e.event.type = InputEvent::Type::kWaitReload;
     } else {
       return fail("unknown event '" + (w.size() > 1 ? w[1] : std::string()) +
                   "' (expected KEY, MOUSE, RESIZE or WAIT)");

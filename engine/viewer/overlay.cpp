@@ -31,15 +31,10 @@ std::string formatDistance(double m) {
   return text;
 }
 
-}  // namespace
-
-Overlay::Overlay(vk::Device& device, Window& window, const vk::Swapchain& swapchain) : device_(device) {
-  VkDevice dev = device.device();
-  format_ = swapchain.format();
-
-  // Loads the blitted scene, draws on top, hands the image to presentation.
+// Loads the blitted scene, draws on top, hands the image to presentation.
+vk::UniqueRenderPass createOverlayRenderPass(VkDevice dev, VkFormat format) {
   VkAttachmentDescription colour{};
-  colour.format = format_;
+  colour.format = format;
   colour.samples = VK_SAMPLE_COUNT_1_BIT;
   colour.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
   colour.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
@@ -68,9 +63,11 @@ Overlay::Overlay(vk::Device& device, Window& window, const vk::Swapchain& swapch
   passInfo.pDependencies = &dependency;
   VkRenderPass pass;
   GLOBE_VK_CHECK(vkCreateRenderPass(dev, &passInfo, nullptr, &pass));
-  renderPass_ = vk::UniqueRenderPass(dev, pass);
+  return vk::UniqueRenderPass(dev, pass);
+}
 
-  // ImGui 1.86 allocates one combined image sampler (the font atlas) and frees it at shutdown.
+// ImGui 1.86 allocates one combined image sampler (the font atlas) and frees it at shutdown.
+vk::UniqueDescriptorPool createOverlayDescriptorPool(VkDevice dev) {
   VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;
@@ -79,8 +76,17 @@ Overlay::Overlay(vk::Device& device, Window& window, const vk::Swapchain& swapch
   poolInfo.pPoolSizes = &poolSize;
   VkDescriptorPool pool;
   GLOBE_VK_CHECK(vkCreateDescriptorPool(dev, &poolInfo, nullptr, &pool));
-  descriptorPool_ = vk::UniqueDescriptorPool(dev, pool);
+  return vk::UniqueDescriptorPool(dev, pool);
+}
 
+}  // namespace
+
+Overlay::Overlay(vk::Device& device, Window& window, const vk::Swapchain& swapchain) : device_(device) {
+  VkDevice dev = device.device();
+  format_ = swapchain.format();
+
+  renderPass_ = createOverlayRenderPass(dev, format_);
+  descriptorPool_ = createOverlayDescriptorPool(dev);
   attach(swapchain);
 
   IMGUI_CHECKVERSION();
@@ -98,13 +104,13 @@ Overlay::Overlay(vk::Device& device, Window& window, const vk::Swapchain& swapch
   info.Device = dev;
   info.QueueFamily = device.queueFamily();
   info.Queue = device.queue();
-  info.DescriptorPool = pool;
+  info.DescriptorPool = descriptorPool_;
   info.Subpass = 0;
   info.MinImageCount = swapchain.minImageCount();
   info.ImageCount = std::max(swapchain.imageCount(), swapchain.minImageCount());
   info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
   info.CheckVkResultFn = &checkImguiResult;
-  if (!ImGui_ImplVulkan_Init(&info, pass)) throw std::runtime_error("ImGui Vulkan backend failed");
+  if (!ImGui_ImplVulkan_Init(&info, renderPass_)) throw std::runtime_error("ImGui Vulkan backend failed");
   vulkanBackend_ = true;
   device.submitAndWait([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); });
   ImGui_ImplVulkan_DestroyFontUploadObjects();

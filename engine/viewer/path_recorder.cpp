@@ -53,7 +53,7 @@ void PathRecorder::advance(double dt_s, const GeodeticPose& pose) {
 Result<CameraPath> PathRecorder::stop() {
   recording_ = false;
   if (keys_.empty() || time_s_ <= keys_.back().time_s) {
-    if (keys_.size() < 2) return Error{"", 0, 0, "recording", "too short to be a path (no camera time passed)"};
+    if (keys_.size() < 2) return Error::inField("recording", "too short to be a path (no camera time passed)");
   } else {
     push(last_);
   }

@@ -1,6 +1,7 @@
 #include "engine/viewer/swapchain.h"
 
 #include "engine/vk/vk_check.h"
+#include "engine/vk/vk_create.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -106,18 +107,8 @@ void Swapchain::create(VkExtent2D framebufferExtent, VkSwapchainKHR old) {
   state_.images.resize(imageCount);
   GLOBE_VK_CHECK(vkGetSwapchainImagesKHR(dev, swapchain, &imageCount, state_.images.data()));
   for (VkImage image : state_.images) {
-    VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    viewInfo.image = image;
-    viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
-    viewInfo.format = format_;
-    viewInfo.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    VkImageView view;
-    GLOBE_VK_CHECK(vkCreateImageView(dev, &viewInfo, nullptr, &view));
-    state_.views.emplace_back(dev, view);
-    VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
-    VkSemaphore semaphore;
-    GLOBE_VK_CHECK(vkCreateSemaphore(dev, &semaphoreInfo, nullptr, &semaphore));
-    state_.renderFinished.emplace_back(dev, semaphore);
+    state_.views.push_back(createImageView2D(dev, image, format_, VK_IMAGE_ASPECT_COLOR_BIT));
+    state_.renderFinished.push_back(createSemaphore(dev));
     device_.setName(VK_OBJECT_TYPE_IMAGE, reinterpret_cast<uint64_t>(image), "swapchain image");
   }
 }

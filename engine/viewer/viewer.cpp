@@ -29,6 +29,9 @@ namespace globe {
 
 namespace {
 
+// The viewer indexes the terrain's per-frame buffers with its FrameRing slot. Two constants until
+// TerrainRenderer takes vk::kFramesInFlight: they must agree.
+
 constexpr double kFixedStep_s = 1.0 / 60.0;
 constexpr float kSpaceColour[4] = {0.0f, 0.0f, 0.0f, 1.0f};
 constexpr int kMaxReloadWait_s = 60;  // a script's WAIT RELOAD gives up after this
@@ -53,7 +56,7 @@ void printLine(const std::string& line) {
 
 std::unique_ptr<ViewerScene> makeScene(vk::Device& device, ViewerSceneOptions options) {
   auto scene = ViewerScene::create(device, std::move(options));
-  // The command validated the settings and the planet; what is left is a programming error.
+  // The command validated the settings and the planet; what is left is a device failure.
   if (!scene) throw std::runtime_error(scene.error().format());
   return std::move(*scene);
 }
@@ -89,6 +92,10 @@ struct Viewer::State {
   void describeCamera(OverlayView& view, const Camera& cam) const;
   void logFrame(Clock::time_point runStart);
   Status writeFrameTimes() const;
+  bool processInput();  // false: quit
+  Camera stepCamera(double wall_s, Clock::time_point now);
+  void buildOverlay(double wall_s, const Camera& cam);
+  void takeRequestedScreenshot(const Camera& cam);
 
   Window& window;
   vk::Device& device;
@@ -177,7 +184,7 @@ Status Viewer::State::writeFrameTimes() const {
 
 void Viewer::State::handle(const InputEvent& e) {
   switch (e.type) {
-    case InputEvent::Type::Key:
+    case InputEvent::Type::kKey:
       if (e.down) {
         input.keysDown.insert(e.code);
         if (e.code == GLFW_KEY_ESCAPE) quit = true;
@@ -188,11 +195,11 @@ void Viewer::State::handle(const InputEvent& e) {
         input.keysDown.erase(e.code);
       }
       break;
-    case InputEvent::Type::MouseButton:
+    case InputEvent::Type::kMouseButton:
       if (e.code == GLFW_MOUSE_BUTTON_LEFT)
         input.dragging = e.down && !overlay->wantsMouse();  // drags on the overlay are its own
       break;
-    case InputEvent::Type::MouseMove:
+    case InputEvent::Type::kMouseMove:
       if (input.haveCursor && input.dragging) {
         input.dragX_px += e.x - input.cursorX;
         input.dragY_px += e.y - input.cursorY;
@@ -201,10 +208,10 @@ void Viewer::State::handle(const InputEvent& e) {
       input.cursorY = e.y;
       input.haveCursor = true;
       break;
-    case InputEvent::Type::Resize:
+    case InputEvent::Type::kResize:
       window.setSize(uint32_t(e.x), uint32_t(e.y));
       break;
-    case InputEvent::Type::WaitReload:
+    case InputEvent::Type::kWaitReload:
       waitForReloadRequested = true;
       break;
   }
@@ -248,7 +255,7 @@ void Viewer::State::renderFrame(uint32_t image, VkCommandBuffer cmd, const Camer
   GLOBE_VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
 
   // Scene: HDR colour and reversed-Z depth. The terrain's per-frame buffers are indexed by
-  // frame % 2, the FrameRing slot whose fence begin() waited for.
+  // frame % kFramesInFlight, the FrameRing slot whose fence begin() waited for.
   target->begin(cmd, kSpaceColour);
   scene->record(cmd, cam, uint32_t(frame % vk::kFramesInFlight));
   target->end(cmd);  // colour is now TRANSFER_SRC_OPTIMAL
@@ -346,6 +353,69 @@ Viewer::~Viewer() {
 
 uint64_t Viewer::framesRendered() const { return s_->frame; }
 
+// Input: the window's events, then the script's for this frame.
+bool Viewer::State::processInput() {
+  for (const InputEvent& e : window.pollEvents()) handle(e);
+  for (const InputEvent& e : options.script.take(frame)) handle(e);
+  if (waitForReloadRequested) {
+    waitForReloadRequested = false;
+    waitForReload();
+  }
+  if (window.shouldClose()) quit = true;
+  return !quit;
+}
+
+// The frame's camera (the path's, or the fly camera's), and path recording in camera time: what
+// the camera advanced by is what the replay advances by. `wall_s` is the real time since the last frame.
+Camera Viewer::State::stepCamera(double wall_s, Clock::time_point now) {
+  const double step_s = options.fixedStep ? kFixedStep_s : std::min(wall_s, 0.25);
+  Camera cam = frameCamera(step_s, now);
+  if (recordToggleRequested) {
+    recordToggleRequested = false;
+    toggleRecording(cam);
+  } else if (recorder.recording()) {
+    recorder.advance(step_s, currentPose(cam));
+  }
+  return cam;
+}
+
+void Viewer::State::buildOverlay(double wall_s, const Camera& cam) {
+  OverlayView view;
+  view.stats = stats;  // the previous frame's complete statistics (draws are counted in record)
+  view.stats.frame_ms = wall_s * 1000.0;
+  describeCamera(view, cam);
+  view.debugView = scene->debugViewName();
+  view.deviceName = device.name();
+  view.planet = scene->planet().name + " (" + scene->planetPath() + ")";
+  if (recorder.recording()) {
+    char text[96];
+    std::snprintf(text, sizeof text, "recording... %.1f s, %zu keyframes (R stops)", recorder.elapsed_s(),
+                  recorder.keyframeCount());
+    view.recording = text;
+  }
+  view.message = message;
+  view.errors = planetErrors;
+  overlay->build(view);
+}
+
+// F12/P: the frame just submitted, named by its number.
+void Viewer::State::takeRequestedScreenshot(const Camera& cam) {
+  if (!screenshotRequested) return;
+  screenshotRequested = false;
+  char name[64];
+  std::snprintf(name, sizeof name, "globe-frame%06llu%s", static_cast<unsigned long long>(frame - 1),
+                options.screenshotExtension.c_str());
+  std::string path = (std::filesystem::path(options.screenshotDirectory) / name).string();
+  if (Status st = saveScreenshot(path, cam); st) {
+    message = "saved " + path;
+    // Tests compare screenshots of still views: say whether the terrain had converged.
+    printLine("screenshot " + path + (scene->converged() ? " (converged)" : " (streaming)"));
+  } else {
+    message = st.error().format();
+    std::fprintf(stderr, "globe: warning: %s\n", message.c_str());
+  }
+}
+
 Status Viewer::run() {
   State& s = *s_;
   Clock::time_point previous = Clock::now();
@@ -354,16 +424,7 @@ Status Viewer::run() {
   Camera lastCamera = s.camera.camera(double(s.target->extent().width) / s.target->extent().height);
 
   while (!s.quit && !(s.options.frames && s.frame >= s.options.frames)) {
-    // Input: the window's events, then the script's for this frame.
-    for (const InputEvent& e : s.window.pollEvents()) s.handle(e);
-    for (const InputEvent& e : s.options.script.take(s.frame)) s.handle(e);
-    if (s.waitForReloadRequested) {
-      s.waitForReloadRequested = false;
-      s.waitForReload();
-    }
-    if (s.window.shouldClose()) s.quit = true;
-    if (s.quit) break;
-
+    if (!s.processInput()) break;
     Clock::time_point now = Clock::now();
     double wall_s = std::chrono::duration<double>(now - previous).count();
     previous = now;
@@ -373,7 +434,6 @@ Status Viewer::run() {
 
     vk::FrameRing::Slot slot = s.ring.begin(s.frame);
     if (s.frame >= vk::kFramesInFlight) s.releases.collect(s.frame - vk::kFramesInFlight);
-
     if (s.window.takeResized() || s.swapchainStale) {
       if (!s.recreateSwapchain()) {
         glfwWaitEventsTimeout(0.05);  // minimised: sleep until something changes
@@ -385,39 +445,12 @@ Status Viewer::run() {
       s.swapchainStale = true;
       continue;
     }
-
-    double step_s = s.options.fixedStep ? kFixedStep_s : std::min(wall_s, 0.25);
-    Camera cam = s.frameCamera(step_s, now);
-
-    // Path recording in camera time: what the camera advanced by is what the replay advances by.
-    if (s.recordToggleRequested) {
-      s.recordToggleRequested = false;
-      s.toggleRecording(cam);
-    } else if (s.recorder.recording()) {
-      s.recorder.advance(step_s, s.currentPose(cam));
-    }
-
+    Camera cam = s.stepCamera(wall_s, now);
     // FrameRing::begin waited for frame - kFramesInFlight. The terrain counts frames from
     // kFramesInFlight, so its completed frame (its own numbering) is `s.frame` and never underflows:
     // terrain frames below kFramesInFlight never existed, so nothing they "used" can be in flight.
     s.scene->update(s.frame + vk::kFramesInFlight, cam, s.frame);
-
-    OverlayView view;
-    view.stats = s.stats;  // the previous frame's complete statistics (draws are counted in record)
-    view.stats.frame_ms = wall_s * 1000.0;
-    s.describeCamera(view, cam);
-    view.debugView = s.scene->debugViewName();
-    view.deviceName = s.device.name();
-    view.planet = s.scene->planet().name + " (" + s.scene->planetPath() + ")";
-    if (s.recorder.recording()) {
-      char text[96];
-      std::snprintf(text, sizeof text, "recording... %.1f s, %zu keyframes (R stops)", s.recorder.elapsed_s(),
-                    s.recorder.keyframeCount());
-      view.recording = text;
-    }
-    view.message = s.message;
-    view.errors = s.planetErrors;
-    s.overlay->build(view);
+    s.buildOverlay(wall_s, cam);
 
     s.renderFrame(*image, slot.cmd, cam);
     s.stats = s.scene->stats();
@@ -427,22 +460,7 @@ Status Viewer::run() {
     s.logFrame(runStart);
     ++s.frame;
     if (s.pathEnded && !s.options.holdAtPathEnd) s.quit = true;  // the path's end is drawn
-
-    if (s.screenshotRequested) {
-      s.screenshotRequested = false;
-      char name[64];
-      std::snprintf(name, sizeof name, "globe-frame%06llu%s", static_cast<unsigned long long>(s.frame - 1),
-                    s.options.screenshotExtension.c_str());
-      std::string path = (std::filesystem::path(s.options.screenshotDirectory) / name).string();
-      if (Status st = s.saveScreenshot(path, cam); st) {
-        s.message = "saved " + path;
-        // Tests compare screenshots of still views: say whether the terrain had converged.
-        printLine("screenshot " + path + (s.scene->converged() ? " (converged)" : " (streaming)"));
-      } else {
-        s.message = st.error().format();
-        std::fprintf(stderr, "globe: warning: %s\n", s.message.c_str());
-      }
-    }
+    s.takeRequestedScreenshot(cam);
   }
 
   // Quitting while recording keeps the flight.
@@ -451,7 +469,7 @@ Status Viewer::run() {
   s.releases.releaseAll();
   if (Status st = s.writeFrameTimes(); !st) return st;
   if (!s.options.screenshotPath.empty()) {
-    if (s.frame == 0) return Error{"", 0, 0, "--screenshot", "no frame was rendered"};
+    if (s.frame == 0) return Error::inField("--screenshot", "no frame was rendered");
     return s.saveScreenshot(s.options.screenshotPath, lastCamera);
   }
   return Ok{};

@@ -9,14 +9,18 @@ namespace globe {
 
 Result<std::unique_ptr<ViewerScene>> ViewerScene::create(vk::Device& device, ViewerSceneOptions options) {
   if (auto s = validateTerrainSettings(options.terrain); !s) return s.error();
-  std::unique_ptr<ViewerScene> scene(new ViewerScene(device, std::move(options)));
-  if (scene->options_.mode == ViewerMode::kTerrain) {
-    if (Status s = scene->buildTerrain(); !s) return s.error();
-  } else {
-    scene->preview_ = std::make_unique<SpherePreview>(device);
-    scene->grid_ = std::make_unique<SphereGrid>(device);
+  try {
+    std::unique_ptr<ViewerScene> scene(new ViewerScene(device, std::move(options)));
+    if (scene->options_.mode == ViewerMode::kTerrain) {
+      if (Status s = scene->buildTerrain(); !s) return s.error();
+    } else {
+      scene->preview_ = std::make_unique<SpherePreview>(device);
+      scene->grid_ = std::make_unique<SphereGrid>(device);
+    }
+    return scene;
+  } catch (const std::exception& e) {  // VulkanError and allocation: a Result never throws
+    return Error::inField("", e.what());
   }
-  return scene;
 }
 
 ViewerScene::ViewerScene(vk::Device& device, ViewerSceneOptions options)

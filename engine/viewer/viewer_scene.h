@@ -41,7 +41,7 @@ struct ReloadOutcome {
 
 class ViewerScene {
  public:
-  // Throws VulkanError on device failures; bad terrain settings are an Error.
+  // Bad terrain settings and device failures (VulkanError's message) are an Error; never throws.
   static Result<std::unique_ptr<ViewerScene>> create(vk::Device& device, ViewerSceneOptions options);
   ~ViewerScene();
   ViewerScene(const ViewerScene&) = delete;
@@ -53,7 +53,8 @@ class ViewerScene {
 
   // CPU part of viewer frame `frame`; `completedFrame` as for Terrain::update. Terrain only.
   void update(uint64_t frame, const Camera& camera, uint64_t completedFrame);
-  // Records the scene into the current dynamic-rendering pass (HDR target). Returns draw calls.
+  // Records the scene into the current dynamic-rendering pass (HDR target); draw calls are
+  // counted in stats().
   void record(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex);
 
   // F1/L: terrain cycles shaded -> LOD colours -> wireframe; the sphere toggles its grid.

@@ -96,15 +96,15 @@ bool Window::takeResized() { return std::exchange(resized_, false); }
 
 void Window::onKey(GLFWwindow* w, int key, int, int action, int) {
   if (action == GLFW_REPEAT || key == GLFW_KEY_UNKNOWN) return;
-  self(w)->pending_.push_back({InputEvent::Type::Key, key, action == GLFW_PRESS, 0, 0});
+  self(w)->pending_.push_back({InputEvent::Type::kKey, key, action == GLFW_PRESS, 0, 0});
 }
 
 void Window::onMouseButton(GLFWwindow* w, int button, int action, int) {
-  self(w)->pending_.push_back({InputEvent::Type::MouseButton, button, action == GLFW_PRESS, 0, 0});
+  self(w)->pending_.push_back({InputEvent::Type::kMouseButton, button, action == GLFW_PRESS, 0, 0});
 }
 
 void Window::onCursor(GLFWwindow* w, double x, double y) {
-  self(w)->pending_.push_back({InputEvent::Type::MouseMove, 0, false, x, y});
+  self(w)->pending_.push_back({InputEvent::Type::kMouseMove, 0, false, x, y});
 }
 
 void Window::onFramebufferSize(GLFWwindow* w, int, int) { self(w)->resized_ = true; }

@@ -1,6 +1,7 @@
 #include "engine/vk/device.h"
 
 #include "engine/vk/vk_check.h"
+#include "engine/vk/vk_create.h"
 
 #include <algorithm>
 #include <cctype>
@@ -63,7 +64,6 @@ std::string missingRequiredFeature(VkPhysicalDevice physical) {
   VkPhysicalDeviceVulkan12Features v12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &v13};
   VkPhysicalDeviceFeatures2 f2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &v12};
   vkGetPhysicalDeviceFeatures2(physical, &f2);
-  if (!v12.timelineSemaphore) return "timelineSemaphore";
   if (!v12.hostQueryReset) return "hostQueryReset";
   if (!v13.dynamicRendering) return "dynamicRendering";
   if (!v13.synchronization2) return "synchronization2";
@@ -91,15 +91,19 @@ std::optional<uint32_t> graphicsComputeFamily(VkPhysicalDevice physical, VkSurfa
   return std::nullopt;
 }
 
-}  // namespace
-
-std::string deviceNameFromEnvironment() {
-  const char* env = std::getenv("GLOBE_DEVICE");
-  return env ? env : "";
+// Validation messages (warnings and errors) go to `recorder`.
+VkDebugUtilsMessengerCreateInfoEXT validationMessengerInfo(ValidationRecorder& recorder) {
+  VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+  info.messageSeverity =
+      VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT |
+                     VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT;
+  info.pfnUserCallback = &ValidationRecorder::callback;
+  info.pUserData = &recorder;
+  return info;
 }
 
-Device::Device(const DeviceOptions& options) {
-  // Instance.
+VkInstance createInstance(const DeviceOptions& options, const VkDebugUtilsMessengerCreateInfoEXT& messengerInfo) {
   std::vector<const char*> extensions;
   for (const auto& e : options.instanceExtensions) extensions.push_back(e.c_str());
   std::vector<const char*> layers;
@@ -114,16 +118,6 @@ Device::Device(const DeviceOptions& options) {
   app.pApplicationName = "globe";
   app.pEngineName = "globe";
   app.apiVersion = VK_API_VERSION_1_3;
-
-  VkDebugUtilsMessengerCreateInfoEXT messengerInfo{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-  messengerInfo.messageSeverity =
-      VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-  messengerInfo.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                              VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT |
-                              VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT;
-  messengerInfo.pfnUserCallback = &ValidationRecorder::callback;
-  messengerInfo.pUserData = &recorder_;
-
   VkInstanceCreateInfo instanceInfo{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
   instanceInfo.pApplicationInfo = &app;
   instanceInfo.enabledLayerCount = static_cast<uint32_t>(layers.size());
@@ -131,8 +125,110 @@ Device::Device(const DeviceOptions& options) {
   instanceInfo.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
   instanceInfo.ppEnabledExtensionNames = extensions.data();
   if (options.validation) instanceInfo.pNext = &messengerInfo;  // also catches create/destroy
-  GLOBE_VK_CHECK(vkCreateInstance(&instanceInfo, nullptr, &instance_));
+  VkInstance instance = VK_NULL_HANDLE;
+  GLOBE_VK_CHECK(vkCreateInstance(&instanceInfo, nullptr, &instance));
+  return instance;
+}
 
+// The devices whose name contains `deviceName` (case-insensitive; all when it is empty), best type
+// first.
+std::vector<VkPhysicalDevice> matchingDevices(VkInstance instance, const std::string& deviceName) {
+  uint32_t count = 0;
+  GLOBE_VK_CHECK(vkEnumeratePhysicalDevices(instance, &count, nullptr));
+  std::vector<VkPhysicalDevice> physicals(count);
+  GLOBE_VK_CHECK(vkEnumeratePhysicalDevices(instance, &count, physicals.data()));
+  if (physicals.empty()) throw std::runtime_error("no Vulkan device found (is mesa-vulkan-drivers installed?)");
+
+  std::string available;
+  std::vector<VkPhysicalDevice> candidates;
+  for (VkPhysicalDevice p : physicals) {
+    VkPhysicalDeviceProperties props;
+    vkGetPhysicalDeviceProperties(p, &props);
+    available += std::string(available.empty() ? "" : ", ") + "'" + props.deviceName + "'";
+    if (!deviceName.empty() && lower(props.deviceName).find(lower(deviceName)) == std::string::npos) continue;
+    candidates.push_back(p);
+  }
+  if (candidates.empty())
+    throw std::runtime_error("no Vulkan device matches '" + deviceName + "' (available: " + available + ")");
+  std::stable_sort(candidates.begin(), candidates.end(), [](VkPhysicalDevice a, VkPhysicalDevice b) {
+    VkPhysicalDeviceProperties pa, pb;
+    vkGetPhysicalDeviceProperties(a, &pa);
+    vkGetPhysicalDeviceProperties(b, &pb);
+    return typeRank(pa.deviceType) < typeRank(pb.deviceType);
+  });
+  return candidates;
+}
+
+// What `p` lacks of what globe requires, by name, or "" when it has everything.
+std::string missingRequirement(VkPhysicalDevice p, VkSurfaceKHR surface) {
+  VkPhysicalDeviceProperties props;
+  vkGetPhysicalDeviceProperties(p, &props);
+  std::string missing = missingRequiredFeature(p);
+  if (missing.empty() && !hasDeviceExtension(p, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME))
+    missing = VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME;
+  if (missing.empty() && surface != VK_NULL_HANDLE && !graphicsComputeFamily(p, surface))
+    missing = "a queue that presents to the window";
+  if (missing.empty() && props.apiVersion < VK_API_VERSION_1_3) missing = "Vulkan 1.3";
+  return missing;
+}
+
+// Forced by name, else the best type that has what globe needs.
+VkPhysicalDevice choosePhysicalDevice(VkInstance instance, VkSurfaceKHR surface, const std::string& deviceName) {
+  std::string lastMissing;
+  std::string lastName;
+  for (VkPhysicalDevice p : matchingDevices(instance, deviceName)) {
+    lastMissing = missingRequirement(p, surface);
+    if (lastMissing.empty()) return p;
+    VkPhysicalDeviceProperties props;
+    vkGetPhysicalDeviceProperties(p, &props);
+    lastName = props.deviceName;
+  }
+  throw std::runtime_error("Vulkan device '" + lastName + "' lacks " + lastMissing + ", which globe requires");
+}
+
+// One queue from `family`, the required features, and the optional ones the device has.
+VkDevice createLogicalDevice(VkPhysicalDevice physical, uint32_t family, bool swapchain) {
+  VkPhysicalDeviceFeatures supported{};
+  vkGetPhysicalDeviceFeatures(physical, &supported);
+  VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+  v13.dynamicRendering = VK_TRUE;  // render passes without VkRenderPass objects
+  v13.synchronization2 = VK_TRUE;  // vkCmdPipelineBarrier2, vkQueueSubmit2
+  v13.maintenance4 = VK_TRUE;      // glslang's Vulkan 1.3 SPIR-V uses LocalSizeId
+  VkPhysicalDeviceVulkan12Features v12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &v13};
+  v12.hostQueryReset = VK_TRUE;  // timestamp queries reset from the CPU
+  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &v12};
+  features.features.shaderFloat64 = VK_TRUE;                        // double-precision elevation and positions
+  features.features.shaderInt64 = VK_TRUE;                          // the noise lattice keys
+  features.features.fillModeNonSolid = supported.fillModeNonSolid;  // the wireframe view, when present
+
+  float priority = 1.0f;
+  VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+  queueInfo.queueFamilyIndex = family;
+  queueInfo.queueCount = 1;
+  queueInfo.pQueuePriorities = &priority;
+  // Push descriptors bind per-dispatch buffers without descriptor-pool bookkeeping.
+  std::vector<const char*> deviceExtensions{VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
+  if (swapchain) deviceExtensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+  VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features};
+  deviceInfo.queueCreateInfoCount = 1;
+  deviceInfo.pQueueCreateInfos = &queueInfo;
+  deviceInfo.enabledExtensionCount = static_cast<uint32_t>(deviceExtensions.size());
+  deviceInfo.ppEnabledExtensionNames = deviceExtensions.data();
+  VkDevice device = VK_NULL_HANDLE;
+  GLOBE_VK_CHECK(vkCreateDevice(physical, &deviceInfo, nullptr, &device));
+  return device;
+}
+
+}  // namespace
+
+std::string deviceNameFromEnvironment() {
+  const char* env = std::getenv("GLOBE_DEVICE");
+  return env ? env : "";
+}
+
+Device::Device(const DeviceOptions& options) {
+  const VkDebugUtilsMessengerCreateInfoEXT messengerInfo = validationMessengerInfo(recorder_);
+  instance_ = createInstance(options, messengerInfo);
   try {
     if (options.validation) {
       auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
@@ -146,53 +242,8 @@ Device::Device(const DeviceOptions& options) {
       surface_ = options.createSurface(instance_);
       if (surface_ == VK_NULL_HANDLE) throw std::runtime_error("could not create a Vulkan surface for the window");
     }
-
-    // Physical device: forced by name, else the best type that has what globe needs.
-    uint32_t count = 0;
-    GLOBE_VK_CHECK(vkEnumeratePhysicalDevices(instance_, &count, nullptr));
-    std::vector<VkPhysicalDevice> physicals(count);
-    GLOBE_VK_CHECK(vkEnumeratePhysicalDevices(instance_, &count, physicals.data()));
-    if (physicals.empty()) throw std::runtime_error("no Vulkan device found (is mesa-vulkan-drivers installed?)");
-
-    std::string available;
-    std::vector<VkPhysicalDevice> candidates;
-    for (VkPhysicalDevice p : physicals) {
-      VkPhysicalDeviceProperties props;
-      vkGetPhysicalDeviceProperties(p, &props);
-      available += std::string(available.empty() ? "" : ", ") + "'" + props.deviceName + "'";
-      if (!options.deviceName.empty() && lower(props.deviceName).find(lower(options.deviceName)) == std::string::npos)
-        continue;
-      candidates.push_back(p);
-    }
-    if (candidates.empty())
-      throw std::runtime_error("no Vulkan device matches '" + options.deviceName + "' (available: " + available + ")");
-
-    std::string lastMissing;
-    std::string lastName;
-    std::stable_sort(candidates.begin(), candidates.end(), [](VkPhysicalDevice a, VkPhysicalDevice b) {
-      VkPhysicalDeviceProperties pa, pb;
-      vkGetPhysicalDeviceProperties(a, &pa);
-      vkGetPhysicalDeviceProperties(b, &pb);
-      return typeRank(pa.deviceType) < typeRank(pb.deviceType);
-    });
-    for (VkPhysicalDevice p : candidates) {
-      VkPhysicalDeviceProperties props;
-      vkGetPhysicalDeviceProperties(p, &props);
-      std::string missing = missingRequiredFeature(p);
-      if (missing.empty() && !hasDeviceExtension(p, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME))
-        missing = VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME;
-      if (missing.empty() && surface_ != VK_NULL_HANDLE && !graphicsComputeFamily(p, surface_))
-        missing = "a queue that presents to the window";
-      if (missing.empty() && props.apiVersion >= VK_API_VERSION_1_3) {
-        physical_ = p;
-        properties_ = props;
-        break;
-      }
-      lastMissing = missing.empty() ? "Vulkan 1.3" : missing;
-      lastName = props.deviceName;
-    }
-    if (physical_ == VK_NULL_HANDLE)
-      throw std::runtime_error("Vulkan device '" + lastName + "' lacks " + lastMissing + ", which globe requires");
+    physical_ = choosePhysicalDevice(instance_, surface_, options.deviceName);
+    vkGetPhysicalDeviceProperties(physical_, &properties_);
     vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
     // Driver name and version (Vulkan 1.2 core): benchmark figures depend on them.
     VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
@@ -207,50 +258,10 @@ Device::Device(const DeviceOptions& options) {
     std::optional<uint32_t> family = graphicsComputeFamily(physical_, surface_);
     if (!family) throw std::runtime_error(name() + " has no graphics+compute queue");
     queueFamily_ = *family;
-
-    // Optional features are enabled when present; required ones were checked above.
-    VkPhysicalDeviceFeatures supported{};
-    vkGetPhysicalDeviceFeatures(physical_, &supported);
-    VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-    v13.dynamicRendering = VK_TRUE;
-    v13.synchronization2 = VK_TRUE;
-    v13.maintenance4 = VK_TRUE;  // glslang's Vulkan 1.3 SPIR-V uses LocalSizeId
-    VkPhysicalDeviceVulkan12Features v12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &v13};
-    v12.timelineSemaphore = VK_TRUE;
-    v12.hostQueryReset = VK_TRUE;
-    VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &v12};
-    features.features.shaderFloat64 = VK_TRUE;
-    features.features.shaderInt64 = VK_TRUE;
-    features.features.fillModeNonSolid = supported.fillModeNonSolid;
-    features.features.multiDrawIndirect = supported.multiDrawIndirect;
-    features.features.drawIndirectFirstInstance = supported.drawIndirectFirstInstance;
-
-    float priority = 1.0f;
-    VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
-    queueInfo.queueFamilyIndex = queueFamily_;
-    queueInfo.queueCount = 1;
-    queueInfo.pQueuePriorities = &priority;
-    // Push descriptors bind per-dispatch buffers without descriptor-pool bookkeeping.
-    std::vector<const char*> deviceExtensions{VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
-    if (options.swapchain) deviceExtensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
-    VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features};
-    deviceInfo.queueCreateInfoCount = 1;
-    deviceInfo.pQueueCreateInfos = &queueInfo;
-    deviceInfo.enabledExtensionCount = static_cast<uint32_t>(deviceExtensions.size());
-    deviceInfo.ppEnabledExtensionNames = deviceExtensions.data();
-    GLOBE_VK_CHECK(vkCreateDevice(physical_, &deviceInfo, nullptr, &device_));
+    device_ = createLogicalDevice(physical_, queueFamily_, options.swapchain);
     vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
-
-    VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-    poolInfo.queueFamilyIndex = queueFamily_;
-    VkCommandPool pool;
-    GLOBE_VK_CHECK(vkCreateCommandPool(device_, &poolInfo, nullptr, &pool));
-    oneShotPool_ = UniqueCommandPool(device_, pool);
-    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    VkFence fence;
-    GLOBE_VK_CHECK(vkCreateFence(device_, &fenceInfo, nullptr, &fence));
-    oneShotFence_ = UniqueFence(device_, fence);
+    oneShotPool_ = createCommandPool(device_, queueFamily_, VK_COMMAND_POOL_CREATE_TRANSIENT_BIT);
+    oneShotFence_ = createFence(device_);
   } catch (...) {
     destroy();
     throw;
@@ -291,12 +302,7 @@ uint32_t Device::memoryType(uint32_t typeBits, VkMemoryPropertyFlags required) c
 }
 
 void Device::submitAndWait(const std::function<void(VkCommandBuffer)>& record) {
-  VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-  alloc.commandPool = oneShotPool_;
-  alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-  alloc.commandBufferCount = 1;
-  VkCommandBuffer cmd;
-  GLOBE_VK_CHECK(vkAllocateCommandBuffers(device_, &alloc, &cmd));
+  VkCommandBuffer cmd = allocateCommandBuffer(device_, oneShotPool_);
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   GLOBE_VK_CHECK(vkBeginCommandBuffer(cmd, &begin));

@@ -1,32 +1,17 @@
 #include "engine/vk/frame_ring.h"
 
 #include "engine/vk/vk_check.h"
+#include "engine/vk/vk_create.h"
 
 namespace globe::vk {
 
 FrameRing::FrameRing(Device& device) : device_(device) {
   VkDevice dev = device.device();
   for (auto& s : slots_) {
-    VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-    poolInfo.queueFamilyIndex = device.queueFamily();
-    VkCommandPool pool;
-    GLOBE_VK_CHECK(vkCreateCommandPool(dev, &poolInfo, nullptr, &pool));
-    s.pool = UniqueCommandPool(dev, pool);
-    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    alloc.commandPool = pool;
-    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    alloc.commandBufferCount = 1;
-    GLOBE_VK_CHECK(vkAllocateCommandBuffers(dev, &alloc, &s.cmd));
-    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    fenceInfo.flags = VK_FENCE_CREATE_SIGNALED_BIT;
-    VkFence fence;
-    GLOBE_VK_CHECK(vkCreateFence(dev, &fenceInfo, nullptr, &fence));
-    s.done = UniqueFence(dev, fence);
-    VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
-    VkSemaphore semaphore;
-    GLOBE_VK_CHECK(vkCreateSemaphore(dev, &semaphoreInfo, nullptr, &semaphore));
-    s.imageAcquired = UniqueSemaphore(dev, semaphore);
+    s.pool = createCommandPool(dev, device.queueFamily(), VK_COMMAND_POOL_CREATE_TRANSIENT_BIT);
+    s.cmd = allocateCommandBuffer(dev, s.pool);
+    s.done = createFence(dev, /*signalled=*/true);  // the first begin() must not wait
+    s.imageAcquired = createSemaphore(dev);
   }
 }
 

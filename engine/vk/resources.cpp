@@ -1,6 +1,7 @@
 #include "engine/vk/resources.h"
 
 #include "engine/vk/vk_check.h"
+#include "engine/vk/vk_create.h"
 #include "planet/core/data_directory.h"
 
 #include <cstdlib>
@@ -9,6 +10,20 @@
 #include <vector>
 
 namespace globe::vk {
+
+namespace {
+
+// One allocation of a memory type that has `properties`, sized for `req`.
+UniqueMemory allocateMemory(Device& device, const VkMemoryRequirements& req, VkMemoryPropertyFlags properties) {
+  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  alloc.allocationSize = req.size;
+  alloc.memoryTypeIndex = device.memoryType(req.memoryTypeBits, properties);
+  VkDeviceMemory mem;
+  GLOBE_VK_CHECK(vkAllocateMemory(device.device(), &alloc, nullptr, &mem));
+  return UniqueMemory(device.device(), mem);
+}
+
+}  // namespace
 
 Buffer::Buffer(Device& device, VkDeviceSize sizeBytes, VkBufferUsageFlags usage, MemoryUse memory, const char* name)
     : size_(sizeBytes) {
@@ -26,15 +41,10 @@ Buffer::Buffer(Device& device, VkDeviceSize sizeBytes, VkBufferUsageFlags usage,
   VkMemoryPropertyFlags props = memory == MemoryUse::HostVisible
                                     ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
                                     : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
-  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  alloc.allocationSize = req.size;
-  alloc.memoryTypeIndex = device.memoryType(req.memoryTypeBits, props);
-  VkDeviceMemory mem;
-  GLOBE_VK_CHECK(vkAllocateMemory(device.device(), &alloc, nullptr, &mem));
-  memory_ = UniqueMemory(device.device(), mem);
-  GLOBE_VK_CHECK(vkBindBufferMemory(device.device(), buffer, mem, 0));
+  memory_ = allocateMemory(device, req, props);
+  GLOBE_VK_CHECK(vkBindBufferMemory(device.device(), buffer, memory_, 0));
   if (memory == MemoryUse::HostVisible)
-    GLOBE_VK_CHECK(vkMapMemory(device.device(), mem, 0, VK_WHOLE_SIZE, 0, &mapped_));
+    GLOBE_VK_CHECK(vkMapMemory(device.device(), memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
 }
 
 Image::Image(Device& device, VkFormat format, VkExtent2D extent, VkImageUsageFlags usage, VkImageAspectFlags aspect,
@@ -57,22 +67,10 @@ Image::Image(Device& device, VkFormat format, VkExtent2D extent, VkImageUsageFla
 
   VkMemoryRequirements req;
   vkGetImageMemoryRequirements(device.device(), image, &req);
-  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  alloc.allocationSize = req.size;
-  alloc.memoryTypeIndex = device.memoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-  VkDeviceMemory mem;
-  GLOBE_VK_CHECK(vkAllocateMemory(device.device(), &alloc, nullptr, &mem));
-  memory_ = UniqueMemory(device.device(), mem);
-  GLOBE_VK_CHECK(vkBindImageMemory(device.device(), image, mem, 0));
+  memory_ = allocateMemory(device, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+  GLOBE_VK_CHECK(vkBindImageMemory(device.device(), image, memory_, 0));
 
-  VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-  viewInfo.image = image;
-  viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
-  viewInfo.format = format;
-  viewInfo.subresourceRange = {aspect, 0, 1, 0, 1};
-  VkImageView view;
-  GLOBE_VK_CHECK(vkCreateImageView(device.device(), &viewInfo, nullptr, &view));
-  view_ = UniqueImageView(device.device(), view);
+  view_ = createImageView2D(device.device(), image, format, aspect);
 }
 
 std::string shaderDirectory() { return dataDirectory("GLOBE_SHADER_DIR", "shaders"); }

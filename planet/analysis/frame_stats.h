@@ -1,7 +1,7 @@
 #pragma once
-// What one frame cost and what it did: filled by the frame loop, selection, drawing and
-// streaming, shown by the viewer's overlay and written by the benchmark. Plain data; zero means "not measured / nothing
-// happened".
+// What one frame cost and what it did: filled by the terrain (selection, streaming, drawing) and the
+// frame loop, shown by the viewer's overlay and written by the benchmark and `globe trade`. Plain
+// data; zero means "not measured / nothing happened".
 #include <cstdint>
 
 namespace globe {

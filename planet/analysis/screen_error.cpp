@@ -52,12 +52,12 @@ ScreenError measureScreenError(const SurfaceTruth& truth, const std::vector<doub
       bool drawn = std::isfinite(t);
       renderedHit[i] = drawn;
       ++e.samples;
-      if (hit.kind == SurfaceRayHit::Kind::Unresolved) {
+      if (hit.kind == SurfaceRayHit::Kind::kUnresolved) {
         ++e.unresolved;
         renderedHit[i] = 2;  // neither answer is known: never counted as a correct neighbour
         continue;
       }
-      bool truthHit = hit.kind == SurfaceRayHit::Kind::Hit;
+      bool truthHit = hit.kind == SurfaceRayHit::Kind::kHit;
       if (drawn != truthHit) {
         mismatches.push_back(uint32_t(i));
         continue;
@@ -86,7 +86,7 @@ ScreenError measureScreenError(const SurfaceTruth& truth, const std::vector<doub
   e.silhouetteMismatches = uint32_t(mismatches.size());
   for (uint32_t i : mismatches) {
     uint32_t c = i % truth.columns, r = i / truth.columns;
-    uint8_t wanted = truth.hits[i].kind == SurfaceRayHit::Kind::Hit ? 1 : 0;
+    uint8_t wanted = truth.hits[i].kind == SurfaceRayHit::Kind::kHit ? 1 : 0;
     e.silhouetteMax_px = std::max(
         e.silhouetteMax_px, nearestRenderedAs(renderedHit, truth.columns, truth.rows, c, r, wanted, truth.stride));
   }

@@ -1,5 +1,7 @@
 #include "planet/analysis/surface_ray.h"
 
+#include "planet/core/parallel_for.h"
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -83,14 +85,14 @@ SurfaceRayHit SurfaceRayCaster::cast(const glm::dvec3& origin, const glm::dvec3&
   double f = heightAbove(origin + t * dir);
   ++out.evaluations;
   if (f <= 0) {  // starts inside the terrain
-    out.kind = SurfaceRayHit::Kind::Hit;
+    out.kind = SurfaceRayHit::Kind::kHit;
     out.distance_m = t;
     out.normal = normalAt(origin + t * dir, options.tolerance_m);
     return out;
   }
   for (uint32_t step = 0;; ++step) {
     if (step >= options.maxSteps) {
-      out.kind = SurfaceRayHit::Kind::Unresolved;
+      out.kind = SurfaceRayHit::Kind::kUnresolved;
       return out;
     }
     glm::dvec3 p = origin + t * dir;
@@ -109,7 +111,7 @@ SurfaceRayHit SurfaceRayCaster::cast(const glm::dvec3& origin, const glm::dvec3&
     (heightAbove(origin + mid * dir) > 0 ? lo : hi) = mid;
     ++out.evaluations;
   }
-  out.kind = SurfaceRayHit::Kind::Hit;
+  out.kind = SurfaceRayHit::Kind::kHit;
   out.distance_m = 0.5 * (lo + hi);
   out.normal = normalAt(origin + out.distance_m * dir, std::max(out.distance_m * options.pixelAngle_rad, 1e-3));
   return out;
@@ -138,12 +140,11 @@ SurfaceTruth castSurfaceTruth(const ElevationModel& model, const Camera& camera,
   SurfaceRayOptions options;
   options.pixelAngle_rad = camera.verticalFov_rad / double(height);
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-  std::atomic<uint32_t> nextRow{0};
   std::atomic<uint64_t> evaluations{0};
   // Rows are handed out one at a time: cost varies a lot between rows (sky vs grazing ground).
-  auto work = [&] {
+  parallelFor(truth.rows, 1, threads, [&](size_t firstRow, size_t endRow) {
     uint64_t local = 0;
-    for (uint32_t row; (row = nextRow.fetch_add(1)) < truth.rows;) {
+    for (auto row = uint32_t(firstRow); row < endRow; ++row) {
       for (uint32_t column = 0; column < truth.columns; ++column) {
         uint32_t x = std::min(truth.pixelX(column), width - 1), y = std::min(truth.pixelY(row), height - 1);
         SurfaceRayHit hit = caster.cast(camera.position_m, pixelRay(camera, width, height, x, y), options);
@@ -152,11 +153,7 @@ SurfaceTruth castSurfaceTruth(const ElevationModel& model, const Camera& camera,
       }
     }
     evaluations += local;
-  };
-  std::vector<std::thread> pool;
-  for (unsigned i = 1; i < threads; ++i) pool.emplace_back(work);
-  work();
-  for (auto& th : pool) th.join();
+  });
   truth.evaluations = evaluations;
   truth.cast_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return truth;

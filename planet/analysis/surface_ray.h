@@ -34,8 +34,8 @@ struct SurfaceRayOptions {
 };
 
 struct SurfaceRayHit {
-  enum class Kind : uint8_t { Sky, Hit, Unresolved };
-  Kind kind = Kind::Sky;
+  enum class Kind : uint8_t { kSky, kHit, kUnresolved };
+  Kind kind = Kind::kSky;
   double distance_m = 0;     // along the (unit) ray, when Hit
   glm::dvec3 normal{0.0};    // unit surface normal at the hit, at the pixel's footprint scale
   uint32_t evaluations = 0;  // elevation evaluations spent

@@ -10,6 +10,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "planet/geometry/angles.h"
 #include "planet/geometry/triacontahedron.h"
 
 namespace globe {
@@ -38,15 +39,6 @@ double sphericalCornerAngle_rad(const glm::dvec3& corner, const glm::dvec3& next
   if (angle < 0.0) angle += 2.0 * std::numbers::pi;
   return angle;
 }
-
-namespace {
-
-double arc_rad(const glm::dvec3& a, const glm::dvec3& b) {
-  // atan2(|a × b|, a · b): accurate for short arcs, unlike acos.
-  return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
-}
-
-}  // namespace
 
 TessellationMetrics measureTessellation(int faceCount, const UnitPointFunction& mapping, int cellsPerEdge) {
   assert(faceCount > 0 && cellsPerEdge > 0);
@@ -90,7 +82,7 @@ TessellationMetrics measureTessellation(int faceCount, const UnitPointFunction& 
           m.angleMin_deg = std::min(m.angleMin_deg, angle_deg);
           m.angleMax_deg = std::max(m.angleMax_deg, angle_deg);
           sumAngleDeviation_deg += std::abs(angle_deg - 90.0);
-          const double edge = arc_rad(p[k], p[(k + 1) % 4]);
+          const double edge = angleBetween_rad(p[k], p[(k + 1) % 4]);
           m.edgeMin_rad = std::min(m.edgeMin_rad, edge);
           m.edgeMax_rad = std::max(m.edgeMax_rad, edge);
         }

@@ -1,7 +1,8 @@
 #pragma once
-// Tessellation quality: how uniform a face mapping's grid cells are on the unit sphere (issue 8,
-// "Tessellation quality"; design brief §2: "Compared with a cube, this gives a far more uniform
-// distribution of samples and no polar singularity" — this file measures that claim).
+// Tessellation quality: how uniform a face mapping's grid cells are on the unit sphere
+// (docs/tessellation.md). The triacontahedron is chosen because, compared with a cube, it should
+// give a far more uniform distribution of samples and no polar singularity [Bernardin 2011;
+// Frasson 2018, §3.2]; this file measures that claim, as [Dimitrijevic 2016] does for cube maps.
 //
 // Definition (precise, so the numbers can be reproduced):
 //   * every face's (u, v) square is cut into an n × n grid; grid point (i, j) is mapped to the unit
@@ -12,7 +13,7 @@
 //     areas add up to 4π sr exactly (up to rounding): the total is a check of the tiling, not of the
 //     mapping;
 //   * cell area: the spherical excess of the two triangles (p0, p1, p2) + (p0, p2, p3), each by the
-//     Van Oosterom–Strackee solid-angle formula (IEEE Trans. Biomed. Eng. 30(2), 1983):
+//     Van Oosterom–Strackee solid-angle formula [Van Oosterom 1983]:
 //       tan(Ω / 2) = a · (b × c) / (1 + a · b + b · c + c · a)        (unit a, b, c);
 //     for a geodesic quadrilateral either diagonal gives the same area (= angle sum − 2π);
 //   * cell angle: the interior angle at each of the four corners between the great-circle arcs to its

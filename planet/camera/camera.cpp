@@ -19,8 +19,8 @@ Result<double> parseNumber(const std::string& text, const std::string& field, co
   double v = std::strtod(begin, &end);
   while (end && *end == ' ') ++end;
   if (text.empty() || end == begin || *end != '\0')
-    return Error{"", 0, 0, field, std::string(what) + " '" + text + "' is not a number"};
-  if (!std::isfinite(v)) return Error{"", 0, 0, field, std::string(what) + " must be finite"};
+    return Error::inField(field, std::string(what) + " '" + text + "' is not a number");
+  if (!std::isfinite(v)) return Error::inField(field, std::string(what) + " must be finite");
   return v;
 }
 }  // namespace
@@ -32,7 +32,7 @@ Result<GeodeticPose> parsePose(const std::string& text, const std::string& field
   while (std::getline(ss, part, ',')) parts.push_back(part);
   if (!text.empty() && text.back() == ',') parts.push_back("");
   if (parts.size() != 3 && parts.size() != 6)
-    return Error{"", 0, 0, field, "expected LAT,LON,HEIGHT[,HEADING,PITCH,ROLL], got '" + text + "'"};
+    return Error::inField(field, "expected LAT,LON,HEIGHT[,HEADING,PITCH,ROLL], got '" + text + "'");
   static const char* names[] = {"latitude", "longitude", "height", "heading", "pitch", "roll"};
   double v[6] = {0, 0, 0, 0, 0, 0};
   for (size_t i = 0; i < parts.size(); ++i) {
@@ -48,14 +48,14 @@ Result<GeodeticPose> parsePose(const std::string& text, const std::string& field
 
 Status validatePose(const GeodeticPose& pose, const std::string& field) {
   if (!std::isfinite(pose.latitude_deg) || std::abs(pose.latitude_deg) > 90)
-    return Error{"", 0, 0, field, "latitude must be within [-90, 90] degrees"};
-  if (!std::isfinite(pose.longitude_deg)) return Error{"", 0, 0, field, "longitude must be finite"};
+    return Error::inField(field, "latitude must be within [-90, 90] degrees");
+  if (!std::isfinite(pose.longitude_deg)) return Error::inField(field, "longitude must be finite");
   if (!std::isfinite(pose.height_m) || pose.height_m <= 0 || pose.height_m > 1e12)
-    return Error{"", 0, 0, field, "height must be within (0, 1e12] metres above the surface"};
+    return Error::inField(field, "height must be within (0, 1e12] metres above the surface");
   if (!std::isfinite(pose.heading_deg) || !std::isfinite(pose.roll_deg))
-    return Error{"", 0, 0, field, "heading and roll must be finite"};
+    return Error::inField(field, "heading and roll must be finite");
   if (!std::isnan(pose.pitch_deg) && std::abs(pose.pitch_deg) > 90)
-    return Error{"", 0, 0, field, "pitch must be within [-90, 90] degrees"};
+    return Error::inField(field, "pitch must be within [-90, 90] degrees");
   return Ok{};
 }
 

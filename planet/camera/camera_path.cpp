@@ -75,7 +75,7 @@ double limitedSlope(double before, double dtBefore, double after, double dtAfter
 }
 
 Error keyError(const std::string& file, const PathKeyframe& k, std::size_t index, std::string message) {
-  return Error{file, k.line, 0, k.line > 0 ? "" : fmt::format("keyframe {}", index + 1), std::move(message)};
+  return Error::at(file, k.line, 0, k.line > 0 ? "" : fmt::format("keyframe {}", index + 1), std::move(message));
 }
 
 // Range checks with the file's column names, so a message points at the value to edit.
@@ -104,11 +104,22 @@ std::string poseProblem(const PathKeyframe& k) {
 Result<CameraPath> CameraPath::create(std::vector<PathKeyframe> keyframes, const std::string& file) {
   if (keyframes.size() < 2) {
     int line = keyframes.empty() ? 0 : keyframes.back().line;
-    return Error{file, line, 0, "",
-                 fmt::format("a camera path needs at least 2 keyframes, found {}", keyframes.size())};
+    return Error::atLine(file, line,
+                         fmt::format("a camera path needs at least 2 keyframes, found {}", keyframes.size()));
   }
   CameraPath path;
-  path.prepared_.resize(keyframes.size());
+  if (Status s = path.prepareKeys(keyframes, file); !s) return s.error();
+  if (const double span_s = keyframes.back().time_s - keyframes.front().time_s; span_s > kMaxDuration_s)
+    return Error::atLine(
+        file, keyframes.back().line,
+        fmt::format("the path lasts {:.0f} s, more than the limit of {:.0f} s", span_s, kMaxDuration_s));
+  path.computeTangents(keyframes);
+  path.keys_ = std::move(keyframes);
+  return path;
+}
+
+Status CameraPath::prepareKeys(const std::vector<PathKeyframe>& keyframes, const std::string& file) {
+  prepared_.resize(keyframes.size());
   for (std::size_t i = 0; i < keyframes.size(); ++i) {
     const PathKeyframe& k = keyframes[i];
     if (std::string problem = poseProblem(k); !problem.empty()) return keyError(file, k, i, problem);
@@ -116,13 +127,13 @@ Result<CameraPath> CameraPath::create(std::vector<PathKeyframe> keyframes, const
       return keyError(file, k, i,
                       fmt::format("t_s must increase: {} is not after the previous keyframe's {}", k.time_s,
                                   keyframes[i - 1].time_s));
-    Key& key = path.prepared_[i];
+    Key& key = prepared_[i];
     key.direction = directionFromLatLon(k.pose.latitude_deg, k.pose.longitude_deg);
     key.logHeight = std::log(k.pose.height_m);
     key.orientation = orientationFromBasis(basisFromPose(k.pose));
     key.sphereWeight = k.heightReference == HeightReference::sphere ? 1.0 : 0.0;
     if (i == 0) continue;
-    const Key& prev = path.prepared_[i - 1];
+    const Key& prev = prepared_[i - 1];
     double arc_deg = angleBetween(prev.direction, key.direction) / kDeg;
     if (arc_deg > kMaxSegmentArc_deg)
       return keyError(file, k, i,
@@ -140,30 +151,26 @@ Result<CameraPath> CameraPath::create(std::vector<PathKeyframe> keyframes, const
                                   "{:g}); add keyframes between them",
                                   turn_deg, kMaxSegmentTurn_deg));
   }
+  return Ok{};
+}
 
-  if (const double span_s = keyframes.back().time_s - keyframes.front().time_s; span_s > kMaxDuration_s)
-    return Error{file, keyframes.back().line, 0, "",
-                 fmt::format("the path lasts {:.0f} s, more than the limit of {:.0f} s", span_s, kMaxDuration_s)};
-
-  // Tangents: one per keyframe, shared by the segments on both sides (that is what makes it C1).
+void CameraPath::computeTangents(const std::vector<PathKeyframe>& keyframes) {
   const std::size_t n = keyframes.size();
   auto dt = [&](std::size_t i) { return keyframes[i + 1].time_s - keyframes[i].time_s; };
   auto chordVelocity = [&](std::size_t i) {  // segment i, on the sphere at its start, 1/s
-    return logMap(path.prepared_[i].direction, path.prepared_[i + 1].direction) / dt(i);
+    return logMap(prepared_[i].direction, prepared_[i + 1].direction) / dt(i);
   };
-  auto chordSlope = [&](std::size_t i) {
-    return (path.prepared_[i + 1].logHeight - path.prepared_[i].logHeight) / dt(i);
-  };
+  auto chordSlope = [&](std::size_t i) { return (prepared_[i + 1].logHeight - prepared_[i].logHeight) / dt(i); };
   for (std::size_t i = 0; i < n; ++i) {
-    Key& key = path.prepared_[i];
+    Key& key = prepared_[i];
     if (i == 0) {
       key.directionTangent = chordVelocity(0);
       key.logHeightSlope = chordSlope(0);
     } else if (i == n - 1) {
-      key.directionTangent = -logMap(key.direction, path.prepared_[i - 1].direction) / dt(i - 1);
+      key.directionTangent = -logMap(key.direction, prepared_[i - 1].direction) / dt(i - 1);
       key.logHeightSlope = chordSlope(i - 1);
     } else {
-      glm::dvec3 before = -logMap(key.direction, path.prepared_[i - 1].direction) / dt(i - 1);
+      glm::dvec3 before = -logMap(key.direction, prepared_[i - 1].direction) / dt(i - 1);
       key.directionTangent = limitedTangent(before, dt(i - 1), chordVelocity(i), dt(i));
       key.logHeightSlope = limitedSlope(chordSlope(i - 1), dt(i - 1), chordSlope(i), dt(i));
     }
@@ -172,8 +179,6 @@ Result<CameraPath> CameraPath::create(std::vector<PathKeyframe> keyframes, const
       key.logHeightSlope = 0.0;
     }
   }
-  path.keys_ = std::move(keyframes);
-  return path;
 }
 
 std::size_t CameraPath::segmentOf(double t_s) const {

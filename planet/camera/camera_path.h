@@ -103,6 +103,10 @@ class CameraPath {
     double sphereWeight = 0;  // 1 for a sphere-referenced height, 0 for a ground one
   };
   CameraPath() = default;
+  // create()'s steps: validate each keyframe against the previous and prepare its key; then the
+  // tangents, one per keyframe, shared by the segments on both sides (that is what makes it C1).
+  Status prepareKeys(const std::vector<PathKeyframe>& keyframes, const std::string& file);
+  void computeTangents(const std::vector<PathKeyframe>& keyframes);
   // Index k of the segment [t_k, t_k+1] holding t (t already clamped), and the keyframe hit if any.
   std::size_t segmentOf(double t_s) const;
   int keyframeAt(double t_s) const;  // index, or -1 when t is not exactly a keyframe time

@@ -48,10 +48,10 @@ Result<double> parseNumber(std::string_view text, std::string_view column, const
   std::string_view digits = text.size() > 1 && text[0] == '+' && text[1] != '-' ? text.substr(1) : text;
   auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
   if (ec == std::errc::result_out_of_range)
-    return Error{file, line, 0, "", fmt::format("{} '{}' is out of range", column, text)};
+    return Error::atLine(file, line, fmt::format("{} '{}' is out of range", column, text));
   if (ec != std::errc() || end != digits.data() + digits.size())
-    return Error{file, line, 0, "", fmt::format("{} '{}' is not a number", column, text)};
-  if (!std::isfinite(v)) return Error{file, line, 0, "", fmt::format("{} must be finite, got '{}'", column, text)};
+    return Error::atLine(file, line, fmt::format("{} '{}' is not a number", column, text));
+  if (!std::isfinite(v)) return Error::atLine(file, line, fmt::format("{} must be finite, got '{}'", column, text));
   return v;
 }
 
@@ -72,17 +72,18 @@ Result<OptionalColumns> parseHeader(const std::vector<std::string_view>& fields,
   bool fixedOk = fields.size() >= kColumns.size();
   for (std::size_t i = 0; fixedOk && i < kColumns.size(); ++i) fixedOk = fields[i] == kColumns[i];
   if (!fixedOk)
-    return Error{file, line, 0, "",
-                 fmt::format("expected the header '{}', got '{}'", kCameraPathHeader, joined(fields))};
+    return Error::atLine(file, line,
+                         fmt::format("expected the header '{}', got '{}'", kCameraPathHeader, joined(fields)));
   OptionalColumns columns;
   for (std::size_t i = kColumns.size(); i < fields.size(); ++i) {
     bool known = std::find(kOptionalColumns.begin(), kOptionalColumns.end(), fields[i]) != kOptionalColumns.end();
     bool repeated = std::find(columns.names.begin(), columns.names.end(), fields[i]) != columns.names.end();
     if (!known || repeated)
-      return Error{file, line, 0, "",
-                   fmt::format("{} column '{}' in the header (after the seven fixed columns only height_ref and "
-                               "stop may follow, once each)",
-                               repeated ? "repeated" : "unknown", fields[i])};
+      return Error::atLine(
+          file, line,
+          fmt::format("{} column '{}' in the header (after the seven fixed columns only height_ref and "
+                      "stop may follow, once each)",
+                      repeated ? "repeated" : "unknown", fields[i]));
     columns.names.push_back(fields[i]);
   }
   return columns;
@@ -93,10 +94,11 @@ Status parseOptionalField(std::string_view name, std::string_view text, PathKeyf
                           int line) {
   if (name == "height_ref") {
     if (text != "ground" && text != "sphere")
-      return Error{file, line, 0, "", fmt::format("height_ref must be 'ground' or 'sphere', got '{}'", text)};
+      return Error::atLine(file, line, fmt::format("height_ref must be 'ground' or 'sphere', got '{}'", text));
     key.heightReference = text == "sphere" ? HeightReference::sphere : HeightReference::ground;
   } else {
-    if (text != "0" && text != "1") return Error{file, line, 0, "", fmt::format("stop must be 0 or 1, got '{}'", text)};
+    if (text != "0" && text != "1")
+      return Error::atLine(file, line, fmt::format("stop must be 0 or 1, got '{}'", text));
     key.stop = text == "1";
   }
   return Ok{};
@@ -109,11 +111,11 @@ Result<PathKeyframe> parseKeyframe(const std::vector<std::string_view>& fields, 
     return i < kColumns.size() ? kColumns[i] : optional.names[i - kColumns.size()];
   };
   if (fields.size() < expected)
-    return Error{file, line, 0, "",
-                 fmt::format("missing field {} (expected {} fields, found {})", columnName(fields.size()), expected,
-                             fields.size())};
+    return Error::atLine(file, line,
+                         fmt::format("missing field {} (expected {} fields, found {})", columnName(fields.size()),
+                                     expected, fields.size()));
   if (fields.size() > expected)
-    return Error{file, line, 0, "", fmt::format("too many fields (expected {}, found {})", expected, fields.size())};
+    return Error::atLine(file, line, fmt::format("too many fields (expected {}, found {})", expected, fields.size()));
   std::array<double, 7> v{};
   for (std::size_t i = 0; i < kColumns.size(); ++i) {
     auto number = parseNumber(fields[i], kColumns[i], file, line);
@@ -151,11 +153,11 @@ Result<CameraPath> parseCameraPath(std::string_view text, const std::string& fil
   }
   const int lastLine = std::max(lineNumber, 1);
   if (!header)
-    return Error{fileName, lastLine, 0, "",
-                 fmt::format("empty camera path: expected the header '{}'", kCameraPathHeader)};
+    return Error::atLine(fileName, lastLine,
+                         fmt::format("empty camera path: expected the header '{}'", kCameraPathHeader));
   if (keyframes.size() < 2)
-    return Error{fileName, lastLine, 0, "",
-                 fmt::format("a camera path needs at least 2 keyframes, found {}", keyframes.size())};
+    return Error::atLine(fileName, lastLine,
+                         fmt::format("a camera path needs at least 2 keyframes, found {}", keyframes.size()));
   return CameraPath::create(std::move(keyframes), fileName);
 }
 

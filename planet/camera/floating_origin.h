@@ -1,5 +1,5 @@
 #pragma once
-// The floating origin (BRIEF §2 Precision): everything the GPU sees is relative to a point near the
+// The floating origin [Cozzi 2011]: everything the GPU sees is relative to a point near the
 // camera, computed in double here and only then rounded to float. The origin re-bases (jumps to the
 // camera) when the camera gets farther than a threshold from it; 0 means camera-relative, i.e. a
 // re-base whenever the camera moves. Origins are snapped to multiples of `snap_m` — the level-0

@@ -7,7 +7,9 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 #include <string_view>
+#include <vector>
 
 namespace globe {
 
@@ -24,27 +26,27 @@ AtomicFile::~AtomicFile() {
 
 Status AtomicFile::commit() {
   if (std::rename(temp_.c_str(), target_.c_str()) != 0)
-    return Error{target_, 0, 0, "", std::string("cannot write: ") + std::strerror(errno)};
+    return Error::inFile(target_, std::string("cannot write: ") + std::strerror(errno));
   committed_ = true;
   return Ok{};
 }
 
 Status checkWritable(const std::string& path, const std::string& field) {
   fs::path p(path);
-  if (p.filename().empty()) return Error{"", 0, 0, field, "'" + path + "' is a directory, expected a file name"};
+  if (p.filename().empty()) return Error::inField(field, "'" + path + "' is a directory, expected a file name");
   fs::path dir = p.parent_path().empty() ? fs::path(".") : p.parent_path();
   std::error_code ec;
-  if (!fs::is_directory(dir, ec)) return Error{"", 0, 0, field, "directory '" + dir.string() + "' does not exist"};
+  if (!fs::is_directory(dir, ec)) return Error::inField(field, "directory '" + dir.string() + "' does not exist");
   if (::access(dir.c_str(), W_OK) != 0)
-    return Error{"", 0, 0, field, "directory '" + dir.string() + "' is not writable"};
-  if (fs::is_directory(p, ec)) return Error{"", 0, 0, field, "'" + path + "' is a directory, expected a file name"};
+    return Error::inField(field, "directory '" + dir.string() + "' is not writable");
+  if (fs::is_directory(p, ec)) return Error::inField(field, "'" + path + "' is a directory, expected a file name");
   return Ok{};
 }
 
 namespace {
 
 Error writeError(const std::string& path, const std::string& field) {
-  return Error{path, 0, 0, field, std::string("cannot write: ") + std::strerror(errno)};
+  return Error::inFileField(path, field, std::string("cannot write: ") + std::strerror(errno));
 }
 
 // Every step is checked: a full disk (ENOSPC), a file size limit (EFBIG) or a failing close must not
@@ -82,6 +84,19 @@ Status writeFileAtomically(const std::string& path, std::string_view content, co
   AtomicFile file(path);
   if (auto s = writeAll(file.tempPath(), content, path, field); !s) return s;
   return file.commit();
+}
+
+Status writeFilesAtomically(const std::string& dir, std::span<const NamedContent> files) {
+  std::vector<std::unique_ptr<AtomicFile>> written;
+  for (const NamedContent& f : files) {
+    const std::string path = (fs::path(dir) / f.name).string();
+    if (auto s = checkWritable(path, ""); !s) return Error::inFile(path, s.error().message);
+    written.push_back(std::make_unique<AtomicFile>(path));
+    if (auto s = written.back()->write(f.content); !s) return s;
+  }
+  for (auto& file : written)
+    if (auto s = file->commit(); !s) return s;
+  return Ok{};
 }
 
 }  // namespace globe

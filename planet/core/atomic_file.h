@@ -4,6 +4,7 @@
 // (error, crash, kill) leaves no target file and, through the destructor, no temporary either.
 #include "planet/core/error.h"
 
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -40,5 +41,17 @@ Status checkWritable(const std::string& path, const std::string& field);
 // Writes `content` to `path` atomically. Every write, the fsync and the close are checked: on any
 // failure (ENOSPC, EFBIG, EIO) the Error names `path` and the reason, and the old file is untouched.
 Status writeFileAtomically(const std::string& path, std::string_view content, const std::string& field);
+
+// One file of a multi-file output: its name inside the output directory and its whole content.
+struct NamedContent {
+  std::string name;
+  std::string content;
+};
+
+// Writes every file into `dir` so that a failure changes none of them: all temporaries are written
+// first, then renamed in order (so the last file's existence means the earlier ones are complete).
+// On failure the existing files are untouched and no temporaries remain. The one way to write a
+// multi-file output (trade.csv + pareto.svg; the bench report should use it too).
+Status writeFilesAtomically(const std::string& dir, std::span<const NamedContent> files);
 
 }  // namespace globe

@@ -17,6 +17,21 @@ struct Error {
   std::string field;    // offending field / option / key, "" when not applicable
   std::string message;  // what is wrong, lower case, no trailing period
 
+  // Named constructors: say which parts are known instead of positional "", 0, 0.
+  static Error inField(std::string field, std::string message) {
+    return {"", 0, 0, std::move(field), std::move(message)};
+  }
+  static Error inFile(std::string file, std::string message) { return {std::move(file), 0, 0, "", std::move(message)}; }
+  static Error inFileField(std::string file, std::string field, std::string message) {
+    return {std::move(file), 0, 0, std::move(field), std::move(message)};
+  }
+  static Error atLine(std::string file, int line, std::string message) {
+    return {std::move(file), line, 0, "", std::move(message)};
+  }
+  static Error at(std::string file, int line, int column, std::string field, std::string message) {
+    return {std::move(file), line, column, std::move(field), std::move(message)};
+  }
+
   // "file:line:column: field: message", omitting the parts that are empty or zero. One line.
   std::string format() const;
 };
@@ -31,9 +46,10 @@ inline constexpr std::size_t kMaxErrorsShown = 20;
 // One formatted line per error, at most `maxShown` of them, then "… and N more" for the rest.
 std::vector<std::string> formatErrorList(const std::vector<Error>& errors, std::size_t maxShown = kMaxErrorsShown);
 
-// A value or an Error. Small on purpose: std::expected is C++23.
+// A value or an Error. Small on purpose: std::expected is C++23. [[nodiscard]]: an ignored
+// Result is an ignored error.
 template <class T>
-class Result {
+class [[nodiscard]] Result {
  public:
   Result(T value) : v_(std::move(value)) {}      // NOLINT(google-explicit-constructor)
   Result(Error error) : v_(std::move(error)) {}  // NOLINT(google-explicit-constructor)

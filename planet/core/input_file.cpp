@@ -34,22 +34,22 @@ std::string mib(std::size_t bytes) { return std::to_string(bytes >> 20) + " MiB"
 Result<std::string> readInputFile(const std::string& path, const std::string& what, std::size_t maxBytes) {
   // O_NONBLOCK: opening a FIFO for reading would otherwise wait for a writer forever.
   FileDescriptor file{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};
-  if (file.fd < 0) return Error{path, 0, 0, "", "cannot open " + what + ": " + std::strerror(errno)};
+  if (file.fd < 0) return Error::inFile(path, "cannot open " + what + ": " + std::strerror(errno));
   struct stat info {};
-  if (::fstat(file.fd, &info) != 0) return Error{path, 0, 0, "", "cannot read " + what + ": " + std::strerror(errno)};
-  if (!S_ISREG(info.st_mode)) return Error{path, 0, 0, "", "cannot read " + what + ": it is " + fileKind(info.st_mode)};
+  if (::fstat(file.fd, &info) != 0) return Error::inFile(path, "cannot read " + what + ": " + std::strerror(errno));
+  if (!S_ISREG(info.st_mode)) return Error::inFile(path, "cannot read " + what + ": it is " + fileKind(info.st_mode));
   if (static_cast<std::size_t>(info.st_size) > maxBytes)
-    return Error{path, 0, 0, "", what + " is larger than the limit of " + mib(maxBytes)};
+    return Error::inFile(path, what + " is larger than the limit of " + mib(maxBytes));
   std::string content;
   char buffer[65536];
   for (;;) {
     const ssize_t n = ::read(file.fd, buffer, sizeof buffer);
     if (n < 0 && errno == EINTR) continue;
-    if (n < 0) return Error{path, 0, 0, "", "cannot read " + what + ": " + std::strerror(errno)};
+    if (n < 0) return Error::inFile(path, "cannot read " + what + ": " + std::strerror(errno));
     if (n == 0) break;
     // The size is checked again while reading: the file may grow after fstat.
     if (content.size() + static_cast<std::size_t>(n) > maxBytes)
-      return Error{path, 0, 0, "", what + " is larger than the limit of " + mib(maxBytes)};
+      return Error::inFile(path, what + " is larger than the limit of " + mib(maxBytes));
     content.append(buffer, static_cast<std::size_t>(n));
   }
   return content;

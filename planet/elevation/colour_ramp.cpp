@@ -28,7 +28,7 @@ bool inRange(double v, double lo, double hi) { return std::isfinite(v) && v >= l
 void checkColour(const glm::vec3& c, const std::string& field, std::vector<Error>& errors) {
   for (int i = 0; i < 3; ++i) {
     if (!inRange(static_cast<double>(c[i]), 0.0, 1.0)) {
-      errors.push_back(Error{"", 0, 0, field, "each component must be within [0, 1] (linear RGB)"});
+      errors.push_back(Error::inField(field, "each component must be within [0, 1] (linear RGB)"));
       return;
     }
   }
@@ -42,35 +42,35 @@ double cosDeg(double degrees) { return std::cos(degrees * std::numbers::pi / 180
 
 void appendColourRampErrors(const ColourRamp& ramp, std::vector<Error>& errors) {
   if (ramp.stops.size() < 2 || ramp.stops.size() > static_cast<std::size_t>(kMaxColourStops)) {
-    errors.push_back(Error{"", 0, 0, "colour_ramp", fmt::format("need 2 to {} stops", kMaxColourStops)});
+    errors.push_back(Error::inField("colour_ramp", fmt::format("need 2 to {} stops", kMaxColourStops)));
   }
   for (std::size_t i = 0; i < ramp.stops.size(); ++i) {
     const std::string p = fmt::format("colour_ramp[{}].", i);
     const ColourRampStop& s = ramp.stops[i];
     if (!inRange(s.elevation_m, -1e7, 1e7)) {
-      errors.push_back(Error{"", 0, 0, p + "elevation_m", "must be within [-1e7, 1e7] m"});
+      errors.push_back(Error::inField(p + "elevation_m", "must be within [-1e7, 1e7] m"));
     } else if (i > 0 && !(s.elevation_m > ramp.stops[i - 1].elevation_m)) {
-      errors.push_back(
-          Error{"", 0, 0, p + "elevation_m",
-                fmt::format("must be greater than the previous stop's ({:g} m)", ramp.stops[i - 1].elevation_m)});
+      errors.push_back(Error::inField(
+          p + "elevation_m",
+          fmt::format("must be greater than the previous stop's ({:g} m)", ramp.stops[i - 1].elevation_m)));
     }
     checkColour(s.colour, p + "colour", errors);
   }
   if (!inRange(ramp.rock_slope_deg, 0.0, 90.0)) {
-    errors.push_back(Error{"", 0, 0, "rock.slope_deg", "must be within [0, 90] degrees"});
+    errors.push_back(Error::inField("rock.slope_deg", "must be within [0, 90] degrees"));
   }
   if (!inRange(ramp.rock_blend_deg, 0.0, 90.0)) {
-    errors.push_back(Error{"", 0, 0, "rock.blend_deg", "must be within [0, 90] degrees"});
+    errors.push_back(Error::inField("rock.blend_deg", "must be within [0, 90] degrees"));
   }
   checkColour(ramp.rock_colour, "rock.colour", errors);
   if (!inRange(ramp.snow_elevation_m, -1e7, 1e7)) {
-    errors.push_back(Error{"", 0, 0, "snow.elevation_m", "must be within [-1e7, 1e7] m"});
+    errors.push_back(Error::inField("snow.elevation_m", "must be within [-1e7, 1e7] m"));
   }
   if (!inRange(ramp.snow_blend_m, 0.0, 1e7)) {
-    errors.push_back(Error{"", 0, 0, "snow.blend_m", "must be within [0, 1e7] m"});
+    errors.push_back(Error::inField("snow.blend_m", "must be within [0, 1e7] m"));
   }
   if (!inRange(ramp.snow_max_slope_deg, 0.0, 90.0)) {
-    errors.push_back(Error{"", 0, 0, "snow.max_slope_deg", "must be within [0, 90] degrees"});
+    errors.push_back(Error::inField("snow.max_slope_deg", "must be within [0, 90] degrees"));
   }
   checkColour(ramp.snow_colour, "snow.colour", errors);
 }

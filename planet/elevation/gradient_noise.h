@@ -1,7 +1,7 @@
 #pragma once
-// 3-D gradient noise (Perlin 2002, "Improving Noise": quintic fade, 12 edge gradients) with an
+// 3-D gradient noise ([Perlin 2002], "Improving Noise": quintic fade, 12 edge gradients) with an
 // integer hash of the lattice coordinates instead of a permutation table. The table lookups bound
-// the kernel on lavapipe; the hash was 2.7x faster there (BRIEF §4).
+// the kernel on lavapipe; the hash was 2.7x faster there (docs/elevation.md, "GPU compute path").
 //
 // The same function is written in GLSL in shaders/include/elevation.glsl and must give bit-identical
 // doubles: only + - * , floor and integer operations are used, in the order written here (the build
@@ -17,7 +17,7 @@ namespace globe {
 // Upper bound of |gradientNoise| (dimensionless). Used by the conservative elevation bounds.
 inline constexpr double kGradientNoiseBound = 1.04;
 
-// 32-bit avalanche ("lowbias32", C. Wellons, hash-prospector): every input bit flips each output bit
+// 32-bit avalanche ("lowbias32" [Wellons 2018]): every input bit flips each output bit
 // with probability ~1/2. Derives the layer seeds (not per sample). 32-bit on purpose: 64-bit
 // multiplies are emulated on most GPUs and in lavapipe's AVX2 code.
 constexpr std::uint32_t hashMix32(std::uint32_t x) {

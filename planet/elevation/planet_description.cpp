@@ -11,23 +11,29 @@ namespace globe {
 
 std::string_view qualityPresetName(QualityPreset preset) {
   switch (preset) {
-    case QualityPreset::Fast:
+    case QualityPreset::kFast:
       return "fast";
-    case QualityPreset::Balanced:
+    case QualityPreset::kBalanced:
       return "balanced";
-    case QualityPreset::Exact:
+    case QualityPreset::kExact:
       return "exact";
   }
   return "unknown";
 }
 
+std::optional<QualityPreset> qualityPresetFromName(std::string_view name) {
+  for (QualityPreset p : {QualityPreset::kFast, QualityPreset::kBalanced, QualityPreset::kExact})
+    if (qualityPresetName(p) == name) return p;
+  return std::nullopt;
+}
+
 std::string_view layerKindName(LayerKind kind) {
   switch (kind) {
-    case LayerKind::Fbm:
+    case LayerKind::kFbm:
       return "fbm";
-    case LayerKind::Ridged:
+    case LayerKind::kRidged:
       return "ridged";
-    case LayerKind::Billow:
+    case LayerKind::kBillow:
       return "billow";
   }
   return "unknown";
@@ -61,14 +67,14 @@ ElevationRange elevationBounds(const PlanetDescription& planet) {
     double lo = 0.0;
     double hi = 0.0;
     switch (layer.kind) {
-      case LayerKind::Fbm:
+      case LayerKind::kFbm:
         lo = -sum * kGradientNoiseBound;
         hi = sum * kGradientNoiseBound;
         break;
-      case LayerKind::Ridged:  // (1 - |n|)^2 <= max(1, (1 - bound)^2) = 1
+      case LayerKind::kRidged:  // (1 - |n|)^2 <= max(1, (1 - bound)^2) = 1
         hi = sum;
         break;
-      case LayerKind::Billow:
+      case LayerKind::kBillow:
         hi = sum * kGradientNoiseBound;
         break;
     }
@@ -92,7 +98,7 @@ namespace {
 bool inRange(double v, double lo, double hi) { return std::isfinite(v) && v >= lo && v <= hi; }
 
 Error fieldError(std::string field, std::string message) {
-  return Error{"", 0, 0, std::move(field), std::move(message)};
+  return Error::inField(std::move(field), std::move(message));
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 // values, each an fBm-like sum of octaves of 3-D gradient noise evaluated at the point d * radius_m
 // (so there are no seams and no polar artefacts). A layer may be *modulated* by an earlier layer:
 // its octave sum is scaled by a smooth mask of the modulator's value (mountains only where the
-// continents are high) — the primary source's 4 continent octaves modulating 8 detail octaves.
+// continents are high) — the 4 continent octaves modulating 8 detail octaves of [Frasson 2018].
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -19,9 +19,9 @@
 namespace globe {
 
 enum class LayerKind : std::uint32_t {
-  Fbm = 0,     // sum amp_i * n_i
-  Ridged = 1,  // sum amp_i * (1 - |n_i|)^2 (crests where n = 0; >= 0)
-  Billow = 2,  // sum amp_i * |n_i| (>= 0)
+  kFbm = 0,     // sum amp_i * n_i
+  kRidged = 1,  // sum amp_i * (1 - |n_i|)^2 (crests where n = 0; >= 0)
+  kBillow = 2,  // sum amp_i * |n_i| (>= 0)
 };
 
 // "fbm", "ridged", "billow".
@@ -29,16 +29,18 @@ std::string_view layerKindName(LayerKind kind);
 
 // The speed/accuracy trade a planet is meant to be viewed at by default (the renderer and
 // `globe trade` interpret it; stored and validated here).
-enum class QualityPreset : std::uint32_t { Fast = 0, Balanced = 1, Exact = 2 };
+enum class QualityPreset : std::uint32_t { kFast = 0, kBalanced = 1, kExact = 2 };
 
 // "fast", "balanced", "exact".
 std::string_view qualityPresetName(QualityPreset preset);
+// The inverse of qualityPresetName; nullopt for any other text. The one parser of quality names.
+std::optional<QualityPreset> qualityPresetFromName(std::string_view name);
 
 // One layer: `octaves` octaves of gradient noise; octave i has wavelength wavelength_m / lacunarity^i
 // and amplitude amplitude_m * gain^i.
 struct ElevationLayer {
   std::string name;  // unique within the planet, used by modulated_by
-  LayerKind kind = LayerKind::Fbm;
+  LayerKind kind = LayerKind::kFbm;
   int octaves = 1;              // 1 .. kMaxOctavesPerLayer
   double wavelength_m = 1.0e6;  // wavelength of the first octave, metres (> 0)
   double lacunarity = 2.0;      // frequency ratio between octaves, (1, 16]
@@ -68,7 +70,7 @@ struct PlanetDescription {
   std::uint64_t seed = 0;              // noise seed; every layer derives its own from it
   double sea_level_m = 0.0;            // elevation of the sea surface, metres (for rendering and stats)
   std::vector<ElevationLayer> layers;  // 1 .. kMaxElevationLayers, evaluated in order
-  QualityPreset default_quality = QualityPreset::Balanced;
+  QualityPreset default_quality = QualityPreset::kBalanced;
   ColourRamp colour_ramp;  // surface colour by elevation and slope
 
   bool operator==(const PlanetDescription&) const = default;

@@ -1,12 +1,10 @@
 #include "planet/elevation/sphere_sampling.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cassert>
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <thread>
 
 #include "planet/camera/camera.h"
 
@@ -27,28 +25,6 @@ glm::dvec3 equirectPixelDirection(std::uint32_t x, std::uint32_t y, std::uint32_
   const double lat_deg = 90.0 - (static_cast<double>(y) + 0.5) * 180.0 / static_cast<double>(height);
   const double lon_deg = -180.0 + (static_cast<double>(x) + 0.5) * 360.0 / static_cast<double>(width);
   return directionFromLatLon(lat_deg, lon_deg);
-}
-
-void parallelFor(std::size_t count, std::size_t chunk, unsigned threads,
-                 const std::function<void(std::size_t, std::size_t)>& body, const ProgressFn& progress) {
-  chunk = std::max<std::size_t>(chunk, 1);
-  const std::size_t chunks = (count + chunk - 1) / chunk;
-  std::atomic<std::size_t> next{0};
-  std::atomic<std::size_t> done{0};
-  auto work = [&](bool report) {
-    for (std::size_t c = next.fetch_add(1); c < chunks; c = next.fetch_add(1)) {
-      body(c * chunk, std::min(count, (c + 1) * chunk));
-      const std::size_t d = done.fetch_add(1) + 1;
-      if (report && progress) progress(static_cast<double>(d) / static_cast<double>(chunks));
-    }
-  };
-  std::vector<std::thread> helpers;
-  const unsigned n =
-      std::max(1U, std::min<unsigned>(threads, static_cast<unsigned>(std::min<std::size_t>(chunks, 256))));
-  for (unsigned t = 1; t < n; ++t) helpers.emplace_back(work, false);
-  work(true);
-  for (std::thread& t : helpers) t.join();
-  if (progress) progress(1.0);
 }
 
 void sampleEquirectRows(const ElevationModel& model, std::uint32_t width, std::uint32_t height, std::uint32_t first_row,

@@ -9,6 +9,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "planet/core/parallel_for.h"
 #include "planet/elevation/elevation.h"
 
 namespace globe {
@@ -22,14 +23,7 @@ glm::dvec3 fibonacciDirection(std::uint64_t i, std::uint64_t n);
 // Latitude/longitude convention of directionFromLatLon (planet/camera/camera.h).
 glm::dvec3 equirectPixelDirection(std::uint32_t x, std::uint32_t y, std::uint32_t width, std::uint32_t height);
 
-// Called on the calling thread with the fraction done, [0, 1]; may be empty.
-using ProgressFn = std::function<void(double fraction)>;
-
-// Runs body(begin, end) over [0, count) in chunks of `chunk` items on `threads` threads (the caller
-// is one of them) and reports progress between chunks. body must be safe to run concurrently on
-// disjoint ranges.
-void parallelFor(std::size_t count, std::size_t chunk, unsigned threads,
-                 const std::function<void(std::size_t begin, std::size_t end)>& body, const ProgressFn& progress);
+// parallelFor and ProgressFn: planet/core/parallel_for.h.
 
 // Elevations (metres, rounded to float) of rows [first_row, first_row + out.size() / width) of a
 // width x height equirectangular map, row-major into `out`.

@@ -1,6 +1,6 @@
 #pragma once
 // Face mapping: (face, u, v) with u, v in [0, 1] -> a point on the unit sphere, and its inverse.
-// Behind one small interface so that a lower-distortion mapping can replace the primary source's
+// Behind one small interface so that a lower-distortion mapping can replace [Frasson 2018, §3.2]'s
 // "bilinear on the flat rhombus, then normalise" (RhombusFaceMapping) later.
 //
 // Seam exactness: for dyadic u, v (k / 2^L, L <= 52) a point on a face edge is computed bit-identically
@@ -37,7 +37,7 @@ struct FaceCornersGpu {
   std::array<glm::dvec4, 4> corner{};
 };
 
-// The primary source's mapping. Exact operation order (mirrored verbatim in face_mapping.glsl; only
+// The mapping of [Frasson 2018, §3.2]. Exact operation order (mirrored verbatim in face_mapping.glsl; only
 // + - * / sqrt, no fused multiply-add — the build uses -ffp-contract=off, the GLSL uses `precise`):
 //   corner (u, v both 0 or 1):         the vertex itself
 //   edge, endpoints A (lower vertex index) and B, t measured from A (t = s or t = 1.0 - s):

@@ -1,5 +1,5 @@
 #pragma once
-// Node bounds (primary source §3.2.1): six outward planes — four sides through the planet centre and
+// Node bounds [Frasson 2018, §3.2.1]: six outward planes — four sides through the planet centre and
 // the node's edges, a top plane tangent to the sphere of maximum radius S_max at the node's centre
 // direction, a bottom plane parallel to it through the lowest corner ray on S_min — with the 8 corners
 // of that volume and a bounding sphere. The volume holds every surface point of the node whose radius

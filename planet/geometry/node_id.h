@@ -7,6 +7,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "planet/core/hash.h"
+
 namespace globe {
 
 // Deepest addressable level: x and y need `level` bits each and the key has 54 bits for them.
@@ -69,11 +71,7 @@ NodeId edgeNeighbour(const NodeId& node, int edge);
 
 struct NodeIdHash {
   size_t operator()(const NodeId& id) const {
-    // splitmix64 finaliser: keys differ in few bits.
-    uint64_t z = id.key() + 0x9e3779b97f4a7c15ull;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return static_cast<size_t>(z ^ (z >> 31));
+    return static_cast<size_t>(mix64(id.key()));  // keys differ in few bits
   }
 };
 

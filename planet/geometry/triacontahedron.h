@@ -1,7 +1,6 @@
 #pragma once
-// The rhombic triacontahedron that tessellates the planet (primary source §3.2; Crusta, Bernardin et
-// al. 2011): 30 rhombic faces, each the root of a quadtree; 32 vertices, 12 five-fold (the
-// icosahedron's) and 20 three-fold (the dodecahedron's).
+// The rhombic triacontahedron that tessellates the planet [Frasson 2018, §3.2; Bernardin 2011]: 30 rhombic faces, each
+// the root of a quadtree; 32 vertices, 12 five-fold (the icosahedron's) and 20 three-fold (the dodecahedron's).
 //
 // Orientation (planet-fixed frame: x towards latitude 0 / longitude 0, z towards the north pole):
 //   vertex 0        five-fold, north pole

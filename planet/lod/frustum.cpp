@@ -15,7 +15,7 @@ bool isFinite(const glm::dvec4& v) {
 
 Result<Frustum> Frustum::fromViewProjection(const glm::dmat4& m) {
   for (int c = 0; c < 4; ++c) {
-    if (!isFinite(m[c])) return Error{"", 0, 0, "viewProjection", "matrix has a non-finite entry"};
+    if (!isFinite(m[c])) return Error::inField("viewProjection", "matrix has a non-finite entry");
   }
   const auto row = [&](int r) { return glm::dvec4(m[0][r], m[1][r], m[2][r], m[3][r]); };
   // Gribb–Hartmann: -w <= x <= w, -w <= y <= w, 0 <= z <= w.
@@ -31,11 +31,11 @@ Result<Frustum> Frustum::fromViewProjection(const glm::dmat4& m) {
 }
 
 Result<Frustum> Frustum::fromPlanes(std::span<const glm::dvec4> inwardPlanes) {
-  if (inwardPlanes.size() > 6) return Error{"", 0, 0, "planes", "at most 6 frustum planes"};
+  if (inwardPlanes.size() > 6) return Error::inField("planes", "at most 6 frustum planes");
   Frustum f;
   for (const glm::dvec4& p : inwardPlanes) {
     const double length = glm::length(glm::dvec3(p));
-    if (!isFinite(p) || !(length > 0.0)) return Error{"", 0, 0, "planes", "plane is non-finite or has no normal"};
+    if (!isFinite(p) || !(length > 0.0)) return Error::inField("planes", "plane is non-finite or has no normal");
     f.planes_[static_cast<size_t>(f.count_++)] = p / length;
   }
   return f;

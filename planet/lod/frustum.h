@@ -1,5 +1,5 @@
 #pragma once
-// View frustum culling (primary source §3.2.2): conservative — a node is culled only when all 8
+// View frustum culling [Frasson 2018, §3.2.2]: conservative — a node is culled only when all 8
 // corners of its bounds are outside one plane; a node wholly inside lets its children skip the test.
 #include <array>
 #include <span>

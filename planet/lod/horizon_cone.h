@@ -1,5 +1,5 @@
 #pragma once
-// Horizon culling (primary source §3.2.2, Figure 16). The occluder is the ball of the planet's minimum
+// Horizon culling [Frasson 2018, §3.2.2, Figure 16]. The occluder is the ball of the planet's minimum
 // radius (every surface point is at or above it, so it is opaque). From the camera it casts a cone
 // (apex at the camera, half-angle alpha with sin(alpha) = R_occ / d) and has a horizon plane through
 // the tangent circle (dot(p, camDir) = R_occ^2 / d). A point inside the cone and behind the plane is

@@ -29,7 +29,7 @@ double metresPerSample(int depth, int gridCells, double radius_m) {
 }
 
 Result<LodRanges> LodRanges::create(const LodRangeConfig& c, double radius_m) {
-  const auto bad = [](const char* field, const char* message) { return Error{"", 0, 0, field, message}; };
+  const auto bad = [](const char* field, const char* message) { return Error::inField(field, message); };
   if (!(std::isfinite(radius_m) && radius_m > 0.0)) return bad("radius", "must be finite and > 0");
   if (c.maxDepth < 0 || c.maxDepth > kMaxNodeLevel) return bad("maxDepth", "must be in 0..26");
   if (!(std::isfinite(c.baseRange_m) && c.baseRange_m >= 0.0)) return bad("baseRange", "must be finite and >= 0");

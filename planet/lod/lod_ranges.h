@@ -1,5 +1,5 @@
 #pragma once
-// CDLOD view ranges (Strugar 2009; primary source §3.3.1) and morph constants, computed in one place.
+// CDLOD view ranges [Strugar 2009; Frasson 2018, §3.3.1] and morph constants, computed in one place.
 //
 // refineRange(d): a node at depth d is subdivided when its bounds meet the ball of this radius around
 // the camera. Nominal: baseRange * ratio^(maxDepth - 1 - d) * distanceMultiplier. They then grow so

@@ -25,7 +25,7 @@ struct LodSelector::Context {
 };
 
 Result<LodSelector> LodSelector::create(const LodConfig& c, const FaceMapping& mapping) {
-  const auto bad = [](const char* field, const char* message) { return Error{"", 0, 0, field, message}; };
+  const auto bad = [](const char* field, const char* message) { return Error::inField(field, message); };
   if (!(std::isfinite(c.radius_m) && c.radius_m > 0.0)) return bad("radius", "must be finite and > 0");
   if (!(std::isfinite(c.minElevation_m) && std::isfinite(c.maxElevation_m))) {
     return bad("elevation", "min and max elevation must be finite");
@@ -61,7 +61,7 @@ NodeBounds LodSelector::boundsFor(const NodeId& node, const NodeResidency& resid
 Status LodSelector::select(const SelectionCamera& camera, NodeResidency& residency, Selection& out) {
   out.nodes.clear();
   out.stats = {};
-  if (!isFinite(camera.position_m)) return Error{"", 0, 0, "camera", "position is not finite"};
+  if (!isFinite(camera.position_m)) return Error::inField("camera", "position is not finite");
   Context ctx{camera.position_m,
               camera.frustum,
               HorizonCone(camera.position_m, config_.horizonCulling ? defaultRange_.min_m : 0.0),
@@ -89,42 +89,77 @@ void LodSelector::selectOnce(Context& ctx) {
     const std::optional<RadiusRange> known = ctx.residency->knownRadiusRange(root);
     NodeBounds b = rootBounds_[static_cast<size_t>(f)];
     if (known) b.tighten(*known);
-    visit(root, b, known.has_value(), false, ctx.frustum == nullptr, false, ctx);
+    visit(root, b, {known.has_value(), false, ctx.frustum == nullptr, false}, ctx);
   }
 }
 
-void LodSelector::visit(const NodeId& id, const NodeBounds& b, bool knownRange, bool partial, bool insideFrustum,
-                        bool fullyVisible, Context& ctx) {
+bool LodSelector::survivesCulling(const NodeId& id, const NodeBounds& b, VisitState& state, Context& ctx) {
   SelectionStats& stats = ctx.out->stats;
-  ++stats.visited;
-  if (!insideFrustum) {
+  if (!state.insideFrustum) {
     const Containment c = ctx.frustum->classify(b);
     if (c == Containment::kOutside) {
       ++stats.frustumCulled;
-      if (config_.prefetch.enabled && config_.prefetch.ringRangeFactor > 0.0) prefetchVisit(id, b, fullyVisible, ctx);
-      return;
+      if (config_.prefetch.enabled && config_.prefetch.ringRangeFactor > 0.0)
+        prefetchVisit(id, b, state.fullyVisible, ctx);
+      return false;
     }
-    insideFrustum = c == Containment::kInside;
+    state.insideFrustum = c == Containment::kInside;
   }
-  if (!fullyVisible) {
+  if (!state.fullyVisible) {
     const HorizonVisibility h = ctx.horizon.classify(b);
     if (h == HorizonVisibility::kHidden) {
       ++stats.horizonCulled;
-      return;
+      return false;
     }
-    fullyVisible = h == HorizonVisibility::kFullyVisible;
+    state.fullyVisible = h == HorizonVisibility::kFullyVisible;
   }
-  const int depth = id.level;
-  if (knownRange && ranges_.observeDiagonal(depth, b.diagonal())) ctx.grew = true;
+  return true;
+}
 
-  const auto add = [&](bool isPartial) {
-    ctx.out->nodes.push_back({id, ranges_.morph(isPartial ? depth - 1 : depth), isPartial,
-                              static_cast<uint8_t>(depth > 0 ? id.quadrant() : 0)});
-    ++stats.selected;
-    if (isPartial) ++stats.partial;
-  };
-  if (partial) {
-    add(true);
+void LodSelector::addSelected(const NodeId& id, bool partial, Context& ctx) {
+  const int depth = id.level;
+  ctx.out->nodes.push_back(
+      {id, ranges_.morph(partial ? depth - 1 : depth), partial, static_cast<uint8_t>(depth > 0 ? id.quadrant() : 0)});
+  ++ctx.out->stats.selected;
+  if (partial) ++ctx.out->stats.partial;
+}
+
+bool LodSelector::requestMissingChildren(const std::array<NodeId, 4>& children, const NodeBounds& b, Context& ctx) {
+  bool allResident = true;
+  for (const NodeId& child : children) allResident = ctx.residency->isResident(child) && allResident;
+  if (allResident) return true;
+  const double distance = distanceToBounds(b, ctx.camera);
+  for (const NodeId& child : children) {
+    if (ctx.residency->isResident(child)) continue;
+    ctx.residency->request(child, RequestPriority::kVisible, distance);
+    ++ctx.out->stats.requests;
+  }
+  return false;
+}
+
+void LodSelector::visitChildren(const NodeId& id, const NodeBounds& b, const std::array<NodeId, 4>& children,
+                                double range_m, VisitState state, Context& ctx) {
+  std::array<std::optional<RadiusRange>, 4> known;
+  std::array<RadiusRange, 4> childRadius;
+  for (size_t q = 0; q < 4; ++q) {
+    known[q] = ctx.residency->knownRadiusRange(children[q]);
+    childRadius[q] = known[q].value_or(defaultRange_);
+  }
+  const std::array<NodeBounds, 4> bounds = childBounds(*mapping_, id, b, childRadius);
+  for (size_t q = 0; q < 4; ++q) {
+    const bool inRange = intersectsSphere(bounds[q], ctx.camera, range_m);
+    visit(children[q], bounds[q], {known[q].has_value(), !inRange, state.insideFrustum, state.fullyVisible}, ctx);
+  }
+}
+
+void LodSelector::visit(const NodeId& id, const NodeBounds& b, VisitState state, Context& ctx) {
+  SelectionStats& stats = ctx.out->stats;
+  ++stats.visited;
+  if (!survivesCulling(id, b, state, ctx)) return;
+  const int depth = id.level;
+  if (state.knownRange && ranges_.observeDiagonal(depth, b.diagonal())) ctx.grew = true;
+  if (state.partial) {
+    addSelected(id, true, ctx);
     return;
   }
   if (depth == 0 && !ctx.residency->isResident(id)) {
@@ -134,7 +169,7 @@ void LodSelector::visit(const NodeId& id, const NodeBounds& b, bool knownRange, 
   }
   const double range = depth < ranges_.maxDepth() ? ranges_.refineRange(depth) : 0.0;
   if (depth >= ranges_.maxDepth() || !intersectsSphere(b, ctx.camera, range)) {
-    add(false);
+    addSelected(id, false, ctx);
     // Look-ahead (a): the camera is about to come within this node's refine range.
     if (depth < ranges_.maxDepth() && config_.prefetch.enabled && config_.prefetch.nextLevelRangeFactor > 1.0 &&
         intersectsSphere(b, ctx.camera, range * config_.prefetch.nextLevelRangeFactor)) {
@@ -143,34 +178,13 @@ void LodSelector::visit(const NodeId& id, const NodeBounds& b, bool knownRange, 
     return;
   }
   std::array<NodeId, 4> children;
-  bool allResident = true;
-  for (int q = 0; q < 4; ++q) {
-    children[static_cast<size_t>(q)] = id.child(q);
-    allResident = ctx.residency->isResident(children[static_cast<size_t>(q)]) && allResident;
-  }
-  if (!allResident) {
-    const double distance = distanceToBounds(b, ctx.camera);
-    for (const NodeId& child : children) {
-      if (ctx.residency->isResident(child)) continue;
-      ctx.residency->request(child, RequestPriority::kVisible, distance);
-      ++stats.requests;
-    }
+  for (int q = 0; q < 4; ++q) children[static_cast<size_t>(q)] = id.child(q);
+  if (!requestMissingChildren(children, b, ctx)) {
     ++stats.fallbacks;
-    add(false);
+    addSelected(id, false, ctx);
     return;
   }
-
-  std::array<std::optional<RadiusRange>, 4> known;
-  std::array<RadiusRange, 4> childRadius;
-  for (size_t q = 0; q < 4; ++q) {
-    known[q] = ctx.residency->knownRadiusRange(children[q]);
-    childRadius[q] = known[q].value_or(defaultRange_);
-  }
-  const std::array<NodeBounds, 4> bounds = childBounds(*mapping_, id, b, childRadius);
-  for (size_t q = 0; q < 4; ++q) {
-    const bool inRange = intersectsSphere(bounds[q], ctx.camera, range);
-    visit(children[q], bounds[q], known[q].has_value(), !inRange, insideFrustum, fullyVisible, ctx);
-  }
+  visitChildren(id, b, children, range, state, ctx);
 }
 
 bool LodSelector::prefetchChildren(const NodeId& id, double distance_m, Context& ctx) {

@@ -1,5 +1,5 @@
 #pragma once
-// CDLOD node selection over the 30 face quadtrees (Strugar 2009; primary source §3.3.1, Listing 3.1).
+// CDLOD node selection over the 30 face quadtrees [Strugar 2009; Frasson 2018, §3.3.1, Listing 3.1].
 // Depth-first from the roots: a node culled by the frustum or the horizon is dropped with its subtree;
 // a node at max depth, or whose bounds miss the ball of radius R(depth) around the camera, is selected;
 // otherwise its four children are visited — those that miss that same ball are selected as *partial*
@@ -103,8 +103,22 @@ class LodSelector {
  private:
   LodSelector(const LodConfig& config, const FaceMapping& mapping, LodRanges ranges);
   struct Context;
-  void visit(const NodeId& id, const NodeBounds& bounds, bool knownRange, bool partial, bool insideFrustum,
-             bool fullyVisible, Context& ctx);
+  // What is known about a node when it is visited; the two visibility facts are inherited from the
+  // parent, so a subtree wholly inside stops testing.
+  struct VisitState {
+    bool knownRange = false;     // its radius range was measured (not the planet-wide default)
+    bool partial = false;        // outside its parent's refine range: drawn as a partial node
+    bool insideFrustum = false;  // wholly inside the frustum (or there is no frustum)
+    bool fullyVisible = false;   // wholly above the horizon
+  };
+  void visit(const NodeId& id, const NodeBounds& bounds, VisitState state, Context& ctx);
+  // Frustum and horizon tests; false when the node is culled. Narrows `state` for the children.
+  bool survivesCulling(const NodeId& id, const NodeBounds& bounds, VisitState& state, Context& ctx);
+  void addSelected(const NodeId& id, bool partial, Context& ctx);
+  // Requests the children that are not resident; true when all four are resident.
+  bool requestMissingChildren(const std::array<NodeId, 4>& children, const NodeBounds& bounds, Context& ctx);
+  void visitChildren(const NodeId& id, const NodeBounds& bounds, const std::array<NodeId, 4>& children, double range_m,
+                     VisitState state, Context& ctx);
   // Walks a frustum-culled node for the ring prefetch: requests, never selects.
   void prefetchVisit(const NodeId& id, const NodeBounds& bounds, bool fullyVisible, Context& ctx);
   // Requests the children of `id` that are not resident, as prefetch; true when all are resident.

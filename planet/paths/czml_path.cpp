@@ -69,7 +69,7 @@ struct CzmlReader {
   Error errorAt(std::string_view key, std::string message) const {
     std::size_t at = text.find(fmt::format("\"{}\"", key), packetStart);
     TextPosition p = textPositionOf(text, at == std::string_view::npos ? packetStart : at);
-    return Error{file, p.line, p.column, std::string(key), std::move(message)};
+    return Error::at(file, p.line, p.column, std::string(key), std::move(message));
   }
 
   Result<double> epochOf(const json& property, std::string_view name) const {
@@ -224,7 +224,7 @@ Error syntaxError(std::string_view text, const std::string& file, const json::pa
   auto colon = what.find(": ", what.find("column"));
   std::string message = colon == std::string::npos ? what : what.substr(colon + 2);
   TextPosition p = textPositionOf(text, e.byte > 0 ? e.byte - 1 : 0);
-  return Error{file, p.line, p.column, "", "invalid JSON: " + message};
+  return Error::at(file, p.line, p.column, "", "invalid JSON: " + message);
 }
 }  // namespace
 
@@ -254,14 +254,14 @@ Result<CameraPath> parseCzmlPath(std::string_view text, const std::string& fileN
   } catch (const json::parse_error& e) {
     return syntaxError(text, fileName, e);
   }
-  if (!doc.is_array()) return Error{fileName, 1, 1, "", "a CZML document must be a JSON array of packets"};
+  if (!doc.is_array()) return Error::at(fileName, 1, 1, "", "a CZML document must be a JSON array of packets");
   std::vector<std::size_t> offsets = packetOffsets(text);
   for (std::size_t i = 0; i < doc.size(); ++i) {
     if (!doc[i].is_object() || !doc[i].contains("position")) continue;
     CzmlReader reader{text, fileName, i < offsets.size() ? offsets[i] : 0};
     return pathFromPacket(reader, doc[i]);
   }
-  return Error{fileName, 1, 1, "position", "no packet has a position (the camera's packet needs one)"};
+  return Error::at(fileName, 1, 1, "position", "no packet has a position (the camera's packet needs one)");
 }
 
 }  // namespace globe

@@ -52,7 +52,7 @@ struct KmlReader {
 
   Error errorAt(const pugi::xml_node& node, std::string message) const {
     TextPosition p = textPositionOf(text, static_cast<std::size_t>(std::max<std::ptrdiff_t>(node.offset_debug(), 0)));
-    return Error{file, p.line, p.column, node ? node.name() : "", std::move(message)};
+    return Error::at(file, p.line, p.column, node ? node.name() : "", std::move(message));
   }
   int lineOf(const pugi::xml_node& node) const {
     return textPositionOf(text, static_cast<std::size_t>(std::max<std::ptrdiff_t>(node.offset_debug(), 0))).line;
@@ -190,11 +190,11 @@ Result<CameraPath> parseKmlTour(std::string_view text, const std::string& fileNa
   pugi::xml_parse_result parsed = doc.load_buffer(text.data(), text.size());
   if (!parsed) {
     TextPosition p = textPositionOf(text, static_cast<std::size_t>(std::max<std::ptrdiff_t>(parsed.offset, 0)));
-    return Error{fileName, p.line, p.column, "", fmt::format("invalid XML: {}", parsed.description())};
+    return Error::at(fileName, p.line, p.column, "", fmt::format("invalid XML: {}", parsed.description()));
   }
   KmlReader reader{text, fileName};
   pugi::xml_node tour = findTour(doc);
-  if (!tour) return Error{fileName, 1, 0, "gx:Tour", "no tour in this KML file (expected a gx:Tour element)"};
+  if (!tour) return Error::at(fileName, 1, 0, "gx:Tour", "no tour in this KML file (expected a gx:Tour element)");
   pugi::xml_node playlist = childNamed(tour, "Playlist");
   if (!playlist) return reader.errorAt(tour, "has no gx:Playlist");
   auto keys = readPlaylist(reader, playlist);

@@ -1,5 +1,6 @@
 #include "planet/streaming/payload_pool.h"
 
+#include "planet/core/hash.h"
 #include "planet/lod/lod_ranges.h"
 
 #include <algorithm>
@@ -12,43 +13,34 @@ namespace globe {
 namespace {
 constexpr double kMiB = 1024.0 * 1024.0;
 constexpr size_t kLatencyBuckets = 64;
-
-uint64_t hashKey(uint64_t key) {
-  uint64_t z = key + 0x9e3779b97f4a7c15ull;
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-  return z ^ (z >> 31);
-}
 }  // namespace
 
 Status validateStreamingConfig(const StreamingConfig& c) {
   if (!(c.ramBudget_MiB > 0) || !std::isfinite(c.ramBudget_MiB))
-    return Error{"", 0, 0, "ram_budget_mib", "must be a finite number > 0"};
+    return Error::inField("ram_budget_mib", "must be a finite number > 0");
   if (!(c.vramBudget_MiB > 0) || !std::isfinite(c.vramBudget_MiB))
-    return Error{"", 0, 0, "vram_budget_mib", "must be a finite number > 0"};
-  if (c.dispatchBudget < 1) return Error{"", 0, 0, "dispatch_budget", "must be >= 1"};
-  if (c.maxInFlight < 1) return Error{"", 0, 0, "max_in_flight", "must be >= 1"};
+    return Error::inField("vram_budget_mib", "must be a finite number > 0");
+  if (c.dispatchBudget < 1) return Error::inField("dispatch_budget", "must be >= 1");
+  if (c.maxInFlight < 1) return Error::inField("max_in_flight", "must be >= 1");
   return Ok{};
 }
 
 Result<std::unique_ptr<PayloadPool>> PayloadPool::create(const StreamingConfig& config, PayloadGenerator& generator,
                                                          double radius_m, const FaceMapping& mapping) {
   if (auto s = validateStreamingConfig(config); !s) return s.error();
-  if (!(radius_m > 0) || !std::isfinite(radius_m)) return Error{"", 0, 0, "radius_m", "must be a finite number > 0"};
+  if (!(radius_m > 0) || !std::isfinite(radius_m)) return Error::inField("radius_m", "must be a finite number > 0");
   size_t slotBytes = std::max<size_t>(generator.slotBytes(), 1);
   double slots = std::floor(config.vramBudget_MiB * kMiB / double(slotBytes));
   if (config.maxSlots > 0) slots = std::min(slots, double(config.maxSlots));
   // The 30 roots are pinned; below that plus one refinement of each there is no working set.
   if (slots < 30 + 4)
-    return Error{"", 0, 0, "vram_budget_mib",
-                 "too small: " + std::to_string(int64_t(slots)) + " payload slots of " + std::to_string(slotBytes) +
-                     " bytes fit, at least 34 are needed"};
+    return Error::inField("vram_budget_mib", "too small: " + std::to_string(int64_t(slots)) + " payload slots of " +
+                                                 std::to_string(slotBytes) + " bytes fit, at least 34 are needed");
   // The hash table is twice the node capacity (load <= 0.5) and counts against the RAM budget.
   double nodes = std::floor(config.ramBudget_MiB * kMiB / (2.0 * sizeof(NodeRecord)));
   if (nodes < slots + 256)
-    return Error{"", 0, 0, "ram_budget_mib",
-                 "too small for the VRAM budget: " + std::to_string(int64_t(nodes)) + " nodes fit, " +
-                     std::to_string(int64_t(slots) + 256) + " are needed"};
+    return Error::inField("ram_budget_mib", "too small for the VRAM budget: " + std::to_string(int64_t(nodes)) +
+                                                " nodes fit, " + std::to_string(int64_t(slots) + 256) + " are needed");
   nodes = std::min(nodes, 1.0 * (1u << 30));
   return std::unique_ptr<PayloadPool>(
       new PayloadPool(config, generator, radius_m, mapping, uint32_t(slots), uint32_t(nodes)));
@@ -78,7 +70,7 @@ PayloadPool::PayloadPool(const StreamingConfig& config, PayloadGenerator& genera
 
 int64_t PayloadPool::find(uint64_t key) const {
   size_t mask = table_.size() - 1;
-  for (size_t i = hashKey(key) & mask, probes = 0; probes < table_.size(); i = (i + 1) & mask, ++probes) {
+  for (size_t i = mix64(key) & mask, probes = 0; probes < table_.size(); i = (i + 1) & mask, ++probes) {
     if (table_[i].key == key) return int64_t(i);
     if (table_[i].key == kEmptyKey) return -1;
   }
@@ -90,7 +82,7 @@ int64_t PayloadPool::insert(const NodeId& node) {
   if (tombstones_ > table_.size() / 4) rehash();
   size_t mask = table_.size() - 1;
   uint64_t key = node.key();
-  for (size_t i = hashKey(key) & mask;; i = (i + 1) & mask) {
+  for (size_t i = mix64(key) & mask;; i = (i + 1) & mask) {
     if (table_[i].key == kEmptyKey || table_[i].key == kTombstone) {
       if (table_[i].key == kTombstone) --tombstones_;
       NodeRecord& r = table_[i];
@@ -120,7 +112,7 @@ void PayloadPool::rehash() {
   size_t mask = scratchTable_.size() - 1;
   for (const NodeRecord& r : table_) {
     if (r.key == kEmptyKey || r.key == kTombstone) continue;
-    size_t i = hashKey(r.key) & mask;
+    size_t i = mix64(r.key) & mask;
     while (scratchTable_[i].key != kEmptyKey) i = (i + 1) & mask;
     scratchTable_[i] = r;
   }
@@ -136,7 +128,7 @@ void PayloadPool::adjustParentCount(const NodeId& node, int delta) {
   int64_t p = find(node.parent().key());
   if (p < 0) return;
   auto& count = table_[size_t(p)].activeChildren;
-  if (delta < 0 && count == 0) return;  // counts were reset by invalidateAll
+  assert(delta > 0 || count > 0);
   count = uint16_t(int(count) + delta);
 }
 
@@ -223,7 +215,7 @@ void PayloadPool::beginFrame(uint64_t frame, const glm::dvec3& camera_m, uint64_
   camera_m_ = camera_m;
   stats_ = StreamingStats{};
 
-  // Slots retired by invalidateAll become free once the frames that read them are done.
+  // Slots released while a frame in flight still read them become free once those frames are done.
   for (size_t k = 0; k < retiredSlots_.size();) {
     if (retiredSlots_[k].second <= completedFrame_) {
       freeSlots_.push_back(retiredSlots_[k].first);
@@ -239,9 +231,8 @@ void PayloadPool::beginFrame(uint64_t frame, const glm::dvec3& camera_m, uint64_
   for (const GenerationResult& done : finished_) {
     --inFlight_;
     int64_t i = find(done.node.key());
-    if (i < 0 || table_[size_t(i)].state != State::kInFlight || table_[size_t(i)].slot != done.slot ||
-        table_[size_t(i)].generation != generation_) {
-      // Stale (invalidated while generating): the generator is done with the slot, nobody draws it.
+    if (i < 0 || table_[size_t(i)].state != State::kInFlight || table_[size_t(i)].slot != done.slot) {
+      // Not the job this pool started (never expected): the generator is done with the slot, nobody draws it.
       freeSlots_.push_back(done.slot);
       slotOwner_[done.slot] = kEmptyKey;
       if (i >= 0 && table_[size_t(i)].state == State::kInFlight && table_[size_t(i)].slot == done.slot) erase(i);
@@ -314,7 +305,7 @@ void PayloadPool::evictCandidate(size_t index) {
   ++stats_.evicted;
 }
 
-void PayloadPool::dispatch() {
+void PayloadPool::dropUnrequestedAndSort() {
   // Requests not repeated this frame are no longer needed: nothing is generated that the current
   // view did not ask for.
   for (size_t k = 0; k < pending_.size();) {
@@ -334,15 +325,9 @@ void PayloadPool::dispatch() {
     if (ra.distance_m != rb.distance_m) return ra.distance_m < rb.distance_m;
     return ra.key < rb.key;  // deterministic order
   });
+}
 
-  jobs_.clear();
-  const uint32_t budget = config_.dispatchBudget;
-  const uint32_t maxInFlight = config_.maxInFlight;
-  // Prefetch leaves one frame's dispatch budget of in-flight room to the next frame's visible
-  // requests (at least half of the cap stays usable by prefetch when the budget is that large).
-  const uint32_t prefetchInFlightCap = std::max(maxInFlight / 2, maxInFlight - std::min(maxInFlight, budget));
-  uint32_t room = std::min<uint32_t>(budget, maxInFlight - std::min(maxInFlight, inFlight_));
-  uint32_t want = std::min<uint32_t>(room, uint32_t(pending_.size()));
+size_t PayloadPool::evictForUrgent(uint32_t want) {
   uint32_t urgent = 0;
   for (uint32_t k = 0; k < want; ++k)
     if (table_[size_t(pending_[k])].priority != RequestPriority::kPrefetch) ++urgent;
@@ -354,6 +339,15 @@ void PayloadPool::dispatch() {
     uint32_t urgentNeed = urgent > freeSlots_.size() ? urgent - uint32_t(freeSlots_.size()) : 0;
     for (; nextVictim < std::min<size_t>(urgentNeed, candidates_.size()); ++nextVictim) evictCandidate(nextVictim);
   }
+  return nextVictim;
+}
+
+size_t PayloadPool::startJobs(size_t nextVictim) {
+  const uint32_t budget = config_.dispatchBudget;
+  const uint32_t maxInFlight = config_.maxInFlight;
+  // Prefetch leaves one frame's dispatch budget of in-flight room to the next frame's visible
+  // requests (at least half of the cap stays usable by prefetch when the budget is that large).
+  const uint32_t prefetchInFlightCap = std::max(maxInFlight / 2, maxInFlight - std::min(maxInFlight, budget));
   size_t taken = 0;
   for (; taken < pending_.size(); ++taken) {
     if (jobs_.size() >= budget || inFlight_ >= maxInFlight) break;
@@ -376,14 +370,13 @@ void PayloadPool::dispatch() {
     freeSlots_.pop_back();
     slotOwner_[r.slot] = r.key;
     r.state = State::kInFlight;
-    r.generation = generation_;
     ++inFlight_;
     jobs_.push_back({NodeId::fromKey(r.key), r.slot});
   }
-  candidates_.clear();
-  pending_.erase(pending_.begin(), pending_.begin() + std::ptrdiff_t(taken));
-  if (!jobs_.empty()) generator_.generate(jobs_);
+  return taken;
+}
 
+void PayloadPool::updateDispatchStats() {
   stats_.dispatched = uint32_t(jobs_.size());
   stats_.inFlight = inFlight_;
   stats_.queueLength = uint32_t(pending_.size());
@@ -392,28 +385,18 @@ void PayloadPool::dispatch() {
   stats_.residentMiB = double(used) * double(generator_.slotBytes()) / kMiB;
 }
 
-void PayloadPool::invalidateAll() {
-  ++generation_;
-  for (size_t i = 0; i < table_.size(); ++i) {
-    NodeRecord& r = table_[i];
-    if (r.key == kEmptyKey || r.key == kTombstone) continue;
-    if (r.state == State::kResident) {
-      releaseSlot(r.slot, r.lastUsedFrame);
-      r.key = kTombstone;
-      r.state = State::kFree;
-      --liveNodes_;
-      ++tombstones_;
-    } else if (r.state == State::kQueued) {
-      r.key = kTombstone;
-      r.state = State::kFree;
-      --liveNodes_;
-      ++tombstones_;
-    }
-    // In-flight records stay until their (now stale) results come back and free their slots.
-  }
-  for (auto& r : table_)
-    if (r.key != kEmptyKey && r.key != kTombstone) r.activeChildren = 0;
-  pending_.clear();
+void PayloadPool::dispatch() {
+  dropUnrequestedAndSort();
+  jobs_.clear();
+  const uint32_t maxInFlight = config_.maxInFlight;
+  uint32_t room = std::min<uint32_t>(config_.dispatchBudget, maxInFlight - std::min(maxInFlight, inFlight_));
+  uint32_t want = std::min<uint32_t>(room, uint32_t(pending_.size()));
+  const size_t nextVictim = evictForUrgent(want);
+  const size_t taken = startJobs(nextVictim);
+  candidates_.clear();
+  pending_.erase(pending_.begin(), pending_.begin() + std::ptrdiff_t(taken));
+  if (!jobs_.empty()) generator_.generate(jobs_);
+  updateDispatchStats();
 }
 
 uint32_t PayloadPool::latencyPercentile(double fraction) const {

@@ -1,5 +1,5 @@
 #pragma once
-// The node/payload pool (primary source §3.5): fixed-capacity tables of nodes and payload slots
+// The node/payload pool [Frasson 2018, §3.5.2]: fixed-capacity tables of nodes and payload slots
 // sized from a RAM and a VRAM budget, a prioritised request queue drained under a per-frame dispatch
 // budget with a cap on generations in flight, and eviction by distance and level (least recently
 // used among equals). It is the selection's NodeResidency: a node is drawable only once its payload
@@ -91,8 +91,6 @@ class PayloadPool final : public NodeResidency {
   uint32_t latencyPercentile(double fraction) const;
   // Set once, when the pool first had to skip a request because no slot could be freed.
   const std::string& exhaustionWarning() const { return exhaustionWarning_; }
-  // Drops every payload (e.g. the planet changed); in-flight results are discarded when they arrive.
-  void invalidateAll();
 
  private:
   PayloadPool(const StreamingConfig& config, PayloadGenerator& generator, double radius_m, const FaceMapping& mapping,
@@ -105,7 +103,6 @@ class PayloadPool final : public NodeResidency {
     uint8_t level = 0;
     uint16_t activeChildren = 0;  // children queued-for-generation, in flight or resident
     uint32_t slot = kNoSlot;
-    uint32_t generation = 0;                // bumped by invalidateAll; stale results are dropped
     uint64_t firstRequestFrame = 0;         // first visible (non-prefetch) request
     bool visibleRequested = false;          // a kVisible/kRoot request arrived before resident
     mutable bool prefetchedUnused = false;  // resident from prefetch alone, not yet asked for by the view
@@ -130,6 +127,13 @@ class PayloadPool final : public NodeResidency {
   void gatherCandidates(size_t count);
   // Evicts candidates_[index] (gathered this dispatch; still a valid victim).
   void evictCandidate(size_t index);
+  // dispatch()'s steps: drop requests not repeated this frame and sort the rest (priority, then
+  // distance); evict for the `want` first requests, returning the index of the next unused victim;
+  // start generations, returning how many pending requests were taken; refresh the stats.
+  void dropUnrequestedAndSort();
+  size_t evictForUrgent(uint32_t want);
+  size_t startJobs(size_t nextVictim);
+  void updateDispatchStats();
   // floor(2 log2(distance / node width)): larger buckets are evicted first.
   int distanceBucket(const NodeRecord& r) const;
   void setWarning(const std::string& message);
@@ -153,7 +157,7 @@ class PayloadPool final : public NodeResidency {
     uint64_t key;
   };
   std::vector<EvictionCandidate> candidates_;  // scratch for dispatch()
-  // Slots dropped by invalidateAll while a frame in flight may still read them: (slot, last use).
+  // Slots released while a frame in flight may still read them: (slot, last use).
   std::vector<std::pair<uint32_t, uint64_t>> retiredSlots_;
   std::vector<NodeRecord> scratchTable_;  // rehash target, same size as table_
   std::vector<int64_t> pending_;          // table indices requested this frame (deduplicated)
@@ -162,7 +166,6 @@ class PayloadPool final : public NodeResidency {
   std::vector<uint64_t> latency_;
   uint64_t frame_ = 0;
   uint64_t completedFrame_ = 0;
-  uint32_t generation_ = 0;
   uint32_t inFlight_ = 0;
   mutable uint64_t prefetchHits_ = 0;
   uint64_t prefetchCompleted_ = 0;

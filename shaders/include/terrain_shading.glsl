@@ -3,10 +3,17 @@
 #ifndef GLOBE_TERRAIN_SHADING_GLSL
 #define GLOBE_TERRAIN_SHADING_GLSL
 
+#extension GL_EXT_control_flow_attributes : require
+
 #include "colour_ramp.h"
 
 // GLOBE_RAMP names the ColourRampParams to read (e.g. a storage-buffer member). Not a parameter:
 // passing the 320-byte struct by value copies it per fragment, which made lavapipe ~5x slower.
+// No branch or loop bound may depend on the ramp's values alone (stop_count, snow_enabled): from a
+// uniform buffer, lavapipe would inline them and compile the shader again at draw time
+// (docs/rendering.md, "No shader compile per frame"). Hence the constant loop bound (the loop
+// always breaks by stop n - 1: elevations increase and the last stop is handled first) and the
+// snow selected with mix(bool), not an if.
 #ifndef GLOBE_RAMP
 #error "define GLOBE_RAMP (a ColourRampParams l-value) before including terrain_shading.glsl"
 #endif
@@ -16,7 +23,7 @@ vec3 terrainRampColour(float elevation_m, float cosSlope) {
   if (elevation_m >= GLOBE_RAMP.stops[n - 1u].elevation_m) {
     base = vec3(GLOBE_RAMP.stops[n - 1u].r, GLOBE_RAMP.stops[n - 1u].g, GLOBE_RAMP.stops[n - 1u].b);
   } else {
-    for (uint i = 1u; i < n; ++i) {
+    [[dont_unroll]] for (uint i = 1u; i < uint(GLOBE_MAX_COLOUR_STOPS); ++i) {
       if (elevation_m < GLOBE_RAMP.stops[i].elevation_m) {
         float e0 = GLOBE_RAMP.stops[i - 1u].elevation_m, e1 = GLOBE_RAMP.stops[i].elevation_m;
         float t = clamp((elevation_m - e0) / (e1 - e0), 0.0, 1.0);
@@ -29,10 +36,10 @@ vec3 terrainRampColour(float elevation_m, float cosSlope) {
   }
   float r = clamp((GLOBE_RAMP.rock_cos_start - cosSlope) * GLOBE_RAMP.rock_inv_range, 0.0, 1.0);
   vec3 colour = mix(base, vec3(GLOBE_RAMP.rock.r, GLOBE_RAMP.rock.g, GLOBE_RAMP.rock.b), r * r * (3.0 - 2.0 * r));
-  if (GLOBE_RAMP.snow_enabled != 0u && cosSlope >= GLOBE_RAMP.snow_cos_min) {
-    float s = clamp((elevation_m - GLOBE_RAMP.snow_elevation_m) * GLOBE_RAMP.snow_inv_blend, 0.0, 1.0);
-    colour = mix(colour, vec3(GLOBE_RAMP.snow.r, GLOBE_RAMP.snow.g, GLOBE_RAMP.snow.b), s);
-  }
+  bool snowy = all(bvec2(GLOBE_RAMP.snow_enabled != 0u, cosSlope >= GLOBE_RAMP.snow_cos_min));
+  float s = clamp((elevation_m - GLOBE_RAMP.snow_elevation_m) * GLOBE_RAMP.snow_inv_blend, 0.0, 1.0);
+  vec3 snowed = mix(colour, vec3(GLOBE_RAMP.snow.r, GLOBE_RAMP.snow.g, GLOBE_RAMP.snow.b), s);
+  colour = mix(colour, snowed, bvec3(snowy));  // a select: colour unchanged, bit for bit, without snow
   return colour;
 }
 

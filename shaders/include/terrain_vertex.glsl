@@ -67,6 +67,7 @@ struct TerrainVertex {
   vec3 up;          // planet-fixed radial unit vector at the vertex
   float elevation;  // metres above the planet radius (morphed)
   float morph;      // k in [0, 1]
+  uint level;       // level the node is drawn at (TerrainInstance.info.z)
 };
 
 float terrainMorphFactor(float distance_m, vec2 band) {
@@ -167,6 +168,7 @@ TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCell
   v.up = up;
   v.elevation = elevation;
   v.morph = k;
+  v.level = inst.info.z;
   return v;
 }
 

@@ -22,12 +22,12 @@ void main() {
   gl_Position = v.clip;
   outNormal = v.normal;
   vec3 n = normalize(v.normal);
-  if (frame.options.y != GLOBE_TERRAIN_SHADED) {
-    outAlbedo = terrainLevelColour(instances[gl_InstanceIndex].info.z);
-    outSun = vec4(0.0, 0.0, 0.0, 1.0);  // debug colours are shown unlit
-  } else {
-    outAlbedo = terrainRampColour(v.elevation, clamp(dot(n, v.up), 0.0, 1.0));
-    outSun = frame.sun;
-  }
+  // Both colours, then a select (mix with a bool): an if on the debug view (a uniform value) would
+  // make lavapipe compile the shader again at draw time (docs/rendering.md).
+  bool debug = frame.options.y != GLOBE_TERRAIN_SHADED;
+  vec3 ramp = terrainRampColour(v.elevation, clamp(dot(n, v.up), 0.0, 1.0));
+  vec3 level = terrainLevelColour(v.level);
+  outAlbedo = mix(ramp, level, bvec3(debug));
+  outSun = mix(frame.sun, vec4(0.0, 0.0, 0.0, 1.0), bvec4(debug));  // debug colours are shown unlit
   outRelative = v.relative;
 }

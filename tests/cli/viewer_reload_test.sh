@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Live reload of `globe view --planet FILE` under a virtual X server (issue 9): the viewer runs a
+# Live reload of `globe view --planet FILE` under a virtual X server (docs/viewer.md): the viewer runs a
 # script with a still camera while this test rewrites the planet file at the script's WAIT RELOAD
 # points: first a valid planet with another seed (the image must change), then an invalid one (the
 # errors go to stderr as file:line:column, the image must stay the last good planet's). Vulkan

@@ -1,6 +1,6 @@
-// Stability at the extremes (issue 8): the real frame (Terrain + HeadlessRenderer, GPU payloads,
-// converged) on three radii — the asteroid (1 km), earthlike (6371 km) and gasgiant-core (7e7 m)
-// presets — with cameras from 1 mm to 1e11 m above the ground, over the 32 polyhedron vertices
+// Stability at the extremes (docs/rendering.md, "Floating origin and precision"; docs/lod.md): the real frame (Terrain
+// + HeadlessRenderer, GPU payloads, converged) on three radii — the asteroid (1 km), earthlike (6371 km) and
+// gasgiant-core (7e7 m) presets — with cameras from 1 mm to 1e11 m above the ground, over the 32 polyhedron vertices
 // (the poles are vertices 0 and 11), face seams and ±180°. Per frame: no NaN/Inf in the read-back
 // colour and depth, the selection, the drawn nodes' payloads and the instance data; zero background
 // pixels inside the silhouette of the lowest drawn surface; payload elevations = CPU reference;
@@ -27,6 +27,7 @@
 #include "shaders/include/payload_layout.h"
 #include "shaders/include/terrain_layout.h"
 #include "tests/support/gpu_test.h"
+#include "tests/support/render_test_geometry.h"
 
 #include <glm/geometric.hpp>
 
@@ -57,16 +58,6 @@ PlanetDescription preset(const std::string& name) {
 }
 
 bool finite3(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
-double angleBetween(const glm::dvec3& a, const glm::dvec3& b) {
-  return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
-}
-
-glm::dvec3 pixelRay(const Camera& camera, double x, double y) {
-  const double tanY = std::tan(camera.verticalFov_rad * 0.5), tanX = tanY * camera.aspect;
-  const double nx = x / kWidth * 2.0 - 1.0, ny = y / kHeight * 2.0 - 1.0;
-  return glm::normalize(camera.forward + nx * tanX * camera.right - ny * tanY * camera.up);
-}
 
 // Ray (o, unit d) against the sphere of radius r at 0: entry distance (negative when o is inside),
 // or NaN when the ray misses.
@@ -159,30 +150,21 @@ class ExtremesTest : public GpuTest {
     return {data.begin(), data.begin() + std::ptrdiff_t(slots.size() * GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells))};
   }
 
-  // Renders one converged frame and checks everything in it; accumulates into `worst`.
-  void checkFrame(Scene& s, const Camera& camera, const std::string& label, Worst& worst) {
-    SCOPED_TRACE(label);
-    const uint64_t generatedBefore = s.terrain->generator().nodesGenerated();
-    const auto start = std::chrono::steady_clock::now();
-    const FrameStats stats = s.renderer->renderFrame(*s.terrain, camera, true);
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    const uint64_t generated = s.terrain->generator().nodesGenerated() - generatedBefore;
-    const vk::ReadbackImage image = s.renderer->readback();
-    ++worst.frames;
-    long nonFinite = 0;
-
-    // Read-back colour and depth.
-    for (float c : image.rgba) nonFinite += std::isfinite(c) ? 0 : 1;
-    for (float d : image.depth) nonFinite += std::isfinite(d) && d >= 0.0f && d <= 1.0f ? 0 : 1;
-    EXPECT_EQ(nonFinite, 0) << "colour/depth";
-
-    // Selection: morph bands (finite below depth 0, +inf at depth 0), radius ranges, bounds.
-    const Selection& selection = s.terrain->selection();
-    const auto& mapping = RhombusFaceMapping::get();
+  // What checkSelection found: the drawn nodes' slots, in selection order, and the spheres every
+  // drawn triangle lies between.
+  struct SelectionCheck {
     std::vector<uint32_t> slots;
-    double inner = std::numeric_limits<double>::infinity(), outer = 0.0;
+    double inner_m = std::numeric_limits<double>::infinity();
+    double outer_m = 0.0;
+    long bad = 0;           // non-finite or inconsistent values
+    bool complete = false;  // false: a drawn node had no payload (a fatal failure)
+  };
+
+  // Selection: morph bands (finite below depth 0, +inf at depth 0), radius ranges, bounds.
+  void checkSelection(Scene& s, SelectionCheck& out) {
+    const auto& mapping = RhombusFaceMapping::get();
     long selectionBad = 0;
-    for (const SelectedNode& n : selection.nodes) {
+    for (const SelectedNode& n : s.terrain->selection().nodes) {
       const int drawn = n.id.level - (n.partial ? 1 : 0);
       if (drawn == 0) {
         selectionBad +=
@@ -203,28 +185,32 @@ class ExtremesTest : public GpuTest {
       const NodeBounds bounds = NodeBounds::forNode(mapping, n.id, *range);
       for (const glm::dvec3& c : bounds.corners) selectionBad += finite3(c) ? 0 : 1;
       for (const glm::dvec4& p : bounds.planes) selectionBad += std::isfinite(p.x + p.y + p.z + p.w) ? 0 : 1;
-      slots.push_back(*slot);
+      out.slots.push_back(*slot);
       // Every drawn triangle (morphed to the parent's cells, skirts aside) lies above the sphere of
       // the node's lowest radius times the cosine of twice a drawn cell's diagonal angle.
       const double diagonal =
-          std::max(angleBetween(nodeCornerDirection(mapping, n.id, 0), nodeCornerDirection(mapping, n.id, 2)),
-                   angleBetween(nodeCornerDirection(mapping, n.id, 1), nodeCornerDirection(mapping, n.id, 3)));
+          std::max(angleBetween_rad(nodeCornerDirection(mapping, n.id, 0), nodeCornerDirection(mapping, n.id, 2)),
+                   angleBetween_rad(nodeCornerDirection(mapping, n.id, 1), nodeCornerDirection(mapping, n.id, 3)));
       const double angle = 2.0 * 1.25 * diagonal / double(n.partial ? kCells / 2 : kCells);
-      inner = std::min(inner, range->min_m * std::cos(angle));
-      outer = std::max(outer, range->max_m);
+      out.inner_m = std::min(out.inner_m, range->min_m * std::cos(angle));
+      out.outer_m = std::max(out.outer_m, range->max_m);
     }
     EXPECT_EQ(selectionBad, 0) << "selection";
-    nonFinite += selectionBad;
+    out.bad = selectionBad;
+    out.complete = true;
+  }
 
-    // Payloads of the drawn nodes: finite; elevations and positions = CPU reference at sampled points.
+  // Payloads of the drawn nodes: finite; elevations and positions = CPU reference at sampled points.
+  // Returns the number of non-finite values.
+  long checkPayloads(Scene& s, const std::vector<uint32_t>& slots, Worst& worst) {
     const std::vector<glm::vec4> payloads = readSlots(s, slots);
     const size_t perSlot = GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells);
     long payloadBad = 0;
     for (const glm::vec4& v : payloads) payloadBad += std::isfinite(v.x + v.y + v.z + v.w) ? 0 : 1;
     EXPECT_EQ(payloadBad, 0) << "payloads";
-    nonFinite += payloadBad;
     const int n = int(kCells), side = n + 3;
     const int picks[] = {-1, 0, n / 2, n, n + 1};
+    const Selection& selection = s.terrain->selection();
     for (size_t k = 0; k < selection.nodes.size(); ++k) {
       const NodeId& id = selection.nodes[k].id;
       const gpu::PayloadJob job = makePayloadJob(id, slots[k], s.model);
@@ -252,38 +238,46 @@ class ExtremesTest : public GpuTest {
         }
       }
     }
+    return payloadBad;
+  }
 
-    // Instance data the draw used (TerrainFrame + one TerrainInstance per drawn node).
-    {
-      const vk::Buffer& frameBuffer = s.terrain->renderer().frameBuffer(uint32_t(s.renderer->frame() % 2));
-      const auto* bytes = static_cast<const unsigned char*>(frameBuffer.mapped());
-      gpu::TerrainFrame frame;
-      std::memcpy(&frame, bytes, sizeof(frame));
-      long bad = 0;
-      for (float f : frame.clipFromCamera.m) bad += std::isfinite(f) ? 0 : 1;
-      for (const gpu::TerrainVec4& v : {frame.cameraHigh, frame.cameraLow, frame.planetCentre, frame.sun})
-        bad += std::isfinite(v.x + v.y + v.z + v.w) ? 0 : 1;
-      for (size_t k = 0; k < selection.nodes.size(); ++k) {
-        gpu::TerrainInstance inst;
-        std::memcpy(&inst, s.terrain->renderer().instanceBytes(uint32_t(s.renderer->frame() % 2)) + k * sizeof(inst),
-                    sizeof(inst));
-        bad += std::isfinite(inst.offset.x + inst.offset.y + inst.offset.z + inst.offset.w) ? 0 : 1;
-        bad += std::isfinite(inst.morph.x) && std::isfinite(inst.morph.y) && inst.morph.x <= inst.morph.y ? 0 : 1;
-      }
-      EXPECT_EQ(bad, 0) << "instances";
-      nonFinite += bad;
+  // Instance data the draw used (TerrainFrame + one TerrainInstance per drawn node). Returns the
+  // number of non-finite or inconsistent values.
+  long checkInstances(Scene& s) {
+    const vk::Buffer& frameBuffer = s.terrain->renderer().frameBuffer(uint32_t(s.renderer->frame() % 2));
+    const auto* bytes = static_cast<const unsigned char*>(frameBuffer.mapped());
+    gpu::TerrainFrame frame;
+    std::memcpy(&frame, bytes, sizeof(frame));
+    long bad = 0;
+    for (float f : frame.clipFromCamera.m) bad += std::isfinite(f) ? 0 : 1;
+    for (const gpu::TerrainVec4& v : {frame.cameraHigh, frame.cameraLow, frame.planetCentre, frame.sun})
+      bad += std::isfinite(v.x + v.y + v.z + v.w) ? 0 : 1;
+    for (size_t k = 0; k < s.terrain->selection().nodes.size(); ++k) {
+      gpu::TerrainInstance inst;
+      std::memcpy(&inst, s.terrain->renderer().instanceBytes(uint32_t(s.renderer->frame() % 2)) + k * sizeof(inst),
+                  sizeof(inst));
+      bad += std::isfinite(inst.offset.x + inst.offset.y + inst.offset.z + inst.offset.w) ? 0 : 1;
+      bad += std::isfinite(inst.morph.x) && std::isfinite(inst.morph.y) && inst.morph.x <= inst.morph.y ? 0 : 1;
     }
-    worst.nonFinite += nonFinite;
+    EXPECT_EQ(bad, 0) << "instances";
+    return bad;
+  }
 
-    // Cracks and depth order, per pixel.
-    long cracks = 0, order = 0;
+  // Cracks and depth order, per pixel: {background pixels inside the inner sphere's silhouette,
+  // depths outside [outer entry, inner hit]}.
+  std::pair<long, long> checkPixels(const Camera& camera, const vk::ReadbackImage& image, double inner, double outer) {
+    std::pair<long, long> out{0, 0};
+    long& cracks = out.first;
+    long& order = out.second;
     for (uint32_t y = 0; y < kHeight; ++y) {
       for (uint32_t x = 0; x < kWidth; ++x) {
-        const glm::dvec3 ray = pixelRay(camera, x + 0.5, y + 0.5);
+        const glm::dvec3 ray = testing::pixelPositionRay(camera, x + 0.5, y + 0.5, kWidth, kHeight);
         const double innerHit = raySphereEntry(camera.position_m, ray, inner);
         bool inside = innerHit > 0.0;
         for (auto [dx, dy] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}, {1.0, 1.0}})
-          inside = inside && raySphereEntry(camera.position_m, pixelRay(camera, x + dx, y + dy), inner) > 0.0;
+          inside =
+              inside && raySphereEntry(camera.position_m,
+                                       testing::pixelPositionRay(camera, x + dx, y + dy, kWidth, kHeight), inner) > 0.0;
         const float depth = image.depthAt(x, y);
         if (inside && image.pixel(x, y)[3] == 0.0f) ++cracks;
         if (depth > 0.0f) {
@@ -302,6 +296,34 @@ class ExtremesTest : public GpuTest {
         }
       }
     }
+    return out;
+  }
+
+  // Renders one converged frame and checks everything in it; accumulates into `worst`.
+  void checkFrame(Scene& s, const Camera& camera, const std::string& label, Worst& worst) {
+    SCOPED_TRACE(label);
+    const uint64_t generatedBefore = s.terrain->generator().nodesGenerated();
+    const auto start = std::chrono::steady_clock::now();
+    const FrameStats stats = s.renderer->renderFrame(*s.terrain, camera, true);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const uint64_t generated = s.terrain->generator().nodesGenerated() - generatedBefore;
+    const vk::ReadbackImage image = s.renderer->readback();
+    ++worst.frames;
+    long nonFinite = 0;
+
+    // Read-back colour and depth.
+    for (float c : image.rgba) nonFinite += std::isfinite(c) ? 0 : 1;
+    for (float d : image.depth) nonFinite += std::isfinite(d) && d >= 0.0f && d <= 1.0f ? 0 : 1;
+    EXPECT_EQ(nonFinite, 0) << "colour/depth";
+
+    SelectionCheck selection;
+    checkSelection(s, selection);
+    if (!selection.complete) return;
+    nonFinite += selection.bad;
+    nonFinite += checkPayloads(s, selection.slots, worst);
+    nonFinite += checkInstances(s);
+    worst.nonFinite += nonFinite;
+    const auto [cracks, order] = checkPixels(camera, image, selection.inner_m, selection.outer_m);
     EXPECT_EQ(cracks, 0);
     EXPECT_EQ(order, 0) << "depth order";
     worst.cracks += cracks;

@@ -98,7 +98,7 @@ class MovieTest : public testing::GpuTest {
     s.format = format;
     s.out = out;
     s.description = "movie_test";
-    s.terrain = terrainSettingsFor(QualityPreset::Fast);
+    s.terrain = terrainSettingsFor(QualityPreset::kFast);
     return s;
   }
   PlanetDescription planet() const {

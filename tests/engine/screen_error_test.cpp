@@ -56,8 +56,8 @@ TEST(SurfaceRay, MatchesRaySphereToOneMillimetre) {
         glm::dvec3 dir = pixelRay(camera, 64, 36, truth.pixelX(c), truth.pixelY(r));
         double exact = raySphere(camera.position_m, dir, model.radius_m());
         const SurfaceRayHit& hit = truth.at(c, r);
-        ASSERT_NE(hit.kind, SurfaceRayHit::Kind::Unresolved);
-        ASSERT_EQ(hit.kind == SurfaceRayHit::Kind::Hit, std::isfinite(exact))
+        ASSERT_NE(hit.kind, SurfaceRayHit::Kind::kUnresolved);
+        ASSERT_EQ(hit.kind == SurfaceRayHit::Kind::kHit, std::isfinite(exact))
             << height << " m, pixel " << c << "," << r;
         if (!std::isfinite(exact)) {
           ++sky;
@@ -85,7 +85,7 @@ TEST(SurfaceRay, HitsOfRealTerrainLieOnTheSurfaceAndNothingIsCrossedBefore) {
     for (double x : {0.0, 31.0, 63.0}) {
       glm::dvec3 dir = pixelRay(camera, 64, 36, x, y);
       SurfaceRayHit hit = caster.cast(camera.position_m, dir, options);
-      ASSERT_EQ(hit.kind, SurfaceRayHit::Kind::Hit);
+      ASSERT_EQ(hit.kind, SurfaceRayHit::Kind::kHit);
       glm::dvec3 p = camera.position_m + hit.distance_m * dir;
       double height = glm::length(p) - model.radius_m() - model.elevation_m(glm::normalize(p));
       EXPECT_LT(std::abs(height), 2.0e-3 * (1.0 + caster.slopeBound()));
@@ -105,7 +105,7 @@ TEST(ScreenError, InjectedErrorsAreMeasured) {
   std::vector<double> exact(size_t(w) * h, std::numeric_limits<double>::infinity());
   for (uint32_t y = 0; y < h; ++y)
     for (uint32_t x = 0; x < w; ++x)
-      if (truth.at(x, y).kind == SurfaceRayHit::Kind::Hit) exact[size_t(y) * w + x] = truth.at(x, y).distance_m;
+      if (truth.at(x, y).kind == SurfaceRayHit::Kind::kHit) exact[size_t(y) * w + x] = truth.at(x, y).distance_m;
 
   ScreenError none = measureScreenError(truth, exact, camera);
   EXPECT_EQ(none.samples, w * h);

@@ -13,6 +13,7 @@
 #include "planet/lod/selection.h"
 #include "planet/streaming/payload_reference.h"
 #include "tests/support/gpu_test.h"
+#include "tests/support/render_test_geometry.h"
 
 #include <glm/geometric.hpp>
 
@@ -44,7 +45,7 @@ PlanetDescription testPlanet() {
   continents.amplitude_m = 3000.0;
   ElevationLayer hills;
   hills.name = "hills";
-  hills.kind = LayerKind::Ridged;
+  hills.kind = LayerKind::kRidged;
   hills.octaves = 6;
   hills.wavelength_m = 40000.0;
   hills.amplitude_m = 600.0;
@@ -109,17 +110,6 @@ class CpuPayloads final : public NodeResidency {
   mutable uint32_t next_ = 0;
 };
 
-double angleBetween(const glm::dvec3& a, const glm::dvec3& b) {
-  return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
-}
-
-// Ray through pixel position (x, y) (pixels, y down) of `camera` for a kWidth x kHeight image.
-glm::dvec3 pixelRay(const Camera& camera, double x, double y) {
-  const double tanY = std::tan(camera.verticalFov_rad * 0.5), tanX = tanY * camera.aspect;
-  const double nx = x / kWidth * 2.0 - 1.0, ny = y / kHeight * 2.0 - 1.0;
-  return glm::normalize(camera.forward + nx * tanX * camera.right - ny * tanY * camera.up);
-}
-
 // First hit of the ray (o, unit d) with the sphere of radius r centred at 0, or -1 when it misses.
 double raySphere(const glm::dvec3& o, const glm::dvec3& d, double r) {
   const double len = glm::length(o);
@@ -177,8 +167,8 @@ class TerrainRenderTest : public GpuTest {
       // Angular size of a drawn cell's diagonal, doubled for the morph to the parent's cells: every
       // drawn triangle lies within that angle of one of its vertices, so above r * cos(angle).
       const double diagonal =
-          std::max(angleBetween(nodeCornerDirection(mapping, s.id, 0), nodeCornerDirection(mapping, s.id, 2)),
-                   angleBetween(nodeCornerDirection(mapping, s.id, 1), nodeCornerDirection(mapping, s.id, 3)));
+          std::max(angleBetween_rad(nodeCornerDirection(mapping, s.id, 0), nodeCornerDirection(mapping, s.id, 2)),
+                   angleBetween_rad(nodeCornerDirection(mapping, s.id, 1), nodeCornerDirection(mapping, s.id, 3)));
       const double angle = 2.0 * 1.25 * diagonal / double(s.partial ? kCells / 2 : kCells);
       inner = std::min(inner, e.vertices.min_m * std::cos(angle));
       // Morphing: the node's distance range (its bounding radius around the centre) meets its band.
@@ -207,7 +197,9 @@ class TerrainRenderTest : public GpuTest {
       for (uint32_t x = 0; x < kWidth; ++x) {
         bool hit = true;
         for (auto [dx, dy] : {std::pair{0.5, 0.5}, {0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}, {1.0, 1.0}}) {
-          if (raySphere(camera.position_m, pixelRay(camera, x + dx, y + dy), f.innerRadius_m) < 0.0) hit = false;
+          if (raySphere(camera.position_m, testing::pixelPositionRay(camera, x + dx, y + dy, kWidth, kHeight),
+                        f.innerRadius_m) < 0.0)
+            hit = false;
         }
         if (!hit) continue;
         ++in;
@@ -370,7 +362,7 @@ TEST_F(TerrainRenderTest, NearerSurfaceWinsAt1mAnd100km) {
         for (uint32_t x = kWidth / 2 - 10; x < kWidth / 2 + 10; ++x) {
           ASSERT_GT(image.depthAt(x, y), 0.0f) << "nothing drawn at " << x << "," << y;
           const double ray = rayDistanceFromDepth(camera, kWidth, kHeight, x, y, image.depthAt(x, y));
-          const glm::dvec3 dir = pixelRay(camera, x + 0.5, y + 0.5);
+          const glm::dvec3 dir = testing::pixelPositionRay(camera, x + 0.5, y + 0.5, kWidth, kHeight);
           const double expected = near_m / glm::dot(dir, camera.forward);  // the near plane's distance
           EXPECT_NEAR(ray, expected, gap_m * 0.25) << near_m << " m, near drawn first: " << nearFirst;
           ++checked;

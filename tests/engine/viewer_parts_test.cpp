@@ -73,15 +73,15 @@ TEST(InputScript, ParsesEveryEventKindSortedByFrame) {
   ASSERT_TRUE(s) << s.error().format();
   const auto& e = s->events;
   ASSERT_EQ(e.size(), 7u);
-  EXPECT_EQ(e[6].event.type, InputEvent::Type::WaitReload);
+  EXPECT_EQ(e[6].event.type, InputEvent::Type::kWaitReload);
   EXPECT_EQ(e[0].frame, 2u);
   EXPECT_EQ(e[0].event.code, GLFW_KEY_ESCAPE);
   EXPECT_FALSE(e[0].event.down);
-  EXPECT_EQ(e[1].event.type, InputEvent::Type::MouseMove);  // same frame: file order kept
+  EXPECT_EQ(e[1].event.type, InputEvent::Type::kMouseMove);  // same frame: file order kept
   EXPECT_DOUBLE_EQ(e[1].event.x, 12.5);
-  EXPECT_EQ(e[2].event.type, InputEvent::Type::MouseButton);
+  EXPECT_EQ(e[2].event.type, InputEvent::Type::kMouseButton);
   EXPECT_EQ(e[2].event.code, GLFW_MOUSE_BUTTON_LEFT);
-  EXPECT_EQ(e[3].event.type, InputEvent::Type::Resize);
+  EXPECT_EQ(e[3].event.type, InputEvent::Type::kResize);
   EXPECT_EQ(e[4].event.code, GLFW_KEY_F12);
   EXPECT_EQ(e[5].event.code, GLFW_KEY_W);
   EXPECT_TRUE(e[5].event.down);

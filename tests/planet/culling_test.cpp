@@ -142,9 +142,7 @@ TEST(Culling, ConservativeAgainstBruteForce) {
     }
     for (int i = 0; i < 6; ++i) {
       const int level = static_cast<int>(rng() % 8);
-      const uint32_t cells = uint32_t{1} << level;
-      nodes.push_back({static_cast<uint8_t>(rng() % 30), static_cast<uint8_t>(level),
-                       static_cast<uint32_t>(rng() % cells), static_cast<uint32_t>(rng() % cells)});
+      nodes.push_back(testing::randomNodeAt(rng, level));
     }
     for (const NodeId& id : nodes) {
       const NodeBounds b = NodeBounds::forNode(m, id, {minR, maxR});

@@ -19,9 +19,9 @@ PlanetDescription testPlanet(double radius_m = 6371000.0) {
   p.name = "test";
   p.radius_m = radius_m;
   p.seed = 20180302;
-  ElevationLayer continents{"continents", LayerKind::Fbm, 4, 4.0e6, 2.6, 0.5, 6000.0, -1000.0};
-  ElevationLayer mountains{"mountains", LayerKind::Ridged, 4, 5.0e4, 5.0, 0.3, 2600.0, 0.0, 0, 200.0, 2500.0, 0.0};
-  ElevationLayer detail{"detail", LayerKind::Fbm, 4, 80.0, 5.0, 0.3, 20.0, 0.0, 0, -200.0, 1000.0, 0.35};
+  ElevationLayer continents{"continents", LayerKind::kFbm, 4, 4.0e6, 2.6, 0.5, 6000.0, -1000.0};
+  ElevationLayer mountains{"mountains", LayerKind::kRidged, 4, 5.0e4, 5.0, 0.3, 2600.0, 0.0, 0, 200.0, 2500.0, 0.0};
+  ElevationLayer detail{"detail", LayerKind::kFbm, 4, 80.0, 5.0, 0.3, 20.0, 0.0, 0, -200.0, 1000.0, 0.35};
   p.layers = {continents, mountains, detail};
   return p;
 }
@@ -121,7 +121,7 @@ double slopeBound(const PlanetDescription& planet) {
   for (const ElevationLayer& l : planet.layers) {
     double slope = 0.0, max = 0.0, amplitude = l.amplitude_m, frequency = 1.0 / l.wavelength_m;
     for (int i = 0; i < l.octaves; ++i) {
-      slope += amplitude * frequency * (l.kind == LayerKind::Ridged ? 8.0 : 4.0);
+      slope += amplitude * frequency * (l.kind == LayerKind::kRidged ? 8.0 : 4.0);
       max += amplitude * kGradientNoiseBound;
       amplitude *= l.gain;
       frequency *= l.lacunarity;
@@ -204,15 +204,15 @@ TEST(ElevationBounds, BoundSampledElevations) {
 
 TEST(ElevationBounds, SingleOctaveBoundIsTightAndKindsAreSigned) {
   PlanetDescription p = testPlanet();
-  p.layers = {ElevationLayer{"a", LayerKind::Fbm, 1, 1.0e5, 2.0, 0.5, 100.0}};
+  p.layers = {ElevationLayer{"a", LayerKind::kFbm, 1, 1.0e5, 2.0, 0.5, 100.0}};
   ElevationRange r = elevationBounds(p);
   EXPECT_NEAR(r.max_m, 100.0 * kGradientNoiseBound, 1e-3);
   EXPECT_NEAR(r.min_m, -100.0 * kGradientNoiseBound, 1e-3);
-  p.layers[0].kind = LayerKind::Ridged;
+  p.layers[0].kind = LayerKind::kRidged;
   r = elevationBounds(p);
   EXPECT_NEAR(r.min_m, 0.0, 1e-3);
   EXPECT_NEAR(r.max_m, 100.0, 1e-3);
-  p.layers[0].kind = LayerKind::Billow;
+  p.layers[0].kind = LayerKind::kBillow;
   p.layers[0].offset_m = -50.0;
   r = elevationBounds(p);
   EXPECT_NEAR(r.min_m, -50.0, 1e-3);
@@ -250,7 +250,7 @@ TEST(ElevationModel, FloatEvaluationIsCloseAtSmallRadiiOnly) {
   // Not a claim about float's failure (docs/elevation.md has the measured table); this only checks
   // that the float path evaluates the same function, on a 1 km body with a coarse layer.
   PlanetDescription p = testPlanet(1000.0);
-  p.layers = {ElevationLayer{"a", LayerKind::Fbm, 3, 700.0, 2.0, 0.5, 50.0}};
+  p.layers = {ElevationLayer{"a", LayerKind::kFbm, 3, 700.0, 2.0, 0.5, 50.0}};
   const ElevationModel model(p);
   for (const glm::dvec3& d : randomDirections(200, 9)) {
     EXPECT_NEAR(model.elevationFloat_m(glm::vec3(d)), model.elevation_m(d), 1e-3);

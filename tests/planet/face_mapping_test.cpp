@@ -109,9 +109,7 @@ TEST(FaceMapping, ChildCornersAreParentEdgeMidpointsAndCentre) {
   std::mt19937_64 rng(11);
   for (int trial = 0; trial < 200; ++trial) {
     const int level = static_cast<int>(rng() % 20);
-    const uint32_t cells = uint32_t{1} << level;
-    const NodeId p{static_cast<uint8_t>(rng() % 30), static_cast<uint8_t>(level), static_cast<uint32_t>(rng() % cells),
-                   static_cast<uint32_t>(rng() % cells)};
+    const NodeId p = testing::randomNodeAt(rng, level);
     const double u0 = p.uMin(), v0 = p.vMin(), s = p.size();
     const glm::dvec3 a = m.flatPoint(p.face, u0, v0), b = m.flatPoint(p.face, u0 + s, v0);
     const glm::dvec3 c = m.flatPoint(p.face, u0 + s, v0 + s), d = m.flatPoint(p.face, u0, v0 + s);
@@ -193,9 +191,7 @@ TEST(NodeId, KeyRoundTripAndHierarchy) {
   std::mt19937_64 rng(5);
   for (int i = 0; i < 10000; ++i) {
     const int level = static_cast<int>(rng() % (kMaxNodeLevel + 1));
-    const uint32_t cells = uint32_t{1} << level;
-    const NodeId id{static_cast<uint8_t>(rng() % 30), static_cast<uint8_t>(level), static_cast<uint32_t>(rng() % cells),
-                    static_cast<uint32_t>(rng() % cells)};
+    const NodeId id = testing::randomNodeAt(rng, level);
     ASSERT_TRUE(id.isValid());
     EXPECT_EQ(NodeId::fromKey(id.key()), id);
     if (level < kMaxNodeLevel) {

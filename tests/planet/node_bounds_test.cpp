@@ -84,9 +84,7 @@ TEST(NodeBounds, PlanesOutwardCornersInsideSphereHolds) {
   std::mt19937_64 rng(4);
   for (int i = 0; i < 500; ++i) {
     const int level = static_cast<int>(rng() % 25);
-    const uint32_t cells = uint32_t{1} << level;
-    const NodeId id{static_cast<uint8_t>(rng() % 30), static_cast<uint8_t>(level), static_cast<uint32_t>(rng() % cells),
-                    static_cast<uint32_t>(rng() % cells)};
+    const NodeId id = testing::randomNodeAt(rng, level);
     const NodeBounds b = NodeBounds::forNode(m, id, kRange);
     const double tol = 1e-6;
     for (const glm::dvec3& c : b.corners) {
@@ -151,9 +149,7 @@ TEST(NodeBounds, SphereIntersectionMatchesHullDistance) {
   int misses = 0;
   for (int i = 0; i < 3000; ++i) {
     const int level = static_cast<int>(rng() % 16);
-    const uint32_t cells = uint32_t{1} << level;
-    const NodeId id{static_cast<uint8_t>(rng() % 30), static_cast<uint8_t>(level), static_cast<uint32_t>(rng() % cells),
-                    static_cast<uint32_t>(rng() % cells)};
+    const NodeId id = testing::randomNodeAt(rng, level);
     const NodeBounds b = NodeBounds::forNode(m, id, kRange);
     // A point near the node: its centre plus an offset of a few node sizes in a random direction.
     const glm::dvec3 p = b.sphereCentre + testing::randomDirection(rng) * (b.sphereRadius * 3.0 * unit(rng));

@@ -332,19 +332,5 @@ TEST(PayloadPool, ResidentMemoryIsScaleIndependent) {
   EXPECT_LE(hi, 1.2 * lo);
 }
 
-TEST(PayloadPool, InvalidateAllRegeneratesWithoutLeakingSlots) {
-  Harness h;
-  Camera cam = cameraFromPose({10, 10, 1000, 0, -30, 0}, kR, kR, 16.0 / 9.0);
-  converge(h, cam);
-  uint32_t resident = h.pool->stats().residentNodes;
-  size_t selected = h.selection.nodes.size();
-  h.pool->invalidateAll();
-  converge(h, cam);
-  EXPECT_EQ(h.pool->stats().residentNodes, resident);
-  EXPECT_EQ(h.selection.nodes.size(), selected);
-  EXPECT_EQ(h.pool->stats().inFlight, 0u);
-  EXPECT_EQ(h.overwrites, 0u);
-}
-
 }  // namespace
 }  // namespace globe

@@ -24,10 +24,10 @@ TEST(PlanetFile, EarthlikeLoads) {
   EXPECT_EQ(p.sea_level_m, 0.0);
   ASSERT_EQ(p.layers.size(), 3U);
   EXPECT_EQ(p.layers[0].name, "continents");
-  EXPECT_EQ(p.layers[1].kind, LayerKind::Ridged);
+  EXPECT_EQ(p.layers[1].kind, LayerKind::kRidged);
   EXPECT_EQ(p.layers[1].modulated_by, 0);
   EXPECT_EQ(p.layers[2].modulated_by, 0);
-  // Twelve octaves like the primary source: 4 continent octaves modulating 8 detail octaves.
+  // Twelve octaves like [Frasson 2018]: 4 continent octaves modulating 8 detail octaves.
   EXPECT_EQ(p.layers[0].octaves + p.layers[1].octaves + p.layers[2].octaves, 12);
   EXPECT_LE(finestWavelength_m(p.layers[2]), 1.0);  // sub-metre detail
   const ElevationRange b = elevationBounds(p);
@@ -53,7 +53,7 @@ amplitude_m = 5
   EXPECT_EQ(r->layers[0].wavelength_m, 100.0);
   EXPECT_EQ(r->layers[0].lacunarity, 2.0);
   EXPECT_EQ(r->layers[0].gain, 0.5);
-  EXPECT_EQ(r->layers[0].kind, LayerKind::Fbm);
+  EXPECT_EQ(r->layers[0].kind, LayerKind::kFbm);
   EXPECT_EQ(r->layers[0].modulated_by, -1);
 }
 
@@ -248,7 +248,7 @@ TEST(PlanetFile, SyntaxErrorIsTheOnlyError) {
 TEST(PlanetFile, ColourRampAndQualityDefaults) {
   const Result<PlanetDescription> r = parsePlanetToml("radius_m = 5e6\n" LAYER, "plain.toml");
   ASSERT_TRUE(r.ok()) << r.error().format();
-  EXPECT_EQ(r->default_quality, QualityPreset::Balanced);
+  EXPECT_EQ(r->default_quality, QualityPreset::kBalanced);
   EXPECT_EQ(r->colour_ramp.stops, defaultColourRampStops());
   EXPECT_FALSE(r->colour_ramp.snow);
   EXPECT_EQ(r->colour_ramp, ColourRamp{});
@@ -262,7 +262,7 @@ TEST(PlanetFile, ColourRampIsRead) {
                      "[snow]\nelevation_m = 5\nblend_m = 1\nmax_slope_deg = 30\ncolour = [1, 1, 1]\n";
   const Result<PlanetDescription> r = parsePlanetToml(text, "ramp.toml");
   ASSERT_TRUE(r.ok()) << r.error().format();
-  EXPECT_EQ(r->default_quality, QualityPreset::Fast);
+  EXPECT_EQ(r->default_quality, QualityPreset::kFast);
   const ColourRamp& ramp = r->colour_ramp;
   ASSERT_EQ(ramp.stops.size(), 2U);
   EXPECT_EQ(ramp.stops[0].elevation_m, -10.0);
@@ -294,9 +294,9 @@ TEST(PlanetFile, ColourRampIsRead) {
 }
 
 TEST(PlanetFile, QualityPresetNames) {
-  EXPECT_EQ(qualityPresetName(QualityPreset::Fast), "fast");
-  EXPECT_EQ(qualityPresetName(QualityPreset::Balanced), "balanced");
-  EXPECT_EQ(qualityPresetName(QualityPreset::Exact), "exact");
+  EXPECT_EQ(qualityPresetName(QualityPreset::kFast), "fast");
+  EXPECT_EQ(qualityPresetName(QualityPreset::kBalanced), "balanced");
+  EXPECT_EQ(qualityPresetName(QualityPreset::kExact), "exact");
 }
 
 const char* const kPresets[] = {"earthlike", "marslike", "moonlike", "asteroid", "gasgiant-core"};

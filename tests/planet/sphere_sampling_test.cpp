@@ -59,6 +59,15 @@ TEST(SphereSampling, ParallelForCoversEveryItemOnce) {
   for (const auto& h : hits) ASSERT_EQ(h.load(), 1);
 }
 
+TEST(SphereSampling, ParallelForRethrowsTheBodysException) {
+  // A body that throws on a helper thread must not terminate the process.
+  EXPECT_THROW(parallelFor(1000, 10, 3,
+                           [](std::size_t begin, std::size_t) {
+                             if (begin == 500) throw std::runtime_error("chunk 50");
+                           }),
+               std::runtime_error);
+}
+
 TEST(SphereSampling, StatsDoNotDependOnThreads) {
   const Result<PlanetDescription> planet =
       loadPlanetFile(std::string(GLOBE_SOURCE_DIR) + "/assets/planets/earthlike.toml");

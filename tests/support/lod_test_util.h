@@ -60,6 +60,15 @@ inline std::pair<double, double> onEdge(int e, double s) {
   }
 }
 
+// A node at `level` on a random face and position (face, then x, then y drawn from rng).
+inline NodeId randomNodeAt(std::mt19937_64& rng, int level) {
+  const uint32_t cells = uint32_t{1} << level;
+  const auto face = static_cast<uint8_t>(rng() % 30);
+  const auto x = static_cast<uint32_t>(rng() % cells);
+  const auto y = static_cast<uint32_t>(rng() % cells);
+  return {face, static_cast<uint8_t>(level), x, y};
+}
+
 inline glm::dvec3 randomDirection(std::mt19937_64& rng) {
   std::normal_distribution<double> n(0.0, 1.0);
   for (;;) {

@@ -1,0 +1,147 @@
+// No shader compile per frame (issue 22): lavapipe (Mesa 22.3) re-compiles a pipeline's shader at
+// draw time whenever it decides to inline push-constant or uniform-buffer values into it, and with
+// no variant cache it does so at every bind (100-200 ms each, docs/rendering.md "No shader compile
+// per frame"). Every variant it compiles is a new entry in Mesa's on-disk shader cache, so the
+// guard counts the entries of a cache pointed at an empty directory: after a few warm-up frames,
+// 20 frames at 20 different cameras (moving floating origin, altitudes from 2 m to 2e7 m so the
+// morph ranges change, sun directions, debug views, generation batches of different sizes) plus
+// elevation batches and sphere previews with the latitude/longitude grid, of different sizes, must
+// add none. No timing is asserted.
+#include "engine/generation/elevation_sampler.h"
+#include "engine/render/headless_renderer.h"
+#include "engine/render/sphere_grid.h"
+#include "engine/render/sphere_preview.h"
+#include "engine/vk/offscreen_target.h"
+#include "tests/support/gpu_test.h"
+
+#include <unistd.h>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace globe::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Entries of Mesa's multi-file cache (mesa_shader_cache/xx/yyyy...), without its size index.
+size_t cacheEntries(const fs::path& dir) {
+  size_t n = 0;
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    if (it->is_regular_file() && it->path().filename() != "index") ++n;
+  }
+  return n;
+}
+
+// Mesa writes cache entries from a worker thread; destroying the instance (the Device) finishes
+// them, and polling until two reads 200 ms apart agree covers any write still landing.
+size_t settledCacheEntries(const fs::path& dir) {
+  size_t last = cacheEntries(dir);
+  for (int i = 0; i < 50; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    const size_t now = cacheEntries(dir);
+    if (now == last) return now;
+    last = now;
+  }
+  return last;
+}
+
+struct View {
+  GeodeticPose pose;
+  glm::dvec3 sun;
+  TerrainDebugView debug = TerrainDebugView::kShaded;
+};
+
+// The warm-up views: each kind of frame once (shaded, LOD colours, sphere preview, elevation batch).
+std::vector<View> warmUpViews() {
+  return {{{22.05, -98.4, 1000.0, 60, -10, 0}, {1.0, 0.4, 0.6}},
+          {{22.05, -98.4, 1000.0, 60, -10, 0}, {1.0, 0.4, 0.6}, TerrainDebugView::kLodColours},
+          {{22.0, -99.0, 1.0e5, 60, -30, 0}, {0.3, 1.0, 0.2}}};
+}
+
+// 20 cameras: a descent from orbit to 2 m over changing places, sun and debug view.
+std::vector<View> variedViews() {
+  std::vector<View> views;
+  for (int i = 0; i < 20; ++i) {
+    const double height_m = 2.0e7 * std::pow(1.0e-7, i / 19.0);  // 2e7 m ... 2 m
+    const double a = 0.3 * i;
+    View v{{22.0 + 0.01 * i, -98.5 + 0.013 * i, height_m, 40.0 + 7.0 * i, -5.0 - 2.0 * (i % 7), 0},
+           {std::cos(a), std::sin(a), 0.5 + 0.02 * i}};
+    if (i % 5 == 3) v.debug = TerrainDebugView::kLodColours;
+    views.push_back(v);
+  }
+  return views;
+}
+
+// One process-like run on a fresh device (its own Mesa screen and cache handle): the views through
+// Terrain + HeadlessRenderer (budgeted frames, every fourth converged, so generation batches vary
+// in size), each view also as a sphere preview and an elevation batch of a different size.
+void renderViews(const std::vector<View>& views) {
+  vk::DeviceOptions options;
+  options.validation = true;
+  options.deviceName = vk::deviceNameFromEnvironment();
+  vk::Device device(options);
+  const ElevationModel& model = earthlikeModel();
+  TerrainSettings settings;
+  settings.gridCells = 16;
+  auto terrain = Terrain::create(device, model, settings);
+  ASSERT_TRUE(terrain.ok()) << terrain.error().format();
+  const uint32_t w = 96, h = 64;
+  HeadlessRenderer renderer(device, {w, h});
+  vk::OffscreenTarget sphereTarget(device, {w, h});
+  SpherePreview sphere(device);
+  SphereGrid grid(device);
+  ElevationSampler sampler(device, model.params(), 512);
+  int k = 0;
+  for (const View& v : views) {
+    const glm::dvec3 down = directionFromLatLon(v.pose.latitude_deg, v.pose.longitude_deg);
+    const Camera camera = cameraFromPose(v.pose, (*terrain)->cameraGroundRadius(down), model.radius_m(), double(w) / h);
+    TerrainStyle style = (*terrain)->renderer().style();
+    style.sunDirection = v.sun;
+    style.debug = v.debug;
+    (*terrain)->renderer().setStyle(style);
+    renderer.renderFrame(**terrain, camera, k % 4 == 0);
+    const float clear[4] = {0, 0, 0, 1};
+    device.submitAndWait([&](VkCommandBuffer cmd) {
+      sphereTarget.begin(cmd, clear);
+      sphere.record(cmd, camera, model.radius_m() * (1.0 + 1e-3 * k), v.sun);
+      grid.record(cmd, camera, model.radius_m(), 5.0 + k);
+      sphereTarget.end(cmd);
+    });
+    sampler.sample(std::vector<glm::dvec3>(size_t(1 + 13 * k), glm::normalize(camera.position_m)));
+    ++k;
+  }
+  const auto messages = device.validation().messages();
+  EXPECT_TRUE(messages.empty()) << messages.size()
+                                << " validation message(s), first: " << (messages.empty() ? "" : messages.front());
+}
+
+TEST(ShaderVariants, NoNewShaderVariantsAfterWarmUp) {
+  const fs::path cache = fs::temp_directory_path() / ("globe-shader-cache-" + std::to_string(::getpid()));
+  fs::remove_all(cache);
+  fs::create_directories(cache);
+  ::setenv("MESA_SHADER_CACHE_DIR", cache.c_str(), 1);
+  ::unsetenv("MESA_SHADER_CACHE_DISABLE");
+  ::unsetenv("MESA_GLSL_CACHE_DISABLE");
+
+  renderViews(warmUpViews());
+  const size_t afterWarmUp = settledCacheEntries(cache);
+  std::vector<View> views = warmUpViews();
+  for (const View& v : variedViews()) views.push_back(v);
+  renderViews(views);
+  const size_t afterVaried = settledCacheEntries(cache);
+  std::printf("[ info ] shader cache entries: %zu after warm-up, %zu after 20 more cameras\n", afterWarmUp,
+              afterVaried);
+  fs::remove_all(cache);
+  if (afterWarmUp == 0) GTEST_SKIP() << "the Vulkan driver keeps no Mesa shader cache (not lavapipe?)";
+  EXPECT_EQ(afterVaried, afterWarmUp) << "a pipeline was compiled again for new push-constant/uniform values "
+                                         "(lavapipe inlines them; docs/rendering.md, \"No shader compile per frame\")";
+}
+
+}  // namespace
+}  // namespace globe::testing
