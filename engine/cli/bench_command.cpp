@@ -149,12 +149,14 @@ int runBench(const BenchOptions& o) {
       if (std::llround((kt - path->startTime_s()) * o.rate_hz) != int64_t(k)) continue;
       char name[64];
       std::snprintf(name, sizeof(name), "keyframe_%05.2fs.png", kt);
-      ImageRgba image = toImage(renderer.readback(), camera);
-      if (auto s = writePng((dir / name).string(), image); !s) {
-        printError(s.error().format());
+      // Kept in memory and written with the report at the end: an interrupted run must not leave
+      // new key frames beside an earlier run's csv/json/html.
+      Result<std::string> png = encodePng(toImage(renderer.readback(), camera));
+      if (!png) {
+        printError(png.error().format());
         return kExitFailure;
       }
-      keys.push_back({kt, name});
+      keys.push_back({kt, name, std::move(*png)});
     }
     progress.update(double(k + 1) / double(frames));
   }

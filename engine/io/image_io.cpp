@@ -36,21 +36,27 @@ std::string extension(const std::string& path) {
 }
 }  // namespace
 
-Status writePng(const std::string& path, const ImageRgba& image) {
-  if (auto s = checkWritable(path, ""); !s) return s;
+Result<std::string> encodePng(const ImageRgba& image) {
   std::vector<uint8_t> bytes(size_t(image.width) * image.height * 4);
   for (size_t i = 0; i < bytes.size(); ++i) {
     bytes[i] = (i % 4 == 3) ? uint8_t(std::lround(std::clamp(image.rgba[i], 0.0f, 1.0f) * 255.0f))
                             : linearToSrgb8(image.rgba[i]);
   }
-  // Encoded in memory, then written by the checked atomic writer: stbi_write_png ignores write errors.
+  // In memory: stbi_write_png ignores write errors, the checked atomic writer does not.
   std::string png;
   auto append = [](void* context, void* data, int size) {
     static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<size_t>(size));
   };
   if (!stbi_write_png_to_func(append, &png, int(image.width), int(image.height), 4, bytes.data(), int(image.width * 4)))
-    return Error::inFile(path, "cannot encode PNG");
-  return writeFileAtomically(path, png, "");
+    return Error::inField("", "cannot encode PNG");
+  return png;
+}
+
+Status writePng(const std::string& path, const ImageRgba& image) {
+  if (auto s = checkWritable(path, ""); !s) return s;
+  Result<std::string> png = encodePng(image);
+  if (!png) return Error::inFile(path, png.error().message);
+  return writeFileAtomically(path, *png, "");
 }
 
 Status writeExr(const std::string& path, const ImageRgba& image) {

@@ -20,6 +20,8 @@ struct ImageRgba {
 uint8_t linearToSrgb8(float linear);
 
 Status writePng(const std::string& path, const ImageRgba& image);
+// The PNG file's bytes, for outputs written later together (writeFilesAtomically).
+Result<std::string> encodePng(const ImageRgba& image);
 Status writeExr(const std::string& path, const ImageRgba& image);
 // Chooses PNG or EXR from the extension (.png / .exr); anything else is an Error on `field`.
 Status writeImage(const std::string& path, const ImageRgba& image, const std::string& field);

@@ -55,7 +55,7 @@ Status validateKeyFrames(const std::string& dir, std::span<const BenchKeyFrame> 
                    "'" + k.imageFile + "' is not a file name inside the report directory"};
     std::error_code ec;
     const fs::path full = fs::path(dir) / file;
-    if (!fs::is_regular_file(full, ec))
+    if (k.png.empty() && !fs::is_regular_file(full, ec))
       return Error{full.string(), 0, 0, where + ".imageFile", "key-frame image does not exist"};
   }
   return Ok{};
@@ -178,35 +178,22 @@ Status writeBenchReport(const std::string& dir, const BenchRunInfo& info, std::s
   if (!fs::is_directory(dir, ec)) return Error{dir, 0, 0, "", "report directory does not exist"};
   if (auto s = validateKeyFrames(dir, keyFrames); !s) return s;
 
-  struct Output {
-    const char* name;
-    std::string content;
-  };
-  std::vector<Output> outputs;
+  // Key frames first, report.html last: an existing report.html means the files it links to exist.
+  std::vector<NamedContent> outputs;
+  for (const BenchKeyFrame& k : keyFrames)
+    if (!k.png.empty()) outputs.push_back({k.imageFile, k.png});
   try {
     const std::string svg = benchTimelineSvg(info, frames, keyFrames);
     outputs.push_back({"frames.csv", framesCsv(frames)});
     outputs.push_back({"summary.json", summaryJson(info, frames, keyFrames, baseline)});
     outputs.push_back({"timeline.svg", "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n" + svg});
-    // Last, so an existing report.html means the files it links to exist too.
     outputs.push_back({"report.html", benchReportHtml(info, frames, keyFrames, svg, baseline)});
   } catch (const std::exception& e) {  // nlohmann or allocation: never out of here
     return Error{dir, 0, 0, "", std::string("cannot build the report: ") + e.what()};
   }
 
-  // All temporaries first: a failure here leaves every existing report file untouched and, through
-  // ~AtomicFile, no temporaries.
-  std::vector<std::unique_ptr<AtomicFile>> files;
-  for (const Output& o : outputs) {
-    const std::string path = (fs::path(dir) / o.name).string();
-    if (auto s = checkWritable(path, ""); !s) return Error{path, 0, 0, "", s.error().message};
-    files.push_back(std::make_unique<AtomicFile>(path));
-    if (auto s = files.back()->write(o.content); !s) return s;
-  }
-  for (auto& file : files) {
-    if (auto s = file->commit(); !s) return s;
-  }
-  return Ok{};
+  // A failure leaves every existing report file (key frames included) untouched.
+  return writeFilesAtomically(dir, outputs);
 }
 
 }  // namespace globe

@@ -24,6 +24,9 @@ struct BenchFrame {
 struct BenchKeyFrame {
   double t_s = 0;         // path time the image shows (seconds)
   std::string imageFile;  // PNG file name relative to the report directory, e.g. "frame_t07.png"
+  // The encoded PNG, written with the report files (all or none), or empty when the caller already
+  // wrote imageFile into the directory.
+  std::string png;
 };
 
 // Frames from a visible generation request to its payload being resident (PayloadPool's

@@ -95,6 +95,14 @@ cmp -s "$WORK/keep.png" "$WORK/keep.orig" || { echo "FAIL: a failed export write
 rm -f "$WORK/keep.png" "$WORK/keep.orig" "$WORK/map.exr"
 expect 1 "cannot write: File too large" "" -- limited 8 "$GLOBE" bench --path "$(dirname "$0")/../data/short.path" --size 64x64 --keyframes 99 --out "$WORK/small_bench"
 rm -rf "$WORK/small_bench"
+# A bench whose report cannot be written leaves the earlier run whole: its key frames too.
+SHORT="$(dirname "$0")/../data/short.path"
+"$GLOBE" bench --path "$SHORT" --size 64x64 --keyframes 0.25 --out "$WORK/keep_bench" >/dev/null 2>&1
+cp "$WORK/keep_bench/keyframe_00.25s.png" "$WORK/keyframe.orig"
+expect 1 "cannot write: File too large" "" -- limited 8 "$GLOBE" bench --path "$SHORT" --size 48x32 --keyframes 0.25 --out "$WORK/keep_bench"
+cmp -s "$WORK/keep_bench/keyframe_00.25s.png" "$WORK/keyframe.orig" ||
+  { echo "FAIL: a failed bench replaced the earlier run's key frame"; failures=$((failures + 1)); }
+rm -rf "$WORK/keep_bench" "$WORK/keyframe.orig"
 # Paths and benches beyond the limits of docs/reliability.md ("Input limits"), refused up front.
 printf '%s\n' "t_s lat_deg lon_deg height_m heading_deg pitch_deg roll_deg" "0 0 0 100 0 0 0" "3000 0 0.01 100 0 0 0" >"$WORK/long.path"
 expect 2 "--rate: 3000 s of path at 100 Hz is 300001 frames, more than the limit of 216000" "" -- "$GLOBE" bench --path "$WORK/long.path" --rate 100 --out "$WORK/bench"
