@@ -4,6 +4,7 @@
 #include "engine/render/headless_renderer.h"
 #include "engine/render/render_output.h"
 #include "planet/core/atomic_file.h"
+#include "planet/core/input_file.h"
 
 #include <fmt/format.h>
 
@@ -11,8 +12,6 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace globe {
 
@@ -43,11 +42,12 @@ Status claimDirectory(const MovieSettings& s) {
   if (ec) return Error::inField("--out", fmt::format("cannot create '{}': {}", s.out, ec.message()));
   const std::string manifest = (fs::path(s.out) / kManifestName).string();
   const std::string content = s.description + "\n";
-  std::ifstream in(manifest, std::ios::binary);
-  if (in) {
-    std::ostringstream old;
-    old << in.rdbuf();
-    if (old.str() != content)
+  std::error_code exists;
+  if (fs::exists(fs::symlink_status(manifest, exists))) {
+    // The bounded reader: a FIFO or directory named movie.txt is an error, never a wait.
+    Result<std::string> old = readInputFile(manifest, "movie manifest");
+    if (!old) return Error::inFileField(manifest, "--out", old.error().message);  // bad input, like the next
+    if (*old != content)
       return Error::inFileField(
           manifest, "--out",
           "this directory holds frames of another movie (its settings differ); choose another --out or "

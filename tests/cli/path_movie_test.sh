@@ -53,6 +53,11 @@ expect 2 "--out: must be a directory .* or a .mp4 file" "$WORK/m.avi" -- \
 expect 2 "--format: must be png or exr" "$WORK/m" -- "$GLOBE" movie --path "$DATA/short.path" --format jpg --out "$WORK/m"
 expect 2 "bad_paths/no_tour.kml:1: gx:Tour: no tour" "$WORK/m" -- \
   "$GLOBE" movie --path "$DATA/bad_paths/no_tour.kml" --out "$WORK/m"
+# A FIFO where the movie manifest belongs is refused at once (it used to block forever).
+mkdir -p "$WORK/fifo_movie" && mkfifo "$WORK/fifo_movie/movie.txt"
+expect 2 "movie.txt: --out: cannot read movie manifest: it is a FIFO" "" -- \
+  timeout 60 "$GLOBE" movie --path "$DATA/short.path" --size 64x48 --out "$WORK/fifo_movie"
+rm -rf "$WORK/fifo_movie"
 
 # A tiny movie from a KML tour given straight to --path (the tour's first 0.2 s is too short to
 # be interesting, so use short.path's 0.5 s descent at 24 fps: 13 frames) as PNGs and as MP4.
