@@ -1,6 +1,7 @@
 #include "engine/render/headless_renderer.h"
 
 #include "engine/vk/vk_check.h"
+#include "engine/vk/vk_create.h"
 
 #include <array>
 #include <chrono>
@@ -32,29 +33,14 @@ void readGpuTimes(VkDevice device, VkQueryPool queries, double timestampPeriod_n
 
 }  // namespace
 
-HeadlessRenderer::HeadlessRenderer(vk::Device& device, VkExtent2D extent) : device_(device), target_(device, extent) {
-  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-  poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-  poolInfo.queueFamilyIndex = device.queueFamily();
-  VkCommandPool pool;
-  GLOBE_VK_CHECK(vkCreateCommandPool(device.device(), &poolInfo, nullptr, &pool));
-  pool_ = vk::UniqueCommandPool(device.device(), pool);
-  VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-  alloc.commandPool = pool;
-  alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-  alloc.commandBufferCount = 1;
-  GLOBE_VK_CHECK(vkAllocateCommandBuffers(device.device(), &alloc, &cmd_));
-  VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-  VkFence fence;
-  GLOBE_VK_CHECK(vkCreateFence(device.device(), &fenceInfo, nullptr, &fence));
-  fence_ = vk::UniqueFence(device.device(), fence);
-  VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
-  queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
-  queryInfo.queryCount = kQueryCount;
-  VkQueryPool queries;
-  GLOBE_VK_CHECK(vkCreateQueryPool(device.device(), &queryInfo, nullptr, &queries));
-  queries_ = vk::UniqueQueryPool(device.device(), queries);
-}
+HeadlessRenderer::HeadlessRenderer(vk::Device& device, VkExtent2D extent)
+    : device_(device),
+      target_(device, extent),
+      pool_(vk::createCommandPool(device.device(), device.queueFamily(),
+                                  VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT)),
+      cmd_(vk::allocateCommandBuffer(device.device(), pool_.get())),
+      fence_(vk::createFence(device.device())),
+      queries_(vk::createTimestampQueryPool(device.device(), kQueryCount)) {}
 
 FrameStats HeadlessRenderer::renderFrame(Terrain& terrain, const Camera& camera, bool converge) {
   auto start = std::chrono::steady_clock::now();

@@ -28,7 +28,13 @@ Result<std::unique_ptr<Terrain>> Terrain::create(vk::Device& device, const Eleva
   lod.ranges = settings.ranges;
   auto selector = LodSelector::create(lod);
   if (!selector) return selector.error();
-  return std::unique_ptr<Terrain>(new Terrain(device, model, settings, std::move(*selector)));
+  std::unique_ptr<Terrain> terrain(new Terrain(device, model, settings, std::move(*selector)));
+  // The payload buffer is bound in pages of at most maxStorageBufferRange bytes (PayloadPages), so
+  // only the VRAM budget bounds the pool.
+  auto pool = PayloadPool::create(settings.streaming, *terrain->generator_, model.radius_m());
+  if (!pool) return pool.error();
+  terrain->attachPool(std::move(*pool));
+  return terrain;
 }
 
 Terrain::Terrain(vk::Device& device, const ElevationModel& model, const TerrainSettings& settings, LodSelector selector)
@@ -43,16 +49,14 @@ Terrain::Terrain(vk::Device& device, const ElevationModel& model, const TerrainS
   uint32_t batches = settings.streaming.maxInFlight;
   generator_ =
       std::make_unique<GpuPayloadGenerator>(device, model, settings.gridCells, budget, batches, settings.generation);
-  // The payload buffer is bound in pages of at most maxStorageBufferRange bytes (PayloadPages), so
-  // only the VRAM budget bounds the pool.
-  const StreamingConfig& streaming = settings.streaming;
-  auto pool = PayloadPool::create(streaming, *generator_, model.radius_m());
-  if (!pool) throw std::runtime_error(pool.error().format());
-  pool_ = std::move(*pool);
-  generator_->reserveSlots(pool_->slotCapacity(), settings.payloadSlotsPerPage);
-  TerrainStyle style = settings.style;
-  style.radius_m = model.radius_m();
-  renderer_ = std::make_unique<TerrainRenderer>(device, settings.gridCells, style, settings.vertexPositions);
+}
+
+void Terrain::attachPool(std::unique_ptr<PayloadPool> pool) {
+  pool_ = std::move(pool);
+  generator_->reserveSlots(pool_->slotCapacity(), settings_.payloadSlotsPerPage);
+  TerrainStyle style = settings_.style;
+  style.radius_m = model_.radius_m();
+  renderer_ = std::make_unique<TerrainRenderer>(device_, settings_.gridCells, style, settings_.vertexPositions);
   drawNodes_.reserve(4096);
 }
 

@@ -82,7 +82,10 @@ class Terrain {
   double primeWall_ms() const { return primeWall_ms_; }  // wall time the warm-up took
 
  private:
+  // The constructor makes the generator; create() then makes the pool from it (a bad streaming
+  // budget is an Error, not an exception) and attachPool() the parts that need the pool's size.
   Terrain(vk::Device& device, const ElevationModel& model, const TerrainSettings& settings, LodSelector selector);
+  void attachPool(std::unique_ptr<PayloadPool> pool);
   // One round of the chain in the pool's own frame numbering (the caller's plus the warm-up's rounds).
   void updateAt(uint64_t poolFrame, const Camera& camera, uint64_t poolCompletedFrame, bool requestAllRoots);
   void prime(uint64_t firstFrame, const Camera& camera);
