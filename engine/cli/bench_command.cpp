@@ -69,120 +69,156 @@ Result<std::vector<double>> parseTimes(const std::string& text, const std::strin
     char* end = nullptr;
     double t = std::strtod(item.c_str(), &end);
     if (item.empty() || *end != '\0' || !std::isfinite(t) || t < 0)
-      return Error{"", 0, 0, field, "expected times in seconds >= 0 separated by commas, got '" + text + "'"};
+      return Error::inField(field, "expected times in seconds >= 0 separated by commas, got '" + text + "'");
     times.push_back(t);
   }
   return times;
 }
 
-int runBench(const BenchOptions& o) {
-  const std::string startedUtc = utcNowIso8601();
-  const std::string loadAtStart = loadAverage();
-  // Everything is checked before DIR is touched: bad input writes nothing.
+// Everything a run needs from the command line, checked before the output directory is touched:
+// bad input writes nothing.
+struct BenchInputs {
+  std::optional<BenchBaseline> baseline;
+  PlanetDescription planet;
+  CameraPath path;
+  ImageSize size;
+  std::vector<double> keyTimes;
+  uint64_t frames = 0;  // fixed time step in path time: frame k shows t = start + k / rate
+  TerrainSettings settings;
+};
+
+Result<BenchInputs> checkBenchInputs(const BenchOptions& o) {
   std::optional<BenchBaseline> baseline;
   if (!o.baseline.empty()) {
     auto read = readBenchBaseline(o.baseline);
-    if (!read) return usageError(read.error());
+    if (!read) return read.error();
     baseline = std::move(*read);
   }
   auto planet = loadPlanetFile(o.planet);
-  if (!planet) return usageError(planet.error());
+  if (!planet) return planet.error();
   auto path = loadCameraPath(o.path);
-  if (!path) return usageError(path.error());
+  if (!path) return path.error();
   auto size = parseSize(o.size, "--size");
-  if (!size) return usageError(size.error());
+  if (!size) return size.error();
   auto keyTimes = parseTimes(o.keyFrames, "--keyframes");
-  if (!keyTimes) return usageError(keyTimes.error());
-  if (!(o.rate_hz >= 1 && o.rate_hz <= 1000)) return usageError({"", 0, 0, "--rate", "must be within [1, 1000] Hz"});
-  // Fixed time step in path time: frame k shows t = start + k / rate.
+  if (!keyTimes) return keyTimes.error();
+  if (!(o.rate_hz >= 1 && o.rate_hz <= 1000)) return Error::inField("--rate", "must be within [1, 1000] Hz");
   const uint64_t frames = uint64_t(std::floor(path->duration_s() * o.rate_hz + 1e-9)) + 1;
   if (frames > kMaxBenchFrames)
-    return usageError({"", 0, 0, "--rate",
-                       fmt::format("{:g} s of path at {:g} Hz is {} frames, more than the limit of {}",
-                                   path->duration_s(), o.rate_hz, frames, kMaxBenchFrames)});
-  auto quality = chooseQualityPreset(o.quality, *planet);
-  if (!quality) return usageError(quality.error());
-  TerrainSettings settings = terrainSettingsFor(*quality);
-  if (o.gridCells) settings.gridCells = o.gridCells;
-  if (auto s = validateTerrainSettings(settings); !s) return usageError({"", 0, 0, "--grid", s.error().message});
-  if (auto s = checkOutputDirectory(o.out, "--out"); !s) return usageError(s.error());
-  std::filesystem::path dir(o.out);
-  std::error_code ec;
+    return Error::inField("--rate", fmt::format("{:g} s of path at {:g} Hz is {} frames, more than the limit of {}",
+                                                path->duration_s(), o.rate_hz, frames, kMaxBenchFrames));
+  auto settings = terrainSettingsFromOptions(o.quality, o.gridCells, *planet);
+  if (!settings) return settings.error();
+  if (auto s = checkOutputDirectory(o.out, "--out"); !s) return s.error();
+  return BenchInputs{std::move(baseline), std::move(*planet), std::move(*path), *size, std::move(*keyTimes), frames,
+                     std::move(*settings)};
+}
 
-  ElevationModel model(*planet);
-  // One sun for the whole flight, lighting the region of the path's first keyframe.
-  settings.style.sunDirection = defaultSunDirection(path->positionAt(
-      path->startTime_s(), [&](const glm::dvec3& d) { return model.radius_m() + model.elevation_m(d); }));
-  settings.style.ramp = planet->colour_ramp;
-  vk::Device device(deviceOptions(o.device));
-  const double deviceReady_ms = millisecondsSinceProcessStart();
-  auto terrain = Terrain::create(device, model, settings);
-  if (!terrain) return usageError(terrain.error());
-  HeadlessRenderer renderer(device, {size->width, size->height});
-  const double pipelinesReady_ms = millisecondsSinceProcessStart();
-  const double aspect = double(size->width) / double(size->height);
-  // Heights are above the drawn mesh, like `globe render --at` and the viewer (never under it).
-  GroundRadiusFn ground = [&](const glm::dvec3& d) { return (*terrain)->cameraGroundRadius(d); };
-  const bool converge = o.mode == "converged";
-
-  std::filesystem::create_directories(dir, ec);
-  if (ec) return usageError({"", 0, 0, "--out", "cannot create '" + o.out + "': " + ec.message()});
-
+// What the flight produced: a row per frame, the key frames' PNGs (kept in memory and written with
+// the report at the end, so an interrupted run never leaves new key frames beside an earlier run's
+// csv/json/html), and when frame 0 was drawn (process start -> frame 0, with the warm-up).
+struct BenchFlight {
   std::vector<BenchFrame> rows;
-  rows.reserve(frames);
   std::vector<BenchKeyFrame> keys;
+  double firstFrame_ms = 0;
+};
+
+// The key frames due at frame `k` (the frame nearest to each key time; times outside the path are
+// skipped), read back and encoded.
+Status keepKeyFrames(const BenchInputs& in, double rate_hz, uint64_t k, HeadlessRenderer& renderer,
+                     const Camera& camera, std::vector<BenchKeyFrame>& keys) {
+  for (double kt : in.keyTimes) {
+    if (kt < in.path.startTime_s() || kt > in.path.endTime_s()) continue;
+    if (std::llround((kt - in.path.startTime_s()) * rate_hz) != int64_t(k)) continue;
+    char name[64];
+    std::snprintf(name, sizeof(name), "keyframe_%05.2fs.png", kt);
+    Result<std::string> png = encodePng(toImage(renderer.readback(), camera));
+    if (!png) return png.error();
+    keys.push_back({kt, name, std::move(*png)});
+  }
+  return Ok{};
+}
+
+Result<BenchFlight> flyPath(const BenchOptions& o, const BenchInputs& in, const ElevationModel& model, Terrain& terrain,
+                            HeadlessRenderer& renderer) {
+  const double aspect = double(in.size.width) / double(in.size.height);
+  // Heights are above the drawn mesh, like `globe render --at` and the viewer (never under it).
+  GroundRadiusFn ground = [&](const glm::dvec3& d) { return terrain.cameraGroundRadius(d); };
+  const bool converge = o.mode == "converged";
+  BenchFlight flight;
+  flight.rows.reserve(in.frames);
   glm::dvec3 previousPosition_m(0.0);
-  double firstFrame_ms = 0;  // process start -> frame 0 drawn (cold start, with the warm-up)
   ProgressBar progress("bench " + std::filesystem::path(o.path).filename().string());
-  for (uint64_t k = 0; k < frames; ++k) {
-    double t = path->startTime_s() + double(k) / o.rate_hz;
-    Camera camera = path->cameraAt(t, model.radius_m(), aspect, ground);
-    FrameStats stats = renderer.renderFrame(**terrain, camera, converge);
+  for (uint64_t k = 0; k < in.frames; ++k) {
+    double t = in.path.startTime_s() + double(k) / o.rate_hz;
+    Camera camera = in.path.cameraAt(t, model.radius_m(), aspect, ground);
+    FrameStats stats = renderer.renderFrame(terrain, camera, converge);
     double altitude = glm::length(camera.position_m) - ground(glm::normalize(camera.position_m));
     const double speed = k > 0 ? groundSpeed_mps(previousPosition_m, camera.position_m, 1.0 / o.rate_hz) : 0.0;
     previousPosition_m = camera.position_m;
-    rows.push_back({k, t, altitude, speed, stats});
-    if (k == 0) firstFrame_ms = millisecondsSinceProcessStart();
-    for (double kt : *keyTimes) {
-      // The frame nearest to each key time (times outside the path are skipped).
-      if (kt < path->startTime_s() || kt > path->endTime_s()) continue;
-      if (std::llround((kt - path->startTime_s()) * o.rate_hz) != int64_t(k)) continue;
-      char name[64];
-      std::snprintf(name, sizeof(name), "keyframe_%05.2fs.png", kt);
-      // Kept in memory and written with the report at the end: an interrupted run must not leave
-      // new key frames beside an earlier run's csv/json/html.
-      Result<std::string> png = encodePng(toImage(renderer.readback(), camera));
-      if (!png) {
-        printError(png.error().format());
-        return kExitFailure;
-      }
-      keys.push_back({kt, name, std::move(*png)});
-    }
-    progress.update(double(k + 1) / double(frames));
+    flight.rows.push_back({k, t, altitude, speed, stats});
+    if (k == 0) flight.firstFrame_ms = millisecondsSinceProcessStart();
+    if (auto s = keepKeyFrames(in, o.rate_hz, k, renderer, camera, flight.keys); !s) return s.error();
+    progress.update(double(k + 1) / double(in.frames));
   }
+  return flight;
+}
 
+BenchRunInfo runInfo(const BenchOptions& o, const vk::Device& device, const TerrainSettings& settings) {
   BenchRunInfo info{
       o.planet, o.path, o.mode, device.name(), o.size, settings.gridCells, o.commandLine, std::string(GLOBE_VERSION)};
   info.driver = device.driverName() + " " + device.driverInfo();
   info.shaderCache = mesaShaderCacheState();
+  info.commit = GLOBE_COMMIT;
+  return info;
+}
+
+int runBench(const BenchOptions& o) {
+  const std::string startedUtc = utcNowIso8601();
+  const std::string loadAtStart = loadAverage();
+  auto in = checkBenchInputs(o);
+  if (!in) return usageError(in.error());
+  ElevationModel model(in->planet);
+  TerrainSettings settings = in->settings;
+  // One sun for the whole flight, lighting the region of the path's first keyframe.
+  settings.style.sunDirection = defaultSunDirection(in->path.positionAt(
+      in->path.startTime_s(), [&](const glm::dvec3& d) { return model.radius_m() + model.elevation_m(d); }));
+  settings.style.ramp = in->planet.colour_ramp;
+  vk::Device device(deviceOptions(o.device));
+  const double deviceReady_ms = millisecondsSinceProcessStart();
+  auto terrain = Terrain::create(device, model, settings);
+  if (!terrain) return usageError(terrain.error());
+  HeadlessRenderer renderer(device, {in->size.width, in->size.height});
+  const double pipelinesReady_ms = millisecondsSinceProcessStart();
+  std::error_code ec;
+  std::filesystem::create_directories(o.out, ec);
+  if (ec) return usageError(Error::inField("--out", "cannot create '" + o.out + "': " + ec.message()));
+
+  auto flight = flyPath(o, *in, model, **terrain, renderer);
+  if (!flight) {
+    printError(flight.error().format());
+    return kExitFailure;
+  }
+  BenchRunInfo info = runInfo(o, device, settings);
   info.loadAverageStart = loadAtStart;
   info.loadAverageEnd = loadAverage();
-  info.commit = GLOBE_COMMIT;
   info.dateUtc = startedUtc;
   info.latency = generationLatency((*terrain)->pool());
-  if (auto s = writeBenchReport(o.out, info, rows, keys, baseline ? &*baseline : nullptr); !s) {
+  const BenchBaseline* baseline = in->baseline ? &*in->baseline : nullptr;
+  if (auto s = writeBenchReport(o.out, info, flight->rows, flight->keys, baseline); !s) {
     printError(s.error().format());
     return kExitFailure;
   }
   if (int code = validationExitCode(device); code != kExitOk) return code;
-  std::printf("%llu frames of %s (%s) written to %s/report.html\n", (unsigned long long)frames, o.path.c_str(),
+  std::printf("%llu frames of %s (%s) written to %s/report.html\n", (unsigned long long)in->frames, o.path.c_str(),
               o.mode.c_str(), o.out.c_str());
   // Cold start, and where it went: device, terrain pipelines and buffers, warm-up, frame 0.
+  const FrameStats& first = flight->rows.front().stats;
   std::printf(
       "first frame %.0f ms after process start: device %.0f ms, terrain set-up %.0f ms, frame 0 %.0f ms "
       "(of which warm-up %.0f ms in %u rounds; %u nodes drawn)\n",
-      firstFrame_ms, deviceReady_ms, pipelinesReady_ms - deviceReady_ms, rows.front().stats.frame_ms,
-      (*terrain)->primeWall_ms(), (*terrain)->primedRounds(), rows.front().stats.nodes_selected);
+      flight->firstFrame_ms, deviceReady_ms, pipelinesReady_ms - deviceReady_ms, first.frame_ms,
+      (*terrain)->primeWall_ms(), (*terrain)->primedRounds(), first.nodes_selected);
   return kExitOk;
 }
 
