@@ -243,12 +243,7 @@ void addBenchCommand(CLI::App& app, Runner& run, const std::string& commandLine)
   cmd->add_option("--keyframes", opts->keyFrames, "Path times (s) whose frames are saved as PNG")
       ->capture_default_str();
   cmd->add_option("--rate", opts->rate_hz, "Frames per second of path time (fixed step)")->capture_default_str();
-  cmd->add_option("--grid", opts->gridCells,
-                  "Grid cells per node side (power of two, 16..256; default: the quality preset's)")
-      ->check(CLI::Range(16U, 256U));
-  cmd->add_option("--quality", opts->quality,
-                  "fast, balanced or exact (docs/tradeoffs.md; default: the planet's default_quality)")
-      ->check(nonEmptyValue());
+  addQualityOptions(*cmd, opts->quality, &opts->gridCells);
   cmd->add_option("--baseline", opts->baseline,
                   "An earlier run's output directory: its summary.json's numbers go beside this run's, with ratios");
   addDeviceFlags(*cmd, opts->device);

@@ -115,9 +115,7 @@ void addMovieCommand(CLI::App& app, Runner& run) {
   cmd->add_option("--planet", o->planet, "Planet file (TOML)")->capture_default_str();
   cmd->add_option("--fps", o->fps, "Frames per second: 24, 25, 30, 50 or 60")->capture_default_str();
   cmd->add_option("--size", o->size, "Frame size WxH in pixels (even for MP4)")->capture_default_str();
-  cmd->add_option("--quality", o->quality,
-                  "fast, balanced or exact (docs/tradeoffs.md; default: the planet's default_quality)")
-      ->check(nonEmptyValue());
+  addQualityOptions(*cmd, o->quality);
   cmd->add_option("--out", o->out,
                   "A directory (frame_000000.png ..., resumable) or a .mp4 file (H.264 through FFmpeg's libraries)")
       ->capture_default_str();

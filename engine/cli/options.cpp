@@ -91,6 +91,17 @@ int validationExitCode(vk::Device& device) {
   return kExitFailure;
 }
 
+void addQualityOptions(CLI::App& cmd, std::string& quality, uint32_t* gridCells) {
+  if (gridCells != nullptr) {
+    cmd.add_option("--grid", *gridCells,
+                   "Grid cells per node side (power of two, 16..256; default: the quality preset's)")
+        ->check(CLI::Range(16U, 256U));
+  }
+  cmd.add_option("--quality", quality,
+                 "fast, balanced or exact (docs/tradeoffs.md; default: the planet's default_quality)")
+      ->check(nonEmptyValue());
+}
+
 Result<TerrainSettings> terrainSettingsFromOptions(const std::string& quality, uint32_t gridCells,
                                                    const PlanetDescription& planet) {
   auto preset = chooseQualityPreset(quality, planet);

@@ -38,6 +38,11 @@ struct DeviceFlags {
   bool validation = false;  // --validate, or $GLOBE_VALIDATION=1
 };
 void addDeviceFlags(CLI::App& cmd, DeviceFlags& flags);
+
+// --quality (into `quality`; empty: the planet's default_quality) and, when `gridCells` is given,
+// --grid (0: the preset's grid), with the same help and checks on every rendering command; read
+// them back with terrainSettingsFromOptions.
+void addQualityOptions(CLI::App& cmd, std::string& quality, uint32_t* gridCells = nullptr);
 vk::DeviceOptions deviceOptions(const DeviceFlags& flags);
 
 // With validation on, any message makes the command fail after it has reported them.

@@ -191,12 +191,7 @@ void addViewCommand(CLI::App& app, Runner& run) {
   cmd->add_option("--mode", opts->mode, "terrain (the planet) or sphere (its reference sphere, analytic)")
       ->check(CLI::IsMember({"terrain", "sphere"}))
       ->capture_default_str();
-  cmd->add_option("--grid", opts->gridCells,
-                  "Grid cells per node side (power of two, 16..256; default: the quality preset's)")
-      ->check(CLI::Range(16U, 256U));
-  cmd->add_option("--quality", opts->quality,
-                  "fast, balanced or exact (docs/tradeoffs.md; default: the planet's default_quality)")
-      ->check(nonEmptyValue());
+  addQualityOptions(*cmd, opts->quality, &opts->gridCells);
   cmd->add_option("--record-dir", opts->recordDir,
                   "Directory where R (start/stop recording) writes globe-path-YYYYmmdd-HHMMSS.path")
       ->capture_default_str();
