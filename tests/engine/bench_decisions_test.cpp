@@ -7,6 +7,8 @@
 #include "engine/report/bench_timeline_svg.h"
 #include "engine/report/run_environment.h"
 
+#include "tests/support/temp_dir.h"
+
 #include <gtest/gtest.h>
 #include <unistd.h>
 #include <nlohmann/json.hpp>
@@ -25,28 +27,8 @@ namespace globe {
 namespace {
 
 namespace fs = std::filesystem;
-
-class TempDir {
- public:
-  explicit TempDir(const std::string& name)
-      : path_(fs::temp_directory_path() / ("globe_bench_decisions_" + name + "_" + std::to_string(::getpid()))) {
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() { fs::remove_all(path_); }
-  std::string str() const { return path_.string(); }
-  fs::path operator/(const std::string& name) const { return path_ / name; }
-
- private:
-  fs::path path_;
-};
-
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using testing::readFileBytes;
+using testing::TempDir;
 
 void writeFile(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
 
@@ -125,10 +107,10 @@ TEST(BenchPhases, OneFrameIsOnePhase) {
 }
 
 TEST(BenchReportDecisions, SummaryHasEnvironmentLatencyPhasesAndGpuSplit) {
-  TempDir dir("summary");
+  TempDir dir("bench_decisions_summary");
   const auto frames = flyoverFrames();
   ASSERT_TRUE(writeBenchReport(dir.str(), runInfo(), frames, {}).ok());
-  const auto json = nlohmann::json::parse(readFile(dir / "summary.json"));
+  const auto json = nlohmann::json::parse(readFileBytes(dir / "summary.json"));
   for (const char* key : {"driver", "shader_cache", "load_average_start", "load_average_end", "commit", "date_utc"})
     EXPECT_TRUE(json["run"].contains(key)) << key;
   EXPECT_EQ(json["run"]["commit"], "0123456789ab");
@@ -138,15 +120,15 @@ TEST(BenchReportDecisions, SummaryHasEnvironmentLatencyPhasesAndGpuSplit) {
   for (const char* key : {"gpu_terrain_ms", "gpu_skirts_ms", "gpu_sky_ms", "gpu_generation_ms", "ground_speed_mps"})
     EXPECT_TRUE(json["metrics"].contains(key)) << key;
   EXPECT_FALSE(json.contains("baseline"));
-  const std::string html = readFile(dir / "report.html");
+  const std::string html = readFileBytes(dir / "report.html");
   for (const char* text : {"MESA_SHADER_CACHE_DISABLE", "0123456789ab", "2026-12-01T16:36:56Z", "1.00 2.00 3.00",
                            "Frame-time distribution", "Phases of the flight", "GPU time by pass", "low pass"})
     EXPECT_NE(html.find(text), std::string::npos) << text;
 }
 
 TEST(BenchReportDecisions, BaselineGoesBesideWithRatios) {
-  TempDir before("baseline_before");
-  TempDir after("baseline_after");
+  TempDir before("bench_decisions_baseline_before");
+  TempDir after("bench_decisions_baseline_after");
   auto frames = flyoverFrames();
   ASSERT_TRUE(writeBenchReport(before.str(), runInfo(), frames, {}).ok());
   auto baseline = readBenchBaseline(before.str());
@@ -154,15 +136,15 @@ TEST(BenchReportDecisions, BaselineGoesBesideWithRatios) {
   EXPECT_EQ(baseline->commit, "0123456789ab");
   for (BenchFrame& f : frames) f.stats.frame_ms *= 2;  // twice as slow
   ASSERT_TRUE(writeBenchReport(after.str(), runInfo(), frames, {}, &*baseline).ok());
-  const auto json = nlohmann::json::parse(readFile(after / "summary.json"));
+  const auto json = nlohmann::json::parse(readFileBytes(after / "summary.json"));
   ASSERT_TRUE(json.contains("baseline"));
   EXPECT_DOUBLE_EQ(json["baseline"]["metrics"]["frame_ms"]["median_ratio"].get<double>(), 2.0);
   EXPECT_DOUBLE_EQ(json["baseline"]["metrics"]["nodes_selected"]["p95_ratio"].get<double>(), 1.0);
-  EXPECT_NE(readFile(after / "report.html").find("baseline median"), std::string::npos);
+  EXPECT_NE(readFileBytes(after / "report.html").find("baseline median"), std::string::npos);
 }
 
 TEST(BenchReportDecisions, BadBaselineIsOneLineNamingTheFile) {
-  TempDir dir("baseline_bad");
+  TempDir dir("bench_decisions_baseline_bad");
   auto missing = readBenchBaseline((dir / "nothing").string());
   ASSERT_FALSE(missing.ok());
   EXPECT_NE(missing.error().format().find("nothing/summary.json: --baseline: cannot open"), std::string::npos)

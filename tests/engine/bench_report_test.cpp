@@ -5,6 +5,8 @@
 #include "engine/report/bench_metrics.h"
 #include "engine/report/markup_escape.h"
 
+#include "tests/support/temp_dir.h"
+
 #include <gtest/gtest.h>
 #include <unistd.h>
 #include <nlohmann/json.hpp>
@@ -22,31 +24,10 @@ namespace globe {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::readFileBytes;
+using testing::TempDir;
 
 const char* const kReportFiles[] = {"frames.csv", "summary.json", "timeline.svg", "report.html"};
-
-// A fresh, empty directory per test, removed afterwards.
-class TempDir {
- public:
-  explicit TempDir(const std::string& name)
-      : path_(fs::temp_directory_path() / ("globe_bench_report_" + name + "_" + std::to_string(::getpid()))) {
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() { fs::remove_all(path_); }
-  std::string str() const { return path_.string(); }
-  fs::path operator/(const std::string& name) const { return path_ / name; }
-
- private:
-  fs::path path_;
-};
-
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 std::vector<std::string> lines(const std::string& text) {
   std::vector<std::string> out;
@@ -274,7 +255,7 @@ TEST(BenchReportXmlChecker, CatchesMalformedDocuments) {
 // ---------------------------------------------------------------------------------------------
 
 TEST(BenchReport, WritesAllFilesAndNothingElse) {
-  TempDir dir("all");
+  TempDir dir("bench_report_all");
   const auto keys = keyFramesIn(dir, {0, 7, 12, 18});
   const auto frames = syntheticFrames(1200);
   const Status s = writeBenchReport(dir.str(), runInfo(), frames, keys);
@@ -286,10 +267,10 @@ TEST(BenchReport, WritesAllFilesAndNothingElse) {
 }
 
 TEST(BenchReport, CsvHeaderIsExactWithOneRowPerFrame) {
-  TempDir dir("csv");
+  TempDir dir("bench_report_csv");
   const auto frames = syntheticFrames(300);
   ASSERT_TRUE(writeBenchReport(dir.str(), runInfo(), frames, {}).ok());
-  const auto rows = lines(readFile(dir / "frames.csv"));
+  const auto rows = lines(readFileBytes(dir / "frames.csv"));
   ASSERT_EQ(rows.size(), frames.size() + 1);
   EXPECT_EQ(rows[0],
             "frame,t,altitude_m,frame_ms,select_ms,gpu_ms,nodes_selected,nodes_partial,triangles,draw_calls,"
@@ -308,11 +289,11 @@ TEST(BenchReport, CsvHeaderIsExactWithOneRowPerFrame) {
 }
 
 TEST(BenchReport, SummaryJsonHasEveryKey) {
-  TempDir dir("json");
+  TempDir dir("bench_report_json");
   const auto keys = keyFramesIn(dir, {0, 7});
   const auto frames = syntheticFrames(600);
   ASSERT_TRUE(writeBenchReport(dir.str(), runInfo(), frames, keys).ok());
-  const auto json = nlohmann::json::parse(readFile(dir / "summary.json"), nullptr, false);
+  const auto json = nlohmann::json::parse(readFileBytes(dir / "summary.json"), nullptr, false);
   ASSERT_FALSE(json.is_discarded());
   for (const char* key : {"schema", "run", "frame_count", "t_first_s", "t_last_s", "frame_budget_ms", "jank_ms",
                           "frames_over_33ms", "percentile_method", "metrics", "key_frames"}) {
@@ -378,7 +359,7 @@ TEST(BenchReport, NearestRankPercentiles) {
 }
 
 TEST(BenchReport, JankAndFramesOverBudget) {
-  TempDir dir("jank");
+  TempDir dir("bench_report_jank");
   const double frameMs[] = {10, 33.3, 40, 100, 33.4};
   std::vector<BenchFrame> frames(std::size(frameMs));
   for (std::size_t i = 0; i < frames.size(); ++i) {
@@ -389,14 +370,14 @@ TEST(BenchReport, JankAndFramesOverBudget) {
   EXPECT_NEAR(jankMs(frames), (40 - 33.3) + (100 - 33.3) + (33.4 - 33.3), 1e-9);
   EXPECT_EQ(framesOverBudget(frames), 3U);  // 33.3 itself is on budget
   ASSERT_TRUE(writeBenchReport(dir.str(), runInfo(), frames, {}).ok());
-  const auto json = nlohmann::json::parse(readFile(dir / "summary.json"));
+  const auto json = nlohmann::json::parse(readFileBytes(dir / "summary.json"));
   EXPECT_NEAR(json["jank_ms"].get<double>(), 73.5, 1e-9);
   EXPECT_EQ(json["frames_over_33ms"], 3);
   EXPECT_EQ(json["frame_budget_ms"], 33.3);
 }
 
 TEST(BenchReport, SvgAndHtmlAreWellFormedEvenWithHostileText) {
-  TempDir dir("xml");
+  TempDir dir("bench_report_xml");
   const auto keys = keyFramesIn(dir, {0, 7, 12, 18});
   BenchRunInfo info = runInfo();
   info.pathFile = "paths/<script>alert('x')</script> & \"quotes\".path";
@@ -408,7 +389,7 @@ TEST(BenchReport, SvgAndHtmlAreWellFormedEvenWithHostileText) {
   const Status s = writeBenchReport(dir.str(), info, frames, keys);
   ASSERT_TRUE(s.ok()) << s.error().format();
 
-  const std::string svg = readFile(dir / "timeline.svg");
+  const std::string svg = readFileBytes(dir / "timeline.svg");
   const XmlReport svgCheck = checkXml(svg);
   EXPECT_EQ(svgCheck.error, "");
   EXPECT_EQ(svgCheck.root, "svg");
@@ -418,7 +399,7 @@ TEST(BenchReport, SvgAndHtmlAreWellFormedEvenWithHostileText) {
   EXPECT_NE(svg.find("gen_in_flight"), std::string::npos);
   EXPECT_EQ(svg.find("<script>"), std::string::npos);
 
-  const std::string html = readFile(dir / "report.html");
+  const std::string html = readFileBytes(dir / "report.html");
   const XmlReport htmlCheck = checkXml(html);
   EXPECT_EQ(htmlCheck.error, "");
   EXPECT_EQ(htmlCheck.root, "html");
@@ -429,52 +410,52 @@ TEST(BenchReport, SvgAndHtmlAreWellFormedEvenWithHostileText) {
     EXPECT_NE(html.find(needle), std::string::npos) << needle;
   }
   // The JSON keeps the text, with invalid UTF-8 replaced rather than refused.
-  const auto json = nlohmann::json::parse(readFile(dir / "summary.json"), nullptr, false);
+  const auto json = nlohmann::json::parse(readFileBytes(dir / "summary.json"), nullptr, false);
   ASSERT_FALSE(json.is_discarded());
   EXPECT_EQ(json["run"]["path_file"], info.pathFile);
 }
 
 TEST(BenchReport, SingleFrameRunIsDrawable) {
-  TempDir dir("one");
+  TempDir dir("bench_report_one");
   const auto frames = syntheticFrames(1);
   ASSERT_TRUE(writeBenchReport(dir.str(), runInfo(), frames, {}).ok());
-  EXPECT_EQ(checkXml(readFile(dir / "timeline.svg")).error, "");
-  EXPECT_EQ(checkXml(readFile(dir / "report.html")).error, "");
-  EXPECT_EQ(lines(readFile(dir / "frames.csv")).size(), 2U);
+  EXPECT_EQ(checkXml(readFileBytes(dir / "timeline.svg")).error, "");
+  EXPECT_EQ(checkXml(readFileBytes(dir / "report.html")).error, "");
+  EXPECT_EQ(lines(readFileBytes(dir / "frames.csv")).size(), 2U);
 }
 
 TEST(BenchReport, LongRunsAreDownsampledButKeepSpikes) {
-  TempDir dir("long");
+  TempDir dir("bench_report_long");
   auto frames = syntheticFrames(60000);  // 1000 s at 60 Hz
   frames[31234].stats.frame_ms = 40.0;   // a lone spike must survive the min/max buckets
   ASSERT_TRUE(writeBenchReport(dir.str(), runInfo(), frames, {}).ok());
-  const std::string svg = readFile(dir / "timeline.svg");
+  const std::string svg = readFileBytes(dir / "timeline.svg");
   EXPECT_EQ(checkXml(svg).error, "");
   EXPECT_LT(svg.size(), 2'000'000U);
-  EXPECT_EQ(lines(readFile(dir / "frames.csv")).size(), frames.size() + 1);
+  EXPECT_EQ(lines(readFileBytes(dir / "frames.csv")).size(), frames.size() + 1);
 }
 
 TEST(BenchReport, SameInputsGiveIdenticalBytes) {
-  TempDir a("det_a");
-  TempDir b("det_b");
+  TempDir a("bench_report_det_a");
+  TempDir b("bench_report_det_b");
   const auto frames = syntheticFrames(900);
   const auto keysA = keyFramesIn(a, {0, 7});
   const auto keysB = keyFramesIn(b, {0, 7});
   ASSERT_TRUE(writeBenchReport(a.str(), runInfo(), frames, keysA).ok());
   ASSERT_TRUE(writeBenchReport(b.str(), runInfo(), frames, keysB).ok());
   for (const char* name : kReportFiles) {
-    const std::string first = readFile(a / name);
+    const std::string first = readFileBytes(a / name);
     EXPECT_FALSE(first.empty()) << name;
-    EXPECT_EQ(first, readFile(b / name)) << name;
+    EXPECT_EQ(first, readFileBytes(b / name)) << name;
   }
   // And again over the existing files.
-  const std::string before = readFile(a / "summary.json");
+  const std::string before = readFileBytes(a / "summary.json");
   ASSERT_TRUE(writeBenchReport(a.str(), runInfo(), frames, keysA).ok());
-  EXPECT_EQ(readFile(a / "summary.json"), before);
+  EXPECT_EQ(readFileBytes(a / "summary.json"), before);
 }
 
 TEST(BenchReport, UnwritableDirectoryIsAnErrorAndWritesNothing) {
-  TempDir dir("unwritable");
+  TempDir dir("bench_report_unwritable");
   const auto frames = syntheticFrames(10);
   // Missing directory: not created.
   const std::string missing = (dir / "missing").string();
@@ -489,14 +470,14 @@ TEST(BenchReport, UnwritableDirectoryIsAnErrorAndWritesNothing) {
   ASSERT_FALSE(s.ok());
   s = writeBenchReport(file, runInfo(), frames, {});
   ASSERT_FALSE(s.ok());
-  EXPECT_EQ(readFile(file), "x");
+  EXPECT_EQ(readFileBytes(file), "x");
   std::size_t count = 0;
   for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir.str())) ++count;
   EXPECT_EQ(count, 1U);
 }
 
 TEST(BenchReport, BadInputIsAnErrorAndWritesNothing) {
-  TempDir dir("bad");
+  TempDir dir("bench_report_bad");
   auto frames = syntheticFrames(10);
   const auto expectNothingWritten = [&](const Status& s, const std::string& fieldPart) {
     ASSERT_FALSE(s.ok());
@@ -517,11 +498,11 @@ TEST(BenchReport, BadInputIsAnErrorAndWritesNothing) {
 }
 
 TEST(BenchReport, FailedWriteLeavesThePreviousReportIntact) {
-  TempDir dir("keep");
+  TempDir dir("bench_report_keep");
   const auto frames = syntheticFrames(20);
   ASSERT_TRUE(writeBenchReport(dir.str(), runInfo(), frames, {}).ok());
   std::map<std::string, std::string> before;
-  for (const char* name : kReportFiles) before[name] = readFile(dir / name);
+  for (const char* name : kReportFiles) before[name] = readFileBytes(dir / name);
   // Block the temporary of the third file with a directory: the first two temporaries are already
   // written by then and must not be renamed over the old report.
   const fs::path blocker = dir / (".timeline.svg.tmp" + std::to_string(::getpid()));
@@ -530,7 +511,7 @@ TEST(BenchReport, FailedWriteLeavesThePreviousReportIntact) {
   const Status s = writeBenchReport(dir.str(), runInfo(), changed, {});
   ASSERT_FALSE(s.ok());
   EXPECT_NE(s.error().format().find("timeline.svg"), std::string::npos) << s.error().format();
-  for (const char* name : kReportFiles) EXPECT_EQ(readFile(dir / name), before[name]) << name;
+  for (const char* name : kReportFiles) EXPECT_EQ(readFileBytes(dir / name), before[name]) << name;
   EXPECT_FALSE(fs::exists(dir / (".frames.csv.tmp" + std::to_string(::getpid()))));
   EXPECT_FALSE(fs::exists(dir / (".summary.json.tmp" + std::to_string(::getpid()))));
 }

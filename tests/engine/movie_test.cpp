@@ -8,6 +8,8 @@
 #include "planet/camera/camera_path_file.h"
 #include "tests/support/gpu_test.h"
 
+#include "tests/support/temp_dir.h"
+
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -19,27 +21,8 @@ namespace globe {
 namespace {
 
 namespace fs = std::filesystem;
-
-class TempDir {
- public:
-  explicit TempDir(const std::string& name)
-      : path_(fs::temp_directory_path() / ("globe_movie_" + name + "_" + std::to_string(::getpid()))) {
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() { fs::remove_all(path_); }
-  fs::path operator/(const std::string& name) const { return path_ / name; }
-
- private:
-  fs::path path_;
-};
-
-std::string bytesOf(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing::readFileBytes;
+using testing::TempDir;
 
 // Ten 64x48 frames fading to red, encoded to `file`; returns the encoder's description.
 std::string writeGradient(const std::string& file) {
@@ -56,7 +39,7 @@ std::string writeGradient(const std::string& file) {
 }
 
 TEST(Mp4Writer, FramesSizeAndDurationReadBack) {
-  TempDir dir("writer");
+  TempDir dir("movie_writer");
   const std::string file = (dir / "gradient.mp4").string();
   EXPECT_EQ(writeGradient(file).rfind("libx264", 0), 0u);  // Debian's libavcodec has libx264
   auto info = readMovieInfo(file);
@@ -69,7 +52,7 @@ TEST(Mp4Writer, FramesSizeAndDurationReadBack) {
   EXPECT_EQ(info->codec, "h264");
   // Deterministic: the same frames give the same bytes.
   writeGradient((dir / "again.mp4").string());
-  EXPECT_EQ(bytesOf(file), bytesOf(dir / "again.mp4"));
+  EXPECT_EQ(readFileBytes(file), readFileBytes(dir / "again.mp4"));
   EXPECT_FALSE(Mp4Writer::open((dir / "odd.mp4").string(), 65, 48, 30).ok());
 }
 
@@ -107,7 +90,7 @@ class MovieTest : public testing::GpuTest {
 };
 
 TEST_F(MovieTest, PngSequenceIsDeterministicAndResumes) {
-  TempDir dir("png");
+  TempDir dir("movie_png");
   const std::string a = (dir / "a").string(), b = (dir / "b").string();
   auto first = renderMovie(device(), planet(), path(), settings(a, MovieFormat::png));
   ASSERT_TRUE(first.ok()) << first.error().format();
@@ -116,20 +99,20 @@ TEST_F(MovieTest, PngSequenceIsDeterministicAndResumes) {
   auto second = renderMovie(device(), planet(), path(), settings(b, MovieFormat::png));
   ASSERT_TRUE(second.ok());
   for (uint64_t k = 0; k < 10; ++k)
-    EXPECT_EQ(bytesOf(fs::path(a) / movieFrameName(k, MovieFormat::png)),
-              bytesOf(fs::path(b) / movieFrameName(k, MovieFormat::png)))
+    EXPECT_EQ(readFileBytes(fs::path(a) / movieFrameName(k, MovieFormat::png)),
+              readFileBytes(fs::path(b) / movieFrameName(k, MovieFormat::png)))
         << "frame " << k;
   // The first and last frames differ: the camera moved.
-  EXPECT_NE(bytesOf(fs::path(a) / movieFrameName(0, MovieFormat::png)),
-            bytesOf(fs::path(a) / movieFrameName(9, MovieFormat::png)));
+  EXPECT_NE(readFileBytes(fs::path(a) / movieFrameName(0, MovieFormat::png)),
+            readFileBytes(fs::path(a) / movieFrameName(9, MovieFormat::png)));
 
   fs::remove(fs::path(a) / movieFrameName(6, MovieFormat::png));
   auto resumed = renderMovie(device(), planet(), path(), settings(a, MovieFormat::png));
   ASSERT_TRUE(resumed.ok());
   EXPECT_EQ(resumed->rendered, 1u);
   EXPECT_EQ(resumed->kept, 9u);
-  EXPECT_EQ(bytesOf(fs::path(a) / movieFrameName(6, MovieFormat::png)),
-            bytesOf(fs::path(b) / movieFrameName(6, MovieFormat::png)));
+  EXPECT_EQ(readFileBytes(fs::path(a) / movieFrameName(6, MovieFormat::png)),
+            readFileBytes(fs::path(b) / movieFrameName(6, MovieFormat::png)));
 
   // Another movie's settings in the same directory are refused, nothing rendered.
   MovieSettings other = settings(a, MovieFormat::png);
@@ -138,7 +121,7 @@ TEST_F(MovieTest, PngSequenceIsDeterministicAndResumes) {
 }
 
 TEST_F(MovieTest, Mp4HasEveryFrame) {
-  TempDir dir("mp4");
+  TempDir dir("movie_mp4");
   const std::string file = (dir / "descent.mp4").string();
   auto summary = renderMovie(device(), planet(), path(), settings(file, MovieFormat::mp4));
   ASSERT_TRUE(summary.ok()) << summary.error().format();
