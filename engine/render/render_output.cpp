@@ -5,6 +5,14 @@
 
 namespace globe {
 
+vk::GraphicsPipelineDesc fullscreenPassDesc(const char* fragmentShader, uint32_t pushConstantBytes) {
+  vk::GraphicsPipelineDesc d;
+  d.vertexShader = "fullscreen.vert";
+  d.fragmentShader = fragmentShader;
+  d.pushConstantBytes = pushConstantBytes;
+  return d;
+}
+
 ViewRays viewRays(const Camera& camera, float forwardW) {
   double tanY = std::tan(camera.verticalFov_rad * 0.5);
   return {{float(camera.right.x), float(camera.right.y), float(camera.right.z), float(tanY * camera.aspect)},

@@ -2,6 +2,7 @@
 // Turns a read-back frame into an image file's content: linear colour plus the per-pixel
 // distance along the view ray in metres (+inf where nothing was drawn).
 #include "engine/io/image_io.h"
+#include "engine/vk/graphics_pipeline.h"
 #include "engine/vk/offscreen_target.h"
 #include "planet/camera/camera.h"
 
@@ -16,6 +17,8 @@ struct ViewRays {
   float forward[4];
 };
 ViewRays viewRays(const Camera& camera, float forwardW);
+// A fullscreen pass: fullscreen.vert's one triangle and `fragmentShader`, push constants only.
+vk::GraphicsPipelineDesc fullscreenPassDesc(const char* fragmentShader, uint32_t pushConstantBytes);
 
 // Distance (metres) along the ray through pixel centre (x, y) for reversed-Z device depth `depth`.
 double rayDistanceFromDepth(const Camera& camera, uint32_t width, uint32_t height, double x, double y, float depth);

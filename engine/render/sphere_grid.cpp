@@ -16,10 +16,7 @@ static_assert(sizeof(Push) == 80);
 
 SphereGrid::SphereGrid(vk::Device& device)
     : pipeline_(device, [] {
-        vk::GraphicsPipelineDesc d;
-        d.vertexShader = "fullscreen.vert";
-        d.fragmentShader = "sphere_grid.frag";
-        d.pushConstantBytes = sizeof(Push);
+        vk::GraphicsPipelineDesc d = fullscreenPassDesc("sphere_grid.frag", sizeof(Push));
         d.depthTest = false;
         d.depthWrite = false;
         d.blend = true;

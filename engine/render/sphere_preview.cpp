@@ -16,13 +16,7 @@ static_assert(sizeof(Push) == 96);
 }  // namespace
 
 SpherePreview::SpherePreview(vk::Device& device)
-    : pipeline_(device, [] {
-        vk::GraphicsPipelineDesc d;
-        d.vertexShader = "fullscreen.vert";
-        d.fragmentShader = "sphere_preview.frag";
-        d.pushConstantBytes = sizeof(Push);
-        return d;
-      }()) {}
+    : pipeline_(device, fullscreenPassDesc("sphere_preview.frag", sizeof(Push))) {}
 
 void SpherePreview::record(VkCommandBuffer cmd, const Camera& camera, double radius_m,
                            const glm::dvec3& sunDirection) const {

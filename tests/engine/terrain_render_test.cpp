@@ -121,6 +121,17 @@ double raySphere(const glm::dvec3& o, const glm::dvec3& d, double r) {
   return t > 0.0 ? t : -1.0;
 }
 
+// No sky (background pixels stay the clear colour), optionally no skirts (geometry alone).
+TerrainStyle terrainOnlyStyle(bool skirts) {
+  TerrainStyle style;
+  style.sky = false;
+  if (!skirts) {
+    style.skirtOutward = 0.0f;
+    style.skirtDrop = 0.0f;
+  }
+  return style;
+}
+
 class TerrainRenderTest : public GpuTest {
  protected:
   TerrainRenderTest() : model_(testPlanet()) {}
@@ -296,11 +307,7 @@ TEST_F(TerrainRenderTest, NoCracksAtSeamsVerticesPolesAndAntimeridian) {
 TEST_F(TerrainRenderTest, WithoutSkirtsMorphedEdgesStillMeet) {
   // Skirts only hide sub-pixel gaps; the geometry itself must be closed: without them a handful of
   // isolated pixels at most (rasteriser snapping of T-junctions), never a visible crack line.
-  TerrainStyle style;
-  style.sky = false;
-  style.skirtOutward = 0.0f;
-  style.skirtDrop = 0.0f;
-  TerrainRenderer renderer(device(), kCells, style);
+  TerrainRenderer renderer(device(), kCells, terrainOnlyStyle(/*skirts=*/false));
   CpuPayloads payloads(device(), model_, 6000);
   int total = 0;
   const auto cases = crackCases();
@@ -331,11 +338,7 @@ void fillFacingSquare(std::span<glm::vec4> slot, const Camera& camera, double si
 }
 
 TEST_F(TerrainRenderTest, NearerSurfaceWinsAt1mAnd100km) {
-  TerrainStyle style;
-  style.sky = false;
-  style.skirtOutward = 0.0f;
-  style.skirtDrop = 0.0f;
-  TerrainRenderer renderer(device(), kCells, style);
+  TerrainRenderer renderer(device(), kCells, terrainOnlyStyle(/*skirts=*/false));
   CpuPayloads payloads(device(), model_, 2);
   Camera camera = cameraAt(46.5, 7.5, 2.0, 30.0, -10.0);
   FloatingOrigin origin(0.0, payloadQuantum_m(0, kRadius_m));
