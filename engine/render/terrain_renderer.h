@@ -1,5 +1,5 @@
 #pragma once
-// The terrain draw (CDLOD, Strugar 2009; primary source §3.3): every selected node is one instance of
+// The terrain draw (CDLOD [Strugar 2009; Frasson 2018, §3.3]): every selected node is one instance of
 // ONE shared grid index buffer, its vertices pulled by the vertex shader from the node's payload slot
 // (shaders/include/payload_layout.h). Two instanced draws per frame: full nodes (N x N cells) and
 // partial nodes (the N/2 grid over their own payload's every other sample = their parent's LOD).

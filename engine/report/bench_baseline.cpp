@@ -21,7 +21,7 @@ Result<MetricSummary> readMetric(const std::string& file, const std::string& nam
                                                    {"p99", &s.p99}, {"max", &s.max},       {"mean", &s.mean}};
   for (const auto& [key, value] : stats) {
     if (!m.is_object() || !m.contains(key) || !m[key].is_number())
-      return Error{file, 0, 0, "metrics." + name + "." + key, "missing or not a number"};
+      return Error::inFileField(file, "metrics." + name + "." + key, "missing or not a number");
     *value = m[key].get<double>();
   }
   return s;
@@ -35,12 +35,12 @@ Result<Json> parseFile(const std::string& file) {
     return e;
   }
   Json json = Json::parse(*text, nullptr, false);
-  if (json.is_discarded()) return Error{file, 0, 0, "--baseline", "not valid JSON"};
+  if (json.is_discarded()) return Error::inFileField(file, "--baseline", "not valid JSON");
   const std::string schema = stringOr(json, "schema");
   if (schema.rfind("globe-bench-summary/", 0) != 0)
-    return Error{file, 0, 0, "schema", "not a globe bench summary (expected \"globe-bench-summary/1\")"};
+    return Error::inFileField(file, "schema", "not a globe bench summary (expected \"globe-bench-summary/1\")");
   if (!json.contains("metrics") || !json["metrics"].is_object())
-    return Error{file, 0, 0, "metrics", "missing or not an object"};
+    return Error::inFileField(file, "metrics", "missing or not an object");
   return json;
 }
 
@@ -74,7 +74,7 @@ Result<BenchBaseline> readBenchBaseline(const std::string& dir) {
     if (!summary) return summary.error();
     b.metrics.emplace_back(m.name, *summary);
   }
-  if (!b.metric("frame_ms")) return Error{file, 0, 0, "metrics.frame_ms", "missing"};
+  if (!b.metric("frame_ms")) return Error::inFileField(file, "metrics.frame_ms", "missing");
   return b;
 }
 

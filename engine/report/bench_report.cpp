@@ -25,17 +25,16 @@ constexpr int kTimeDecimals = 6;  // t in seconds: microseconds, enough for any 
 // Bad frames are the caller's data, but a report built on them would be silently wrong
 // (NaN sorts anywhere, breaks JSON and the plot), so they are refused with the offending value named.
 Status validateFrames(std::span<const BenchFrame> frames) {
-  if (frames.empty()) return Error{"", 0, 0, "frames", "no frames to report"};
+  if (frames.empty()) return Error::inField("frames", "no frames to report");
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const std::string where = "frames[" + std::to_string(i) + "]";
-    if (!std::isfinite(frames[i].t_s)) return Error{"", 0, 0, where + ".t_s", "not a finite number"};
+    if (!std::isfinite(frames[i].t_s)) return Error::inField(where + ".t_s", "not a finite number");
     if (i > 0 && frames[i].t_s < frames[i - 1].t_s) {
-      return Error{"", 0, 0, where + ".t_s",
-                   "time goes backwards (" + formatFixed(frames[i].t_s, kTimeDecimals) + " s after " +
-                       formatFixed(frames[i - 1].t_s, kTimeDecimals) + " s)"};
+      return Error::inField(where + ".t_s", "time goes backwards (" + formatFixed(frames[i].t_s, kTimeDecimals) +
+                                                " s after " + formatFixed(frames[i - 1].t_s, kTimeDecimals) + " s)");
     }
     for (const BenchMetric& m : benchMetrics()) {
-      if (!std::isfinite(m.value(frames[i]))) return Error{"", 0, 0, where + "." + m.name, "not a finite number"};
+      if (!std::isfinite(m.value(frames[i]))) return Error::inField(where + "." + m.name, "not a finite number");
     }
   }
   return Ok{};
@@ -45,18 +44,18 @@ Status validateKeyFrames(const std::string& dir, std::span<const BenchKeyFrame> 
   for (std::size_t i = 0; i < keyFrames.size(); ++i) {
     const BenchKeyFrame& k = keyFrames[i];
     const std::string where = "keyFrames[" + std::to_string(i) + "]";
-    if (!std::isfinite(k.t_s)) return Error{"", 0, 0, where + ".t_s", "not a finite number"};
+    if (!std::isfinite(k.t_s)) return Error::inField(where + ".t_s", "not a finite number");
     const fs::path file(k.imageFile);
     // The report links it by this name, so it has to stay inside the report directory.
     bool escapes = file.empty() || file.is_absolute();
     for (const auto& part : file) escapes = escapes || part == "..";
     if (escapes)
-      return Error{"", 0, 0, where + ".imageFile",
-                   "'" + k.imageFile + "' is not a file name inside the report directory"};
+      return Error::inField(where + ".imageFile",
+                            "'" + k.imageFile + "' is not a file name inside the report directory");
     std::error_code ec;
     const fs::path full = fs::path(dir) / file;
     if (k.png.empty() && !fs::is_regular_file(full, ec))
-      return Error{full.string(), 0, 0, where + ".imageFile", "key-frame image does not exist"};
+      return Error::inFileField(full.string(), where + ".imageFile", "key-frame image does not exist");
   }
   return Ok{};
 }
@@ -175,7 +174,7 @@ Status writeBenchReport(const std::string& dir, const BenchRunInfo& info, std::s
                         std::span<const BenchKeyFrame> keyFrames, const BenchBaseline* baseline) {
   if (auto s = validateFrames(frames); !s) return s;
   std::error_code ec;
-  if (!fs::is_directory(dir, ec)) return Error{dir, 0, 0, "", "report directory does not exist"};
+  if (!fs::is_directory(dir, ec)) return Error::inFile(dir, "report directory does not exist");
   if (auto s = validateKeyFrames(dir, keyFrames); !s) return s;
 
   // Key frames first, report.html last: an existing report.html means the files it links to exist.
@@ -189,7 +188,7 @@ Status writeBenchReport(const std::string& dir, const BenchRunInfo& info, std::s
     outputs.push_back({"timeline.svg", "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n" + svg});
     outputs.push_back({"report.html", benchReportHtml(info, frames, keyFrames, svg, baseline)});
   } catch (const std::exception& e) {  // nlohmann or allocation: never out of here
-    return Error{dir, 0, 0, "", std::string("cannot build the report: ") + e.what()};
+    return Error::inFile(dir, std::string("cannot build the report: ") + e.what());
   }
 
   // A failure leaves every existing report file (key frames included) untouched.

@@ -1,4 +1,4 @@
-// No shader compile per frame (issue 22): lavapipe (Mesa 22.3) re-compiles a pipeline's shader at
+// No shader compile per frame (docs/rendering.md): lavapipe (Mesa 22.3) re-compiles a pipeline's shader at
 // draw time whenever it decides to inline push-constant or uniform-buffer values into it, and with
 // no variant cache it does so at every bind (100-200 ms each, docs/rendering.md "No shader compile
 // per frame"). Every variant it compiles is a new entry in Mesa's on-disk shader cache, so the
