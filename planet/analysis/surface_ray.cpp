@@ -8,6 +8,7 @@
 #include <cmath>
 #include <thread>
 
+#include "planet/elevation/crater_field.h"
 #include "planet/elevation/gradient_noise.h"
 
 namespace globe {
@@ -25,10 +26,14 @@ double elevationSlopeBound(const gpu::ElevationParams& params) {
       amplitude *= layer.gain;
     }
     // Ridged: d(1 - |n|)^2 = -2 (1 - |n|) sign(n) dn, and 1 - |n| <= 1.
-    if (layer.kind == GLOBE_LAYER_RIDGED)
+    if (layer.kind == GLOBE_LAYER_RIDGED) {
       slope *= 2.0;
-    else
+    } else if (layer.kind == GLOBE_LAYER_CRATERS) {  // the field's own bounds, not the noise's
+      slope *= kCraterFieldSlopeBound / kGradientNoiseSlopeBound;
+      size *= -kCraterFieldMin;
+    } else {
       size *= kGradientNoiseBound;
+    }
     // value = sum · s(m(v_k)): d value = s · d sum + sum · s'(m) · m'(v_k) · d v_k, with s <= 1 and
     // s' <= (1 - floor) · 1.5 (smoothstep's steepest slope), m' = inv_range.
     if (layer.modulator >= 0 && layer.modulator < GLOBE_MAX_ELEVATION_LAYERS)

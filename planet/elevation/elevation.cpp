@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 
+#include "planet/elevation/crater_field.h"
 #include "planet/elevation/gradient_noise.h"
 
 namespace globe {
@@ -58,6 +59,17 @@ ElevationSpecialization elevationSpecialization(const gpu::ElevationParams& para
 
 namespace {
 
+// An octave's noise value shaped by the layer kind: n (fbm), (1 - |n|)^2 (ridged), |n| (billow).
+template <class Real>
+Real shapedNoise(gpu::uint kind, Real n) {
+  if (kind == GLOBE_LAYER_RIDGED) {
+    const Real c = Real(1) - std::abs(n);
+    return c * c;
+  }
+  if (kind == GLOBE_LAYER_BILLOW) return std::abs(n);
+  return n;
+}
+
 // The elevation function. Mirrored statement by statement in shaders/include/elevation.glsl:
 // keep the operation order identical (no FMA contraction: -ffp-contract=off / `precise`).
 template <class Real>
@@ -93,13 +105,11 @@ Real evaluateElevation(const gpu::ElevationParams& p, Real dx, Real dy, Real dz)
     const gpu::uint octaves = scale == Real(0) ? 0U : layer.octaves;
     Real sum = Real(0);
     for (gpu::uint o = 0; o < octaves; ++o) {
-      const Real n = gradientNoise(px * frequency, py * frequency, pz * frequency, seed);
-      Real t = n;
-      if (layer.kind == GLOBE_LAYER_RIDGED) {
-        const Real c = Real(1) - std::abs(n);
-        t = c * c;
-      } else if (layer.kind == GLOBE_LAYER_BILLOW) {
-        t = std::abs(n);
+      Real t;
+      if (layer.kind == GLOBE_LAYER_CRATERS) {
+        t = craterField(px * frequency, py * frequency, pz * frequency, seed);
+      } else {
+        t = shapedNoise(layer.kind, gradientNoise(px * frequency, py * frequency, pz * frequency, seed));
       }
       sum = sum + amplitude * t;
       frequency = frequency * lacunarity;

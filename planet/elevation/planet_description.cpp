@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 
+#include "planet/elevation/crater_field.h"
 #include "planet/elevation/gradient_noise.h"
 
 namespace globe {
@@ -35,6 +36,8 @@ std::string_view layerKindName(LayerKind kind) {
       return "ridged";
     case LayerKind::kBillow:
       return "billow";
+    case LayerKind::kCraters:
+      return "craters";
   }
   return "unknown";
 }
@@ -76,6 +79,10 @@ ElevationRange elevationBounds(const PlanetDescription& planet) {
         break;
       case LayerKind::kBillow:
         hi = sum * kGradientNoiseBound;
+        break;
+      case LayerKind::kCraters:
+        lo = sum * kCraterFieldMin;
+        hi = sum * kCraterFieldMax;
         break;
     }
     if (layer.modulated_by >= 0) {  // scale in [floor, 1]

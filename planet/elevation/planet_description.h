@@ -22,9 +22,10 @@ enum class LayerKind : std::uint32_t {
   kFbm = 0,     // sum amp_i * n_i
   kRidged = 1,  // sum amp_i * (1 - |n_i|)^2 (crests where n = 0; >= 0)
   kBillow = 2,  // sum amp_i * |n_i| (>= 0)
+  kCraters = 3,  // sum amp_i * craters_i (impact craters, planet/elevation/crater_field.h)
 };
 
-// "fbm", "ridged", "billow".
+// "fbm", "ridged", "billow", "craters".
 std::string_view layerKindName(LayerKind kind);
 
 // The speed/accuracy trade a planet is meant to be viewed at by default (the renderer and

@@ -43,15 +43,13 @@ using LayerKeyReader = void (*)(PlanetTomlReader& r, const toml::node& node, con
 void readLayerKind(PlanetTomlReader& r, const toml::node& node, const std::string& field, LayerRead& read) {
   auto v = r.string(node, field);
   if (!v) return;
-  if (*v == "fbm") {
-    read.layer.kind = LayerKind::kFbm;
-  } else if (*v == "ridged") {
-    read.layer.kind = LayerKind::kRidged;
-  } else if (*v == "billow") {
-    read.layer.kind = LayerKind::kBillow;
-  } else {
-    r.fail(node.source(), field, fmt::format("unknown kind '{}' (fbm, ridged, billow)", *v));
+  for (LayerKind kind : {LayerKind::kFbm, LayerKind::kRidged, LayerKind::kBillow, LayerKind::kCraters}) {
+    if (*v == layerKindName(kind)) {
+      read.layer.kind = kind;
+      return;
+    }
   }
+  r.fail(node.source(), field, fmt::format("unknown kind '{}' (fbm, ridged, billow, craters)", *v));
 }
 
 void readLayerOctaves(PlanetTomlReader& r, const toml::node& node, const std::string& field, LayerRead& read) {

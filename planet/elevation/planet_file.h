@@ -4,7 +4,7 @@
 //
 //   name = "earthlike"          radius_m = 6371000.0      seed = 37786        sea_level_m = 0.0
 //   [[layers]]                  # 1 to 8, evaluated in file order
-//   name = "continents"         kind = "fbm"              # fbm | ridged | billow
+//   name = "continents"         kind = "fbm"              # fbm | ridged | billow | craters
 //   octaves = 4                 wavelength_m = 4.0e6      # or frequency_per_m, not both
 //   lacunarity = 2.6            gain = 0.5                amplitude_m = 3500.0     offset_m = 0.0
 //   modulated_by = "continents" modulation_low_m = 0.0   modulation_high_m = 2000.0

@@ -67,6 +67,16 @@ int globeLayerModulator(uint l) {
        : l == 6u ? kGlobeModulator6 : kGlobeModulator7;
 }
 
+// = globe::hashMix32 ("lowbias32").
+uint globeHashMix32(uint x) {
+  x ^= x >> 16;
+  x *= 0x7feb352du;
+  x ^= x >> 15;
+  x *= 0x846ca68bu;
+  x ^= x >> 16;
+  return x;
+}
+
 // = globe::latticeKey: low word, high word times the golden ratio constant.
 uint globeLatticeKey(int64_t i) {
   uint64_t u = uint64_t(i);

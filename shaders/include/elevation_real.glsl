@@ -68,6 +68,67 @@ GLOBE_REAL GLOBE_FN(globeGradientNoise)(GLOBE_REAL x, GLOBE_REAL y, GLOBE_REAL z
   return r;
 }
 
+// = globe::craterProfile<Real>: one crater's height at s = r^2 / R^2, in units of its depth.
+GLOBE_REAL GLOBE_FN(globeCraterProfile)(GLOBE_REAL s) {
+  if (s < GLOBE_REAL(1.0)) {
+    precise GLOBE_REAL r = GLOBE_REAL(-1.0) + (GLOBE_REAL(1.0) + GLOBE_REAL(0.25)) * (s * s);
+    return r;
+  }
+  if (s < GLOBE_REAL(1.5)) {
+    precise GLOBE_REAL t = GLOBE_REAL(2.0) * (GLOBE_REAL(1.5) - s);
+    precise GLOBE_REAL r = GLOBE_REAL(0.25) * (t * t * t);
+    return r;
+  }
+  return GLOBE_REAL(0.0);
+}
+
+// = globe::craterCell<Real>: the crater of one lattice cell at offset (x, y, z) from its corner.
+GLOBE_REAL GLOBE_FN(globeCraterCell)(uint hash, GLOBE_REAL x, GLOBE_REAL y, GLOBE_REAL z) {
+  uint h = globeHashMix32(hash);
+  if ((h & 1u) == 0u) return GLOBE_REAL(0.0);
+  uint k = (h >> 1) & 3u;
+  precise GLOBE_REAL cx = GLOBE_REAL((h >> 8) & 255u) * GLOBE_REAL(0.00390625);
+  precise GLOBE_REAL cy = GLOBE_REAL((h >> 16) & 255u) * GLOBE_REAL(0.00390625);
+  precise GLOBE_REAL cz = GLOBE_REAL(h >> 24) * GLOBE_REAL(0.00390625);
+  precise GLOBE_REAL ox = x - cx;
+  precise GLOBE_REAL oy = y - cy;
+  precise GLOBE_REAL oz = z - cz;
+  // kCraterInverseRadiusSquared = 8 * 2^k and kCraterDepthScale = {1, 0.75, 0.5, 0.375}, exact.
+  GLOBE_REAL inverseRadiusSquared = k == 0u ? GLOBE_REAL(8.0) : k == 1u ? GLOBE_REAL(16.0)
+                                  : k == 2u ? GLOBE_REAL(32.0) : GLOBE_REAL(64.0);
+  GLOBE_REAL depthScale = k == 0u ? GLOBE_REAL(1.0) : k == 1u ? GLOBE_REAL(0.75)
+                        : k == 2u ? GLOBE_REAL(0.5) : GLOBE_REAL(0.375);
+  precise GLOBE_REAL s = (ox * ox + oy * oy + oz * oz) * inverseRadiusSquared;
+  precise GLOBE_REAL r = depthScale * GLOBE_FN(globeCraterProfile)(s);
+  return r;
+}
+
+// = globe::craterField<Real>: the 2x2x2 cells at floor(q - 1/2) hold every crater reaching q.
+GLOBE_REAL GLOBE_FN(globeCraterField)(GLOBE_REAL x, GLOBE_REAL y, GLOBE_REAL z, uint seed) {
+  precise GLOBE_REAL fx = floor(x - GLOBE_REAL(0.5));
+  precise GLOBE_REAL fy = floor(y - GLOBE_REAL(0.5));
+  precise GLOBE_REAL fz = floor(z - GLOBE_REAL(0.5));
+  int64_t ix = int64_t(fx);
+  int64_t iy = int64_t(fy);
+  int64_t iz = int64_t(fz);
+  precise GLOBE_REAL x0 = x - fx;
+  precise GLOBE_REAL y0 = y - fy;
+  precise GLOBE_REAL z0 = z - fz;
+  precise GLOBE_REAL deepest = GLOBE_REAL(0.0);
+  precise GLOBE_REAL raised = GLOBE_REAL(0.0);
+  [[unroll]] for (int c = 0; c < 8; ++c) {
+    int dx = c & 1, dy = (c >> 1) & 1, dz = c >> 2;
+    uint hash = globeLatticeCornerHash(globeLatticeKey(ix + int64_t(dx)) * 0x9e3779b1u,
+                                       globeLatticeKey(iy + int64_t(dy)) * 0x85ebca77u,
+                                       globeLatticeKey(iz + int64_t(dz)) * 0xc2b2ae3du, seed);
+    precise GLOBE_REAL crater = GLOBE_FN(globeCraterCell)(hash, x0 - GLOBE_REAL(dx), y0 - GLOBE_REAL(dy), z0 - GLOBE_REAL(dz));
+    deepest = min(deepest, crater);
+    raised = raised + max(crater, GLOBE_REAL(0.0));
+  }
+  precise GLOBE_REAL r = deepest + raised;
+  return r;
+}
+
 // Layer l of globe::ElevationModel::elevation_m. l is a literal at every call, so after inlining
 // the octave count, kind and modulator are constants and the octave loop unrolls (lavapipe keeps no
 // loop-carried value in registers across a loop's iterations).
@@ -95,13 +156,18 @@ void GLOBE_FN(globeElevationLayer)(uint l, GLOBE_REAL px, GLOBE_REAL py, GLOBE_R
   precise GLOBE_REAL sum = GLOBE_REAL(0.0);
   if (scale != GLOBE_REAL(0.0)) {
     [[unroll]] for (uint o = 0u; o < octaves; ++o) {
-      precise GLOBE_REAL n = GLOBE_FN(globeGradientNoise)(px * frequency, py * frequency, pz * frequency, seed);
-      precise GLOBE_REAL t = n;
-      if (kind == GLOBE_LAYER_RIDGED) {
-        precise GLOBE_REAL c = GLOBE_REAL(1.0) - abs(n);
-        t = c * c;
-      } else if (kind == GLOBE_LAYER_BILLOW) {
-        t = abs(n);
+      precise GLOBE_REAL t;
+      if (kind == GLOBE_LAYER_CRATERS) {
+        t = GLOBE_FN(globeCraterField)(px * frequency, py * frequency, pz * frequency, seed);
+      } else {
+        precise GLOBE_REAL n = GLOBE_FN(globeGradientNoise)(px * frequency, py * frequency, pz * frequency, seed);
+        t = n;
+        if (kind == GLOBE_LAYER_RIDGED) {
+          precise GLOBE_REAL c = GLOBE_REAL(1.0) - abs(n);
+          t = c * c;
+        } else if (kind == GLOBE_LAYER_BILLOW) {
+          t = abs(n);
+        }
       }
       sum = sum + amplitude * t;
       frequency = frequency * lacunarity;

@@ -28,7 +28,7 @@ std::vector<glm::dvec3> testDirections() {
 }
 
 TEST_F(ElevationGpuTest, MatchesCpuReferenceOnEveryPreset) {
-  for (const char* file : {"earthlike.toml"}) {
+  for (const char* file : {"earthlike.toml", "moonlike.toml", "asteroid.toml"}) {
     auto planet = loadPlanetFile(std::string(GLOBE_SOURCE_DIR) + "/assets/planets/" + file);
     ASSERT_TRUE(planet.ok()) << planet.error().format();
     ElevationModel model(*planet);
