@@ -19,9 +19,9 @@
 namespace globe {
 
 enum class LayerKind : std::uint32_t {
-  kFbm = 0,     // sum amp_i * n_i
-  kRidged = 1,  // sum amp_i * (1 - |n_i|)^2 (crests where n = 0; >= 0)
-  kBillow = 2,  // sum amp_i * |n_i| (>= 0)
+  kFbm = 0,      // sum amp_i * n_i
+  kRidged = 1,   // sum amp_i * (1 - |n_i|)^2 (crests where n = 0; >= 0)
+  kBillow = 2,   // sum amp_i * |n_i| (>= 0)
   kCraters = 3,  // sum amp_i * craters_i (impact craters, planet/elevation/crater_field.h)
 };
 

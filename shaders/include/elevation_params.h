@@ -18,9 +18,9 @@ using uint = std::uint32_t;
 // Most layers a planet can have (the GPU struct is fixed-size).
 #define GLOBE_MAX_ELEVATION_LAYERS 8
 // ElevationLayerParams.kind values.
-#define GLOBE_LAYER_FBM 0u     // sum of amp_i * n_i, in [-sum amp, +sum amp] * noise bound
-#define GLOBE_LAYER_RIDGED 1u  // sum of amp_i * (1 - |n_i|)^2: sharp crests, non-negative
-#define GLOBE_LAYER_BILLOW 2u  // sum of amp_i * |n_i|: rounded bumps, non-negative
+#define GLOBE_LAYER_FBM 0u      // sum of amp_i * n_i, in [-sum amp, +sum amp] * noise bound
+#define GLOBE_LAYER_RIDGED 1u   // sum of amp_i * (1 - |n_i|)^2: sharp crests, non-negative
+#define GLOBE_LAYER_BILLOW 2u   // sum of amp_i * |n_i|: rounded bumps, non-negative
 #define GLOBE_LAYER_CRATERS 3u  // sum of amp_i * crater field_i: bowls, rims, ejecta (crater_field.h)
 // ElevationLayerParams.modulator value for "not modulated".
 #define GLOBE_NO_MODULATOR (-1)
