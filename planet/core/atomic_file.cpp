@@ -1,5 +1,7 @@
 #include "planet/core/atomic_file.h"
 
+#include "planet/core/fault_injection.h"
+
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -87,7 +89,7 @@ Status CheckedFileWriter::finish() {
   // A full disk (ENOSPC), a file size limit (EFBIG) or a failing close must not leave a truncated
   // file that a commit would rename over a good one.
   if (fd_ >= 0) {
-    if (!failed() && ::fsync(fd_) != 0) fail();
+    if (!failed() && (injectFault("fsync") ? (errno = EIO, true) : ::fsync(fd_) != 0)) fail();
     if (::close(fd_) != 0) fail();
     fd_ = -1;
   }
