@@ -190,6 +190,8 @@ int runBench(const BenchOptions& o) {
       in->path.startTime_s(), [&](const glm::dvec3& d) { return model.radius_m() + model.elevation_m(d); }));
   settings.style.ramp = in->planet.colour_ramp;
   vk::Device device(deviceOptions(o.device));
+  if (auto s = vk::checkImageExtent(device, {in->size.width, in->size.height}, "--size"); !s)
+    return usageError(s.error());
   const double deviceReady_ms = millisecondsSinceProcessStart();
   auto terrain = Terrain::create(device, model, settings);
   if (!terrain) return usageError(budgetOptionError(terrain.error()));

@@ -86,6 +86,7 @@ int runRender(const RenderOptions& o) {
   Camera camera = cameraFromPose(*pose, ground, model.radius_m(), aspect);
 
   vk::Device device(deviceOptions(o.device));
+  if (auto s = vk::checkImageExtent(device, {size->width, size->height}, "--size"); !s) return usageError(s.error());
   ImageRgba image;
   if (o.mode == "sphere") {
     image = renderSphere(device, camera, model, *size);
