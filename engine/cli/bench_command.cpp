@@ -13,6 +13,7 @@
 #include "planet/camera/camera_path_file.h"
 #include "planet/elevation/planet_file.h"
 #include "progress_bar.h"
+#include "terrain_warnings.h"
 
 #include <fmt/format.h>
 
@@ -41,6 +42,7 @@ struct BenchOptions {
   uint32_t gridCells = 0;  // 0 = the quality preset's
   std::string quality;     // empty = the planet's default_quality
   std::string baseline;    // an earlier run's output directory (its summary.json), or empty
+  BudgetOptions budget;
   std::string commandLine;
 };
 
@@ -109,6 +111,7 @@ Result<BenchInputs> checkBenchInputs(const BenchOptions& o) {
                                                 path->duration_s(), o.rate_hz, frames, kMaxBenchFrames));
   auto settings = terrainSettingsFromOptions(o.quality, o.gridCells, *planet);
   if (!settings) return settings.error();
+  if (auto s = applyBudgetOptions(o.budget, *settings); !s) return s.error();
   if (auto s = checkOutputDirectory(o.out, "--out"); !s) return s.error();
   return BenchInputs{std::move(baseline), std::move(*planet), std::move(*path), *size, std::move(*keyTimes), frames,
                      std::move(*settings)};
@@ -149,10 +152,12 @@ Result<BenchFlight> flyPath(const BenchOptions& o, const BenchInputs& in, const 
   flight.rows.reserve(in.frames);
   glm::dvec3 previousPosition_m(0.0);
   ProgressBar progress("bench " + std::filesystem::path(o.path).filename().string());
+  TerrainWarnings warnings;
   for (uint64_t k = 0; k < in.frames; ++k) {
     double t = in.path.startTime_s() + double(k) / o.rate_hz;
     Camera camera = in.path.cameraAt(t, model.radius_m(), aspect, ground);
     FrameStats stats = renderer.renderFrame(terrain, camera, converge);
+    warnings.printNew(terrain);
     double altitude = glm::length(camera.position_m) - ground(glm::normalize(camera.position_m));
     const double speed = k > 0 ? groundSpeed_mps(previousPosition_m, camera.position_m, 1.0 / o.rate_hz) : 0.0;
     previousPosition_m = camera.position_m;
@@ -185,9 +190,11 @@ int runBench(const BenchOptions& o) {
       in->path.startTime_s(), [&](const glm::dvec3& d) { return model.radius_m() + model.elevation_m(d); }));
   settings.style.ramp = in->planet.colour_ramp;
   vk::Device device(deviceOptions(o.device));
+  if (auto s = vk::checkImageExtent(device, {in->size.width, in->size.height}, "--size"); !s)
+    return usageError(s.error());
   const double deviceReady_ms = millisecondsSinceProcessStart();
   auto terrain = Terrain::create(device, model, settings);
-  if (!terrain) return usageError(terrain.error());
+  if (!terrain) return usageError(budgetOptionError(terrain.error()));
   HeadlessRenderer renderer(device, {in->size.width, in->size.height});
   const double pipelinesReady_ms = millisecondsSinceProcessStart();
   std::error_code ec;
@@ -244,6 +251,7 @@ void addBenchCommand(CLI::App& app, Runner& run, const std::string& commandLine)
       ->capture_default_str();
   cmd->add_option("--rate", opts->rate_hz, "Frames per second of path time (fixed step)")->capture_default_str();
   addQualityOptions(*cmd, opts->quality, &opts->gridCells);
+  addBudgetOptions(*cmd, opts->budget);
   cmd->add_option("--baseline", opts->baseline,
                   "An earlier run's output directory: its summary.json's numbers go beside this run's, with ratios");
   addDeviceFlags(*cmd, opts->device);

@@ -27,6 +27,8 @@ constexpr int kExitUsage = 2;    // bad command-line values or input files
 
 // Prints "globe: error: MESSAGE" on one line to stderr.
 void printError(const std::string& message);
+// Prints "globe: warning: MESSAGE" on one line to stderr: the command goes on.
+void printWarning(const std::string& message);
 
 // Milliseconds since the process started (static initialisation of the program): what "cold
 // start" is measured from (docs/benchmark.md).

@@ -1,5 +1,6 @@
 // globe: the user-facing command line.
 #include "commands.h"
+#include "engine/vk/vk_check.h"
 
 #include <cstdio>
 #include <exception>
@@ -15,12 +16,18 @@ double millisecondsSinceProcessStart() {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - kProcessStart).count();
 }
 
-void printError(const std::string& message) {
+namespace {
+void printLine(const char* kind, const std::string& message) {
   std::string line = message;
   for (char& c : line)
     if (c == '\n' || c == '\r') c = ' ';
-  std::fprintf(stderr, "globe: error: %s\n", line.c_str());
+  std::fprintf(stderr, "globe: %s: %s\n", kind, line.c_str());
 }
+}  // namespace
+
+void printError(const std::string& message) { printLine("error", message); }
+
+void printWarning(const std::string& message) { printLine("warning", message); }
 
 }  // namespace globe::cli
 
@@ -62,6 +69,14 @@ int main(int argc, char** argv) {
   }
   try {
     return run();
+  } catch (const globe::vk::VulkanError& e) {
+    // A lost device (driver reset, GPU hang, unplugged eGPU) ends the command: nothing can be
+    // recovered on it, and outputs are written only when complete, so none is half-written.
+    if (e.result() == VK_ERROR_DEVICE_LOST)
+      printError(std::string("the Vulkan device was lost (") + e.what() + "): stopped, nothing half-written");
+    else
+      printError(e.what());
+    return kExitFailure;
   } catch (const std::exception& e) {
     printError(e.what());
     return kExitFailure;

@@ -116,6 +116,41 @@ Result<TerrainSettings> terrainSettingsFromOptions(const std::string& quality, u
   return settings;
 }
 
+void addBudgetOptions(CLI::App& cmd, BudgetOptions& budget) {
+  const FrameBudget defaults;
+  cmd.add_option("--max-nodes", budget.maxNodes,
+                 fmt::format("Most terrain nodes drawn per frame; beyond, coarser terrain and a warning (default {})",
+                             defaults.maxDrawnNodes))
+      ->check(CLI::Range(30U, 1U << 24));
+  cmd.add_option("--max-triangles", budget.maxTriangles,
+                 fmt::format("Most triangles drawn per frame (default {})", defaults.maxTriangles))
+      ->check(CLI::Range(uint64_t{1}, uint64_t{1} << 40));
+  cmd.add_option("--max-requests", budget.maxRequests,
+                 fmt::format("Most payload generation requests per frame (default {})", defaults.maxRequests))
+      ->check(CLI::Range(2U, 1U << 24));
+  cmd.add_option("--vram-mib", budget.vram_MiB,
+                 fmt::format("Payload pool budget in MiB (default {:g})", StreamingConfig{}.vramBudget_MiB))
+      ->check(CLI::Range(1.0, 1048576.0));
+}
+
+Status applyBudgetOptions(const BudgetOptions& budget, TerrainSettings& settings) {
+  FrameBudget& b = settings.streaming.budget;
+  if (budget.maxNodes) b.maxDrawnNodes = budget.maxNodes;
+  if (budget.maxTriangles) b.maxTriangles = budget.maxTriangles;
+  if (budget.maxRequests) b.maxRequests = budget.maxRequests;
+  if (budget.vram_MiB > 0) settings.streaming.vramBudget_MiB = budget.vram_MiB;
+  if (auto s = validateTerrainSettings(settings); !s) return budgetOptionError(s.error());
+  return Ok{};
+}
+
+Error budgetOptionError(Error e) {
+  if (e.field == "max_triangles") e.field = "--max-triangles";
+  if (e.field == "max_drawn_nodes") e.field = "--max-nodes";
+  if (e.field == "max_requests") e.field = "--max-requests";
+  if (e.field == "vram_budget_mib") e.field = "--vram-mib";
+  return e;
+}
+
 int usageError(const Error& error) {
   printError(error.format());
   return kExitUsage;

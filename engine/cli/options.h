@@ -52,6 +52,21 @@ int validationExitCode(vk::Device& device);
 // value is a mistake, not a request for the default.
 CLI::Validator nonEmptyValue();
 
+// --max-nodes, --max-triangles, --max-requests (the frame budget, planet/streaming/frame_budget.h)
+// and --vram-mib (the payload pool): 0 or absent keeps the default.
+struct BudgetOptions {
+  uint32_t maxNodes = 0;
+  uint64_t maxTriangles = 0;
+  uint32_t maxRequests = 0;
+  double vram_MiB = 0;
+};
+void addBudgetOptions(CLI::App& cmd, BudgetOptions& budget);
+// Applies the given budgets to `settings` and validates them; errors name the options.
+Status applyBudgetOptions(const BudgetOptions& budget, TerrainSettings& settings);
+// A budget error (from the settings or Terrain::create, e.g. a VRAM budget too small for the
+// roots) named by its option.
+Error budgetOptionError(Error error);
+
 // The settings of --quality (empty: the planet's default_quality) with --grid (0: the preset's grid)
 // applied; errors name the options.
 Result<TerrainSettings> terrainSettingsFromOptions(const std::string& quality, uint32_t gridCells,

@@ -10,6 +10,7 @@
 #include "planet/core/atomic_file.h"
 #include "planet/elevation/planet_file.h"
 #include "planet/streaming/payload_reference.h"
+#include "terrain_warnings.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -27,6 +28,7 @@ struct RenderOptions {
   std::string mode = "terrain";
   uint32_t gridCells = 0;  // 0 = the quality preset's
   std::string quality;     // empty = the planet's default_quality
+  BudgetOptions budget;
 };
 
 // The reference sphere, lit by the default sun.
@@ -48,12 +50,15 @@ Result<ImageRgba> renderTerrain(vk::Device& device, const Camera& camera, const 
   settings.style.sunDirection = defaultSunDirection(camera.position_m);
   settings.style.ramp = planet.colour_ramp;
   auto terrain = Terrain::create(device, model, settings);
-  if (!terrain) return terrain.error();
+  if (!terrain) return budgetOptionError(terrain.error());
   HeadlessRenderer renderer(device, {size.width, size.height});
   FrameStats stats = renderer.renderFrame(**terrain, camera, true);
+  TerrainWarnings().printNew(**terrain);
   std::printf("%u nodes (%u partial), %llu triangles, %u payloads resident (%.1f MiB), frame %.1f ms (GPU %.1f ms)\n",
               stats.nodes_selected, stats.nodes_partial, (unsigned long long)stats.triangles,
               (*terrain)->pool().stats().residentNodes, stats.resident_mib, stats.frame_ms, stats.gpu_ms);
+  if ((*terrain)->depthCap() < settings.ranges.maxDepth)
+    std::printf("frame budget: levels up to %d of %d\n", (*terrain)->depthCap(), settings.ranges.maxDepth);
   return toImage(renderer.readback(), camera);
 }
 
@@ -68,6 +73,7 @@ int runRender(const RenderOptions& o) {
   if (!planet) return usageError(planet.error());
   auto settings = terrainSettingsFromOptions(o.quality, o.gridCells, *planet);
   if (!settings) return usageError(settings.error());
+  if (auto s = applyBudgetOptions(o.budget, *settings); !s) return usageError(s.error());
 
   ElevationModel model(*planet);
   double aspect = double(size->width) / double(size->height);
@@ -80,6 +86,7 @@ int runRender(const RenderOptions& o) {
   Camera camera = cameraFromPose(*pose, ground, model.radius_m(), aspect);
 
   vk::Device device(deviceOptions(o.device));
+  if (auto s = vk::checkImageExtent(device, {size->width, size->height}, "--size"); !s) return usageError(s.error());
   ImageRgba image;
   if (o.mode == "sphere") {
     image = renderSphere(device, camera, model, *size);
@@ -116,6 +123,7 @@ void addRenderCommand(CLI::App& app, Runner& run) {
       ->check(CLI::IsMember({"terrain", "sphere"}))
       ->capture_default_str();
   addQualityOptions(*cmd, opts->quality, &opts->gridCells);
+  addBudgetOptions(*cmd, opts->budget);
   addDeviceFlags(*cmd, opts->device);
   cmd->callback([opts, &run] { run = [opts] { return runRender(*opts); }; });
 }

@@ -1,11 +1,13 @@
 #include "engine/generation/payload_generator.h"
 
+#include "engine/vk/fault_injection.h"
 #include "engine/vk/vk_check.h"
 #include "engine/vk/vk_create.h"
 #include "planet/geometry/face_mapping.h"
 #include "planet/streaming/payload_reference.h"
 
 #include <cassert>
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 
@@ -56,7 +58,13 @@ GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationMode
   }
 }
 
-GpuPayloadGenerator::~GpuPayloadGenerator() { waitIdle(); }
+GpuPayloadGenerator::~GpuPayloadGenerator() {
+  // A lost device fails the wait: its work is over then, and a destructor must not throw.
+  try {
+    waitIdle();
+  } catch (const vk::VulkanError&) {
+  }
+}
 
 void GpuPayloadGenerator::reserveSlots(uint32_t slots, uint32_t maxSlotsPerPage) {
   assert(payloads_.size() == 0);
@@ -127,15 +135,29 @@ void GpuPayloadGenerator::generate(std::span<const GenerationJob> jobs) {
     vkCmdWriteTimestamp2(batch.cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, queries_, 2 * batch.index + 1);
     GLOBE_VK_CHECK(vkEndCommandBuffer(batch.cmd));
 
-    VkFence fence = batch.fence;
-    GLOBE_VK_CHECK(vkResetFences(device_.device(), 1, &fence));
-    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-    submit.commandBufferCount = 1;
-    submit.pCommandBuffers = &batch.cmd;
-    GLOBE_VK_CHECK(vkQueueSubmit(device_.queue(), 1, &submit, fence));
-    batch.busy = true;
-    order_.push_back(batch.index);
+    submit(batch);
   }
+}
+
+void GpuPayloadGenerator::submit(Batch& batch) {
+  VkFence fence = batch.fence;
+  GLOBE_VK_CHECK(vkResetFences(device_.device(), 1, &fence));
+  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &batch.cmd;
+  try {
+    GLOBE_VK_SUBMIT(vk::SubmitSite::kGeneration, vkQueueSubmit(device_.queue(), 1, &submit, fence));
+  } catch (const vk::VulkanError& e) {
+    if (e.result() == VK_ERROR_DEVICE_LOST) throw;  // nothing runs any more: the caller stops
+    // Out of memory, say: nothing was submitted. The jobs come back failed with the next collect(),
+    // the pool asks again later, and the view draws their parents meanwhile.
+    for (const GenerationJob& job : batch.submitted) waitedResults_.push_back({job.node, job.slot, {}, true});
+    lastFailure_ = e.what();
+    batch.submitted.clear();
+    return;
+  }
+  batch.busy = true;
+  order_.push_back(batch.index);
 }
 
 void GpuPayloadGenerator::finish(Batch& batch, std::vector<GenerationResult>& finished) {
@@ -143,6 +165,13 @@ void GpuPayloadGenerator::finish(Batch& batch, std::vector<GenerationResult>& fi
   for (size_t k = 0; k < batch.submitted.size(); ++k) {
     const GenerationJob& job = batch.submitted[k];
     RadiusRange payload{results[k].minRadius_m, results[k].maxRadius_m};
+    // A payload whose radii are not finite (a broken device or driver) is not drawn: bounds from it
+    // would break culling and the LOD ranges.
+    if (!(std::isfinite(payload.min_m) && std::isfinite(payload.max_m) && payload.min_m <= payload.max_m)) {
+      finished.push_back({job.node, job.slot, {}, true});
+      lastFailure_ = "payload radius range not finite";
+      continue;
+    }
     finished.push_back({job.node, job.slot, paddedRadiusRange(model_.params(), payload, job.node.level, cells_)});
   }
   uint64_t stamps[2] = {0, 0};

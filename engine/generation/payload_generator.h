@@ -12,6 +12,7 @@
 #include "shaders/include/payload_layout.h"
 
 #include <deque>
+#include <string>
 #include <vector>
 
 namespace globe {
@@ -39,6 +40,7 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   void generate(std::span<const GenerationJob> jobs) override;
   void collect(std::vector<GenerationResult>& finished) override;
   size_t slotBytes() const override { return slotBytesFor(cells_); }
+  std::string lastFailure() const override { return lastFailure_; }
   static size_t slotBytesFor(uint32_t cells) { return size_t(GLOBE_PAYLOAD_VEC4_PER_SLOT(cells)) * 16u; }
 
   // Blocks until every submitted batch has finished (converged mode, shutdown, tests).
@@ -66,6 +68,8 @@ class GpuPayloadGenerator final : public PayloadGenerator {
     uint32_t index = 0;  // query slots 2*index, 2*index+1
   };
   Batch& freeBatch();
+  // Submits a recorded batch; a failed submit (not a lost device) reports its jobs failed instead.
+  void submit(Batch& batch);
   void finish(Batch& batch, std::vector<GenerationResult>& finished);
 
   vk::Device& device_;
@@ -86,6 +90,7 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   std::vector<GenerationResult> waitedResults_;  // of batches freeBatch() waited for, until collect()
   double gpuTime_ms_ = 0.0;
   uint64_t nodesGenerated_ = 0;
+  std::string lastFailure_;
 };
 
 }  // namespace globe

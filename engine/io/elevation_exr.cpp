@@ -1,5 +1,7 @@
 #include "engine/io/elevation_exr.h"
 
+#include "engine/io/exr_stream.h"
+
 #include <ImfChannelList.h>
 #include <ImfDoubleAttribute.h>
 #include <ImfFrameBuffer.h>
@@ -9,6 +11,7 @@
 #include <ImfStringAttribute.h>
 
 #include <algorithm>
+#include <memory>
 #include <span>
 
 namespace globe {
@@ -42,7 +45,8 @@ Status writeElevationExr(const ElevationModel& model, const ElevationExportOptio
     header.insert("globe.radius_m", Imf::DoubleAttribute(model.radius_m()));
     header.insert("globe.sea_level_m", Imf::DoubleAttribute(model.seaLevel_m()));
     header.insert("globe.units", Imf::StringAttribute("metres"));
-    Imf::OutputFile out(file.tempPath().c_str(), header);
+    CheckedExrStream stream(file.tempPath(), file.targetPath());
+    auto out = std::make_unique<Imf::OutputFile>(stream, header);
     if (options.keep != nullptr) options.keep->assign(static_cast<std::size_t>(width) * height, 0.0f);
 
     const std::uint32_t block = rowsPerBlock(width, height);
@@ -57,12 +61,14 @@ Status writeElevationExr(const ElevationModel& model, const ElevationExportOptio
       });
       Imf::FrameBuffer fb;
       fb.insert("Y", floatSlice(rows.data(), width, y0));
-      out.setFrameBuffer(fb);
-      out.writePixels(static_cast<int>(n));
+      out->setFrameBuffer(fb);
+      out->writePixels(static_cast<int>(n));
       if (options.keep != nullptr) {
         std::copy(out_rows.begin(), out_rows.end(), options.keep->begin() + static_cast<std::ptrdiff_t>(y0) * width);
       }
     }
+    out.reset();  // writes the line-offset table; its errors surface in finish()
+    if (auto s = stream.finish(); !s) return s;
   } catch (const std::exception& e) {
     return Error::inFile(file.targetPath(), std::string("cannot write EXR: ") + e.what());
   }

@@ -1,5 +1,6 @@
 #include "engine/io/image_io.h"
 
+#include "engine/io/exr_stream.h"
 #include "planet/core/atomic_file.h"
 
 #include <Imath/half.h>
@@ -85,11 +86,13 @@ Status writeExr(const std::string& path, const ImageRgba& image) {
     fb.insert("B", slice(Imf::HALF, b.data(), sizeof(Imath::half)));
     std::vector<float> z = image.z;
     if (hasZ) fb.insert("Z", slice(Imf::FLOAT, z.data(), sizeof(float)));
+    CheckedExrStream stream(file.tempPath(), path);
     {
-      Imf::OutputFile out(file.tempPath().c_str(), header);
+      Imf::OutputFile out(stream, header);
       out.setFrameBuffer(fb);
       out.writePixels(int(image.height));
     }
+    if (auto s = stream.finish(); !s) return s;
   } catch (const std::exception& e) {
     return Error::inFile(path, std::string("cannot write EXR: ") + e.what());
   }

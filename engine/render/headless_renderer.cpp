@@ -1,5 +1,6 @@
 #include "engine/render/headless_renderer.h"
 
+#include "engine/vk/fault_injection.h"
 #include "engine/vk/vk_check.h"
 #include "engine/vk/vk_create.h"
 
@@ -81,7 +82,7 @@ FrameStats HeadlessRenderer::renderFrame(Terrain& terrain, const Camera& camera,
   VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
   submit.commandBufferCount = 1;
   submit.pCommandBuffers = &cmd_;
-  GLOBE_VK_CHECK(vkQueueSubmit(device_.queue(), 1, &submit, fence));
+  GLOBE_VK_SUBMIT(vk::SubmitSite::kFrame, vkQueueSubmit(device_.queue(), 1, &submit, fence));
   GLOBE_VK_CHECK(vkWaitForFences(device_.device(), 1, &fence, VK_TRUE, UINT64_MAX));
 
   FrameStats stats = terrain.stats();

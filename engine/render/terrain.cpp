@@ -1,5 +1,6 @@
 #include "engine/render/terrain.h"
 
+#include "engine/vk/vk_check.h"
 #include "planet/geometry/triacontahedron.h"
 #include "planet/lod/frustum.h"
 #include "planet/streaming/payload_reference.h"
@@ -7,15 +8,23 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 
 namespace globe {
+
+namespace {
+// Generations that fail one after the other, none succeeding, before the terrain gives up: a few
+// frames' worth at the default budget (8 a frame), so a transient failure is retried.
+constexpr uint32_t kGenerationFailuresBeforeGivingUp = 256;
+}  // namespace
 
 Status validateTerrainSettings(const TerrainSettings& s) {
   if (s.gridCells < 16 || s.gridCells > 256 || (s.gridCells & (s.gridCells - 1)) != 0)
     return Error::inField("grid_cells", "must be a power of two in [16, 256], got " + std::to_string(s.gridCells));
   if (!std::isfinite(s.originThreshold_m) || s.originThreshold_m < 0)
     return Error::inField("origin_threshold_m", "must be a finite number >= 0");
-  return validateStreamingConfig(s.streaming);
+  if (auto v = validateStreamingConfig(s.streaming); !v) return v;
+  return validateFrameBudget(s.streaming.budget, TerrainRenderer::maxTrianglesPerNode(s.gridCells));
 }
 
 Result<std::unique_ptr<Terrain>> Terrain::create(vk::Device& device, const ElevationModel& model,
@@ -42,6 +51,8 @@ Terrain::Terrain(vk::Device& device, const ElevationModel& model, const TerrainS
       model_(model),
       settings_(settings),
       selector_(std::move(selector)),
+      budgeted_(settings.streaming.budget, TerrainRenderer::maxTrianglesPerNode(settings.gridCells),
+                selector_.ranges().maxDepth()),
       origin_(settings.originThreshold_m, payloadQuantum_m(0, model.radius_m())) {
   uint32_t budget = settings.streaming.dispatchBudget;
   // Each generate() call is one batch; the pool caps jobs (not calls) in flight, so as many batches
@@ -61,7 +72,11 @@ void Terrain::attachPool(std::unique_ptr<PayloadPool> pool) {
 }
 
 Terrain::~Terrain() {
-  if (generator_) generator_->waitIdle();
+  // A lost device fails the wait: its work is over then, and a destructor must not throw.
+  try {
+    if (generator_) generator_->waitIdle();
+  } catch (const vk::VulkanError&) {
+  }
 }
 
 const FrameStats& Terrain::update(uint64_t frame, const Camera& camera, uint64_t completedFrame) {
@@ -95,7 +110,7 @@ void Terrain::updateAt(uint64_t poolFrame, const Camera& camera, uint64_t poolCo
   auto start = std::chrono::steady_clock::now();
   auto frustum = Frustum::fromViewProjection(camera.projection() * camera.viewFromWorld(glm::dvec3(0.0)));
   SelectionCamera sc{camera.position_m, frustum ? &*frustum : nullptr};
-  Status selected = selector_.select(sc, *pool_, selection_);
+  Status selected = budgeted_.select(selector_, sc, *pool_, selection_);
   stats_.select_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (!selected) selection_.nodes.clear();  // a non-finite camera draws nothing (the caller validated it)
 
@@ -109,6 +124,7 @@ void Terrain::updateAt(uint64_t poolFrame, const Camera& camera, uint64_t poolCo
   }
   pool_->markUsed(selection_.nodes);
   pool_->dispatch();
+  gatherWarnings();
 
   const StreamingStats& s = pool_->stats();
   stats_.nodes_selected = uint32_t(selection_.nodes.size());
@@ -130,6 +146,20 @@ void Terrain::updateAt(uint64_t poolFrame, const Camera& camera, uint64_t poolCo
   }
 }
 
+void Terrain::gatherWarnings() {
+  if (!budgetWarningSeen_ && !budgeted_.warning().empty()) {
+    budgetWarningSeen_ = true;
+    warnings_.push_back(budgeted_.warning());
+  }
+  const std::span<const std::string> pool = pool_->warnings();
+  for (; poolWarningsSeen_ < pool.size(); ++poolWarningsSeen_) warnings_.push_back(pool[poolWarningsSeen_]);
+  // A failure now and then is retried (the view draws coarser meanwhile); failing on and on is not
+  // going to get better, and a frame loop waiting for convergence would never end.
+  if (pool_->consecutiveFailures() >= kGenerationFailuresBeforeGivingUp)
+    throw std::runtime_error("payload generation failed " + std::to_string(pool_->consecutiveFailures()) +
+                             " times in a row (" + generator_->lastFailure() + "): giving up");
+}
+
 void Terrain::record(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex) {
   DrawStats d = renderer_->record(cmd, camera, origin_.origin_m(), drawNodes_, generator_->pages(), frameIndex);
   stats_.triangles = d.triangles;
@@ -148,7 +178,7 @@ bool Terrain::converged() const {
   // and waiting for them never ends (found by the extremes test: 2 minutes per frame at 100 000
   // rounds once 11 618 slots were resident).
   const bool onlyDeclinedPrefetch = s.dispatched == 0 && s.queueLength <= s.prefetchRequested;
-  return selection_.stats.fallbacks == 0 && selection_.stats.requests == 0 && s.inFlight == 0 &&
+  return selection_.stats.fallbacks == 0 && selection_.stats.requests == 0 && s.inFlight == 0 && !budgeted_.rising() &&
          (s.queueLength == 0 || onlyDeclinedPrefetch);
 }
 

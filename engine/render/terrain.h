@@ -13,6 +13,8 @@
 #include "planet/streaming/payload_pool.h"
 
 #include <memory>
+#include <span>
+#include <string>
 #include <vector>
 
 namespace globe {
@@ -20,7 +22,7 @@ namespace globe {
 struct TerrainSettings {
   uint32_t gridCells = 32;       // cells per node side: power of two in [16, 256]
   LodRangeConfig ranges;         // view ranges, max depth, morph region
-  StreamingConfig streaming;     // budgets
+  StreamingConfig streaming;     // budgets: memory (RAM, VRAM), generation, per-frame nodes/triangles/requests
   double originThreshold_m = 0;  // floating origin re-base distance (0 = camera-relative)
   TerrainStyle style;            // shading (the planet's colour ramp); its radius is set from the planet
   GenerationPrecision generation = GenerationPrecision::kDouble;  // kFloat only to measure (globe trade)
@@ -77,6 +79,12 @@ class Terrain {
   // The payload generator (its payload buffer and slot centres), for tests and tools.
   const GpuPayloadGenerator& generator() const { return *generator_; }
   const TerrainSettings& settings() const { return settings_; }
+  // Degradations so far, one line each, in the order they first happened: the frame budget made the
+  // terrain coarser, the payload pool or node table was exhausted, a generation failed. The
+  // commands print each once as a warning.
+  std::span<const std::string> warnings() const { return warnings_; }
+  // The deepest level the frame budget currently allows (the configured max depth unless limited).
+  int depthCap() const { return budgeted_.depthCap(); }
   // Generation rounds the warm-up ran (0 before the first update or with primeRounds 0).
   uint32_t primedRounds() const { return primedRounds_; }
   double primeWall_ms() const { return primeWall_ms_; }  // wall time the warm-up took
@@ -89,11 +97,14 @@ class Terrain {
   // One round of the chain in the pool's own frame numbering (the caller's plus the warm-up's rounds).
   void updateAt(uint64_t poolFrame, const Camera& camera, uint64_t poolCompletedFrame, bool requestAllRoots);
   void prime(uint64_t firstFrame, const Camera& camera);
+  // Copies warnings not seen yet from the budget and the pool; throws when generation keeps failing.
+  void gatherWarnings();
 
   vk::Device& device_;
   const ElevationModel& model_;
   TerrainSettings settings_;
   LodSelector selector_;
+  BudgetedSelection budgeted_;
   std::unique_ptr<GpuPayloadGenerator> generator_;
   std::unique_ptr<PayloadPool> pool_;
   std::unique_ptr<TerrainRenderer> renderer_;
@@ -101,6 +112,9 @@ class Terrain {
   std::vector<DrawNode> drawNodes_;
   FloatingOrigin origin_;
   FrameStats stats_;
+  std::vector<std::string> warnings_;
+  size_t poolWarningsSeen_ = 0;
+  bool budgetWarningSeen_ = false;
   bool primed_ = false;
   uint32_t primedRounds_ = 0;  // added to the caller's frame numbers: the warm-up used pool frames too
   double primeWall_ms_ = 0;

@@ -1,5 +1,6 @@
 #include "engine/vk/device.h"
 
+#include "engine/vk/fault_injection.h"
 #include "engine/vk/vk_check.h"
 #include "engine/vk/vk_create.h"
 
@@ -313,7 +314,7 @@ void Device::submitAndWait(const std::function<void(VkCommandBuffer)>& record) {
   submit.pCommandBuffers = &cmd;
   VkFence fence = oneShotFence_;
   GLOBE_VK_CHECK(vkResetFences(device_, 1, &fence));
-  GLOBE_VK_CHECK(vkQueueSubmit(queue_, 1, &submit, fence));
+  GLOBE_VK_SUBMIT(SubmitSite::kOneShot, vkQueueSubmit(queue_, 1, &submit, fence));
   GLOBE_VK_CHECK(vkWaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX));
   vkFreeCommandBuffers(device_, oneShotPool_, 1, &cmd);
 }

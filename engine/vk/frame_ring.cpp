@@ -1,5 +1,6 @@
 #include "engine/vk/frame_ring.h"
 
+#include "engine/vk/fault_injection.h"
 #include "engine/vk/vk_check.h"
 #include "engine/vk/vk_create.h"
 
@@ -44,7 +45,7 @@ void FrameRing::submit(uint64_t frame, VkSemaphore renderFinished) {
   submit.pCommandBufferInfos = &cmd;
   submit.signalSemaphoreInfoCount = 1;
   submit.pSignalSemaphoreInfos = &signal;
-  GLOBE_VK_CHECK(vkQueueSubmit2(device_.queue(), 1, &submit, fence));
+  GLOBE_VK_SUBMIT(SubmitSite::kFrame, vkQueueSubmit2(device_.queue(), 1, &submit, fence));
 }
 
 }  // namespace globe::vk

@@ -2,12 +2,29 @@
 
 #include <Imath/half.h>
 
+#include <stdexcept>
+
 namespace globe::vk {
+
+Status checkImageExtent(const Device& device, VkExtent2D extent, const std::string& field) {
+  const uint32_t limit = device.properties().limits.maxImageDimension2D;
+  if (extent.width <= limit && extent.height <= limit) return Ok{};
+  return Error::inField(field, std::to_string(extent.width) + "x" + std::to_string(extent.height) + " is larger than " +
+                                   device.name() + " makes images (maxImageDimension2D " + std::to_string(limit) + ")");
+}
+
+namespace {
+VkExtent2D checkedExtent(const Device& device, VkExtent2D extent) {
+  if (auto s = checkImageExtent(device, extent, "image size"); !s) throw std::runtime_error(s.error().format());
+  return extent;
+}
+}  // namespace
 
 OffscreenTarget::OffscreenTarget(Device& device, VkExtent2D extent)
     : device_(device),
-      colour_(device, kColourFormat, extent, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-              VK_IMAGE_ASPECT_COLOR_BIT, "offscreen colour"),
+      colour_(device, kColourFormat, checkedExtent(device, extent),
+              VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT,
+              "offscreen colour"),
       depth_(device, kDepthFormat, extent,
              VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_DEPTH_BIT,
              "offscreen depth"),

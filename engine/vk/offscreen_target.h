@@ -2,7 +2,9 @@
 // An offscreen render target: linear HDR colour (RGBA16F) and a 32-bit float depth buffer
 // (reversed-Z: 1 is near, 0 is infinitely far), with readback to the CPU.
 #include "engine/vk/resources.h"
+#include "planet/core/error.h"
 
+#include <string>
 #include <vector>
 
 namespace globe::vk {
@@ -17,6 +19,11 @@ struct ReadbackImage {
   float depthAt(uint32_t x, uint32_t y) const { return depth[size_t(y) * width + x]; }
   const float* pixel(uint32_t x, uint32_t y) const { return &rgba[(size_t(y) * width + x) * 4]; }
 };
+
+// The device can make 2D images this large (VkPhysicalDeviceLimits::maxImageDimension2D); the
+// one-line Error names `field` (the command's --size) and the limit. Checked before anything is
+// allocated: the OffscreenTarget constructor throws it as std::runtime_error.
+Status checkImageExtent(const Device& device, VkExtent2D extent, const std::string& field);
 
 class OffscreenTarget {
  public:

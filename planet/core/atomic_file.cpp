@@ -1,5 +1,7 @@
 #include "planet/core/atomic_file.h"
 
+#include "planet/core/fault_injection.h"
+
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -43,36 +45,65 @@ Status checkWritable(const std::string& path, const std::string& field) {
   return Ok{};
 }
 
-namespace {
-
-Error writeError(const std::string& path, const std::string& field) {
-  return Error::inFileField(path, field, std::string("cannot write: ") + std::strerror(errno));
+CheckedFileWriter::CheckedFileWriter(const std::string& path, std::string errorPath, std::string field)
+    : errorPath_(std::move(errorPath)), field_(std::move(field)) {
+  fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd_ < 0) fail();
 }
 
-// Every step is checked: a full disk (ENOSPC), a file size limit (EFBIG) or a failing close must not
-// leave a truncated file that commit() would rename over a good one.
-Status writeAll(const std::string& tempPath, std::string_view content, const std::string& target,
-                const std::string& field) {
-  const int fd = ::open(tempPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) return writeError(target, field);
-  while (!content.empty()) {
-    const ssize_t n = ::write(fd, content.data(), content.size());
+CheckedFileWriter::~CheckedFileWriter() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void CheckedFileWriter::fail() {
+  if (error_.empty()) error_ = std::string("cannot write: ") + std::strerror(errno);
+}
+
+bool CheckedFileWriter::write(std::string_view bytes) {
+  if (failed()) return false;
+  while (!bytes.empty()) {
+    const ssize_t n = ::write(fd_, bytes.data(), bytes.size());
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) {
       if (n == 0) errno = EIO;
-      Error e = writeError(target, field);
-      ::close(fd);
-      return e;
+      fail();
+      return false;
     }
-    content.remove_prefix(static_cast<size_t>(n));  // a short write: write the rest
+    bytes.remove_prefix(static_cast<size_t>(n));  // a short write: write the rest
+    position_ += static_cast<uint64_t>(n);
   }
-  if (::fsync(fd) != 0) {
-    Error e = writeError(target, field);
-    ::close(fd);
-    return e;
+  return true;
+}
+
+bool CheckedFileWriter::seek(uint64_t offset) {
+  if (failed()) return false;
+  if (::lseek(fd_, static_cast<off_t>(offset), SEEK_SET) < 0) {
+    fail();
+    return false;
   }
-  if (::close(fd) != 0) return writeError(target, field);
+  position_ = offset;
+  return true;
+}
+
+Status CheckedFileWriter::finish() {
+  // A full disk (ENOSPC), a file size limit (EFBIG) or a failing close must not leave a truncated
+  // file that a commit would rename over a good one.
+  if (fd_ >= 0) {
+    if (!failed() && (injectFault("fsync") ? (errno = EIO, true) : ::fsync(fd_) != 0)) fail();
+    if (::close(fd_) != 0) fail();
+    fd_ = -1;
+  }
+  if (failed()) return Error::inFileField(errorPath_, field_, error_);
   return Ok{};
+}
+
+namespace {
+
+Status writeAll(const std::string& tempPath, std::string_view content, const std::string& target,
+                const std::string& field) {
+  CheckedFileWriter file(tempPath, target, field);
+  file.write(content);
+  return file.finish();
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 // (error, crash, kill) leaves no target file and, through the destructor, no temporary either.
 #include "planet/core/error.h"
 
+#include <cstdint>
 #include <span>
 #include <string>
 #include <string_view>
@@ -32,6 +33,34 @@ class AtomicFile {
   std::string target_;
   std::string temp_;
   bool committed_ = false;
+};
+
+// Writes one file piece by piece, every step checked, for writers that stream and seek (OpenEXR
+// writes its line-offset table last, from a destructor that swallows errors): a short write is
+// continued, and the first failure (open, write, seek, fsync, close: ENOSPC, EFBIG, EIO) is kept
+// and returned by finish(), naming `errorPath` and strerror. After a failure nothing more is written.
+class CheckedFileWriter {
+ public:
+  CheckedFileWriter(const std::string& path, std::string errorPath, std::string field = "");
+  ~CheckedFileWriter();  // closes the file if finish() was not called (its result is lost then)
+  CheckedFileWriter(const CheckedFileWriter&) = delete;
+  CheckedFileWriter& operator=(const CheckedFileWriter&) = delete;
+
+  bool write(std::string_view bytes);  // false once any step has failed
+  bool seek(uint64_t offset);          // from the start of the file
+  uint64_t position() const { return position_; }
+  bool failed() const { return !error_.empty(); }
+  const std::string& errorMessage() const { return error_; }  // "cannot write: <strerror>"
+  // fsync and close; the first failure of any step so far.
+  Status finish();
+
+ private:
+  void fail();  // keeps errno's message unless a failure is already kept
+  int fd_ = -1;
+  uint64_t position_ = 0;
+  std::string errorPath_;
+  std::string field_;
+  std::string error_;
 };
 
 // Fails with a one-line Error when `path`'s directory does not exist or is not writable, so a

@@ -1,5 +1,6 @@
 #include "planet/lod/selection.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -22,6 +23,8 @@ struct LodSelector::Context {
   NodeResidency* residency;
   Selection* out;
   bool grew;
+  int maxDepth;       // the configured max depth or the caller's lower cap
+  uint32_t maxNodes;  // 0: no limit
 };
 
 Result<LodSelector> LodSelector::create(const LodConfig& c, const FaceMapping& mapping) {
@@ -67,7 +70,9 @@ Status LodSelector::select(const SelectionCamera& camera, NodeResidency& residen
               HorizonCone(camera.position_m, config_.horizonCulling ? defaultRange_.min_m : 0.0),
               &residency,
               &out,
-              false};
+              false,
+              camera.maxDepth < 0 ? ranges_.maxDepth() : std::min(camera.maxDepth, ranges_.maxDepth()),
+              camera.maxNodes};
   // A range that grows mid-pass may have let an earlier decision break the restriction: redo.
   do {
     ctx.grew = false;
@@ -117,6 +122,10 @@ bool LodSelector::survivesCulling(const NodeId& id, const NodeBounds& b, VisitSt
 }
 
 void LodSelector::addSelected(const NodeId& id, bool partial, Context& ctx) {
+  if (ctx.maxNodes > 0 && ctx.out->nodes.size() >= ctx.maxNodes) {
+    ctx.out->stats.overBudget = true;  // visit() stops everywhere from here on
+    return;
+  }
   const int depth = id.level;
   ctx.out->nodes.push_back(
       {id, ranges_.morph(partial ? depth - 1 : depth), partial, static_cast<uint8_t>(depth > 0 ? id.quadrant() : 0)});
@@ -154,6 +163,7 @@ void LodSelector::visitChildren(const NodeId& id, const NodeBounds& b, const std
 
 void LodSelector::visit(const NodeId& id, const NodeBounds& b, VisitState state, Context& ctx) {
   SelectionStats& stats = ctx.out->stats;
+  if (stats.overBudget) return;
   ++stats.visited;
   if (!survivesCulling(id, b, state, ctx)) return;
   const int depth = id.level;
@@ -168,10 +178,12 @@ void LodSelector::visit(const NodeId& id, const NodeBounds& b, VisitState state,
     return;
   }
   const double range = depth < ranges_.maxDepth() ? ranges_.refineRange(depth) : 0.0;
-  if (depth >= ranges_.maxDepth() || !intersectsSphere(b, ctx.camera, range)) {
+  const bool refine = depth < ranges_.maxDepth() && intersectsSphere(b, ctx.camera, range);
+  if (refine && depth >= ctx.maxDepth) ++stats.heldBack;  // a budget's cap keeps it coarser
+  if (!refine || depth >= ctx.maxDepth) {
     addSelected(id, false, ctx);
     // Look-ahead (a): the camera is about to come within this node's refine range.
-    if (depth < ranges_.maxDepth() && config_.prefetch.enabled && config_.prefetch.nextLevelRangeFactor > 1.0 &&
+    if (depth < ctx.maxDepth && config_.prefetch.enabled && config_.prefetch.nextLevelRangeFactor > 1.0 &&
         intersectsSphere(b, ctx.camera, range * config_.prefetch.nextLevelRangeFactor)) {
       prefetchChildren(id, distanceToBounds(b, ctx.camera), ctx);
     }
@@ -204,6 +216,7 @@ void LodSelector::prefetchVisit(const NodeId& id, const NodeBounds& b, bool full
   // nodes, no restriction bookkeeping (nothing here is drawn), no diagonals observed (the ranges
   // stay a function of what is drawn). The horizon test stays: turning does not reveal what it hides.
   SelectionStats& stats = ctx.out->stats;
+  if (stats.overBudget) return;
   ++stats.prefetchVisited;
   if (!fullyVisible) {
     const HorizonVisibility h = ctx.horizon.classify(b);
@@ -216,7 +229,7 @@ void LodSelector::prefetchVisit(const NodeId& id, const NodeBounds& b, bool full
     ++stats.prefetchRequests;
     return;
   }
-  if (depth >= ranges_.maxDepth()) return;
+  if (depth >= ctx.maxDepth) return;
   const double range = ranges_.refineRange(depth) * config_.prefetch.ringRangeFactor;
   if (!intersectsSphere(b, ctx.camera, range)) return;
   if (!prefetchChildren(id, distanceToBounds(b, ctx.camera), ctx)) return;

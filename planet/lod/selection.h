@@ -73,6 +73,11 @@ struct SelectionStats {
   uint32_t prefetchRequests = 0;  // kPrefetch requests
   uint32_t prefetchVisited = 0;   // frustum-culled nodes walked by the ring prefetch
   uint32_t passes = 0;            // > 1 when an observed diagonal grew the ranges mid-selection
+  // Budgets (SelectionCamera::maxDepth, maxNodes): nodes at the depth cap that the ranges would
+  // refine, and whether the selection stopped at maxNodes (then `nodes` is incomplete: select again
+  // with a lower cap).
+  uint32_t heldBack = 0;
+  bool overBudget = false;
 };
 
 struct Selection {
@@ -83,6 +88,11 @@ struct Selection {
 struct SelectionCamera {
   glm::dvec3 position_m{0.0};        // planet-fixed metres
   const Frustum* frustum = nullptr;  // nullptr: no frustum culling
+  // A frame budget's limits (planet/streaming/frame_budget.h): no node deeper than maxDepth is
+  // selected or requested (-1: the configured max depth; a cap keeps the quadtree restricted, see
+  // LodRanges), and the selection stops once it would select more than maxNodes (0: no limit).
+  int maxDepth = -1;
+  uint32_t maxNodes = 0;
 };
 
 class LodSelector {

@@ -6,6 +6,7 @@
 #include "planet/geometry/node_id.h"
 
 #include <span>
+#include <string>
 #include <vector>
 
 namespace globe {
@@ -19,6 +20,9 @@ struct GenerationResult {
   NodeId node;
   uint32_t slot = 0;
   RadiusRange radius;  // the payload's real min/max surface radius (metres), padded by the generator
+  // The job did not produce a payload (its submit failed, or its output was not finite): the slot
+  // holds nothing usable; the pool forgets the node, so the view draws its parent and asks again.
+  bool failed = false;
 };
 
 class PayloadGenerator {
@@ -30,6 +34,8 @@ class PayloadGenerator {
   virtual void collect(std::vector<GenerationResult>& finished) = 0;
   // Bytes of device memory one payload slot takes (positions, normals, ...).
   virtual size_t slotBytes() const = 0;
+  // Why the last failed job failed (one line), for the pool's warning; empty if none failed.
+  virtual std::string lastFailure() const { return {}; }
 };
 
 }  // namespace globe

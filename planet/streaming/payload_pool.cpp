@@ -170,8 +170,10 @@ void PayloadPool::request(const NodeId& node, RequestPriority priority, double d
     if (i < 0) {
       if (prefetch) return;  // look-ahead is optional: no warning, no stat
       ++stats_.starvedByPool;
-      setWarning("node pool full (" + std::to_string(nodeCapacity_) +
-                 " nodes): drawing coarser terrain; raise the RAM budget");
+      warnOnce(PoolWarning::kNodeTableFull, [&] {
+        return "node pool full (" + std::to_string(nodeCapacity_) +
+               " nodes): drawing coarser terrain; raise the RAM budget";
+      });
       return;
     }
     NodeRecord& r = table_[size_t(i)];
@@ -238,6 +240,11 @@ void PayloadPool::beginFrame(uint64_t frame, const glm::dvec3& camera_m, uint64_
       if (i >= 0 && table_[size_t(i)].state == State::kInFlight && table_[size_t(i)].slot == done.slot) erase(i);
       continue;
     }
+    if (done.failed) {
+      forgetFailed(i);
+      continue;
+    }
+    consecutiveFailures_ = 0;
     NodeRecord& r = table_[size_t(i)];
     r.state = State::kResident;
     r.radius = done.radius;
@@ -251,6 +258,22 @@ void PayloadPool::beginFrame(uint64_t frame, const glm::dvec3& camera_m, uint64_
     }
     ++stats_.completed;
   }
+}
+
+void PayloadPool::forgetFailed(int64_t index) {
+  // Nothing usable was written: the slot is free at once (no frame drew it), and the node is
+  // forgotten, so the selection draws its parent and requests it again (a retry at the normal
+  // budget, never a loop within the frame).
+  NodeRecord& r = table_[size_t(index)];
+  slotOwner_[r.slot] = kEmptyKey;
+  freeSlots_.push_back(r.slot);
+  erase(index);
+  ++stats_.failed;
+  ++failedTotal_;
+  ++consecutiveFailures_;
+  warnOnce(PoolWarning::kGenerationFailed, [&] {
+    return "payload generation failed (" + generator_.lastFailure() + "): drawing coarser terrain meanwhile";
+  });
 }
 
 void PayloadPool::markUsed(std::span<const SelectedNode> nodes) {
@@ -362,8 +385,10 @@ size_t PayloadPool::startJobs(size_t nextVictim) {
       ++stats_.prefetchDispatched;
     } else if (freeSlots_.empty()) {
       ++stats_.starvedByPool;
-      setWarning("payload pool exhausted (" + std::to_string(slotCapacity_) +
-                 " slots): drawing coarser terrain; raise the VRAM budget");
+      warnOnce(PoolWarning::kSlotsExhausted, [&] {
+        return "payload pool exhausted (" + std::to_string(slotCapacity_) +
+               " slots): drawing coarser terrain; raise the VRAM budget";
+      });
       break;
     }
     r.slot = freeSlots_.back();
@@ -412,8 +437,12 @@ uint32_t PayloadPool::latencyPercentile(double fraction) const {
   return uint32_t(latency_.size() - 1);
 }
 
-void PayloadPool::setWarning(const std::string& message) {
-  if (exhaustionWarning_.empty()) exhaustionWarning_ = message;
+void PayloadPool::warnOnce(PoolWarning kind, const std::function<std::string()>& message) {
+  // The message is built only the first time: a starved or failing frame repeats every frame.
+  if (warned_[size_t(kind)]) return;
+  warned_[size_t(kind)] = true;
+  warnings_.push_back(message());
+  if (kind != PoolWarning::kGenerationFailed && exhaustionWarning_.empty()) exhaustionWarning_ = warnings_.back();
 }
 
 }  // namespace globe

@@ -27,10 +27,13 @@
 #include "planet/geometry/face_mapping.h"
 #include "planet/lod/node_residency.h"
 #include "planet/lod/selection.h"
+#include "planet/streaming/frame_budget.h"
 #include "planet/streaming/payload_generator.h"
 #include "planet/streaming/streaming_stats.h"
 
+#include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -45,6 +48,7 @@ struct StreamingConfig {
   uint32_t dispatchBudget = 8;    // generations started per frame (source: 8); >= 1
   uint32_t maxInFlight = 32;      // generations in flight at once (source: 32); >= 1
   uint32_t maxSlots = 0;          // optional cap on payload slots below the VRAM budget (0 = none)
+  FrameBudget budget;             // per-frame nodes, triangles and requests (frame_budget.h)
 };
 
 // Validates a config; errors name the field.
@@ -91,6 +95,13 @@ class PayloadPool final : public NodeResidency {
   uint32_t latencyPercentile(double fraction) const;
   // Set once, when the pool first had to skip a request because no slot could be freed.
   const std::string& exhaustionWarning() const { return exhaustionWarning_; }
+  // One line per kind of trouble, in the order they first happened (pool exhausted, node table
+  // full, generation failed): each is a degradation to coarser terrain the user should hear of once.
+  std::span<const std::string> warnings() const { return warnings_; }
+  // Generations that failed (GenerationResult::failed), over the pool's life and since the last
+  // one that succeeded.
+  uint64_t failedGenerations() const { return failedTotal_; }
+  uint32_t consecutiveFailures() const { return consecutiveFailures_; }
 
  private:
   PayloadPool(const StreamingConfig& config, PayloadGenerator& generator, double radius_m, const FaceMapping& mapping,
@@ -136,7 +147,10 @@ class PayloadPool final : public NodeResidency {
   void updateDispatchStats();
   // floor(2 log2(distance / node width)): larger buckets are evicted first.
   int distanceBucket(const NodeRecord& r) const;
-  void setWarning(const std::string& message);
+  enum class PoolWarning : uint8_t { kSlotsExhausted, kNodeTableFull, kGenerationFailed, kCount };
+  void warnOnce(PoolWarning kind, const std::function<std::string()>& message);
+  // A failed job's node: its slot is freed and the node forgotten (requested again by the view).
+  void forgetFailed(int64_t index);
   void rehash();
   void releaseSlot(uint32_t slot, uint64_t lastUsedFrame);
 
@@ -172,6 +186,10 @@ class PayloadPool final : public NodeResidency {
   glm::dvec3 camera_m_{0.0};
   StreamingStats stats_;
   std::string exhaustionWarning_;
+  std::vector<std::string> warnings_;
+  std::array<bool, size_t(PoolWarning::kCount)> warned_{};
+  uint64_t failedTotal_ = 0;
+  uint32_t consecutiveFailures_ = 0;
 };
 
 }  // namespace globe

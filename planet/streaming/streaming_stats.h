@@ -14,6 +14,7 @@ struct StreamingStats {
   uint32_t residentNodes = 0;  // payloads ready to draw
   double residentMiB = 0.0;    // device memory held by resident and in-flight payloads
   uint32_t starvedByPool = 0;  // requests skipped because no slot could be freed (pool exhausted)
+  uint32_t failed = 0;         // generations that came back failed this frame (nodes asked for again)
   // Look-ahead (RequestPriority::kPrefetch); also included in the totals above.
   uint32_t prefetchRequested = 0;   // distinct nodes asked for only as prefetch this frame
   uint32_t prefetchDispatched = 0;  // prefetch generations started this frame

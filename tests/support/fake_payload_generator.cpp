@@ -26,7 +26,8 @@ void FakePayloadGenerator::collect(std::vector<GenerationResult>& finished) {
       const NodeId& node = running_[k].job.node;
       double relief = 0.5 * nominalNodeWidth(node.level, radius_m_);
       RadiusRange r{std::max(planet_.min_m, radius_m_ - relief), std::min(planet_.max_m, radius_m_ + relief)};
-      finished.push_back({node, running_[k].job.slot, r});
+      const bool failed = failJob && failJob(running_[k].job);
+      finished.push_back({node, running_[k].job.slot, failed ? RadiusRange{} : r, failed});
       running_[k] = running_.back();
       running_.pop_back();
     } else {

@@ -6,6 +6,7 @@
 #include "planet/streaming/payload_generator.h"
 
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace globe {
@@ -24,6 +25,9 @@ class FakePayloadGenerator final : public PayloadGenerator {
   void tick() { ++frame_; }
   // Called for every job as it starts (tests check slot reuse against frames in flight).
   std::function<void(const GenerationJob&)> onGenerate;
+  // When set and true for a job, the job comes back failed (GenerationResult::failed).
+  std::function<bool(const GenerationJob&)> failJob;
+  std::string lastFailure() const override { return "injected by the test"; }
   uint64_t generatedTotal() const { return generatedTotal_; }
 
  private:
