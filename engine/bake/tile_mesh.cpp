@@ -30,11 +30,11 @@ std::size_t at(const TileGrid& grid, int i, int j) {
 glm::dvec3 gridNormal(const TileGrid& grid, const std::vector<glm::dvec3>& p, int i, int j) {
   const glm::dvec3 east = p[at(grid, i + 1, j)] - p[at(grid, i - 1, j)];
   const glm::dvec3 north = p[at(grid, i, j + 1)] - p[at(grid, i, j - 1)];
-  const glm::dvec3 n = glm::cross(east, north);
-  const double len = glm::length(n);
-  // At a pole the east-west samples coincide: the normal is the outward direction there.
-  if (len < 1e-9 * glm::dot(east, east) + 1e-12 || !std::isfinite(len)) return glm::normalize(p[at(grid, i, j)]);
-  return n / len;
+  // At a pole the east-west samples coincide (up to cos(90 degrees) = 6e-17 rounding): the normal
+  // is the outward direction there.
+  const double east_m = glm::length(east), north_m = glm::length(north);
+  if (east_m < 1e-6 * north_m || north_m < 1e-6 * east_m) return glm::normalize(p[at(grid, i, j)]);
+  return glm::normalize(glm::cross(east, north));
 }
 
 // The grid's triangles simplified to `error_m` with the border locked; indices into the (cells+1)^2 grid.
@@ -109,6 +109,21 @@ void collectEdges(QuantizedMeshTile& tile) {
   }
 }
 
+// Where a client puts the vertices: u/v over the tile's rectangle, dequantized heights. The bounds
+// are computed from these, so they hold for what is drawn.
+std::vector<glm::dvec3> decodedPositions(const QuantizedMeshTile& tile, double radius_m, const TileId& id) {
+  const GeoRect r = tileRect(id);
+  const double range_m = double(tile.header.max_height_m) - double(tile.header.min_height_m);
+  std::vector<glm::dvec3> out;
+  for (std::size_t k = 0; k < tile.u.size(); ++k) {
+    const double lon = r.west_deg + tile.u[k] / double(kQuantizedMax) * (r.east_deg - r.west_deg);
+    const double lat = r.south_deg + tile.v[k] / double(kQuantizedMax) * (r.north_deg - r.south_deg);
+    const double h = double(tile.header.min_height_m) + tile.height[k] / double(kQuantizedMax) * range_m;
+    out.push_back(directionFromLatLon(lat, lon) * (radius_m + h));
+  }
+  return out;
+}
+
 void setBounds(const std::vector<glm::dvec3>& kept_m, double radius_m, QuantizedMeshTile& tile) {
   glm::dvec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
   for (const glm::dvec3& q : kept_m) {
@@ -146,12 +161,10 @@ QuantizedMeshTile buildTileMesh(const TileGrid& grid, double radius_m, double er
   const auto row = static_cast<unsigned>(n + 1);
   std::vector<std::uint32_t> remap(std::size_t(row) * row, ~0u);
   std::vector<glm::ivec2> kept;  // grid (i, j) of each vertex, in order of first use
-  std::vector<glm::dvec3> kept_m;
   for (unsigned g : triangles) {
     if (remap[g] == ~0u) {
       remap[g] = static_cast<std::uint32_t>(kept.size());
       kept.push_back({int(g % row), int(g / row)});
-      kept_m.push_back(p[at(grid, kept.back().x, kept.back().y)]);
     }
     tile.indices.push_back(remap[g]);
   }
@@ -162,7 +175,7 @@ QuantizedMeshTile buildTileMesh(const TileGrid& grid, double radius_m, double er
   }
   quantizeHeights(grid, kept, tile);
   collectEdges(tile);
-  setBounds(kept_m, radius_m, tile);
+  setBounds(decodedPositions(tile, radius_m, grid.tile), radius_m, tile);
   if (stats != nullptr) *stats = {std::size_t(row) * row, kept.size(), triangles.size() / 3, achieved_m};
   return tile;
 }
