@@ -6,6 +6,7 @@
 #include "planet/core/input_file.h"
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <map>
 #include <mutex>
@@ -71,8 +72,14 @@ std::size_t samplesPerTile(BakeFormat format) {
 
 namespace {
 
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 std::vector<EncodedTile> encodeBatch(const PlanetDescription& planet, HeightSampler& heights,
-                                     const BakeSettings& settings, std::span<const TileId> batch) {
+                                     const BakeSettings& settings, std::span<const TileId> batch,
+                                     BakeSummary& summary) {
+  auto start = std::chrono::steady_clock::now();
   std::vector<glm::dvec3> directions;
   for (const TileId& t : batch) {
     if (settings.format == BakeFormat::Cog) {
@@ -82,6 +89,8 @@ std::vector<EncodedTile> encodeBatch(const PlanetDescription& planet, HeightSamp
     }
   }
   const std::vector<double> h = heights.heights_m(directions);
+  summary.heights_s += secondsSince(start);
+  start = std::chrono::steady_clock::now();
   const std::size_t per = samplesPerTile(settings.format);
   std::vector<EncodedTile> out(batch.size());
   parallelFor(batch.size(), 1, settings.threads, [&](std::size_t begin, std::size_t end) {
@@ -101,6 +110,7 @@ std::vector<EncodedTile> encodeBatch(const PlanetDescription& planet, HeightSamp
       }
     }
   });
+  summary.encode_s += secondsSince(start);
   return out;
 }
 
@@ -139,16 +149,19 @@ Result<BakeSummary> runBake(const PlanetDescription& planet, HeightSampler& heig
       std::max<std::size_t>(1, GpuHeightSampler::kBatchDirections / samplesPerTile(settings.format));
   for (std::size_t first = 0; first < todo.size(); first += batchTiles) {
     const std::span<const TileId> batch(todo.data() + first, std::min(batchTiles, todo.size() - first));
-    std::vector<EncodedTile> encoded = encodeBatch(planet, heights, settings, batch);
+    std::vector<EncodedTile> encoded = encodeBatch(planet, heights, settings, batch, summary);
+    const auto writeStart = std::chrono::steady_clock::now();
     for (std::size_t k = 0; k < batch.size(); ++k) {
       if (!encoded[k].status) return encoded[k].status.error();
       const std::string path = (fs::path(settings.out_dir) / tilePath(batch[k], ext)).string();
       if (auto s = write(path, encoded[k].bytes); !s) return s.error();
       ++summary.written;
+      summary.bytes += encoded[k].bytes.size();
       summary.vertices += encoded[k].stats.vertices;
       summary.max_simplification_error_m =
           std::max(summary.max_simplification_error_m, encoded[k].stats.simplification_error_m);
     }
+    summary.write_s += secondsSince(writeStart);
     if (progress) progress(double(first + batch.size()) / double(todo.size()));
   }
   return summary;

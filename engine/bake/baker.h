@@ -29,6 +29,10 @@ struct BakeSummary {
   std::uint64_t skipped = 0;  // already there
   double max_simplification_error_m = 0.0;
   std::uint64_t vertices = 0;  // over the written quantized-mesh tiles
+  std::uint64_t bytes = 0;     // over the written tiles
+  double heights_s = 0.0;      // wall-clock seconds sampling heights (GPU)
+  double encode_s = 0.0;       // meshes / rasters and their encoding (CPU, `threads`)
+  double write_s = 0.0;        // atomic writes (fsync per tile)
 };
 
 // Stores one finished tile (`path` inside the output directory); the command line wraps
