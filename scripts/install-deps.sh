@@ -22,6 +22,9 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev libnoise-dev xvfb xauth
   # the formatting check of the test suite; readelf for the consumer check (binutils)
   clang-format binutils
+  # globe bake: COG tiles through GDAL (gdalinfo checks them); GNU parallel runs shards (docs/bake.md);
+  # CesiumJS (npm, tests/cesium) in headless Chromium reads a baked tileset
+  libgdal-dev gdal-bin parallel nodejs chromium
 )
 
 if [[ "${1:-}" == "--list" ]]; then
@@ -38,12 +41,19 @@ done
 
 if ((${#missing[@]} == 0)); then
   echo "install-deps: all ${#PACKAGES[@]} packages present"
-  exit 0
+else
+  echo "install-deps: installing ${missing[*]}"
+  SUDO=""
+  if [[ $(id -u) -ne 0 ]]; then SUDO="sudo"; fi
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-echo "install-deps: installing ${missing[*]}"
-SUDO=""
-if [[ $(id -u) -ne 0 ]]; then SUDO="sudo"; fi
-export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -qq
-$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+# The JavaScript client of the bake test (tests/cesium/package-lock.json), installed by npm ci when
+# missing or older than the lock file.
+CESIUM_DIR="$(cd "$(dirname "$0")/../tests/cesium" && pwd)"
+if [[ ! -d "$CESIUM_DIR/node_modules/cesium" || "$CESIUM_DIR/package-lock.json" -nt "$CESIUM_DIR/node_modules/.package-lock.json" ]]; then
+  echo "install-deps: npm ci in tests/cesium"
+  (cd "$CESIUM_DIR" && npm ci --no-audit --no-fund --loglevel=error)
+fi

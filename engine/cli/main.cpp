@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
   addTradeCommand(app, run);
   addPathCommand(app, run);
   addMovieCommand(app, run);
+  addBakeCommand(app, run);
 
   try {
     app.parse(argc, argv);

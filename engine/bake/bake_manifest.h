@@ -1,0 +1,27 @@
+#pragma once
+// The two small files every shard of a bake writes identically (atomically, so concurrent shards
+// only ever replace them with the same bytes): bake.json, what the bake covers, checked before a
+// resume so that tiles of another planet or format are never mixed in; and, for quantized mesh,
+// layer.json, the tileset description Cesium clients read (TileJSON 2.1 with availability).
+#include "planet/elevation/elevation.h"
+#include "planet/tiling/bake_plan.h"
+
+#include <string>
+
+namespace globe {
+
+struct BakeDescription {
+  BakeFormat format = BakeFormat::QuantizedMesh;
+  LevelRange levels;
+  GeoRect region;
+  std::string planet_name;
+  double radius_m = 0.0;
+  std::uint64_t model_hash = 0;  // of the packed elevation parameters: the model itself, not its file
+};
+
+std::uint64_t elevationModelHash(const gpu::ElevationParams& params);
+
+std::string bakeJson(const BakeDescription& bake);
+std::string layerJson(const BakeDescription& bake, const BakePlan& plan);
+
+}  // namespace globe

@@ -1,0 +1,170 @@
+#include "engine/bake/baker.h"
+
+#include "engine/bake/cog_tile.h"
+#include "engine/bake/tile_mesh.h"
+#include "planet/core/atomic_file.h"
+#include "planet/core/input_file.h"
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <mutex>
+
+namespace globe {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* extensionOf(BakeFormat format) { return format == BakeFormat::Cog ? ".tif" : ".terrain"; }
+
+// bake.json must match the bake a directory already holds, or the resume would mix two bakes.
+Status writeManifests(const BakeDescription& description, const BakePlan& plan, const std::string& dir) {
+  const std::string manifest = bakeJson(description);
+  const std::string path = (fs::path(dir) / "bake.json").string();
+  std::error_code ec;
+  if (fs::exists(path, ec)) {
+    auto existing = readInputFile(path, "bake manifest", 1 << 20);
+    if (!existing) return existing.error();
+    if (*existing != manifest) {
+      return Error::inFile(path,
+                           "the directory holds another bake (planet, format, levels or region differ); "
+                           "use a new --out directory");
+    }
+  }
+  std::vector<NamedContent> files{{"bake.json", manifest}};
+  if (description.format == BakeFormat::QuantizedMesh) files.push_back({"layer.json", layerJson(description, plan)});
+  return writeFilesAtomically(dir, files);
+}
+
+// Temporaries of this shard's unfinished tiles left by a killed run (AtomicFile names them
+// ".NAME.tmpPID"); other shards' temporaries, possibly being written right now, are not touched.
+void removeStaleTemporaries(const std::string& dir, const std::vector<TileId>& todo, const char* ext) {
+  std::map<std::string, std::vector<std::string>> prefixes;  // column directory -> ".y.ext.tmp"
+  for (const TileId& t : todo) {
+    const fs::path p = fs::path(dir) / tilePath(t, ext);
+    prefixes[p.parent_path().string()].push_back("." + p.filename().string() + ".tmp");
+  }
+  for (const auto& [column, names] : prefixes) {
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(column, ec)) {
+      const std::string file = entry.path().filename().string();
+      for (const std::string& prefix : names) {
+        if (file.rfind(prefix, 0) == 0) fs::remove(entry.path(), ec);
+      }
+    }
+  }
+}
+
+struct EncodedTile {
+  std::string bytes;
+  Status status = Ok{};
+  TileMeshStats stats;
+};
+
+std::size_t samplesPerTile(BakeFormat format) {
+  return format == BakeFormat::Cog ? std::size_t(kCogPixels) * kCogPixels
+                                   : std::size_t(kMeshCells + 3) * std::size_t(kMeshCells + 3);
+}
+
+}  // namespace
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::vector<EncodedTile> encodeBatch(const PlanetDescription& planet, HeightSampler& heights,
+                                     const BakeSettings& settings, std::span<const TileId> batch,
+                                     BakeSummary& summary) {
+  auto start = std::chrono::steady_clock::now();
+  std::vector<glm::dvec3> directions;
+  for (const TileId& t : batch) {
+    if (settings.format == BakeFormat::Cog) {
+      appendCogDirections(t, directions);
+    } else {
+      appendGridDirections(t, kMeshCells, directions);
+    }
+  }
+  const std::vector<double> h = heights.heights_m(directions);
+  summary.heights_s += secondsSince(start);
+  start = std::chrono::steady_clock::now();
+  const std::size_t per = samplesPerTile(settings.format);
+  std::vector<EncodedTile> out(batch.size());
+  parallelFor(batch.size(), 1, settings.threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const auto first = h.begin() + std::ptrdiff_t(k * per);
+      std::vector<double> tileHeights(first, first + std::ptrdiff_t(per));
+      if (settings.format == BakeFormat::Cog) {
+        auto bytes = encodeCogTile(batch[k], tileHeights, planet.radius_m, planet.name);
+        if (bytes)
+          out[k].bytes = std::move(*bytes);
+        else
+          out[k].status = bytes.error();
+      } else {
+        const TileGrid grid{batch[k], kMeshCells, std::move(tileHeights)};
+        const double error_m = levelGeometricError_m(planet.radius_m, batch[k].level);
+        out[k].bytes = encodeQuantizedMesh(buildTileMesh(grid, planet.radius_m, error_m, &out[k].stats));
+      }
+    }
+  });
+  summary.encode_s += secondsSince(start);
+  return out;
+}
+
+}  // namespace
+
+Result<BakeSummary> runBake(const PlanetDescription& planet, HeightSampler& heights, const BakeSettings& settings,
+                            const TileWriter& write, const ProgressFn& progress) {
+  const BakePlan plan(settings.levels, settings.region);
+  const ElevationModel model(planet);
+  const BakeDescription description{settings.format, settings.levels, settings.region,
+                                    planet.name,     planet.radius_m, elevationModelHash(model.params())};
+  std::error_code ec;
+  fs::create_directories(settings.out_dir, ec);
+  if (ec) return Error::inField("--out", "cannot create '" + settings.out_dir + "': " + ec.message());
+  if (auto s = writeManifests(description, plan, settings.out_dir); !s) return s.error();
+
+  BakeSummary summary;
+  summary.plan_tiles = plan.tileCount();
+  const char* ext = extensionOf(settings.format);
+  std::vector<TileId> todo;
+  for (const TileId& t : plan.tilesOf(settings.shard)) {
+    ++summary.shard_tiles;
+    if (fs::exists(fs::path(settings.out_dir) / tilePath(t, ext), ec)) {
+      ++summary.skipped;
+    } else {
+      todo.push_back(t);
+    }
+  }
+  for (const TileId& t : todo) {
+    fs::create_directories((fs::path(settings.out_dir) / tilePath(t, ext)).parent_path(), ec);
+    if (ec) return Error::inFile(settings.out_dir, "cannot create tile directory: " + ec.message());
+  }
+  removeStaleTemporaries(settings.out_dir, todo, ext);
+
+  const std::size_t batchTiles =
+      std::max<std::size_t>(1, GpuHeightSampler::kBatchDirections / samplesPerTile(settings.format));
+  for (std::size_t first = 0; first < todo.size(); first += batchTiles) {
+    const std::span<const TileId> batch(todo.data() + first, std::min(batchTiles, todo.size() - first));
+    std::vector<EncodedTile> encoded = encodeBatch(planet, heights, settings, batch, summary);
+    const auto writeStart = std::chrono::steady_clock::now();
+    for (std::size_t k = 0; k < batch.size(); ++k) {
+      if (!encoded[k].status) return encoded[k].status.error();
+      const std::string path = (fs::path(settings.out_dir) / tilePath(batch[k], ext)).string();
+      if (auto s = write(path, encoded[k].bytes); !s) return s.error();
+      ++summary.written;
+      summary.bytes += encoded[k].bytes.size();
+      summary.vertices += encoded[k].stats.vertices;
+      summary.max_simplification_error_m =
+          std::max(summary.max_simplification_error_m, encoded[k].stats.simplification_error_m);
+    }
+    summary.write_s += secondsSince(writeStart);
+    if (progress) progress(double(first + batch.size()) / double(todo.size()));
+  }
+  return summary;
+}
+
+}  // namespace globe

@@ -1,0 +1,89 @@
+#include "planet/tiling/bake_plan.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace globe {
+
+Result<BakeFormat> parseBakeFormat(const std::string& text, const std::string& field) {
+  if (text == "quantized-mesh") return BakeFormat::QuantizedMesh;
+  if (text == "cog") return BakeFormat::Cog;
+  return Error::inField(field, "unknown format '" + escapeControlCharacters(text) + "' (quantized-mesh or cog)");
+}
+
+const char* bakeFormatName(BakeFormat format) { return format == BakeFormat::Cog ? "cog" : "quantized-mesh"; }
+
+Result<LevelRange> parseLevelRange(const std::string& text, const std::string& field) {
+  LevelRange r;
+  char extra = 0;
+  const int n = std::sscanf(text.c_str(), "%d..%d%c", &r.first, &r.last, &extra);
+  if (n == 1 && text.find("..") == std::string::npos) {
+    r.last = r.first;
+  } else if (n != 2) {
+    return Error::inField(field, "expected A..B (for example 0..5), got '" + escapeControlCharacters(text) + "'");
+  }
+  if (r.first < 0 || r.last > kMaxTileLevel || r.first > r.last) {
+    return Error::inField(field, "levels must satisfy 0 <= A <= B <= " + std::to_string(kMaxTileLevel) + ", got '" +
+                                     escapeControlCharacters(text) + "'");
+  }
+  return r;
+}
+
+Result<GeoRect> parseRegion(const std::string& text, const std::string& field) {
+  GeoRect r;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%lf,%lf,%lf,%lf%c", &r.west_deg, &r.south_deg, &r.east_deg, &r.north_deg, &extra) !=
+      4) {
+    return Error::inField(
+        field, "expected W,S,E,N in degrees (for example 5,44,8,47), got '" + escapeControlCharacters(text) + "'");
+  }
+  for (double v : {r.west_deg, r.south_deg, r.east_deg, r.north_deg}) {
+    if (!std::isfinite(v)) return Error::inField(field, "coordinates must be finite");
+  }
+  if (r.west_deg < -180.0 || r.east_deg > 180.0 || r.west_deg >= r.east_deg) {
+    return Error::inField(field, "longitudes must satisfy -180 <= W < E <= 180");
+  }
+  if (r.south_deg < -90.0 || r.north_deg > 90.0 || r.south_deg >= r.north_deg) {
+    return Error::inField(field, "latitudes must satisfy -90 <= S < N <= 90");
+  }
+  return r;
+}
+
+Result<Shard> parseShard(const std::string& text, const std::string& field) {
+  long long k = 0, n = 0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%lld/%lld%c", &k, &n, &extra) != 2 || text.find_first_of(" +") != std::string::npos) {
+    return Error::inField(field, "expected K/N (shard K of N, K from 0), got '" + escapeControlCharacters(text) + "'");
+  }
+  if (n < 1 || n > 1000000 || k < 0 || k >= n) {
+    return Error::inField(field,
+                          "shard must satisfy 0 <= K < N <= 1000000, got '" + escapeControlCharacters(text) + "'");
+  }
+  return Shard{static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(n)};
+}
+
+BakePlan::BakePlan(LevelRange levels, const GeoRect& region) {
+  for (int level = levels.first; level <= levels.last; ++level) {
+    ranges_.push_back(tilesCovering(level, level == 0 ? GeoRect{} : region));
+    total_ += ranges_.back().count();
+  }
+}
+
+std::vector<TileId> BakePlan::tilesOf(const Shard& shard) const {
+  std::vector<TileId> tiles;
+  std::uint64_t index = 0;
+  for (const TileRange& r : ranges_) {
+    for (std::uint32_t y = r.y0; y <= r.y1; ++y) {
+      for (std::uint32_t x = r.x0; x <= r.x1; ++x, ++index) {
+        if (index % shard.count == shard.index) tiles.push_back({r.level, x, y});
+      }
+    }
+  }
+  return tiles;
+}
+
+std::string tilePath(const TileId& tile, const char* extension) {
+  return std::to_string(tile.level) + "/" + std::to_string(tile.x) + "/" + std::to_string(tile.y) + extension;
+}
+
+}  // namespace globe
