@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
   addTradeCommand(app, run);
   addPathCommand(app, run);
   addMovieCommand(app, run);
+  addPhysicsCommand(app, run);
 
   try {
     app.parse(argc, argv);

@@ -13,6 +13,7 @@
 #include "planet/elevation/elevation.h"
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace globe {
@@ -31,6 +32,7 @@ struct SurfaceRayOptions {
   double pixelAngle_rad = 1.0e-3;  // angle of one pixel (sets the minimum step)
   double minStepFraction = 0.05;   // minimum step, in pixel footprints
   uint32_t maxSteps = 200000;      // a ray that needs more is reported unresolved
+  double maxDistance_m = std::numeric_limits<double>::infinity();  // sky beyond (segments, camera moves)
 };
 
 struct SurfaceRayHit {

@@ -26,6 +26,7 @@ std::optional<double> TerrainQueries::rayExact(const glm::dvec3& origin_m, const
   SurfaceRayOptions options;
   options.tolerance_m = 1e-4;
   options.pixelAngle_rad = 1e-5;  // minimum step 5e-7 of the distance: finer than any camera move
+  options.maxDistance_m = maxDistance_m;
   const SurfaceRayHit hit = rays_.cast(origin_m, direction, options);
   if (hit.kind != SurfaceRayHit::Kind::kHit || hit.distance_m > maxDistance_m) return std::nullopt;
   return hit.distance_m;

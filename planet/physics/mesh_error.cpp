@@ -24,9 +24,9 @@ double meshErrorNear(const ElevationModel& model, const glm::dvec3& centre, doub
   const glm::dvec3 axis = std::abs(centre.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
   const glm::dvec3 east = glm::normalize(glm::cross(axis, centre)), north = glm::cross(centre, east);
   double worst = 0.0;
-  for (int a = -2; a <= 2; ++a) {
-    for (int b = -2; b <= 2; ++b) {
-      const glm::dvec3 offset = (double(a) * east + double(b) * north) * (0.5 * arc_m / model.radius_m());
+  for (int a = -4; a <= 4; ++a) {
+    for (int b = -4; b <= 4; ++b) {
+      const glm::dvec3 offset = (double(a) * east + double(b) * north) * (0.25 * arc_m / model.radius_m());
       worst = std::max(worst, std::abs(drawnMinusExact(model, glm::normalize(centre + offset), level, cells)));
     }
   }

@@ -10,7 +10,7 @@
 
 namespace globe {
 
-// Largest |drawn - exact| radius (metres) over a 5 x 5 grid of directions spanning `arc_m` around
+// Largest |drawn - exact| radius (metres) over a 9 x 9 grid of directions spanning `arc_m` around
 // the unit direction `centre` (a body's footprint).
 double meshErrorNear(const ElevationModel& model, const glm::dvec3& centre, double arc_m, int level, uint32_t cells);
 

@@ -22,6 +22,12 @@ glm::dquat fromBt(const btQuaternion& q) { return {q.w(), q.x(), q.y(), q.z()}; 
 
 constexpr double kPi = 3.14159265358979323846;
 
+// Bullet clamps combined rolling friction to 10 (an angular impulse per step, see addBody), which
+// stops nothing heavier than a few hundred kilograms; the same combination without the clamp.
+btScalar combinedRollingFriction(const btCollisionObject* a, const btCollisionObject* b) {
+  return a->getRollingFriction() * b->getFriction() + b->getRollingFriction() * a->getFriction();
+}
+
 // A static terrain mesh: Bullet's view of the pool's vertices (shared, not copied) and the shared
 // index grid, its BVH and its object at the node centre.
 struct StaticMesh {
@@ -68,6 +74,8 @@ std::string_view bodyShapeName(BodyShape shape) {
 
 PhysicsWorld::PhysicsWorld(const PhysicsSettings& settings) : settings_(settings), impl_(std::make_unique<Impl>()) {
   impl_->world.setGravity(btVector3(0, 0, 0));  // radial, per body (step())
+  gCalculateCombinedRollingFrictionCallback = &combinedRollingFriction;
+  gCalculateCombinedSpinningFrictionCallback = &combinedRollingFriction;
 }
 
 PhysicsWorld::~PhysicsWorld() {
@@ -106,7 +114,14 @@ uint32_t PhysicsWorld::addBody(const BodySpec& spec) {
   info.m_restitution = settings_.restitution;
   info.m_linearSleepingThreshold = settings_.sleepLinear_m_s;
   info.m_angularSleepingThreshold = settings_.sleepAngular_rad_s;
-  if (spec.shape != BodyShape::kBox) info.m_rollingFriction = settings_.rollingFriction;
+  info.m_linearDamping = settings_.linearDamping;
+  info.m_angularDamping = settings_.angularDamping;
+  if (spec.shape != BodyShape::kBox) {
+    const double r = std::max(glm::length(spec.position_m), 1.0);
+    const double g = settings_.surfaceGravity_m_s2 * (settings_.planetRadius_m / r) * (settings_.planetRadius_m / r);
+    info.m_rollingFriction = settings_.rollingResistance * half * mass * g * settings_.step_s;
+    info.m_spinningFriction = info.m_rollingFriction;
+  }
   body.rigid = std::make_unique<btRigidBody>(info);
   body.rigid->setLinearVelocity(toBt(spec.velocity_m_s));
   // Continuous collision: a body moving more than a quarter of its size in a step is swept, so a
@@ -156,6 +171,14 @@ std::vector<glm::dvec3> PhysicsWorld::surfacePoints(uint32_t id) const {
       }
     }
     if (ends == 0.0) break;
+  }
+  // The capsule's cylinder: rings between the end spheres.
+  for (int k = 1; ends > 0.0 && k < 8; ++k) {
+    const double y = -ends + 2.0 * ends * k / 8.0;
+    for (int b = 0; b < 16; ++b) {
+      const double azimuth = 2.0 * kPi * b / 16.0;
+      add(half * std::cos(azimuth), y, half * std::sin(azimuth));
+    }
   }
   return points;
 }
@@ -216,9 +239,9 @@ void PhysicsWorld::meshResident(const CollisionMesh& mesh) {
   s->object->setCollisionShape(s->shape.get());
   s->object->setWorldTransform(btTransform(btQuaternion::getIdentity(), toBt(mesh.centre_m)));
   s->object->setCollisionFlags(btCollisionObject::CF_STATIC_OBJECT);
-  s->object->setFriction(settings_.friction);
-  s->object->setRollingFriction(settings_.rollingFriction);
-  s->object->setRestitution(settings_.restitution);
+  s->object->setFriction(1.0);
+  s->object->setRollingFriction(0.0);  // the pair's rolling friction is the body's (see addBody)
+  s->object->setRestitution(1.0);
   s->object->setUserIndex(-1);
   s->object->setUserPointer(s.get());
   impl_->world.addCollisionObject(s->object.get(), btBroadphaseProxy::StaticFilter,
