@@ -5,6 +5,7 @@
 //
 //   build/release/bin/planet_bench --benchmark_filter='Physics|CollisionMesh'
 #include "planet/analysis/percentile.h"
+#include "planet/camera/camera.h"
 #include "planet/elevation/planet_file.h"
 #include "planet/physics/physics_scenario.h"
 
@@ -53,10 +54,7 @@ void BM_PhysicsStep(benchmark::State& state) {
   state.counters["meshes"] = double(sim.pool().stats().resident);
   state.counters["sync"] = double(sim.pool().stats().generatedSync);
 }
-BENCHMARK(BM_PhysicsStep)
-    ->ArgsProduct({{1, 10, 100, 1000}, {0, 1}})
-    ->Iterations(600)
-    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PhysicsStep)->ArgsProduct({{1, 10, 100, 1000}, {0, 1}})->Iterations(600)->Unit(benchmark::kMillisecond);
 
 void BM_CollisionMeshCpu(benchmark::State& state) {
   CpuCollisionMeshSource source(model(), uint32_t(state.range(0)));

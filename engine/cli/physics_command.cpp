@@ -132,8 +132,8 @@ std::string summaryJson(const PhysicsSimulation& sim, const GpuCollisionMeshSour
       percentileOf(s.physics_ms, 99), pool.generatedSync, pool.generatedAsync, pool.evicted, s.predictedContacts,
       generated ? source.gpuTime_ms() / double(source.nodesGenerated()) : 0.0,
       s.selectionRounds ? s.selection_ms / double(s.selectionRounds) : 0.0, pool.residentMiB(),
-      double(sim.pool().budgetBytes()) / (1024.0 * 1024.0), pool.resident, atRest, fastest, worstRest,
-      meshError.p50_m, meshError.p99_m, meshError.max_m, meshError.samples, wall_s, loadAverage());
+      double(sim.pool().budgetBytes()) / (1024.0 * 1024.0), pool.resident, atRest, fastest, worstRest, meshError.p50_m,
+      meshError.p99_m, meshError.max_m, meshError.samples, wall_s, loadAverage());
 }
 
 // A frame looking down at the first body from 25 m, with the bodies drawn in.

@@ -1,16 +1,16 @@
 // globe render: one headless frame of the terrain (or the reference sphere) written as PNG or EXR.
 #include "commands.h"
-#include "render_terrain.h"
 #include "engine/render/headless_renderer.h"
 #include "engine/render/quality.h"
 #include "engine/render/render_output.h"
 #include "engine/render/sphere_preview.h"
 #include "engine/vk/device.h"
 #include "options.h"
+#include "planet/analysis/terrain_queries.h"
 #include "planet/camera/camera.h"
 #include "planet/core/atomic_file.h"
 #include "planet/elevation/planet_file.h"
-#include "planet/analysis/terrain_queries.h"
+#include "render_terrain.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -9,8 +9,7 @@
 
 namespace globe {
 
-ViewerBodies::ViewerBodies(vk::Device& device, const ElevationModel& model, double surfaceGravity_m_s2,
-                           uint32_t cells)
+ViewerBodies::ViewerBodies(vk::Device& device, const ElevationModel& model, double surfaceGravity_m_s2, uint32_t cells)
     : model_(model), source_(device, model, cells, 16) {
   SimulationSettings settings;
   settings.level = 14;

@@ -10,7 +10,9 @@ namespace globe {
 
 TerrainQueries::TerrainQueries(const ElevationModel& model) : model_(model), rays_(model) {}
 
-double TerrainQueries::exactHeight_m(const glm::dvec3& unitDirection) const { return model_.elevation_m(unitDirection); }
+double TerrainQueries::exactHeight_m(const glm::dvec3& unitDirection) const {
+  return model_.elevation_m(unitDirection);
+}
 
 double TerrainQueries::drawnHeight_m(const glm::dvec3& unitDirection, int level, uint32_t cells) const {
   return drawnSurfaceRadius(model_, unitDirection, level, cells) - model_.radius_m();
@@ -32,8 +34,8 @@ std::optional<double> TerrainQueries::rayExact(const glm::dvec3& origin_m, const
   return hit.distance_m;
 }
 
-glm::dvec3 TerrainQueries::guardedMove(const glm::dvec3& from_m, const glm::dvec3& to_m, double clearance_m,
-                                       int level, uint32_t cells) const {
+glm::dvec3 TerrainQueries::guardedMove(const glm::dvec3& from_m, const glm::dvec3& to_m, double clearance_m, int level,
+                                       uint32_t cells) const {
   glm::dvec3 to = to_m;
   const glm::dvec3 travel = to_m - from_m;
   const double length = glm::length(travel);

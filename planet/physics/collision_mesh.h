@@ -23,9 +23,9 @@ namespace globe {
 struct CollisionMesh {
   NodeId node;
   uint32_t cells = 0;
-  glm::dvec3 centre_m{0.0};          // the payload's snapped node centre, planet-centred
-  std::vector<double> vertices_m;    // xyz per vertex, relative to centre_m, row j = v index
-  RadiusRange radius;                // of the vertices, metres from the planet centre
+  glm::dvec3 centre_m{0.0};        // the payload's snapped node centre, planet-centred
+  std::vector<double> vertices_m;  // xyz per vertex, relative to centre_m, row j = v index
+  RadiusRange radius;              // of the vertices, metres from the planet centre
 
   size_t vertexCount() const { return vertices_m.size() / 3; }
   glm::dvec3 vertex(uint32_t i, uint32_t j) const {

@@ -18,10 +18,7 @@ Status validateCollisionPoolConfig(const CollisionPoolConfig& config) {
 
 CollisionMeshPool::CollisionMeshPool(const CollisionPoolConfig& config, CollisionMeshSource& source,
                                      CollisionMeshListener& listener)
-    : config_(config),
-      source_(source),
-      listener_(listener),
-      budgetBytes_(size_t(config.budget_MiB * 1024.0 * 1024.0)) {
+    : config_(config), source_(source), listener_(listener), budgetBytes_(size_t(config.budget_MiB * 1024.0 * 1024.0)) {
   assert(validateCollisionPoolConfig(config).ok());
 }
 
@@ -79,9 +76,10 @@ void CollisionMeshPool::requireNow(const NodeId& node, double distance_m) {
   }
   CollisionMesh mesh = source_.generateNow(node);
   if (!makeRoom(mesh.bytes()) && warning_.empty())
-    warning_ = fmt::format("collision pool: {:.1f} MiB budget full of touched or wanted meshes; over budget for "
-                           "a predicted contact",
-                           config_.budget_MiB);
+    warning_ = fmt::format(
+        "collision pool: {:.1f} MiB budget full of touched or wanted meshes; over budget for "
+        "a predicted contact",
+        config_.budget_MiB);
   ++stats_.generatedSync;
   Entry& e = entries_[node.key()];
   e.lastRequestStep = step_;

@@ -24,9 +24,9 @@
 namespace globe {
 
 struct CollisionPoolConfig {
-  double budget_MiB = 256.0;       // resident meshes; > 0
-  uint32_t dispatchBudget = 16;    // asynchronous generations started per step; >= 1
-  uint32_t maxInFlight = 64;       // asynchronous generations in flight at once; >= 1
+  double budget_MiB = 256.0;     // resident meshes; > 0
+  uint32_t dispatchBudget = 16;  // asynchronous generations started per step; >= 1
+  uint32_t maxInFlight = 64;     // asynchronous generations in flight at once; >= 1
 };
 
 Status validateCollisionPoolConfig(const CollisionPoolConfig& config);
@@ -44,10 +44,10 @@ struct CollisionPoolStats {
   uint64_t generatedSync = 0;   // predicted contacts that had to wait for their mesh
   uint64_t generatedAsync = 0;  // meshes that arrived through the queue
   uint64_t evicted = 0;
-  uint64_t droppedLate = 0;     // asynchronous results for nodes already generated synchronously
+  uint64_t droppedLate = 0;  // asynchronous results for nodes already generated synchronously
   uint32_t resident = 0;
   uint32_t inFlight = 0;
-  uint32_t queued = 0;          // requests of this step not started
+  uint32_t queued = 0;  // requests of this step not started
   size_t residentBytes = 0;
   double residentMiB() const { return double(residentBytes) / (1024.0 * 1024.0); }
 };
@@ -102,8 +102,8 @@ class CollisionMeshPool {
   size_t budgetBytes_ = 0;
   size_t meshBytes_ = 0;
   uint64_t step_ = 0;
-  uint64_t roundStep_ = 0;   // step of the newest round of requests
-  size_t nextPending_ = 0;   // first request of the round not yet looked at by dispatch()
+  uint64_t roundStep_ = 0;  // step of the newest round of requests
+  size_t nextPending_ = 0;  // first request of the round not yet looked at by dispatch()
   std::unordered_map<uint64_t, Entry> entries_;
   std::vector<std::pair<double, uint64_t>> pending_;  // (distance, key) of the newest round
   std::vector<CollisionMesh> finished_;

@@ -23,7 +23,8 @@ void descend(const FaceMapping& mapping, const glm::dvec3& queryDirection, doubl
     out.push_back({node, std::max(0.0, gap) * minSurfaceRadius_m});
     return;
   }
-  for (int q = 0; q < 4; ++q) descend(mapping, queryDirection, queryArc_rad, node.child(q), level, minSurfaceRadius_m, out);
+  for (int q = 0; q < 4; ++q)
+    descend(mapping, queryDirection, queryArc_rad, node.child(q), level, minSurfaceRadius_m, out);
 }
 
 }  // namespace
@@ -35,8 +36,8 @@ double nodeAngularRadius(const FaceMapping& mapping, const NodeId& node) {
   return std::acos(std::clamp(minCos, -1.0, 1.0));
 }
 
-void selectCollisionNodes(const FaceMapping& mapping, double minSurfaceRadius_m, const CollisionQuery& query,
-                          int level, std::vector<SelectedCollisionNode>& out) {
+void selectCollisionNodes(const FaceMapping& mapping, double minSurfaceRadius_m, const CollisionQuery& query, int level,
+                          std::vector<SelectedCollisionNode>& out) {
   const double length = glm::length(query.position_m);
   if (!(length > 0.0)) return;
   const glm::dvec3 direction = query.position_m / length;

@@ -31,8 +31,8 @@ double nodeAngularRadius(const FaceMapping& mapping, const NodeId& node);
 // direction, measured as an arc on the sphere of radius `minSurfaceRadius_m` (the lowest the
 // surface gets, so the arc is never underestimated). Conservative: may include a node slightly
 // beyond the radius, never misses one within it. Deterministic order (face, then quadrant order).
-void selectCollisionNodes(const FaceMapping& mapping, double minSurfaceRadius_m, const CollisionQuery& query,
-                          int level, std::vector<SelectedCollisionNode>& out);
+void selectCollisionNodes(const FaceMapping& mapping, double minSurfaceRadius_m, const CollisionQuery& query, int level,
+                          std::vector<SelectedCollisionNode>& out);
 
 // An object's motion over the next step.
 struct BodyMotion {

@@ -62,10 +62,9 @@ CollisionSelectionRound CollisionSelectionWorker::selectRound(const std::vector<
       }
     }
   }
-  std::stable_sort(result.nodes.begin(), result.nodes.end(),
-                   [](const SelectedCollisionNode& a, const SelectedCollisionNode& b) {
-                     return a.distance_m < b.distance_m;
-                   });
+  std::stable_sort(
+      result.nodes.begin(), result.nodes.end(),
+      [](const SelectedCollisionNode& a, const SelectedCollisionNode& b) { return a.distance_m < b.distance_m; });
   result.select_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

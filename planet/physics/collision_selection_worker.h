@@ -17,9 +17,9 @@
 namespace globe {
 
 struct CollisionSelectionRound {
-  uint64_t round = 0;                         // submit() count this answers
-  std::vector<SelectedCollisionNode> nodes;   // deduplicated, nearest distance per node, sorted nearest first
-  double select_ms = 0.0;                     // worker time of the round
+  uint64_t round = 0;                        // submit() count this answers
+  std::vector<SelectedCollisionNode> nodes;  // deduplicated, nearest distance per node, sorted nearest first
+  double select_ms = 0.0;                    // worker time of the round
 };
 
 class CollisionSelectionWorker {

@@ -29,6 +29,12 @@ std::string_view dropSiteKindName(DropSiteKind kind) {
   return "random";
 }
 
+TangentFrame tangentFrame(const glm::dvec3& up) {
+  const glm::dvec3 axis = std::abs(up.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+  const glm::dvec3 east = glm::normalize(glm::cross(axis, up));
+  return {east, glm::cross(up, east)};
+}
+
 std::vector<DropSite> specialDropSites() {
   const Triacontahedron& t = Triacontahedron::get();
   const RhombusFaceMapping& mapping = RhombusFaceMapping::get();
@@ -48,9 +54,11 @@ std::vector<DropSite> specialDropSites() {
     }
   }
   for (double lat : {0.0, 30.0, -30.0, 60.0, -60.0})
-    for (double lon : {180.0, -179.9999}) antimeridian.push_back({directionFromLatLon(lat, lon), DropSiteKind::kAntimeridian});
+    for (double lon : {180.0, -179.9999})
+      antimeridian.push_back({directionFromLatLon(lat, lon), DropSiteKind::kAntimeridian});
   // Interleave: vertex, seam, antimeridian, vertex, ... with the poles first.
-  std::stable_partition(vertices.begin(), vertices.end(), [](const DropSite& s) { return s.kind == DropSiteKind::kPole; });
+  std::stable_partition(vertices.begin(), vertices.end(),
+                        [](const DropSite& s) { return s.kind == DropSiteKind::kPole; });
   std::vector<DropSite> out;
   for (size_t k = 0; out.size() < vertices.size() + seams.size() + antimeridian.size(); ++k) {
     if (k < vertices.size()) out.push_back(vertices[k]);
@@ -80,8 +88,7 @@ std::vector<DropSite> scatteredDropSites(uint32_t count, std::mt19937_64& rng) {
 std::vector<DropSite> clusteredDropSites(uint32_t count, const glm::dvec3& centre, double radius_m,
                                          double sphereRadius_m, std::mt19937_64& rng) {
   const glm::dvec3 up = glm::normalize(centre);
-  const glm::dvec3 axis = std::abs(up.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
-  const glm::dvec3 east = glm::normalize(glm::cross(axis, up)), north = glm::cross(up, east);
+  const auto [east, north] = tangentFrame(up);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::vector<DropSite> sites;
   for (uint32_t k = 0; k < count; ++k) {

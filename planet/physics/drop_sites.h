@@ -15,6 +15,13 @@ namespace globe {
 enum class DropSiteKind : uint8_t { kVertex, kPole, kSeam, kAntimeridian, kRandom, kCluster };
 std::string_view dropSiteKindName(DropSiteKind kind);
 
+// Two unit vectors spanning the tangent plane at unit `up` (any rotation about it): body
+// footprints, clusters and error probes are laid out in it.
+struct TangentFrame {
+  glm::dvec3 east{1.0, 0.0, 0.0}, north{0.0, 1.0, 0.0};
+};
+TangentFrame tangentFrame(const glm::dvec3& up);
+
 struct DropSite {
   glm::dvec3 direction{0.0, 0.0, 1.0};  // unit
   DropSiteKind kind = DropSiteKind::kRandom;

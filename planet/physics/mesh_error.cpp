@@ -1,6 +1,7 @@
 #include "planet/physics/mesh_error.h"
 
 #include "planet/analysis/percentile.h"
+#include "planet/physics/drop_sites.h"
 #include "planet/streaming/payload_reference.h"
 
 #include <glm/geometric.hpp>
@@ -21,8 +22,7 @@ double drawnMinusExact(const ElevationModel& model, const glm::dvec3& direction,
 }  // namespace
 
 double meshErrorNear(const ElevationModel& model, const glm::dvec3& centre, double arc_m, int level, uint32_t cells) {
-  const glm::dvec3 axis = std::abs(centre.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
-  const glm::dvec3 east = glm::normalize(glm::cross(axis, centre)), north = glm::cross(centre, east);
+  const auto [east, north] = tangentFrame(centre);
   double worst = 0.0;
   for (int a = -4; a <= 4; ++a) {
     for (int b = -4; b <= 4; ++b) {

@@ -16,7 +16,7 @@ double meshErrorNear(const ElevationModel& model, const glm::dvec3& centre, doub
 
 struct MeshErrorStats {
   double p50_m = 0.0, p99_m = 0.0, max_m = 0.0;  // of |drawn - exact| at uniform random directions
-  double meanSigned_m = 0.0;                      // mean of drawn - exact
+  double meanSigned_m = 0.0;                     // mean of drawn - exact
   uint32_t samples = 0;
 };
 

@@ -56,9 +56,9 @@ glm::dquat randomOrientation(std::mt19937_64& rng) {
 std::vector<PlacedBody> placeBodies(const ElevationModel& model, const ScenarioSettings& settings) {
   std::mt19937_64 rng(settings.seed);
   const std::vector<DropSite> sites =
-      settings.clustered ? clusteredDropSites(settings.bodies, settings.clusterCentre, settings.clusterRadius_m,
-                                              model.radius_m(), rng)
-                         : scatteredDropSites(settings.bodies, rng);
+      settings.clustered
+          ? clusteredDropSites(settings.bodies, settings.clusterCentre, settings.clusterRadius_m, model.radius_m(), rng)
+          : scatteredDropSites(settings.bodies, rng);
   std::uniform_real_distribution<double> drop(settings.minDrop_m, settings.maxDrop_m);
   std::uniform_real_distribution<double> size(settings.minSize_m, settings.maxSize_m);
   std::vector<PlacedBody> out;
@@ -74,8 +74,7 @@ std::vector<PlacedBody> placeBodies(const ElevationModel& model, const ScenarioS
     // point starts at least `height` above the exact surface.
     const double extent = boundingRadiusOf(b.spec.shape, b.spec.size_m);
     const glm::dvec3 up = b.site.direction;
-    const glm::dvec3 axis = std::abs(up.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
-    const glm::dvec3 east = glm::normalize(glm::cross(axis, up)), north = glm::cross(up, east);
+    const auto [east, north] = tangentFrame(up);
     double ground = -std::numeric_limits<double>::infinity();
     for (int a = -1; a <= 1; ++a)
       for (int c = -1; c <= 1; ++c) {

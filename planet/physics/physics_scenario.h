@@ -21,12 +21,12 @@ struct ScenarioSettings {
   uint32_t bodies = 100;
   uint64_t seed = 1;
   ShapeMix shapes = ShapeMix::kMixed;
-  bool clustered = false;           // all within clusterRadius_m of clusterCentre instead of scattered
+  bool clustered = false;  // all within clusterRadius_m of clusterCentre instead of scattered
   glm::dvec3 clusterCentre{1.0, 0.0, 0.0};
   double clusterRadius_m = 100.0;
   double minDrop_m = 1.0, maxDrop_m = 100.0;  // lowest point above the exact ground at the start
   double minSize_m = 0.5, maxSize_m = 2.0;
-  double downwardSpeed_m_s = 0.0;   // initial speed towards the centre (impact tests)
+  double downwardSpeed_m_s = 0.0;  // initial speed towards the centre (impact tests)
 };
 
 struct PlacedBody {

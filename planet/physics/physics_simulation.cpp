@@ -55,7 +55,8 @@ uint32_t PhysicsSimulation::addBody(const BodySpec& spec) { return world_->addBo
 double PhysicsSimulation::surfaceMaxRadius(const glm::dvec3& position_m, double arc_m) const {
   const glm::dvec3 direction = glm::normalize(position_m);
   const NodeId below = nodeAt(RhombusFaceMapping::get().locate(direction), settings_.level);
-  if (const CollisionMesh* mesh = pool_->mesh(below); mesh && arc_m <= 0.25 * nominalNodeWidth(below.level, model_.radius_m()))
+  if (const CollisionMesh* mesh = pool_->mesh(below);
+      mesh && arc_m <= 0.25 * nominalNodeWidth(below.level, model_.radius_m()))
     return mesh->radius.max_m;
   return model_.radius_m() + model_.elevation_m(direction) + slopeBound_ * arc_m;
 }

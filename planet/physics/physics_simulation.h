@@ -21,9 +21,9 @@
 namespace globe {
 
 struct SimulationSettings {
-  int level = 14;                    // collision node level L
-  double interestRadius_m = 32.0;    // radius of interest R around each body (added to its size)
-  PhysicsSettings physics;           // planetRadius_m and surfaceGravity_m_s2 come from the model
+  int level = 14;                  // collision node level L
+  double interestRadius_m = 32.0;  // radius of interest R around each body (added to its size)
+  PhysicsSettings physics;         // planetRadius_m and surfaceGravity_m_s2 come from the model
   CollisionPoolConfig pool;
 };
 
@@ -36,7 +36,7 @@ struct SimulationStats {
   uint64_t predictedContacts = 0;  // body-steps with a predicted contact
   uint64_t predictedMissing = 0;   // of those, nodes that were not resident (each generated synchronously)
   uint64_t selectionRounds = 0;
-  double selection_ms = 0.0;       // worker time, all rounds
+  double selection_ms = 0.0;  // worker time, all rounds
 };
 
 class PhysicsSimulation {

@@ -39,17 +39,17 @@ struct PhysicsSettings {
   double surfaceGravity_m_s2 = 9.81;  // at planetRadius_m
   double step_s = 1.0 / 120.0;
   // Bullet multiplies the two objects' coefficients; the terrain's are 1, so these are the pair's.
-  double friction = 1.0;              // holds a box on slopes up to 45 degrees
+  double friction = 1.0;  // holds a box on slopes up to 45 degrees
   // Rolling resistance of spheres and capsules (dimensionless, torque / (weight · radius)), so they
   // stop on slopes like boxes do. Bullet caps a contact's rolling-friction impulse at the
   // coefficient itself, so the body's coefficient is set to this times radius · m · g · step.
   double rollingResistance = 1.0;
-  double linearDamping = 0.05;        // per second: air drag, small
-  double angularDamping = 0.3;        // per second: lets rolling and tumbling die out
+  double linearDamping = 0.05;  // per second: air drag, small
+  double angularDamping = 0.3;  // per second: lets rolling and tumbling die out
   double restitution = 0.1;
-  double sleepLinear_m_s = 0.04;      // below both for Bullet's deactivation time (2 s) -> asleep
+  double sleepLinear_m_s = 0.04;  // below both for Bullet's deactivation time (2 s) -> asleep
   double sleepAngular_rad_s = 0.1;
-  double meshMargin_m = 0.0;          // collision margin of the terrain triangles
+  double meshMargin_m = 0.0;  // collision margin of the terrain triangles
 };
 
 struct BodyState {

@@ -28,8 +28,7 @@ TEST_F(CollisionMeshGpuTest, MeshesAreTheDrawnPayloadsAndMatchTheCpuReference) {
   source.collect(meshes);
   ASSERT_EQ(meshes.size(), 2u) << "and no later than latencySteps (2) steps";
   const CollisionMesh now = source.generateNow(a);
-  EXPECT_EQ(std::memcmp(now.vertices_m.data(), meshes[0].vertices_m.data(), now.vertices_m.size() * sizeof(double)),
-            0);
+  EXPECT_EQ(std::memcmp(now.vertices_m.data(), meshes[0].vertices_m.data(), now.vertices_m.size() * sizeof(double)), 0);
 
   // The render payload of the same node, from the render generator.
   GpuPayloadGenerator render(device(), model, kCells, 8, 1);

@@ -1,8 +1,8 @@
 // The collision selection (planet/physics/collision_selection.h): complete within the radius of
 // interest across face seams and at polyhedron vertices, and the predicted-contact test.
+#include "planet/physics/collision_selection.h"
 #include "planet/geometry/face_mapping.h"
 #include "planet/lod/lod_ranges.h"
-#include "planet/physics/collision_selection.h"
 #include "planet/physics/collision_selection_worker.h"
 #include "planet/physics/drop_sites.h"
 
@@ -37,8 +37,7 @@ TEST(CollisionSelection, CoversTheRadiusAcrossSeamsAndVertices) {
     const std::set<uint64_t> keys = keysOf(nodes);
     ASSERT_EQ(keys.size(), nodes.size()) << "a node selected twice";
     const glm::dvec3 up = site.direction;
-    const glm::dvec3 axis = std::abs(up.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
-    const glm::dvec3 east = glm::normalize(glm::cross(axis, up)), north = glm::cross(up, east);
+    const auto [east, north] = tangentFrame(up);
     for (int k = 0; k < 400; ++k) {
       const double arc = radius / kRadius_m * std::sqrt(unit(rng)), az = 6.283185307179586 * unit(rng);
       const glm::dvec3 d = std::cos(arc) * up + std::sin(arc) * (std::cos(az) * east + std::sin(az) * north);

@@ -15,8 +15,8 @@
 namespace globe {
 namespace {
 
-constexpr int kLevel = 14;       // ~250 m nodes on the earthlike planet
-constexpr uint32_t kCells = 32;  // the renderer's default grid
+constexpr int kLevel = 14;                // ~250 m nodes on the earthlike planet
+constexpr uint32_t kCells = 32;           // the renderer's default grid
 constexpr double kContactSlack_m = 0.05;  // Bullet's penetration at rest and rounding
 
 const ElevationModel& testModel() {
@@ -69,9 +69,8 @@ void expectNoFallThrough(SimulationRun& run, uint32_t steps, const char* what) {
       ASSERT_FALSE(run.sim->world().rayCastMeshes(p, glm::normalize(p), 2000.0))
           << what << ": body " << id << " (" << dropSiteKindName(run.placed[id].site.kind)
           << ") fell through a mesh at step " << s;
-      ASSERT_GT(glm::length(p), floor) << what << ": body " << id << " ("
-                                       << dropSiteKindName(run.placed[id].site.kind) << ") under the ground at step "
-                                       << s;
+      ASSERT_GT(glm::length(p), floor) << what << ": body " << id << " (" << dropSiteKindName(run.placed[id].site.kind)
+                                       << ") under the ground at step " << s;
     }
   }
 }
@@ -88,8 +87,7 @@ TEST(PhysicsSimulation, BodiesComeToRestEverywhereWithinTheMeshError) {
   std::set<DropSiteKind> kinds;
   for (const BodyReport& r : reports) {
     const BodyState state = run.sim->world().state(r.id);
-    const double error =
-        meshErrorNear(testModel(), glm::normalize(state.position_m), 2.0 * r.size_m, kLevel, kCells);
+    const double error = meshErrorNear(testModel(), glm::normalize(state.position_m), 2.0 * r.size_m, kLevel, kCells);
     EXPECT_LT(r.speed_m_s, 0.05) << "body " << r.id << " (" << dropSiteKindName(r.site) << ") still moving";
     EXPECT_LE(std::abs(r.restHeight_m), error + kContactSlack_m)
         << "body " << r.id << " (" << dropSiteKindName(r.site) << ", " << bodyShapeName(r.shape)
