@@ -22,7 +22,7 @@ GpuCollisionMeshSource::GpuCollisionMeshSource(vk::Device& device, const Elevati
     : device_(device),
       generator_(device, model, cells, std::min<uint32_t>(maxInFlight, GLOBE_PAYLOAD_MAX_BATCH), 4),
       syncSlot_(maxInFlight),
-      latencySteps_(std::max<uint32_t>(latencySteps, 1)),
+      latencySteps_(latencySteps),
       readback_(device, VkDeviceSize(maxInFlight + 1) * positionBlockBytes(cells), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                 vk::MemoryUse::HostVisible, "collision mesh readback") {
   generator_.reserveSlots(maxInFlight + 1);
@@ -38,7 +38,7 @@ void GpuCollisionMeshSource::generate(std::span<const NodeId> nodes) {
     const uint32_t slot = freeSlots_.back();
     freeSlots_.pop_back();
     jobs.push_back({node, slot});
-    jobs_.push_back({node, slot, collects_ + latencySteps_, false});
+    jobs_.push_back({node, slot, collects_ + std::max<uint32_t>(latencySteps_, 1), false});
   }
   if (!jobs.empty()) generator_.generate(jobs);
 }
@@ -75,16 +75,16 @@ CollisionMesh GpuCollisionMeshSource::meshFromReadback(const NodeId& node, uint3
 void GpuCollisionMeshSource::collect(std::vector<CollisionMesh>& finished) {
   ++collects_;
   poll();
-  // Deterministic hand-out: whatever is due now is waited for.
-  if (std::any_of(jobs_.begin(), jobs_.end(), [&](const Job& j) { return !j.done && j.collectBy <= collects_; })) {
+  // Deterministic hand-out: whatever is due now is waited for, and only what is due is handed out.
+  const bool deterministic = latencySteps_ > 0;
+  if (deterministic &&
+      std::any_of(jobs_.begin(), jobs_.end(), [&](const Job& j) { return !j.done && j.collectBy <= collects_; })) {
     generator_.waitIdle();
     poll();
   }
-  // Only jobs due by this call, and only in submission order, so the result never depends on when
-  // a fence happened to be seen.
   std::vector<Job> ready;
-  while (!jobs_.empty() && jobs_.front().collectBy <= collects_) {
-    assert(jobs_.front().done);
+  while (!jobs_.empty() && jobs_.front().collectBy <= collects_ && (jobs_.front().done || !deterministic)) {
+    if (!jobs_.front().done) break;
     ready.push_back(jobs_.front());
     jobs_.pop_front();
   }

@@ -5,9 +5,10 @@
 // into a host-visible buffer and widened into a CollisionMesh. The meshes are therefore bit-
 // identical to what the renderer draws at that level, seams included.
 //
-// Timing is deterministic in steps: a generation started by generate() is handed out by the
-// collect() call `latencySteps` calls later at the latest (waiting for its fence then if needed),
-// never earlier than the next one; generateNow() waits for one node.
+// collect() hands out finished generations in submission order without waiting (`latencySteps` 0,
+// the default: a slow GPU never stalls a physics step), or, with `latencySteps` N >= 1, exactly the
+// generations started N collect() calls ago, waiting for their fences if needed: then which step a
+// mesh arrives at never depends on GPU timing (deterministic runs). generateNow() waits for one node.
 #include "engine/generation/payload_generator.h"
 #include "engine/vk/device.h"
 #include "engine/vk/vk_handles.h"
@@ -21,9 +22,9 @@ namespace globe {
 class GpuCollisionMeshSource final : public CollisionMeshSource {
  public:
   // `device` and `model` must outlive the source. `maxInFlight` asynchronous slots (one more is
-  // kept for generateNow); `latencySteps` >= 1.
+  // kept for generateNow); `latencySteps` as above.
   GpuCollisionMeshSource(vk::Device& device, const ElevationModel& model, uint32_t cells, uint32_t maxInFlight,
-                         uint32_t latencySteps = 2);
+                         uint32_t latencySteps = 0);
   ~GpuCollisionMeshSource() override;
 
   uint32_t cells() const override { return generator_.cells(); }

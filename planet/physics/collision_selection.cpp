@@ -12,21 +12,6 @@ namespace {
 // Slack on the angular test (radians) for the rounding of corner directions and acos.
 constexpr double kAngleSlack_rad = 1e-9;
 
-void descend(const FaceMapping& mapping, const glm::dvec3& queryDirection, double queryArc_rad, const NodeId& node,
-             int level, double minSurfaceRadius_m, std::vector<SelectedCollisionNode>& out) {
-  const glm::dvec3 centre = nodeCentreDirection(mapping, node);
-  const double angle = std::acos(std::clamp(glm::dot(centre, queryDirection), -1.0, 1.0));
-  const double nodeRadius = nodeAngularRadius(mapping, node);
-  const double gap = angle - nodeRadius;
-  if (gap > queryArc_rad + kAngleSlack_rad) return;
-  if (node.level == level) {
-    out.push_back({node, std::max(0.0, gap) * minSurfaceRadius_m});
-    return;
-  }
-  for (int q = 0; q < 4; ++q)
-    descend(mapping, queryDirection, queryArc_rad, node.child(q), level, minSurfaceRadius_m, out);
-}
-
 }  // namespace
 
 double nodeAngularRadius(const FaceMapping& mapping, const NodeId& node) {
@@ -42,8 +27,25 @@ void selectCollisionNodes(const FaceMapping& mapping, double minSurfaceRadius_m,
   if (!(length > 0.0)) return;
   const glm::dvec3 direction = query.position_m / length;
   const double arc = query.radius_m / minSurfaceRadius_m;
-  for (int face = 0; face < 30; ++face)
-    descend(mapping, direction, arc, NodeId{uint8_t(face), 0, 0, 0}, level, minSurfaceRadius_m, out);
+  // Flood fill from the node under the query across node edges (and so across face seams): the
+  // nodes a connected cap meets are connected through edges they share inside it, so expanding only
+  // nodes that pass the test reaches all of them, at the cost of the few nodes near the query.
+  std::vector<NodeId> frontier{nodeAt(mapping.locate(direction), level)};
+  std::vector<uint64_t> seen{frontier.front().key()};
+  while (!frontier.empty()) {
+    const NodeId node = frontier.back();
+    frontier.pop_back();
+    const double angle = std::acos(std::clamp(glm::dot(nodeCentreDirection(mapping, node), direction), -1.0, 1.0));
+    const double gap = angle - nodeAngularRadius(mapping, node);
+    if (gap > arc + kAngleSlack_rad) continue;
+    out.push_back({node, std::max(0.0, gap) * minSurfaceRadius_m});
+    for (int e = 0; e < 4; ++e) {
+      const NodeId next = edgeNeighbour(node, e);
+      if (std::find(seen.begin(), seen.end(), next.key()) != seen.end()) continue;
+      seen.push_back(next.key());
+      frontier.push_back(next);
+    }
+  }
 }
 
 CollisionQuery sweptContactQuery(const BodyMotion& motion, double step_s, double margin_m) {

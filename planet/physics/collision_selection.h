@@ -1,7 +1,7 @@
 #pragma once
 // Which collision nodes an object needs [Frasson 2018, §3.4]: the nodes at one fixed level L whose
-// surface patch comes within a radius of interest of the object, found by descending the 30
-// quadtrees from their roots (so face seams and polyhedron vertices need no special case), and
+// surface patch comes within a radius of interest of the object, found by a flood fill over node
+// edges that crosses face seams like any other edge (polyhedron vertices need no special case), and
 // the predicted-contact test that decides which of them must exist before the next physics step.
 #include "planet/geometry/face_mapping.h"
 #include "planet/geometry/node_bounds.h"
@@ -30,7 +30,8 @@ double nodeAngularRadius(const FaceMapping& mapping, const NodeId& node);
 // Appends to `out` every node at `level` whose patch lies within query.radius_m of the query's
 // direction, measured as an arc on the sphere of radius `minSurfaceRadius_m` (the lowest the
 // surface gets, so the arc is never underestimated). Conservative: may include a node slightly
-// beyond the radius, never misses one within it. Deterministic order (face, then quadrant order).
+// beyond the radius, never misses one within it. Deterministic order. Cost: the nodes found and
+// their edge neighbours (a flood fill across edges and face seams), not the quadtree depth.
 void selectCollisionNodes(const FaceMapping& mapping, double minSurfaceRadius_m, const CollisionQuery& query, int level,
                           std::vector<SelectedCollisionNode>& out);
 

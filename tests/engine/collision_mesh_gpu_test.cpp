@@ -18,7 +18,7 @@ class CollisionMeshGpuTest : public GpuTest {};
 
 TEST_F(CollisionMeshGpuTest, MeshesAreTheDrawnPayloadsAndMatchTheCpuReference) {
   const ElevationModel& model = earthlikeModel();
-  GpuCollisionMeshSource source(device(), model, kCells, 8);
+  GpuCollisionMeshSource source(device(), model, kCells, 8, /*latencySteps=*/2);
   const NodeId a{7, 14, 0, 9000}, b = edgeNeighbour(a, kEdgeMinusU);
   const std::vector<NodeId> nodes{a, b};
   source.generate(nodes);
