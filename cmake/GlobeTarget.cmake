@@ -34,6 +34,13 @@ endfunction()
 # Headers are included by their path from the source root ("engine/vk/device.h").
 function(globe_add_library name)
   file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp ${CMAKE_CURRENT_SOURCE_DIR}/*/*.cpp)
+  # A subfolder with its own CMakeLists.txt is a library of its own (planet/physics), not part of this one.
+  foreach(source IN LISTS sources)
+    get_filename_component(folder ${source} DIRECTORY)
+    if(NOT folder STREQUAL CMAKE_CURRENT_SOURCE_DIR AND EXISTS ${folder}/CMakeLists.txt)
+      list(REMOVE_ITEM sources ${source})
+    endif()
+  endforeach()
   add_library(globe_${name} STATIC ${sources})
   add_library(globe::${name} ALIAS globe_${name})
   set_target_properties(globe_${name} PROPERTIES EXPORT_NAME ${name})

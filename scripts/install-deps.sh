@@ -18,6 +18,8 @@ PACKAGES=(
   libpugixml-dev libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
   # overlay of the windowed viewer; vertex-cache order of the terrain grid
   libimgui-dev libmeshoptimizer-dev
+  # rigid-body physics on collision meshes (its double-precision build, planet/physics)
+  libbullet-dev
   # tests and benchmarks (libnoise is the benchmark's comparison peer)
   libgtest-dev libgmock-dev libbenchmark-dev libnoise-dev xvfb xauth
   # the formatting check of the test suite; readelf for the consumer check (binutils)

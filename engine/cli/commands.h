@@ -16,9 +16,10 @@ void addViewCommand(CLI::App& app, Runner& run);
 void addPlanetCommand(CLI::App& app, Runner& run);  // globe planet check|stats|sample|export
 // `commandLine`: the whole invocation, recorded in the benchmark report.
 void addBenchCommand(CLI::App& app, Runner& run, const std::string& commandLine);
-void addTradeCommand(CLI::App& app, Runner& run);  // globe trade: speed/accuracy sweep
-void addPathCommand(CLI::App& app, Runner& run);   // globe path import|export: KML tours, CZML
-void addMovieCommand(CLI::App& app, Runner& run);  // globe movie: PNG/EXR sequences, MP4
+void addTradeCommand(CLI::App& app, Runner& run);    // globe trade: speed/accuracy sweep
+void addPathCommand(CLI::App& app, Runner& run);     // globe path import|export: KML tours, CZML
+void addMovieCommand(CLI::App& app, Runner& run);    // globe movie: PNG/EXR sequences, MP4
+void addPhysicsCommand(CLI::App& app, Runner& run);  // globe physics: bodies on the collision meshes
 void addBakeCommand(CLI::App& app, Runner& run);   // globe bake: quantized-mesh / COG terrain tiles
 
 // Exit codes shared by every command.

@@ -51,6 +51,7 @@ int main(int argc, char** argv) {
   addPathCommand(app, run);
   addMovieCommand(app, run);
   addBakeCommand(app, run);
+  addPhysicsCommand(app, run);
 
   try {
     app.parse(argc, argv);

@@ -6,16 +6,37 @@
 #include "engine/render/sphere_preview.h"
 #include "engine/vk/device.h"
 #include "options.h"
+#include "planet/analysis/terrain_queries.h"
 #include "planet/camera/camera.h"
 #include "planet/core/atomic_file.h"
 #include "planet/elevation/planet_file.h"
 #include "planet/streaming/payload_reference.h"
+#include "render_terrain.h"
 #include "terrain_warnings.h"
 
 #include <algorithm>
 #include <cstdio>
 
 namespace globe::cli {
+
+// One converged terrain frame: waits until every node the view needs is resident before drawing.
+Result<ImageRgba> renderTerrain(vk::Device& device, const Camera& camera, const ElevationModel& model,
+                                const PlanetDescription& planet, TerrainSettings settings, uint32_t width,
+                                uint32_t height) {
+  settings.style.sunDirection = defaultSunDirection(camera.position_m);
+  settings.style.ramp = planet.colour_ramp;
+  auto terrain = Terrain::create(device, model, settings);
+  if (!terrain) return budgetOptionError(terrain.error());
+  HeadlessRenderer renderer(device, {width, height});
+  FrameStats stats = renderer.renderFrame(**terrain, camera, true);
+  TerrainWarnings().printNew(**terrain);
+  std::printf("%u nodes (%u partial), %llu triangles, %u payloads resident (%.1f MiB), frame %.1f ms (GPU %.1f ms)\n",
+              stats.nodes_selected, stats.nodes_partial, (unsigned long long)stats.triangles,
+              (*terrain)->pool().stats().residentNodes, stats.resident_mib, stats.frame_ms, stats.gpu_ms);
+  if ((*terrain)->depthCap() < settings.ranges.maxDepth)
+    std::printf("frame budget: levels up to %d of %d\n", (*terrain)->depthCap(), settings.ranges.maxDepth);
+  return toImage(renderer.readback(), camera);
+}
 
 namespace {
 
@@ -44,24 +65,6 @@ ImageRgba renderSphere(vk::Device& device, const Camera& camera, const Elevation
   return toImage(target.readback(), camera);
 }
 
-// One converged terrain frame: waits until every node the view needs is resident before drawing.
-Result<ImageRgba> renderTerrain(vk::Device& device, const Camera& camera, const ElevationModel& model,
-                                const PlanetDescription& planet, TerrainSettings settings, const ImageSize& size) {
-  settings.style.sunDirection = defaultSunDirection(camera.position_m);
-  settings.style.ramp = planet.colour_ramp;
-  auto terrain = Terrain::create(device, model, settings);
-  if (!terrain) return budgetOptionError(terrain.error());
-  HeadlessRenderer renderer(device, {size.width, size.height});
-  FrameStats stats = renderer.renderFrame(**terrain, camera, true);
-  TerrainWarnings().printNew(**terrain);
-  std::printf("%u nodes (%u partial), %llu triangles, %u payloads resident (%.1f MiB), frame %.1f ms (GPU %.1f ms)\n",
-              stats.nodes_selected, stats.nodes_partial, (unsigned long long)stats.triangles,
-              (*terrain)->pool().stats().residentNodes, stats.resident_mib, stats.frame_ms, stats.gpu_ms);
-  if ((*terrain)->depthCap() < settings.ranges.maxDepth)
-    std::printf("frame budget: levels up to %d of %d\n", (*terrain)->depthCap(), settings.ranges.maxDepth);
-  return toImage(renderer.readback(), camera);
-}
-
 int runRender(const RenderOptions& o) {
   auto pose = parsePose(o.at, "--at");
   if (!pose) return usageError(pose.error());
@@ -80,9 +83,10 @@ int runRender(const RenderOptions& o) {
   glm::dvec3 down = directionFromLatLon(pose->latitude_deg, pose->longitude_deg);
   // Heights are above what is drawn: the finest mesh can lie decimetres above the true ground
   // (Terrain::cameraGroundRadius), and a low camera under it would see through the planet.
-  double ground = model.radius_m() + model.elevation_m(down);
-  if (o.mode == "terrain")
-    ground = std::max(ground, drawnSurfaceRadius(model, down, settings->ranges.maxDepth, settings->gridCells));
+  const TerrainQueries queries(model);
+  const double ground = o.mode == "terrain"
+                            ? queries.cameraFloorRadius(down, settings->ranges.maxDepth, settings->gridCells)
+                            : model.radius_m() + queries.exactHeight_m(down);
   Camera camera = cameraFromPose(*pose, ground, model.radius_m(), aspect);
 
   vk::Device device(deviceOptions(o.device));
@@ -91,7 +95,7 @@ int runRender(const RenderOptions& o) {
   if (o.mode == "sphere") {
     image = renderSphere(device, camera, model, *size);
   } else {
-    auto terrain = renderTerrain(device, camera, model, *planet, *settings, *size);
+    auto terrain = renderTerrain(device, camera, model, *planet, *settings, size->width, size->height);
     if (!terrain) return usageError(terrain.error());
     image = std::move(*terrain);
   }

@@ -12,7 +12,8 @@ constexpr double kReferenceRadius_m = 6371000.0;
 
 double groundRadiusBelow(const glm::dvec3& /*direction*/) { return kReferenceRadius_m; }
 
-FlyCamera::FlyCamera(const GeodeticPose& pose, double sphereRadius_m, GroundQuery ground) : ground_(std::move(ground)) {
+FlyCamera::FlyCamera(const GeodeticPose& pose, double sphereRadius_m, GroundQuery ground, MoveGuard guard)
+    : ground_(std::move(ground)), guard_(std::move(guard)) {
   glm::dvec3 dir = directionFromLatLon(pose.latitude_deg, pose.longitude_deg);
   Camera start = cameraFromPose(pose, ground_(dir), sphereRadius_m, 1.0);
   position_m_ = start.position_m;
@@ -61,7 +62,9 @@ void FlyCamera::update(const FlyControls& c, double dt_s) {
   double length = glm::length(move);
   if (length > 1.0) move /= length;  // diagonals are not faster
   double speed = speed_mps() * (c.boost ? kBoost : 1.0);
-  position_m_ += move * (speed * dt_s);
+  const glm::dvec3 target = position_m_ + move * (speed * dt_s);
+  // However fast: a move that would cross the terrain stops short of it.
+  position_m_ = guard_ ? guard_(position_m_, target) : target;
 
   // Never below the ground.
   double r = glm::length(position_m_);

@@ -26,6 +26,9 @@ struct FlyControls {
 class FlyCamera {
  public:
   using GroundQuery = std::function<double(const glm::dvec3& direction)>;
+  // Where a move from `from` towards `to` may end without passing through the terrain (the
+  // viewer's is TerrainQueries::guardedMove); empty: only the radial floor below `to` applies.
+  using MoveGuard = std::function<glm::dvec3(const glm::dvec3& from, const glm::dvec3& to)>;
 
   static constexpr double kSpeedPerAltitude = 1.0;  // speed (m/s) per metre of altitude
   static constexpr double kMinSpeed_mps = 0.5;      // so the last metres are crossed in seconds
@@ -35,7 +38,8 @@ class FlyCamera {
   static constexpr double kTurn_rad_per_px = 0.0035;
   static constexpr double kMaxPitch_deg = 89.0;  // keeps forward off the vertical (stable right)
 
-  FlyCamera(const GeodeticPose& pose, double sphereRadius_m, GroundQuery ground = groundRadiusBelow);
+  FlyCamera(const GeodeticPose& pose, double sphereRadius_m, GroundQuery ground = groundRadiusBelow,
+            MoveGuard guard = {});
 
   // Advances by `dt_s` seconds of input.
   void update(const FlyControls& controls, double dt_s);
@@ -52,6 +56,7 @@ class FlyCamera {
   void clampPitch();
 
   GroundQuery ground_;
+  MoveGuard guard_;
   glm::dvec3 position_m_;
   glm::dvec3 forward_;  // unit
   double verticalFov_rad_;

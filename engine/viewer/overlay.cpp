@@ -155,6 +155,9 @@ void Overlay::build(const OverlayView& v) {
   ImGui_ImplVulkan_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
+  const ImU32 kBodyColours[3] = {IM_COL32(230, 30, 30, 255), IM_COL32(240, 215, 30, 255), IM_COL32(30, 215, 230, 255)};
+  for (const OverlayDisc& d : v.bodies)
+    ImGui::GetBackgroundDrawList()->AddCircleFilled(ImVec2(d.x_px, d.y_px), d.radius_px, kBodyColours[d.shape % 3]);
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_Always);
   ImGui::SetNextWindowBgAlpha(0.55f);
   ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
@@ -176,7 +179,8 @@ void Overlay::build(const OverlayView& v) {
                 s.gen_in_flight, s.gen_completed);
     ImGui::Text("memory %.1f MiB resident  evicted %u", s.resident_mib, s.evicted);
     ImGui::TextDisabled("%s | %s", v.planet.c_str(), v.deviceName.c_str());
-    ImGui::TextDisabled("F1/L view: %s | F12/P screenshot | R record path | Esc quit", v.debugView.c_str());
+    ImGui::TextDisabled("F1/L view: %s | F12/P screenshot | R record path | B drop a body | Esc quit",
+                        v.debugView.c_str());
     if (!v.recording.empty()) ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "%s", v.recording.c_str());
     if (!v.message.empty()) ImGui::TextUnformatted(v.message.c_str());
     if (!v.errors.empty()) {

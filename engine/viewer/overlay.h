@@ -22,6 +22,12 @@ using UniqueFramebuffer = DeviceHandle<VkFramebuffer, vkDestroyFramebuffer>;
 }  // namespace vk
 
 // Everything the overlay prints for one frame.
+// A dropped body on screen (engine/viewer/viewer_bodies.h): spheres red, boxes yellow, capsules cyan.
+struct OverlayDisc {
+  float x_px = 0, y_px = 0, radius_px = 0;
+  uint8_t shape = 0;  // BodyShape
+};
+
 struct OverlayView {
   FrameStats stats;
   double altitude_m = 0;  // camera height above the ground below it
@@ -34,6 +40,7 @@ struct OverlayView {
   std::string recording;            // path recording state; empty when not recording
   std::string message;              // e.g. the last screenshot or path written
   std::vector<std::string> errors;  // the planet file's errors (live reload), one per line
+  std::vector<OverlayDisc> bodies;  // dropped bodies (B), drawn behind the text
 };
 
 class Overlay {

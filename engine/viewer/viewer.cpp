@@ -7,6 +7,7 @@
 #include "engine/viewer/overlay.h"
 #include "engine/viewer/path_recorder.h"
 #include "engine/viewer/swapchain.h"
+#include "engine/viewer/viewer_bodies.h"
 #include "engine/viewer/window.h"
 #include "engine/vk/deferred_release_queue.h"
 #include "engine/vk/frame_ring.h"
@@ -77,7 +78,11 @@ struct Viewer::State {
         overlay(std::make_unique<Overlay>(d, w, swapchain)),
         // The scene outlives the camera (declared earlier), and is never replaced: a reload
         // swaps the planet inside it, so this query always sees the current ground.
-        camera(options.pose, scene->radius_m(), [this](const glm::dvec3& dir) { return scene->groundRadius(dir); }) {}
+        camera(
+            options.pose, scene->radius_m(), [this](const glm::dvec3& dir) { return scene->groundRadius(dir); },
+            [this](const glm::dvec3& from, const glm::dvec3& to) {
+              return scene->guardedCameraMove(from, to, FlyCamera::kMinClearance_m);
+            }) {}
 
   void handle(const InputEvent& e);
   bool recreateSwapchain();
@@ -95,6 +100,7 @@ struct Viewer::State {
   bool processInput();  // false: quit
   Camera stepCamera(double wall_s, Clock::time_point now);
   void buildOverlay(double wall_s, const Camera& cam);
+  void stepBodies(double step_s, const Camera& cam);
   void takeRequestedScreenshot(const Camera& cam);
 
   Window& window;
@@ -114,6 +120,8 @@ struct Viewer::State {
   bool quit = false;
   bool screenshotRequested = false;
   bool recordToggleRequested = false;
+  bool dropRequested = false;
+  std::unique_ptr<ViewerBodies> bodies;  // created by the first drop (B); reset on planet reload
   bool waitForReloadRequested = false;
   bool swapchainStale = false;
   std::string message;                    // shown in the overlay
@@ -191,6 +199,7 @@ void Viewer::State::handle(const InputEvent& e) {
         if (e.code == GLFW_KEY_F12 || e.code == GLFW_KEY_P) screenshotRequested = true;
         if (e.code == GLFW_KEY_F1 || e.code == GLFW_KEY_L) scene->cycleDebugView();
         if (e.code == GLFW_KEY_R) recordToggleRequested = true;
+        if (e.code == GLFW_KEY_B) dropRequested = true;
       } else {
         input.keysDown.erase(e.code);
       }
@@ -292,6 +301,7 @@ void Viewer::State::reportReload(const ReloadOutcome& outcome) {
   if (outcome.errors.empty()) {
     planetErrors.clear();
     if (outcome.reloaded) {
+      bodies.reset();  // they live on the old planet's meshes
       message = "reloaded " + file;
       printLine("planet reloaded: " + file + when);
     } else {
@@ -376,7 +386,21 @@ Camera Viewer::State::stepCamera(double wall_s, Clock::time_point now) {
   } else if (recorder.recording()) {
     recorder.advance(step_s, currentPose(cam));
   }
+  stepBodies(step_s, cam);
   return cam;
+}
+
+// B: a body where the view ray meets the ground; then every frame the bodies advance.
+void Viewer::State::stepBodies(double step_s, const Camera& cam) {
+  if (dropRequested && scene->mode() == ViewerMode::kTerrain) {
+    if (!bodies)
+      bodies = std::make_unique<ViewerBodies>(device, scene->terrain()->model(), scene->planet().surface_gravity_m_s2,
+                                              scene->terrain()->settings().gridCells);
+    message = bodies->dropWhereLooking(cam) ? "dropped body " + std::to_string(bodies->count())
+                                            : "no ground within 100 km along the view";
+  }
+  dropRequested = false;
+  if (bodies) bodies->advance(step_s);
 }
 
 void Viewer::State::buildOverlay(double wall_s, const Camera& cam) {
@@ -395,6 +419,7 @@ void Viewer::State::buildOverlay(double wall_s, const Camera& cam) {
   }
   view.message = message;
   view.errors = planetErrors;
+  if (bodies) view.bodies = bodies->discs(cam, double(target->extent().width), double(target->extent().height));
   overlay->build(view);
 }
 

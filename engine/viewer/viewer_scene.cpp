@@ -1,5 +1,7 @@
 #include "engine/viewer/viewer_scene.h"
 
+#include "planet/analysis/terrain_queries.h"
+
 #include "engine/vk/vk_check.h"
 #include "planet/elevation/planet_file.h"
 
@@ -134,6 +136,12 @@ std::string ViewerScene::debugViewName() const {
       return terrain_->renderer().wireframeSupported() ? "wireframe" : "wireframe (unsupported: LOD colours)";
   }
   return "";
+}
+
+glm::dvec3 ViewerScene::guardedCameraMove(const glm::dvec3& from_m, const glm::dvec3& to_m, double clearance_m) const {
+  if (!terrain_) return to_m;
+  return TerrainQueries(*model_).guardedMove(from_m, to_m, clearance_m, terrain_->settings().ranges.maxDepth,
+                                             terrain_->settings().gridCells);
 }
 
 double ViewerScene::groundRadius(const glm::dvec3& unitDirection) const {

@@ -63,6 +63,9 @@ class ViewerScene {
 
   // Ground radius below a unit direction (metres from the centre): the CPU reference height.
   double groundRadius(const glm::dvec3& unitDirection) const;
+  // A camera move from `from_m` towards `to_m` that never passes through the terrain (exact surface
+  // ray cast, then above the drawn mesh too; TerrainQueries::guardedMove). Sphere mode: `to_m`.
+  glm::dvec3 guardedCameraMove(const glm::dvec3& from_m, const glm::dvec3& to_m, double clearance_m) const;
   double radius_m() const { return model_->radius_m(); }
   const PlanetDescription& planet() const { return planet_; }
   const std::string& planetPath() const { return options_.planetPath; }

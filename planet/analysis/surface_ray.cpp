@@ -102,6 +102,7 @@ SurfaceRayHit SurfaceRayCaster::cast(const glm::dvec3& origin, const glm::dvec3&
     }
     glm::dvec3 p = origin + t * dir;
     if (glm::dot(p, p) > maxRadius_m_ * maxRadius_m_ && glm::dot(p, dir) > 0) return out;  // left: sky
+    if (t > options.maxDistance_m) return out;                                             // past the segment
     double minStep = std::max(options.tolerance_m, options.minStepFraction * t * options.pixelAngle_rad);
     previous = t;
     t += std::max(f / rate, minStep);

@@ -13,6 +13,7 @@
 #include "planet/elevation/elevation.h"
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace globe {
@@ -27,10 +28,11 @@ inline constexpr double kGradientNoiseSlopeBound = 4.0;
 double elevationSlopeBound(const gpu::ElevationParams& params);
 
 struct SurfaceRayOptions {
-  double tolerance_m = 1.0e-3;     // bisection stops when the bracket is this short
-  double pixelAngle_rad = 1.0e-3;  // angle of one pixel (sets the minimum step)
-  double minStepFraction = 0.05;   // minimum step, in pixel footprints
-  uint32_t maxSteps = 200000;      // a ray that needs more is reported unresolved
+  double tolerance_m = 1.0e-3;                                     // bisection stops when the bracket is this short
+  double pixelAngle_rad = 1.0e-3;                                  // angle of one pixel (sets the minimum step)
+  double minStepFraction = 0.05;                                   // minimum step, in pixel footprints
+  uint32_t maxSteps = 200000;                                      // a ray that needs more is reported unresolved
+  double maxDistance_m = std::numeric_limits<double>::infinity();  // sky beyond (segments, camera moves)
 };
 
 struct SurfaceRayHit {

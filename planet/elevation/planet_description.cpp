@@ -118,6 +118,10 @@ std::vector<Error> validatePlanetAll(const PlanetDescription& planet) {
   const bool radius_ok = std::isfinite(planet.radius_m) && planet.radius_m > 0.0 && planet.radius_m <= kMaxRadius_m;
   if (!radius_ok) fail("radius_m", fmt::format("must be > 0 and <= {:g} m", kMaxRadius_m));
   if (!inRange(planet.sea_level_m, -1e6, 1e6)) fail("sea_level_m", "must be finite and within [-1e6, 1e6] m");
+  if (!(std::isfinite(planet.surface_gravity_m_s2) && planet.surface_gravity_m_s2 > 0.0 &&
+        planet.surface_gravity_m_s2 <= 1e4)) {
+    fail("surface_gravity_m_s2", "must be > 0 and <= 1e4 m/s^2");
+  }
   if (planet.layers.empty() || planet.layers.size() > static_cast<std::size_t>(kMaxElevationLayers)) {
     fail("layers", fmt::format("need 1 to {} layers", kMaxElevationLayers));
   }

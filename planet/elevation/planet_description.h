@@ -71,6 +71,7 @@ struct PlanetDescription {
   std::uint64_t seed = 0;              // noise seed; every layer derives its own from it
   double sea_level_m = 0.0;            // elevation of the sea surface, metres (for rendering and stats)
   std::vector<ElevationLayer> layers;  // 1 .. kMaxElevationLayers, evaluated in order
+  double surface_gravity_m_s2 = 9.81;  // gravity at radius_m (physics, falling as 1/r^2), (0, 1e4]
   QualityPreset default_quality = QualityPreset::kBalanced;
   ColourRamp colour_ramp;  // surface colour by elevation and slope
 

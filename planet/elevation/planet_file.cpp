@@ -17,8 +17,9 @@
 namespace globe {
 namespace {
 
-constexpr std::string_view kTopKeys[] = {"name",   "radius_m",    "seed", "sea_level_m", "default_quality",
-                                         "layers", "colour_ramp", "rock", "snow"};
+constexpr std::string_view kTopKeys[] = {
+    "name",   "radius_m",    "seed", "sea_level_m", "surface_gravity_m_s2", "default_quality",
+    "layers", "colour_ramp", "rock", "snow"};
 constexpr std::string_view kStopKeys[] = {"elevation_m", "colour"};
 constexpr std::string_view kRockKeys[] = {"slope_deg", "blend_deg", "colour"};
 constexpr std::string_view kSnowKeys[] = {"elevation_m", "blend_m", "max_slope_deg", "colour"};
@@ -267,6 +268,8 @@ void readTopLevel(PlanetTomlReader& r, const std::string& k, const toml::node& n
     }
   } else if (k == "sea_level_m") {
     if (auto v = r.number(node, k)) planet.sea_level_m = *v;
+  } else if (k == "surface_gravity_m_s2") {
+    if (auto v = r.number(node, k)) planet.surface_gravity_m_s2 = *v;
   } else if (k == "default_quality") {
     if (auto v = r.string(node, k)) {
       if (auto preset = qualityPresetFromName(*v)) {

@@ -33,9 +33,11 @@ std::string formatPlanetToml(const PlanetDescription& planet) {
   assert(validatePlanet(planet).ok());
   std::string out;
   auto line = std::back_inserter(out);
-  fmt::format_to(line, "name = {}\nradius_m = {}\nseed = {}\nsea_level_m = {}\ndefault_quality = \"{}\"\n",
+  fmt::format_to(line,
+                 "name = {}\nradius_m = {}\nseed = {}\nsea_level_m = {}\nsurface_gravity_m_s2 = {}\n"
+                 "default_quality = \"{}\"\n",
                  quoted(planet.name), number(planet.radius_m), planet.seed, number(planet.sea_level_m),
-                 qualityPresetName(planet.default_quality));
+                 number(planet.surface_gravity_m_s2), qualityPresetName(planet.default_quality));
   for (const ElevationLayer& l : planet.layers) {
     fmt::format_to(line,
                    "\n[[layers]]\nname = {}\nkind = \"{}\"\noctaves = {}\nwavelength_m = {}\nlacunarity = {}\n"

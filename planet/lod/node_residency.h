@@ -15,13 +15,17 @@ namespace globe {
 
 // Queue order: lower first; within a priority, nearer first. Whatever the current view waits for
 // comes before any look-ahead, so prefetching can only use budget the view leaves over.
+// The collision meshes (planet/physics/collision_mesh_pool.h) share the order: a predicted contact
+// comes before everything, the objects' radius of interest after what the view waits for.
 enum class RequestPriority : int {
-  kVisible = 0,   // children of a visible node that wants to refine: the parent is drawn meanwhile
-  kRoot = 1,      // a visible root (level 0) that is not resident: nothing can be drawn there yet.
-                  // Only happens before anything under it is resident, so it never competes with
-                  // kVisible in practice; it sorts after it only nominally.
-  kPrefetch = 2,  // look-ahead: the next level below a node the camera approaches, and the ring of
-                  // frustum-culled nodes around the view (docs/streaming.md)
+  kContact = -1,   // collision: a body touches the node within the look-ahead; generated synchronously
+  kVisible = 0,    // children of a visible node that wants to refine: the parent is drawn meanwhile
+  kRoot = 1,       // a visible root (level 0) that is not resident: nothing can be drawn there yet.
+                   // Only happens before anything under it is resident, so it never competes with
+                   // kVisible in practice; it sorts after it only nominally.
+  kCollision = 2,  // collision: the node is within an object's radius of interest; asynchronous
+  kPrefetch = 3,   // look-ahead: the next level below a node the camera approaches, and the ring of
+                   // frustum-culled nodes around the view (docs/streaming.md)
 };
 
 class NodeResidency {

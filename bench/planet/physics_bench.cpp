@@ -1,0 +1,67 @@
+// Physics steps on the collision meshes (CPU reference meshes; the GPU ones are the same data):
+// ms per step for 1, 10, 100, 1000 bodies scattered over the planet or clustered in one valley,
+// with their meshes resident (generation is measured separately: BM_CollisionMeshCpu here,
+// BM_CollisionMeshGpu in engine_bench, and end to end by `globe physics`, docs/physics.md).
+//
+//   build/release/bin/planet_bench --benchmark_filter='Physics|CollisionMesh'
+#include "planet/analysis/percentile.h"
+#include "planet/camera/camera.h"
+#include "planet/elevation/planet_file.h"
+#include "planet/physics/physics_scenario.h"
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+
+namespace globe {
+namespace {
+
+const ElevationModel& model() {
+  static const ElevationModel m = [] {
+    auto planet = loadPlanetFile(GLOBE_SOURCE_DIR "/assets/planets/earthlike.toml");
+    if (!planet) std::abort();
+    return ElevationModel(*planet);
+  }();
+  return m;
+}
+
+// range(0): bodies; range(1): 1 = clustered in one 100 m valley. The timed steps start once every
+// mesh the bodies asked for is resident (untimed warm-up), with the bodies 1-100 m up and falling:
+// 600 steps (5 s) cover falling, impacts and settling.
+void BM_PhysicsStep(benchmark::State& state) {
+  CpuCollisionMeshSource source(model(), 32);
+  SimulationSettings settings;
+  settings.pool.dispatchBudget = 64;
+  PhysicsSimulation sim(model(), source, settings);
+  ScenarioSettings scenario;
+  scenario.bodies = uint32_t(state.range(0));
+  scenario.clustered = state.range(1) != 0;
+  scenario.clusterCentre = directionFromLatLon(10.0, 20.0);
+  std::vector<PlacedBody> placed = placeBodies(model(), scenario);
+  addPlacedBodies(sim, model(), placed);
+  sim.settleSelection();
+  for (int warm = 0; warm < 2000 && (sim.pool().stats().queued > 0 || warm < 8); ++warm) sim.step();
+  const size_t first = sim.stats().step_ms.size();
+  for (auto _ : state) sim.step();
+  std::vector<double> steps(sim.stats().step_ms.begin() + std::ptrdiff_t(first), sim.stats().step_ms.end());
+  std::sort(steps.begin(), steps.end());
+  state.counters["p50_ms"] = nearestRankPercentile(steps, 50);
+  state.counters["p99_ms"] = nearestRankPercentile(steps, 99);
+  state.counters["max_ms"] = steps.back();
+  state.counters["pool_MiB"] = sim.pool().stats().residentMiB();
+  state.counters["meshes"] = double(sim.pool().stats().resident);
+  state.counters["sync"] = double(sim.pool().stats().generatedSync);
+}
+BENCHMARK(BM_PhysicsStep)->ArgsProduct({{1, 10, 100, 1000}, {0, 1}})->Iterations(600)->Unit(benchmark::kMillisecond);
+
+void BM_CollisionMeshCpu(benchmark::State& state) {
+  CpuCollisionMeshSource source(model(), uint32_t(state.range(0)));
+  uint32_t x = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(source.generateNow({4, 14, 8000 + (x++ % 64), 9000}));
+}
+BENCHMARK(BM_CollisionMeshCpu)->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace globe

@@ -1,0 +1,127 @@
+#include "planet/physics/physics_simulation.h"
+
+#include "planet/analysis/surface_ray.h"
+#include "planet/geometry/face_mapping.h"
+#include "planet/lod/lod_ranges.h"
+
+#include <glm/geometric.hpp>
+
+#include <chrono>
+#include <cmath>
+
+namespace globe {
+
+namespace {
+
+double msSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Slack above the predicted-contact surface (metres): Bullet's contact margin and rounding.
+constexpr double kContactSlack_m = 0.1;
+
+}  // namespace
+
+Status validateSimulationSettings(const SimulationSettings& settings) {
+  if (settings.level < 0 || settings.level > kMaxNodeLevel)
+    return Error::inField("level", "must be within [0, " + std::to_string(kMaxNodeLevel) + "]");
+  if (!(std::isfinite(settings.interestRadius_m) && settings.interestRadius_m >= 0.0 &&
+        settings.interestRadius_m <= 1e6))
+    return Error::inField("radius", "must be within [0, 1e6] m");
+  if (!(std::isfinite(settings.physics.step_s) && settings.physics.step_s > 0.0 && settings.physics.step_s <= 0.1))
+    return Error::inField("step", "must be within (0, 0.1] s");
+  return validateCollisionPoolConfig(settings.pool);
+}
+
+PhysicsSimulation::PhysicsSimulation(const ElevationModel& model, CollisionMeshSource& source,
+                                     const SimulationSettings& settings)
+    : model_(model),
+      settings_(settings),
+      minSurfaceRadius_m_(std::max(1.0, model.radius_m() + model.bounds().min_m)),
+      slopeBound_(elevationSlopeBound(model.params())) {
+  settings_.physics.planetRadius_m = model.radius_m();
+  world_ = std::make_unique<PhysicsWorld>(settings_.physics);
+  pool_ = std::make_unique<CollisionMeshPool>(settings_.pool, source, *world_);
+  worker_ = std::make_unique<CollisionSelectionWorker>(RhombusFaceMapping::get(), minSurfaceRadius_m_, settings_.level);
+}
+
+PhysicsSimulation::~PhysicsSimulation() {
+  worker_.reset();  // joins before the pool and world go
+  pool_.reset();
+}
+
+uint32_t PhysicsSimulation::addBody(const BodySpec& spec) { return world_->addBody(spec); }
+
+double PhysicsSimulation::surfaceMaxRadius(const glm::dvec3& position_m, double arc_m) const {
+  const glm::dvec3 direction = glm::normalize(position_m);
+  const NodeId below = nodeAt(RhombusFaceMapping::get().locate(direction), settings_.level);
+  if (const CollisionMesh* mesh = pool_->mesh(below);
+      mesh && arc_m <= 0.25 * nominalNodeWidth(below.level, model_.radius_m()))
+    return mesh->radius.max_m;
+  return model_.radius_m() + model_.elevation_m(direction) + slopeBound_ * arc_m;
+}
+
+void PhysicsSimulation::applyRound(const CollisionSelectionRound& round) {
+  ++stats_.selectionRounds;
+  stats_.selection_ms += round.select_ms;
+  for (const SelectedCollisionNode& s : round.nodes) pool_->request(s.node, s.distance_m);
+}
+
+void PhysicsSimulation::predictContacts() {
+  const double dt = settings_.physics.step_s;
+  for (uint32_t id = 0; id < world_->bodyCount(); ++id) {
+    const BodyState state = world_->state(id);
+    if (state.sleeping) continue;
+    const BodyMotion motion{state.position_m, state.velocity_m_s, world_->boundingRadius(id)};
+    const CollisionQuery swept = sweptContactQuery(motion, dt, kContactSlack_m);
+    if (!predictsContact(motion, dt, surfaceMaxRadius(swept.position_m, swept.radius_m) + kContactSlack_m)) continue;
+    ++stats_.predictedContacts;
+    scratch_.clear();
+    selectCollisionNodes(RhombusFaceMapping::get(), minSurfaceRadius_m_, swept, settings_.level, scratch_);
+    for (const SelectedCollisionNode& s : scratch_) {
+      if (pool_->isResident(s.node)) continue;
+      ++stats_.predictedMissing;
+      pool_->requireNow(s.node, s.distance_m);
+    }
+  }
+}
+
+void PhysicsSimulation::submitSelection() {
+  std::vector<CollisionQuery> queries;
+  queries.reserve(world_->bodyCount());
+  // Sleeping bodies need nothing new: the nodes they rest on are pinned by their contacts.
+  for (uint32_t id = 0; id < world_->bodyCount(); ++id) {
+    const BodyState state = world_->state(id);
+    if (state.sleeping) continue;
+    queries.push_back({state.position_m, world_->boundingRadius(id) + settings_.interestRadius_m});
+  }
+  pendingRound_ = worker_->submit(std::move(queries));
+  roundSubmitStep_ = stats_.steps;
+}
+
+void PhysicsSimulation::settleSelection() {
+  if (pendingRound_ == 0) submitSelection();
+  worker_->waitFor(pendingRound_);
+  if (worker_->take(round_)) applyRound(round_);
+  pendingRound_ = 0;
+}
+
+void PhysicsSimulation::step() {
+  const auto start = std::chrono::steady_clock::now();
+  pool_->beginStep(stats_.steps + 1);
+  // A round is applied a fixed number of steps after it was submitted (waiting for the worker if it
+  // is late), so which step a request enters the queue never depends on thread timing.
+  if (pendingRound_ != 0 && stats_.steps >= roundSubmitStep_ + kRoundSteps) settleSelection();
+  predictContacts();
+  pool_->dispatch();
+  const auto physicsStart = std::chrono::steady_clock::now();
+  world_->step();
+  stats_.physics_ms.push_back(msSince(physicsStart));
+  for (uint32_t id = 0; id < world_->bodyCount(); ++id)
+    for (const NodeId& node : world_->contactNodes(id)) pool_->pin(node);
+  if (pendingRound_ == 0) submitSelection();
+  ++stats_.steps;
+  stats_.step_ms.push_back(msSince(start));
+}
+
+}  // namespace globe

@@ -1,0 +1,82 @@
+#pragma once
+// One physics step over the whole chain [Frasson 2018, §3.4]:
+//
+//   CollisionMeshPool::beginStep   collect asynchronous meshes (they become static Bullet bodies)
+//   CollisionSelectionWorker       newest round of nodes within each object's radius of interest
+//    └─ pool.request (kCollision)  queued, nearest first
+//   predicted contacts             per awake body: will its swept bounding sphere reach the surface
+//    └─ pool.requireNow (kContact) within the look-ahead? Missing nodes under it are generated now
+//   CollisionMeshPool::dispatch    start asynchronous generations under the per-step budget
+//   PhysicsWorld::step             radial gravity, Bullet, contacts
+//   pool.pin                       the nodes bodies touch are never evicted
+//   worker.submit                  the bodies' new positions, selected while the next step runs
+#include "planet/elevation/elevation.h"
+#include "planet/physics/collision_mesh_pool.h"
+#include "planet/physics/collision_selection_worker.h"
+#include "planet/physics/physics_world.h"
+
+#include <memory>
+#include <vector>
+
+namespace globe {
+
+struct SimulationSettings {
+  int level = 14;                  // collision node level L
+  double interestRadius_m = 32.0;  // radius of interest R around each body (added to its size)
+  PhysicsSettings physics;         // planetRadius_m and surfaceGravity_m_s2 come from the model
+  CollisionPoolConfig pool;
+};
+
+Status validateSimulationSettings(const SimulationSettings& settings);
+
+struct SimulationStats {
+  uint64_t steps = 0;
+  std::vector<double> step_ms;     // each whole step (everything above, synchronous generation included)
+  std::vector<double> physics_ms;  // PhysicsWorld::step alone
+  uint64_t predictedContacts = 0;  // body-steps with a predicted contact
+  uint64_t predictedMissing = 0;   // of those, nodes that were not resident (each generated synchronously)
+  uint64_t selectionRounds = 0;
+  double selection_ms = 0.0;  // worker time, all rounds
+};
+
+class PhysicsSimulation {
+ public:
+  // `model` and `source` must outlive the simulation; `settings` must be valid.
+  PhysicsSimulation(const ElevationModel& model, CollisionMeshSource& source, const SimulationSettings& settings);
+  ~PhysicsSimulation();
+
+  uint32_t addBody(const BodySpec& spec);
+  void step();
+  // Waits for the selection worker's pending round and applies it (tests: a deterministic start).
+  void settleSelection();
+
+  const PhysicsWorld& world() const { return *world_; }
+  const CollisionMeshPool& pool() const { return *pool_; }
+  const SimulationStats& stats() const { return stats_; }
+  const SimulationSettings& settings() const { return settings_; }
+  // Highest the surface can be within `arc_m` of the direction of `position_m`, from the resident
+  // mesh of the node below when there is one, else the exact elevation plus a slope bound.
+  double surfaceMaxRadius(const glm::dvec3& position_m, double arc_m) const;
+
+ private:
+  void applyRound(const CollisionSelectionRound& round);
+  void predictContacts();
+  void submitSelection();
+
+  const ElevationModel& model_;
+  SimulationSettings settings_;
+  double minSurfaceRadius_m_;
+  double slopeBound_;
+  std::unique_ptr<PhysicsWorld> world_;
+  std::unique_ptr<CollisionMeshPool> pool_;
+  std::unique_ptr<CollisionSelectionWorker> worker_;
+  // Steps between submitting a selection round and applying it.
+  static constexpr uint64_t kRoundSteps = 4;
+  uint64_t pendingRound_ = 0;
+  uint64_t roundSubmitStep_ = 0;
+  CollisionSelectionRound round_;
+  std::vector<SelectedCollisionNode> scratch_;
+  SimulationStats stats_;
+};
+
+}  // namespace globe

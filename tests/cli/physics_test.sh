@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# globe physics end to end (docs/physics.md): bad values are one line and write nothing; a small run
+# writes bodies.csv (the issue's columns, one row per body, every body at rest on the ground),
+# summary.json and a rendered frame. Usage: physics_test.sh GLOBE SOURCE_DIR WORKDIR
+set -uo pipefail
+GLOBE="$1"
+SRC="$2"
+WORK="$3"
+rm -rf "$WORK" && mkdir -p "$WORK"
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+# expect_bad PATTERN ARGS...: exit 2, one stderr line matching PATTERN, no output directory.
+expect_bad() {
+  local pattern="$1"
+  shift
+  "$GLOBE" physics --out "$WORK/bad" "$@" >"$WORK/stdout" 2>"$WORK/stderr"
+  local got=$?
+  if [[ $got -ne 2 ]]; then fail "'$*' exited $got, expected 2"; cat "$WORK/stderr"; return; fi
+  if [[ $(wc -l <"$WORK/stderr") -ne 1 ]] || ! grep -qE "^globe: error: .*$pattern" "$WORK/stderr"; then
+    fail "'$*' stderr is not one line matching '$pattern':"; cat "$WORK/stderr"; return
+  fi
+  if [[ -e "$WORK/bad" ]]; then fail "'$*' wrote $WORK/bad"; rm -rf "$WORK/bad"; return; fi
+  echo "ok: $* -> $(cat "$WORK/stderr")"
+}
+
+expect_bad "--bodies" --bodies 0
+expect_bad "--bodies" --bodies 100001
+expect_bad "--seconds" --seconds 0
+expect_bad "--seconds" --seconds nan
+expect_bad "--level" --level 0
+expect_bad "--level" --level 30
+expect_bad "--radius" --radius -1
+expect_bad "--shape" --shape cube
+expect_bad "--grid" --grid 24
+expect_bad "--budget" --budget 0
+expect_bad "--render" --render "$WORK/frame.txt"
+expect_bad "--out" --out /nonexistent/dir/out
+expect_bad "no-such.toml" --planet "$WORK/no-such.toml"
+expect_bad "--seed" --seed -3
+printf 'name = "heavy"\nradius_m = 1000000.0\nsurface_gravity_m_s2 = -1\n[[layers]]\nname = "a"\noctaves = 1\nwavelength_m = 1e5\namplitude_m = 10\n' >"$WORK/bad_gravity.toml"
+expect_bad "bad_gravity.toml:3:.*surface_gravity_m_s2" --planet "$WORK/bad_gravity.toml"
+
+OUT="$WORK/run"
+if ! "$GLOBE" physics --bodies 6 --seconds 12 --grid 16 --radius 8 --seed 3 --out "$OUT" --render "$WORK/frame.png" \
+    >"$WORK/run.log" 2>&1; then
+  fail "the small run failed:"; cat "$WORK/run.log"
+else
+  header=$(head -1 "$OUT/bodies.csv")
+  want="id,lat_deg,lon_deg,shape,size_m,start_height_m,rest_height_above_exact_surface_m,speed_m_s,contact_nodes"
+  [[ "$header" == "$want" ]] || fail "bodies.csv header is '$header'"
+  [[ $(wc -l <"$OUT/bodies.csv") -eq 7 ]] || fail "bodies.csv has $(wc -l <"$OUT/bodies.csv") lines, want 7"
+  # Every body touches a mesh, rests within 3 m of the exact surface (the level's mesh error) and is still.
+  awk -F, 'NR > 1 && ($9 < 1 || $7 < -3 || $7 > 3 || $8 >= 0.05) { print "FAIL: body " $0; bad = 1 } END { exit bad }' \
+    "$OUT/bodies.csv" || failures=$((failures + 1))
+  for key in steps ms_per_step_p50 ms_per_step_p99 nodes_generated_sync nodes_generated_async collision_pool_mib; do
+    grep -q "\"$key\"" "$OUT/summary.json" || fail "summary.json lacks $key"
+  done
+  grep -q '"steps": 1440,' "$OUT/summary.json" || fail "12 s are 1440 steps of 1/120 s"
+  [[ -s "$WORK/frame.png" ]] || fail "no rendered frame"
+  ls -A "$OUT" | grep -q '\.tmp' && fail "a temporary file was left in $OUT"
+  echo "ok: run -> $(tail -1 "$WORK/run.log")"
+fi
+
+if ((failures)); then
+  echo "$failures failure(s)"
+  exit 1
+fi
+echo "physics: all checks passed"
