@@ -1,5 +1,7 @@
 #include "engine/render/terrain.h"
 
+#include "planet/sources/tile_cache.h"
+
 #include "planet/geometry/triacontahedron.h"
 #include "planet/lod/frustum.h"
 #include "planet/streaming/payload_reference.h"
@@ -65,6 +67,8 @@ Terrain::~Terrain() {
 }
 
 const FrameStats& Terrain::update(uint64_t frame, const Camera& camera, uint64_t completedFrame) {
+  // Source tiles are read on the source I/O thread only: a lookup here never touches the disk.
+  const ScopedFrameLoopThread frameLoop;
   if (!primed_) prime(frame, camera);
   updateAt(frame + primedRounds_, camera, completedFrame + primedRounds_, false);
   return stats_;
@@ -137,6 +141,7 @@ void Terrain::record(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIn
 }
 
 double Terrain::cameraGroundRadius(const glm::dvec3& unitDirection) const {
+  const ScopedFrameLoopThread frameLoop;
   return std::max(groundRadius(unitDirection),
                   drawnSurfaceRadius(model_, unitDirection, settings_.ranges.maxDepth, settings_.gridCells));
 }

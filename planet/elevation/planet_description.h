@@ -15,6 +15,7 @@
 
 #include "planet/core/error.h"
 #include "planet/elevation/colour_ramp.h"
+#include "planet/sources/source_description.h"
 
 namespace globe {
 
@@ -72,6 +73,8 @@ struct PlanetDescription {
   std::vector<ElevationLayer> layers;  // 1 .. kMaxElevationLayers, evaluated in order
   QualityPreset default_quality = QualityPreset::kBalanced;
   ColourRamp colour_ramp;  // surface colour by elevation and slope
+  // Real elevation rasters mosaicked over the layers ([[sources]], planet/sources/); empty = procedural only.
+  std::vector<ElevationSource> sources;
 
   bool operator==(const PlanetDescription&) const = default;
 };
