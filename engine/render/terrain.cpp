@@ -1,5 +1,6 @@
 #include "engine/render/terrain.h"
 
+#include "planet/sources/source_mosaic.h"
 #include "planet/sources/tile_cache.h"
 
 #include "planet/geometry/triacontahedron.h"
@@ -58,6 +59,7 @@ void Terrain::attachPool(std::unique_ptr<PayloadPool> pool) {
   generator_->reserveSlots(pool_->slotCapacity(), settings_.payloadSlotsPerPage);
   TerrainStyle style = settings_.style;
   style.radius_m = model_.radius_m();
+  style.holes = model_.sources() != nullptr && model_.sources()->hasHoles();
   renderer_ = std::make_unique<TerrainRenderer>(device_, settings_.gridCells, style, settings_.vertexPositions);
   drawNodes_.reserve(4096);
 }

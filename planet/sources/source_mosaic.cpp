@@ -114,6 +114,11 @@ SourceMosaic::SourceMosaic(const std::vector<ElevationSource>& sources, double r
   });
 }
 
+bool SourceMosaic::hasHoles() const {
+  return std::any_of(layers_.begin(), layers_.end(),
+                     [](const Layer& l) { return l.description.nodata == NoDataMode::kHole; });
+}
+
 bool SourceMosaic::mayCover(const glm::dvec3& unitDirection) const {
   const glm::dvec2 ll = latLonFromPosition(unitDirection);
   for (const Layer& layer : layers_) {
@@ -140,8 +145,12 @@ SourceTerm SourceMosaic::term(const glm::dvec3& unitDirection) const {
     PixelWindow window(cache_, *layer.raster);
     const LayerSample s = sampleLayer(window, f, px, py, layer.detailOctaves > 0);
     if (window.missing) continue;
-    if (layer.description.nodata == NoDataMode::kHole) t.hole += remaining * feather * (1.0 - s.coverage);
-    const double w = feather * s.coverage;
+    // A kept hole's geometry keeps the source's own (normalised) heights as long as one pixel
+    // around is valid, so the drawn surface meets the discarded part without a wall; beyond that,
+    // hidden anyway, what lies beneath. Fill ramps to what lies beneath across the last pixel.
+    const bool hole = layer.description.nodata == NoDataMode::kHole;
+    if (hole) t.hole += remaining * feather * (1.0 - s.coverage);
+    const double w = feather * (hole ? (s.coverage > 0.0 ? 1.0 : 0.0) : s.coverage);
     if (w <= 0.0) continue;
     double h = s.value * layer.description.vertical_scale + layer.description.vertical_offset_m;
     if (layer.detailOctaves > 0) {

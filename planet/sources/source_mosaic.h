@@ -63,6 +63,8 @@ class SourceMosaic {
   double maxElevation_m() const { return max_m_; }
 
   const std::vector<Layer>& layers() const { return layers_; }
+  // Some source keeps its no-data as holes (the renderer then discards fragments).
+  bool hasHoles() const;
   TileCache& cache() const { return cache_; }
   double radius_m() const { return radius_m_; }
 

@@ -11,4 +11,12 @@ namespace globe {
 
 std::vector<std::string> describeSources(const PlanetDescription& planet);
 
+class SourceMosaic;
+
+// One line on how the source data streamed (`globe bench`, docs/elevation-data.md): tiles read and
+// decoded per second of I/O-thread time, request -> resident latency p50/p99 of the payloads that
+// carried source terms (`latencies_s`), peak RAM tier as a fraction of the sources' decoded size,
+// and the frame loop's waits (always 0 unless something is broken) and misses.
+std::string sourceStreamingSummary(const SourceMosaic& mosaic, const std::vector<double>& latencies_s);
+
 }  // namespace globe
