@@ -2,11 +2,12 @@
 // prepares equal the CPU reference (planet/streaming/payload_reference.h) to 1e-6 m, and a low
 // flight over the DEM never makes the frame loop wait for a tile (docs/elevation-data.md).
 #include "engine/generation/payload_generator.h"
+#include "engine/render/headless_renderer.h"
+#include "engine/render/render_output.h"
+#include "engine/render/terrain.h"
 #include "planet/camera/camera.h"
 #include "planet/elevation/planet_file.h"
-#include "planet/lod/selection.h"
 #include "planet/sources/source_mosaic.h"
-#include "planet/streaming/payload_pool.h"
 #include "planet/streaming/payload_reference.h"
 #include "tests/support/dem_fixture.h"
 #include "tests/support/gpu_test.h"
@@ -94,44 +95,63 @@ TEST_F(ElevationSourcesGpuTest, PayloadsMatchTheCpuReference) {
               results.size(), worstRadius, worstElevation, holeSamples);
 }
 
+// The real frame loop (Terrain::update marks its thread as one) flying low over the DEM: tiles
+// are read on the I/O thread only, the frames never wait for it, and payloads with source terms
+// stream in while the parents are drawn.
 TEST_F(ElevationSourcesGpuTest, ALowFlightNeverMakesTheFrameLoopWait) {
+  TerrainSettings settings;
+  settings.gridCells = kCells;
+  settings.primeRounds = 2;
+  settings.style.sky = false;
+  auto terrain = Terrain::create(device(), *model_, settings);
+  ASSERT_TRUE(terrain.ok()) << terrain.error().format();
+  HeadlessRenderer renderer(device(), {96, 64});
   const double R = model_->radius_m();
-  GpuPayloadGenerator gen(device(), *model_, kCells, 8, 4);
-  StreamingConfig config;
-  config.vramBudget_MiB = 64;
-  auto pool = PayloadPool::create(config, gen, R);
-  ASSERT_TRUE(pool.ok()) << pool.error().format();
-  gen.reserveSlots((*pool)->slotCapacity());
-  LodConfig lod;
-  lod.minElevation_m = model_->bounds().min_m;
-  lod.maxElevation_m = model_->bounds().max_m;
-  auto selector = LodSelector::create(lod);
-  ASSERT_TRUE(selector.ok());
-  Selection selection;
-  uint32_t nonResident = 0;
-  for (uint64_t frame = 1; frame <= 120; ++frame) {
-    const ScopedFrameLoopThread frameLoop;
-    const double t = double(frame) / 120.0;
-    const glm::dvec3 down = directionFromLatLon(36.5 + 0.15 * t, -84.35 + 0.2 * t);
-    const Camera cam = cameraFromPose({36.5 + 0.15 * t, -84.35 + 0.2 * t, 3e4 * std::pow(10.0, -2.0 * t), 45, -20, 0},
-                                      R + model_->elevation_m(down), R, 16.0 / 9.0);
-    (*pool)->beginFrame(frame, cam.position_m, frame > 2 ? frame - 2 : 0);
-    auto frustum = Frustum::fromViewProjection(cam.projection() * cam.viewFromWorld(glm::dvec3(0.0)));
-    ASSERT_TRUE(selector->select({cam.position_m, &*frustum}, **pool, selection).ok());
-    (*pool)->markUsed(selection.nodes);
-    (*pool)->dispatch();
-    if (frame % 2 == 0) device().submitAndWait([](VkCommandBuffer) {});
-    for (const auto& n : selection.nodes) nonResident += !(*pool)->isResident(n.id);  // the parent is drawn meanwhile
+  uint64_t idleWaitsAfterWarmUp = 0;
+  uint32_t emptyFrames = 0;
+  for (int frame = 0; frame < 60; ++frame) {
+    const double t = frame / 60.0, lat = 36.5 + 0.15 * t, lon = -84.35 + 0.2 * t;
+    const Camera cam = cameraFromPose({lat, lon, 3e4 * std::pow(10.0, -2.0 * t), 45, -20, 0},
+                                      (*terrain)->cameraGroundRadius(directionFromLatLon(lat, lon)), R, 1.5);
+    const FrameStats stats = renderer.renderFrame(**terrain, cam, false);
+    emptyFrames += stats.nodes_selected == 0;
+    if (frame == 0) idleWaitsAfterWarmUp = (*terrain)->generator().sourcePreparer()->idleWaits();
   }
-  gen.waitIdle();
+  const GpuPayloadGenerator& gen = (*terrain)->generator();
+  EXPECT_EQ(gen.sourcePreparer()->idleWaits(), idleWaitsAfterWarmUp);  // frames never waited for the I/O thread
   const TileCacheStats s = model_->sources()->cache().stats();
   EXPECT_EQ(s.frameLoopWaits, 0u);
-  EXPECT_EQ(nonResident, 0u);
+  EXPECT_EQ(emptyFrames, 0u);
   EXPECT_GT(gen.sourceLatencies_s().size(), 20u);
-  EXPECT_EQ(gen.sourcePreparer()->idleWaits(), 1u);  // only the final waitIdle
   std::printf("[ info ] DEM flight: %llu payloads, %zu with source terms, %llu tile reads, %llu frame-loop misses\n",
               (unsigned long long)gen.nodesGenerated(), gen.sourceLatencies_s().size(), (unsigned long long)s.reads,
               (unsigned long long)s.frameThreadMisses);
+}
+
+// A kept hole is cut by the fragment shader: looking straight down into it, the ground is gone;
+// beside it, the ground is there.
+TEST_F(ElevationSourcesGpuTest, AKeptHoleIsDrawnAsAHole) {
+  TerrainSettings settings;
+  settings.gridCells = kCells;
+  settings.style.sky = false;
+  auto terrain = Terrain::create(device(), *model_, settings);
+  ASSERT_TRUE(terrain.ok()) << terrain.error().format();
+  HeadlessRenderer renderer(device(), {64, 64});
+  auto depthBelow = [&](double lat, double lon) {
+    const Camera cam = cameraFromPose({lat, lon, 3000, 0, -90, 0},
+                                      (*terrain)->cameraGroundRadius(directionFromLatLon(lat, lon)),
+                                      model_->radius_m(), 1.0);
+    renderer.renderFrame(**terrain, cam, true);
+    const ImageRgba image = toImage(renderer.readback(), cam);
+    return image.z[32 * 64 + 32];
+  };
+  double lat = 0.0, lon = 0.0;
+  RasterReference(fixture_->full).pixelCentre(200.0, 170.0, lat, lon);  // the no-data blob's centre
+  const float inHole = depthBelow(lat, lon);
+  EXPECT_FALSE(inHole < 1.0e5f) << "the ground is drawn inside the hole, " << inHole << " m below";
+  const float beside = depthBelow(36.70, -84.35);
+  EXPECT_LT(beside, 5000.0f);
+  EXPECT_GT(beside, 1000.0f);
 }
 
 }  // namespace
