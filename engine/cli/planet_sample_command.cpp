@@ -54,8 +54,9 @@ void addPlanetSampleCommand(CLI::App& planet, std::function<int()>& run) {
   auto file = std::make_shared<std::string>();
   auto at = std::make_shared<std::vector<std::string>>();
   CLI::App* sample = planet.add_subcommand(
-      "sample", "Print the elevation that is drawn (metres above radius_m, sources mosaicked) at points, or nodata "
-                "inside a kept hole");
+      "sample",
+      "Print the elevation that is drawn (metres above radius_m, sources mosaicked) at points, or nodata "
+      "inside a kept hole");
   addPlanetFileArgument(*sample, *file);
   sample->add_option("--at", *at, "LAT,LON in degrees; repeat for more points")->required()->allow_extra_args(false);
   sample->callback([file, at, &run] { run = [file, at] { return runSample(*file, *at); }; });

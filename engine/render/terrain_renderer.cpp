@@ -113,8 +113,8 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
   VkPhysicalDeviceFeatures features{};
   vkGetPhysicalDeviceFeatures(device.physical(), &features);
   if (features.fillModeNonSolid) {
-    wireframe_ =
-        std::make_unique<vk::GraphicsPipeline>(device, terrainDesc(colourFormat, true, VK_CULL_MODE_NONE, positions, false));
+    wireframe_ = std::make_unique<vk::GraphicsPipeline>(
+        device, terrainDesc(colourFormat, true, VK_CULL_MODE_NONE, positions, false));
   }
 
   // Ranges: full grid, half grid, full skirt strip, half skirt strip.

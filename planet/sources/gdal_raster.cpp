@@ -35,8 +35,9 @@ std::unique_ptr<OGRCoordinateTransformation> makeTransform(const std::string& wk
   if (raster.importFromWkt(wkt.c_str()) != OGRERR_NONE) return nullptr;
   raster.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
   OGRSpatialReference geographic = wgs84();
-  return std::unique_ptr<OGRCoordinateTransformation>(toRaster ? OGRCreateCoordinateTransformation(&geographic, &raster)
-                                                               : OGRCreateCoordinateTransformation(&raster, &geographic));
+  return std::unique_ptr<OGRCoordinateTransformation>(toRaster
+                                                          ? OGRCreateCoordinateTransformation(&geographic, &raster)
+                                                          : OGRCreateCoordinateTransformation(&raster, &geographic));
 }
 
 // PROJ transformations are not thread-safe: each thread keeps its own, per raster.

@@ -15,13 +15,13 @@
 namespace globe {
 
 struct RasterFacts {
-  int width = 0, height = 0;      // pixels
-  double geo_transform[6] = {};   // GDAL's affine pixel -> CRS transform
+  int width = 0, height = 0;     // pixels
+  double geo_transform[6] = {};  // GDAL's affine pixel -> CRS transform
   bool has_nodata = false;
-  double nodata = 0.0;            // the band's no-data value (pixels equal to it, or NaN, are no-data)
-  std::string crs_name;           // e.g. "WGS 84", "WGS 84 / UTM zone 17N"
-  bool geographic = true;         // CRS in degrees (longitudes may then wrap by 360)
-  double pixel_size_m = 0.0;      // the finer pixel side, metres, at the raster's centre
+  double nodata = 0.0;                      // the band's no-data value (pixels equal to it, or NaN, are no-data)
+  std::string crs_name;                     // e.g. "WGS 84", "WGS 84 / UTM zone 17N"
+  bool geographic = true;                   // CRS in degrees (longitudes may then wrap by 360)
+  double pixel_size_m = 0.0;                // the finer pixel side, metres, at the raster's centre
   double min_value = 0.0, max_value = 0.0;  // of the valid pixels (raw values, before vertical_scale)
   // Latitude/longitude (degrees) box holding the raster's pixel centres (sampled along its border).
   double lat_min_deg = 0.0, lat_max_deg = 0.0, lon_min_deg = 0.0, lon_max_deg = 0.0;

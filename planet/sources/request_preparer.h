@@ -27,8 +27,8 @@ namespace globe {
 
 struct PreparedRequest {
   GenerationJob request;
-  gpu::PayloadJob job{};             // slot = request.slot; sourceBase is the uploader's to set
-  std::vector<glm::dvec4> terms;     // S * S (height_m, weight, hole, 0), or empty: no source touches it
+  gpu::PayloadJob job{};          // slot = request.slot; sourceBase is the uploader's to set
+  std::vector<glm::dvec4> terms;  // S * S (height_m, weight, hole, 0), or empty: no source touches it
   std::chrono::steady_clock::time_point queued;
 };
 

@@ -18,9 +18,9 @@ std::string_view noDataModeName(NoDataMode mode);
 struct ElevationSource {
   std::string path;  // as resolved: relative paths in a planet file are relative to the file's folder
   NoDataMode nodata = NoDataMode::kFill;
-  bool amplify = true;            // procedural detail below the source's resolution
-  int priority = 0;               // higher wins where the resolutions tie
-  double vertical_scale = 1.0;    // elevation_m = raster value * vertical_scale + vertical_offset_m
+  bool amplify = true;          // procedural detail below the source's resolution
+  int priority = 0;             // higher wins where the resolutions tie
+  double vertical_scale = 1.0;  // elevation_m = raster value * vertical_scale + vertical_offset_m
   double vertical_offset_m = 0.0;
   // Feather width (metres) at the source's border, over which it fades into what lies beneath;
   // < 0 means the default, four of the source's pixels.

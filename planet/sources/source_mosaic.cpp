@@ -83,6 +83,27 @@ LayerSample sampleLayer(PixelWindow& w, const RasterFacts& f, double px, double 
   return s;
 }
 
+// Inside a kept hole: the inverse-square-distance mean of the valid pixels within `radius` pixels,
+// or NaN. The surface under the hole then continues the source's own heights for a few pixels, so
+// triangles straddling the cut never reach down to what lies beneath (a visible wall).
+double nearbyValue(PixelWindow& w, double px, double py, int radius) {
+  const int cx = int(std::floor(px)), cy = int(std::floor(py));
+  double sum = 0.0, weights = 0.0;
+  for (int y = cy - radius + 1; y <= cy + radius; ++y) {
+    for (int x = cx - radius + 1; x <= cx + radius; ++x) {
+      const float v = w.at(x, y);
+      if (std::isnan(v)) continue;
+      const double d2 = (x - px) * (x - px) + (y - py) * (y - py);
+      sum += double(v) / (1.0 + d2);
+      weights += 1.0 / (1.0 + d2);
+    }
+  }
+  return weights > 0.0 ? sum / weights : std::numeric_limits<double>::quiet_NaN();
+}
+
+// Pixels around a kept hole's border over which the source's heights continue under the hole.
+constexpr int kHoleFillPixels = 4;
+
 }  // namespace
 
 SourceMosaic::SourceMosaic(const std::vector<ElevationSource>& sources, double radius_m, std::uint64_t seed,
@@ -139,20 +160,27 @@ SourceTerm SourceMosaic::term(const glm::dvec3& unitDirection) const {
     double px = 0.0, py = 0.0;
     if (!layer.raster->pixelAt(ll.x, ll.y, px, py)) continue;
     const RasterFacts& f = layer.raster->facts();
-    const double edge_m = std::min(std::min(px, f.width - 1.0 - px), std::min(py, f.height - 1.0 - py)) * f.pixel_size_m;
+    const double edge_m =
+        std::min(std::min(px, f.width - 1.0 - px), std::min(py, f.height - 1.0 - py)) * f.pixel_size_m;
     const double feather = layer.blend_m > 0.0 ? smoothstep01(edge_m / layer.blend_m) : 1.0;
     if (feather <= 0.0) continue;
     PixelWindow window(cache_, *layer.raster);
     const LayerSample s = sampleLayer(window, f, px, py, layer.detailOctaves > 0);
     if (window.missing) continue;
-    // A kept hole's geometry keeps the source's own (normalised) heights as long as one pixel
-    // around is valid, so the drawn surface meets the discarded part without a wall; beyond that,
-    // hidden anyway, what lies beneath. Fill ramps to what lies beneath across the last pixel.
+    // A kept hole's geometry keeps the source's own heights (normalised over the valid corners,
+    // then the mean of the valid pixels within kHoleFillPixels), so the drawn surface meets the
+    // discarded part without a wall; deeper inside, hidden, what lies beneath. Fill ramps to what
+    // lies beneath across the last pixel.
     const bool hole = layer.description.nodata == NoDataMode::kHole;
     if (hole) t.hole += remaining * feather * (1.0 - s.coverage);
-    const double w = feather * (hole ? (s.coverage > 0.0 ? 1.0 : 0.0) : s.coverage);
+    double value = s.value;
+    if (hole && s.coverage <= 0.0) {
+      value = nearbyValue(window, px, py, kHoleFillPixels);
+      if (window.missing || std::isnan(value)) continue;
+    }
+    const double w = feather * (hole ? 1.0 : s.coverage);
     if (w <= 0.0) continue;
-    double h = s.value * layer.description.vertical_scale + layer.description.vertical_offset_m;
+    double h = value * layer.description.vertical_scale + layer.description.vertical_offset_m;
     if (layer.detailOctaves > 0) {
       h += amplificationDetail_m(unitDirection, radius_m_, f.pixel_size_m, layer.detailOctaves, layer.detailSeed,
                                  s.relief * std::abs(layer.description.vertical_scale));

@@ -44,8 +44,8 @@ class SourceMosaic {
   struct Layer {
     ElevationSource description;
     std::unique_ptr<GdalRaster> raster;
-    double blend_m = 0.0;      // resolved (the default is four pixels)
-    int detailOctaves = 0;     // 0 when not amplified
+    double blend_m = 0.0;   // resolved (the default is four pixels)
+    int detailOctaves = 0;  // 0 when not amplified
     std::uint32_t detailSeed = 0;
   };
 

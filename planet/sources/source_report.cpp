@@ -52,9 +52,8 @@ std::vector<std::string> describeSources(const PlanetDescription& planet) {
   for (std::size_t i = 0; i < layers.size(); ++i) {
     for (std::size_t j = i + 1; j < layers.size(); ++j) {
       if (!boxesOverlap(layers[i].raster->facts(), layers[j].raster->facts())) continue;
-      lines.push_back(fmt::format("overlap: {} over {} ({} wins: finer or higher priority)",
-                                  layers[i].description.path, layers[j].description.path,
-                                  layers[i].description.path));
+      lines.push_back(fmt::format("overlap: {} over {} ({} wins: finer or higher priority)", layers[i].description.path,
+                                  layers[j].description.path, layers[i].description.path));
     }
   }
   if (layers.size() != planet.sources.size()) lines.push_back("warning: a source no longer opens");

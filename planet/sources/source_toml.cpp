@@ -10,8 +10,8 @@
 namespace globe {
 namespace {
 
-constexpr std::string_view kSourceKeys[] = {"path",           "nodata",          "amplify", "priority",
-                                            "vertical_scale", "vertical_offset_m", "blend_m"};
+constexpr std::string_view kSourceKeys[] = {
+    "path", "nodata", "amplify", "priority", "vertical_scale", "vertical_offset_m", "blend_m"};
 constexpr double kMaxVerticalScale = 1.0e6;
 constexpr double kMaxVerticalOffset_m = 1.0e7;
 

@@ -29,8 +29,8 @@ std::shared_ptr<const RasterBlock> TileCache::tile(const GdalRaster& raster, int
   const auto start = std::chrono::steady_clock::now();
   const RasterFacts& f = raster.facts();
   const int x0 = tx * kSourceTilePixels, y0 = ty * kSourceTilePixels;
-  Result<RasterBlock> block = raster.read(x0, y0, std::min(kSourceTilePixels, f.width - x0),
-                                          std::min(kSourceTilePixels, f.height - y0));
+  Result<RasterBlock> block =
+      raster.read(x0, y0, std::min(kSourceTilePixels, f.width - x0), std::min(kSourceTilePixels, f.height - y0));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!block) return nullptr;
   auto shared = std::make_shared<const RasterBlock>(std::move(*block));

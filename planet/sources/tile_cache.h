@@ -21,13 +21,13 @@ namespace globe {
 inline constexpr int kSourceTilePixels = 256;
 
 struct TileCacheStats {
-  std::uint64_t hits = 0;                // lookups answered from RAM
-  std::uint64_t reads = 0;               // tiles read and decoded from disk
-  std::uint64_t evictions = 0;           // tiles dropped for the budget
-  std::uint64_t frameThreadMisses = 0;   // lookups on a frame-loop thread that found no tile
-  std::uint64_t frameLoopWaits = 0;      // disk reads done on a frame-loop thread (kept at 0)
+  std::uint64_t hits = 0;               // lookups answered from RAM
+  std::uint64_t reads = 0;              // tiles read and decoded from disk
+  std::uint64_t evictions = 0;          // tiles dropped for the budget
+  std::uint64_t frameThreadMisses = 0;  // lookups on a frame-loop thread that found no tile
+  std::uint64_t frameLoopWaits = 0;     // disk reads done on a frame-loop thread (kept at 0)
   std::size_t residentBytes = 0, peakResidentBytes = 0;
-  double readSeconds = 0.0;              // time spent reading and decoding
+  double readSeconds = 0.0;  // time spent reading and decoding
 };
 
 class TileCache {

@@ -46,8 +46,8 @@ class ElevationSourcesGpuTest : public GpuTest {
 TEST_F(ElevationSourcesGpuTest, PayloadsMatchTheCpuReference) {
   // Nodes over the DEM from a whole region down to a few pixels: interior, the hole, the border.
   std::vector<NodeId> nodes;
-  for (const glm::dvec2& p : {glm::dvec2(36.59, -84.25), glm::dvec2(36.70, -84.35), glm::dvec2(36.447, -84.30),
-                              glm::dvec2(36.60, -84.079)}) {
+  for (const glm::dvec2& p :
+       {glm::dvec2(36.59, -84.25), glm::dvec2(36.70, -84.35), glm::dvec2(36.447, -84.30), glm::dvec2(36.60, -84.079)}) {
     const FacePoint at = RhombusFaceMapping::get().locate(directionFromLatLon(p.x, p.y));
     for (int level : {6, 10, 13, 16, 19}) nodes.push_back(nodeAt(at, level));
   }
@@ -77,7 +77,8 @@ TEST_F(ElevationSourcesGpuTest, PayloadsMatchTheCpuReference) {
     const gpu::PayloadJob job = makePayloadJob(r.node, 0, *model_);
     const RadiusRange range = fillPayloadReference(*model_, job, kCells, cpu);
     const RadiusRange padded = paddedRadiusRange(model_->params(), range, r.node.level, kCells);
-    worstRadius = std::max({worstRadius, std::abs(r.radius.min_m - padded.min_m), std::abs(r.radius.max_m - padded.max_m)});
+    worstRadius =
+        std::max({worstRadius, std::abs(r.radius.min_m - padded.min_m), std::abs(r.radius.max_m - padded.max_m)});
     const glm::vec4* g = &gpu[r.slot * perSlot];
     EXPECT_EQ(gen.slotCentre(r.slot).x, job.centre.x);
     for (size_t i = 0; i < samples; ++i) {
@@ -138,9 +139,9 @@ TEST_F(ElevationSourcesGpuTest, AKeptHoleIsDrawnAsAHole) {
   ASSERT_TRUE(terrain.ok()) << terrain.error().format();
   HeadlessRenderer renderer(device(), {64, 64});
   auto depthBelow = [&](double lat, double lon) {
-    const Camera cam = cameraFromPose({lat, lon, 3000, 0, -90, 0},
-                                      (*terrain)->cameraGroundRadius(directionFromLatLon(lat, lon)),
-                                      model_->radius_m(), 1.0);
+    const Camera cam =
+        cameraFromPose({lat, lon, 3000, 0, -90, 0}, (*terrain)->cameraGroundRadius(directionFromLatLon(lat, lon)),
+                       model_->radius_m(), 1.0);
     renderer.renderFrame(**terrain, cam, true);
     const ImageRgba image = toImage(renderer.readback(), cam);
     return image.z[32 * 64 + 32];

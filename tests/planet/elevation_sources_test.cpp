@@ -132,7 +132,7 @@ TEST_F(ElevationSourcesTest, FilledNoDataTakesTheCoarserSourceWithoutASeam) {
   full.pixelCentre(200.0, 170.0, lat, lon);  // the blob's centre
   EXPECT_NEAR(model.elevation_m(directionFromLatLon(lat, lon)), coarse.at(lat, lon), 1e-6);
   double lonOut = 0.0;
-  full.pixelCentre(290.0, 170.0, lat, lonOut);  // across the blob's east border
+  full.pixelCentre(290.0, 170.0, lat, lonOut);                                    // across the blob's east border
   const std::vector<double> h = profile(model, {lat, lon}, {lat, lonOut}, 1500);  // ~5 m steps
   EXPECT_LE(maxJump(h), full.maxAdjacentDifference() * 5.0 / 75.0 + 1.0);
   EXPECT_EQ(model.sourceTerm(directionFromLatLon(lat, lon)).hole, 0.0);
@@ -177,7 +177,7 @@ TEST_F(ElevationSourcesTest, AmplificationAddsZeroMeanDetailFollowingTheRelief) 
     ++n;
   }
   const double mean = sum / n, rms = std::sqrt(sumSquares / n);
-  EXPECT_GT(rms, 0.5);                  // metres of detail on a hilly 75 m DEM
+  EXPECT_GT(rms, 0.5);                   // metres of detail on a hilly 75 m DEM
   EXPECT_LT(std::abs(mean), 0.1 * rms);  // zero mean: the DEM's heights are kept
   const ElevationModel flat = load("amp_flat", source(fixture_->flat, "amplify = true"));
   for (double t = 0.1; t < 0.9; t += 0.05) {
@@ -187,7 +187,9 @@ TEST_F(ElevationSourcesTest, AmplificationAddsZeroMeanDetailFollowingTheRelief) 
 }
 
 TEST_F(ElevationSourcesTest, BadSourceKeysAreOneLineEach) {
-  auto check = [&](const std::string& toml) { return checkPlanetFile(testing::writeDemPlanet(dir_->str(), "bad", toml)); };
+  auto check = [&](const std::string& toml) {
+    return checkPlanetFile(testing::writeDemPlanet(dir_->str(), "bad", toml));
+  };
   const PlanetFileCheck missing = check("[[sources]]\npath = \"nope.tif\"\n");
   ASSERT_EQ(missing.errors.size(), 1u);
   EXPECT_EQ(missing.errors[0].field, "sources[0].path");

@@ -34,8 +34,8 @@ Grid readGrid(const std::string& path) {
   g.wkt = wkt;
   CPLFree(wkt);
   g.values.resize(std::size_t(g.width) * std::size_t(g.height));
-  if (ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, g.width, g.height, g.values.data(), g.width, g.height,
-                                     GDT_Float32, 0, 0) != CE_None)
+  if (ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, g.width, g.height, g.values.data(), g.width, g.height, GDT_Float32,
+                                     0, 0) != CE_None)
     throw std::runtime_error("cannot read " + path);
   return g;
 }
@@ -63,8 +63,7 @@ Grid window(const Grid& g, int x0, int y0, int w, int h) {
   c.geo[3] = g.geo[3] + y0 * g.geo[5];
   c.values.resize(std::size_t(w) * std::size_t(h));
   for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      c.values[std::size_t(y * w + x)] = g.values[std::size_t((y0 + y) * g.width + x0 + x)];
+    for (int x = 0; x < w; ++x) c.values[std::size_t(y * w + x)] = g.values[std::size_t((y0 + y) * g.width + x0 + x)];
   return c;
 }
 
@@ -87,8 +86,8 @@ Grid coarsened(const Grid& g, int factor) {
 }
 
 void warpToUtm(const std::string& from, const std::string& to) {
-  const char* args[] = {"-t_srs", "EPSG:32617", "-tr", "90", "90", "-r", "bilinear", "-dstnodata", "-32768",
-                        "-ot", "Float32", "-of", "GTiff", nullptr};
+  const char* args[] = {"-t_srs",     "EPSG:32617", "-tr", "90",      "90",  "-r",    "bilinear",
+                        "-dstnodata", "-32768",     "-ot", "Float32", "-of", "GTiff", nullptr};
   GDALWarpAppOptions* options = GDALWarpAppOptionsNew(const_cast<char**>(args), nullptr);
   GDALDatasetH source = GDALOpen(from.c_str(), GA_ReadOnly);
   int usageError = 0;
@@ -196,7 +195,8 @@ void RasterReference::pixelCentre(double i, double j, double& latitude_deg, doub
 std::string writeDemPlanet(const std::filesystem::path& dir, const std::string& name, const std::string& sourcesToml) {
   const std::string path = (dir / (name + ".toml")).string();
   std::ofstream out(path);
-  out << "name = \"" << name << "\"\nradius_m = 6371000.0\nseed = 7\n\n" << sourcesToml
+  out << "name = \"" << name << "\"\nradius_m = 6371000.0\nseed = 7\n\n"
+      << sourcesToml
       << "\n[[layers]]\nname = \"base\"\nkind = \"fbm\"\noctaves = 6\nwavelength_m = 2.0e5\nlacunarity = 2.0\n"
          "gain = 0.5\namplitude_m = 800.0\n";
   return path;
