@@ -12,6 +12,10 @@ PACKAGES=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools libglfw3-dev
   # maths and geodesy
   libglm-dev libgeographiclib-dev
+  # real elevation sources (planet/sources): GDAL with PROJ; the USGS grids of assets/planets/earth-dem.toml
+  # come from python-matplotlib-data; gdal-bin's tools and python3-gdal/python3-numpy for the commands
+  # of docs/elevation-data.md
+  libgdal-dev libproj-dev gdal-bin python3-gdal python3-numpy python-matplotlib-data
   # file formats and command line
   libopenexr-dev libstb-dev libtomlplusplus-dev libcli11-dev libfmt-dev nlohmann-json3-dev
   # KML camera tours (XML); MP4 movies through FFmpeg's libraries (H.264 by libx264 inside libavcodec)

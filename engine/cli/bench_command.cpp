@@ -12,6 +12,8 @@
 #include "options.h"
 #include "planet/camera/camera_path_file.h"
 #include "planet/elevation/planet_file.h"
+#include "planet/sources/source_mosaic.h"
+#include "planet/sources/source_report.h"
 #include "progress_bar.h"
 #include "terrain_warnings.h"
 
@@ -44,6 +46,7 @@ struct BenchOptions {
   std::string baseline;    // an earlier run's output directory (its summary.json), or empty
   BudgetOptions budget;
   std::string commandLine;
+  int sourceRam_MiB = 0;  // RAM budget of elevation source tiles; 0 = kDefaultSourceRamBudget
 };
 
 GenerationLatency generationLatency(const PayloadPool& pool) {
@@ -184,6 +187,8 @@ int runBench(const BenchOptions& o) {
   auto in = checkBenchInputs(o);
   if (!in) return usageError(in.error());
   ElevationModel model(in->planet);
+  if (model.sources() != nullptr && o.sourceRam_MiB > 0)
+    model.sources()->cache().setBudget(std::size_t(o.sourceRam_MiB) << 20);
   TerrainSettings settings = in->settings;
   // One sun for the whole flight, lighting the region of the path's first keyframe.
   settings.style.sunDirection = defaultSunDirection(in->path.positionAt(
@@ -226,6 +231,8 @@ int runBench(const BenchOptions& o) {
       "(of which warm-up %.0f ms in %u rounds; %u nodes drawn)\n",
       flight->firstFrame_ms, deviceReady_ms, pipelinesReady_ms - deviceReady_ms, first.frame_ms,
       (*terrain)->primeWall_ms(), (*terrain)->primedRounds(), first.nodes_selected);
+  if (const SourceMosaic* sources = model.sources())
+    std::printf("%s\n", sourceStreamingSummary(*sources, (*terrain)->generator().sourceLatencies_s()).c_str());
   return kExitOk;
 }
 
@@ -254,6 +261,10 @@ void addBenchCommand(CLI::App& app, Runner& run, const std::string& commandLine)
   addBudgetOptions(*cmd, opts->budget);
   cmd->add_option("--baseline", opts->baseline,
                   "An earlier run's output directory: its summary.json's numbers go beside this run's, with ratios");
+  cmd->add_option("--source-ram-mib", opts->sourceRam_MiB,
+                  "RAM budget of a planet's elevation source tiles, MiB (0: the default, 256)")
+      ->check(CLI::Range(0, 65536))
+      ->capture_default_str();
   addDeviceFlags(*cmd, opts->device);
   cmd->callback([opts, &run] { run = [opts] { return runBench(*opts); }; });
 }

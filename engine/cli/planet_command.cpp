@@ -1,10 +1,11 @@
-// globe planet: check, stats, sample (and export, planet_export_command.cpp) for planet files.
+// globe planet: check, stats (and sample, planet_sample_command.cpp; export, planet_export_command.cpp).
 #include "commands.h"
 #include "options.h"
 #include "planet/camera/camera.h"
 #include "planet/elevation/elevation.h"
 #include "planet/elevation/planet_file.h"
 #include "planet/elevation/sphere_sampling.h"
+#include "planet/sources/source_report.h"
 #include "planet_commands.h"
 #include "progress_bar.h"
 
@@ -47,6 +48,7 @@ int runCheck(const std::vector<std::string>& files) {
     const PlanetFileCheck check = checkPlanetFile(file);
     if (check.ok()) {
       std::printf("%s: ok\n", file.c_str());
+      for (const std::string& line : describeSources(check.planet)) std::printf("  %s\n", line.c_str());
       continue;
     }
     for (const std::string& line : formatErrorList(check.errors)) std::fprintf(stderr, "%s\n", line.c_str());
@@ -106,44 +108,12 @@ int runStats(const StatsOptions& o) {
   return kExitOk;
 }
 
-// ---- sample ----
+}  // namespace
 
-Result<glm::dvec2> parseLatLon(const std::string& text) {
-  double lat = 0.0;
-  double lon = 0.0;
-  char extra = 0;
-  if (std::sscanf(text.c_str(), "%lf,%lf%c", &lat, &lon, &extra) != 2) {
-    return Error::inField("--at", "expected LAT,LON in degrees (for example 27.99,86.93), got '" + text + "'");
-  }
-  if (!std::isfinite(lat) || !std::isfinite(lon))
-    return Error::inField("--at", "latitude and longitude must be finite");
-  if (lat < -90.0 || lat > 90.0) return Error::inField("--at", "latitude must be within [-90, 90] degrees");
-  return glm::dvec2(lat, lon);
-}
-
-int runSample(const std::string& file, const std::vector<std::string>& at) {
-  std::vector<glm::dvec2> points;
-  for (const std::string& a : at) {
-    auto p = parseLatLon(a);
-    if (!p) return usageError(p.error());
-    points.push_back(*p);
-  }
-  const auto planet = loadPlanetForCommand(file);
-  if (!planet) return kExitUsage;
-  const ElevationModel model(*planet);
-  for (const glm::dvec2& p : points) {
-    const double h = model.elevation_m(directionFromLatLon(p.x, p.y));
-    std::printf("%.9g,%.9g %.6f\n", p.x, p.y, h);
-  }
-  return kExitOk;
-}
-
-void addFileArgument(CLI::App& cmd, std::string& file) {
+void addPlanetFileArgument(CLI::App& cmd, std::string& file) {
   file = defaultPlanetPath();
   cmd.add_option("FILE", file, "Planet file (default: the earthlike preset)");
 }
-
-}  // namespace
 
 void addPlanetCommand(CLI::App& app, Runner& run) {
   CLI::App* planet = app.add_subcommand("planet", "Author planet files: check, stats, sample, export");
@@ -161,7 +131,7 @@ void addPlanetCommand(CLI::App& app, Runner& run) {
   auto stats = std::make_shared<StatsOptions>();
   CLI::App* stats_cmd = planet->add_subcommand(
       "stats", "Elevation statistics over uniform directions: min/max/mean, percentiles, hypsometry, area below sea");
-  addFileArgument(*stats_cmd, stats->file);
+  addPlanetFileArgument(*stats_cmd, stats->file);
   stats_cmd->add_option("--samples", stats->samples, "Directions sampled (Fibonacci sphere)")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{100000000}))
       ->capture_default_str();
@@ -169,17 +139,7 @@ void addPlanetCommand(CLI::App& app, Runner& run) {
   addThreadsOption(*stats_cmd, stats->threads);
   stats_cmd->callback([stats, &run] { run = [stats] { return runStats(*stats); }; });
 
-  auto sample_file = std::make_shared<std::string>();
-  auto sample_at = std::make_shared<std::vector<std::string>>();
-  CLI::App* sample = planet->add_subcommand("sample", "Print the elevation (metres above radius_m) at points");
-  addFileArgument(*sample, *sample_file);
-  sample->add_option("--at", *sample_at, "LAT,LON in degrees; repeat for more points")
-      ->required()
-      ->allow_extra_args(false);
-  sample->callback([sample_file, sample_at, &run] {
-    run = [sample_file, sample_at] { return runSample(*sample_file, *sample_at); };
-  });
-
+  addPlanetSampleCommand(*planet, run);
   addPlanetExportCommand(*planet, run);
 }
 

@@ -18,5 +18,9 @@ void addThreadsOption(CLI::App& cmd, unsigned& threads);
 unsigned defaultThreads();
 
 void addPlanetExportCommand(CLI::App& planet, std::function<int()>& run);
+void addPlanetSampleCommand(CLI::App& planet, std::function<int()>& run);
+
+// "FILE" argument of a planet subcommand, default the earthlike preset.
+void addPlanetFileArgument(CLI::App& cmd, std::string& file);
 
 }  // namespace globe::cli

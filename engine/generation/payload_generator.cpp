@@ -6,8 +6,11 @@
 #include "planet/geometry/face_mapping.h"
 #include "planet/streaming/payload_reference.h"
 
+#include <algorithm>
 #include <cassert>
+#include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <stdexcept>
 
@@ -21,7 +24,7 @@ GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationMode
       cells_(cells),
       maxJobs_(std::min<uint32_t>(maxJobsPerSubmit, GLOBE_PAYLOAD_MAX_BATCH)),
       pipeline_(device,
-                precision == GenerationPrecision::kFloat ? "payload_generate_float.comp" : "payload_generate.comp", 6,
+                precision == GenerationPrecision::kFloat ? "payload_generate_float.comp" : "payload_generate.comp", 7,
                 2 * sizeof(uint32_t), /*uniformMask=*/1u, elevationSpecialization(model.params())),
       elevation_(device, sizeof(gpu::ElevationParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::HostVisible,
                  "elevation params"),
@@ -54,8 +57,13 @@ GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationMode
                                vk::MemoryUse::HostVisible, "payload results");
     batch.scratch = vk::Buffer(device, VkDeviceSize(maxJobs_) * samples * 32, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                vk::MemoryUse::DeviceLocal, "payload scratch");
+    // A planet without sources binds a one-term buffer it never reads.
+    const VkDeviceSize termBytes = model.sources() != nullptr ? VkDeviceSize(maxJobs_) * samples * 32 : 32;
+    batch.sourceTerms = vk::Buffer(device, termBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::HostVisible,
+                                   "payload source terms");
     batch.submitted.reserve(maxJobs_);
   }
+  if (model.sources() != nullptr) preparer_ = std::make_unique<SourceRequestPreparer>(model, cells);
 }
 
 GpuPayloadGenerator::~GpuPayloadGenerator() {
@@ -97,46 +105,87 @@ GpuPayloadGenerator::Batch& GpuPayloadGenerator::freeBatch() {
   return oldest;
 }
 
+GpuPayloadGenerator::Batch* GpuPayloadGenerator::idleBatch() {
+  for (Batch& b : batches_)
+    if (!b.busy) return &b;
+  return nullptr;
+}
+
 void GpuPayloadGenerator::generate(std::span<const GenerationJob> jobs) {
   assert(payloads_.size() > 0 && "reserveSlots() first");
-  for (size_t first = 0; first < jobs.size(); first += maxJobs_) {
-    size_t count = std::min<size_t>(maxJobs_, jobs.size() - first);
-    Batch& batch = freeBatch();
-    auto* gpuJobs = static_cast<gpu::PayloadJob*>(batch.jobs.mapped());
-    batch.submitted.assign(jobs.begin() + std::ptrdiff_t(first), jobs.begin() + std::ptrdiff_t(first + count));
-    // One dispatch per payload page the batch writes (usually one): jobs sorted by page, each
-    // dispatch offset to its first job (vkCmdDispatchBase) with its page's window bound.
-    std::stable_sort(
-        batch.submitted.begin(), batch.submitted.end(),
-        [&](const GenerationJob& a, const GenerationJob& b) { return pages_.page(a.slot) < pages_.page(b.slot); });
-    for (size_t k = 0; k < count; ++k) {
-      gpuJobs[k] = makePayloadJob(batch.submitted[k].node, pages_.localSlot(batch.submitted[k].slot), model_);
-      slotCentres_[batch.submitted[k].slot] = {gpuJobs[k].centre.x, gpuJobs[k].centre.y, gpuJobs[k].centre.z};
-    }
-
-    GLOBE_VK_CHECK(vkResetCommandBuffer(batch.cmd, 0));
-    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    GLOBE_VK_CHECK(vkBeginCommandBuffer(batch.cmd, &begin));
-    vkCmdWriteTimestamp2(batch.cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, queries_, 2 * batch.index);
-    uint32_t push[2] = {cells_, uint32_t(count)};
-    for (size_t run = 0; run < count;) {
-      const uint32_t page = pages_.page(batch.submitted[run].slot);
-      size_t end = run + 1;
-      while (end < count && pages_.page(batch.submitted[end].slot) == page) ++end;
-      pipeline_.bind(batch.cmd,
-                     {elevation_.descriptor(), faces_.descriptor(), batch.jobs.descriptor(), pages_.window(page),
-                      batch.scratch.descriptor(), batch.results.descriptor()},
-                     push, sizeof(push));
-      vkCmdDispatchBase(batch.cmd, uint32_t(run), 0, 0, uint32_t(end - run), 1, 1);
-      run = end;
-    }
-    vk::computeWriteBarrier(batch.cmd);
-    vkCmdWriteTimestamp2(batch.cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, queries_, 2 * batch.index + 1);
-    GLOBE_VK_CHECK(vkEndCommandBuffer(batch.cmd));
-
-    submit(batch);
+  if (preparer_) {
+    preparer_->submit(jobs);
+    submitPrepared();
+    return;
   }
+  std::vector<PreparedRequest> requests;
+  requests.reserve(jobs.size());
+  for (const GenerationJob& job : jobs) requests.push_back({job, makePayloadJob(job.node, job.slot, model_), {}, {}});
+  submitBatches(requests, true);
+}
+
+void GpuPayloadGenerator::submitPrepared() {
+  preparer_->takeReady(prepared_, SIZE_MAX);
+  submitBatches(prepared_, false);
+}
+
+void GpuPayloadGenerator::submitBatches(std::vector<PreparedRequest>& requests, bool mayWait) {
+  size_t first = 0;
+  while (first < requests.size()) {
+    Batch* batch = mayWait ? &freeBatch() : idleBatch();
+    if (batch == nullptr) break;  // the rest waits for the next call: the frame never waits here
+    const size_t count = std::min<size_t>(maxJobs_, requests.size() - first);
+    record(*batch, std::span(requests).subspan(first, count));
+    first += count;
+  }
+  requests.erase(requests.begin(), requests.begin() + std::ptrdiff_t(first));
+}
+
+void GpuPayloadGenerator::record(Batch& batch, std::span<PreparedRequest> requests) {
+  const size_t count = requests.size();
+  const size_t samples = size_t(cells_ + 3) * size_t(cells_ + 3);
+  auto* gpuJobs = static_cast<gpu::PayloadJob*>(batch.jobs.mapped());
+  auto* terms = static_cast<glm::dvec4*>(batch.sourceTerms.mapped());
+  // One dispatch per payload page the batch writes (usually one): jobs sorted by page, each
+  // dispatch offset to its first job (vkCmdDispatchBase) with its page's window bound.
+  std::stable_sort(requests.begin(), requests.end(), [&](const PreparedRequest& a, const PreparedRequest& b) {
+    return pages_.page(a.request.slot) < pages_.page(b.request.slot);
+  });
+  batch.submitted.clear();
+  batch.sourceQueued.clear();
+  for (size_t k = 0; k < count; ++k) {
+    const PreparedRequest& r = requests[k];
+    batch.submitted.push_back(r.request);
+    gpuJobs[k] = r.job;
+    gpuJobs[k].slot = pages_.localSlot(r.request.slot);
+    const bool hasTerms = !r.terms.empty();
+    gpuJobs[k].sourceBase = hasTerms ? uint32_t(k * samples) : GLOBE_NO_SOURCE_TERMS;
+    if (hasTerms) std::memcpy(terms + k * samples, r.terms.data(), samples * sizeof(glm::dvec4));
+    batch.sourceQueued.push_back(hasTerms ? r.queued : std::chrono::steady_clock::time_point::max());
+    slotCentres_[r.request.slot] = {gpuJobs[k].centre.x, gpuJobs[k].centre.y, gpuJobs[k].centre.z};
+  }
+
+  GLOBE_VK_CHECK(vkResetCommandBuffer(batch.cmd, 0));
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  GLOBE_VK_CHECK(vkBeginCommandBuffer(batch.cmd, &begin));
+  vkCmdWriteTimestamp2(batch.cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, queries_, 2 * batch.index);
+  uint32_t push[2] = {cells_, uint32_t(count)};
+  for (size_t run = 0; run < count;) {
+    const uint32_t page = pages_.page(batch.submitted[run].slot);
+    size_t end = run + 1;
+    while (end < count && pages_.page(batch.submitted[end].slot) == page) ++end;
+    pipeline_.bind(batch.cmd,
+                   {elevation_.descriptor(), faces_.descriptor(), batch.jobs.descriptor(), pages_.window(page),
+                    batch.scratch.descriptor(), batch.results.descriptor(), batch.sourceTerms.descriptor()},
+                   push, sizeof(push));
+    vkCmdDispatchBase(batch.cmd, uint32_t(run), 0, 0, uint32_t(end - run), 1, 1);
+    run = end;
+  }
+  vk::computeWriteBarrier(batch.cmd);
+  vkCmdWriteTimestamp2(batch.cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, queries_, 2 * batch.index + 1);
+  GLOBE_VK_CHECK(vkEndCommandBuffer(batch.cmd));
+  submit(batch);
 }
 
 void GpuPayloadGenerator::submit(Batch& batch) {
@@ -162,7 +211,10 @@ void GpuPayloadGenerator::submit(Batch& batch) {
 
 void GpuPayloadGenerator::finish(Batch& batch, std::vector<GenerationResult>& finished) {
   const auto* results = static_cast<const gpu::PayloadResult*>(batch.results.mapped());
+  const auto now = std::chrono::steady_clock::now();
   for (size_t k = 0; k < batch.submitted.size(); ++k) {
+    if (batch.sourceQueued[k] != std::chrono::steady_clock::time_point::max())
+      sourceLatencies_s_.push_back(std::chrono::duration<double>(now - batch.sourceQueued[k]).count());
     const GenerationJob& job = batch.submitted[k];
     RadiusRange payload{results[k].minRadius_m, results[k].maxRadius_m};
     // A payload whose radii are not finite (a broken device or driver) is not drawn: bounds from it
@@ -186,6 +238,7 @@ void GpuPayloadGenerator::finish(Batch& batch, std::vector<GenerationResult>& fi
 }
 
 void GpuPayloadGenerator::collect(std::vector<GenerationResult>& finished) {
+  if (preparer_) submitPrepared();
   // Batches freeBatch() finished early come first: they were submitted first.
   finished.insert(finished.end(), waitedResults_.begin(), waitedResults_.end());
   waitedResults_.clear();
@@ -201,6 +254,12 @@ void GpuPayloadGenerator::collect(std::vector<GenerationResult>& finished) {
 }
 
 void GpuPayloadGenerator::waitIdle() {
+  // Outside the frame loop only (warm-up, converged frames, shutdown): the I/O thread's queue first.
+  while (preparer_ && (preparer_->pending() > 0 || !prepared_.empty())) {
+    preparer_->waitUntilIdle();
+    preparer_->takeReady(prepared_, SIZE_MAX);
+    submitBatches(prepared_, true);
+  }
   for (uint32_t index : order_) {
     VkFence fence = batches_[index].fence;
     GLOBE_VK_CHECK(vkWaitForFences(device_.device(), 1, &fence, VK_TRUE, UINT64_MAX));

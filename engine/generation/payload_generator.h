@@ -5,13 +5,18 @@
 // submitted with a fence. collect() polls the fences without waiting and reports the finished
 // nodes with their radius ranges (padded for unresolved detail, planet/streaming/payload_reference.h).
 // Implements planet's PayloadGenerator, so the PayloadPool drives it exactly like the CPU fake.
+// A planet with elevation sources goes through the source I/O thread first
+// (planet/sources/request_preparer.h): generate() only queues there, and the prepared jobs are
+// submitted, with their source terms, by later generate()/collect() calls while a batch is free.
 #include "engine/generation/payload_pages.h"
 #include "engine/vk/compute_pipeline.h"
 #include "planet/elevation/elevation.h"
+#include "planet/sources/request_preparer.h"
 #include "planet/streaming/payload_generator.h"
 #include "shaders/include/payload_layout.h"
 
 #include <deque>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -55,6 +60,10 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   // Device time of all finished batches so far (ms) and how many nodes they held.
   double gpuTime_ms() const { return gpuTime_ms_; }
   uint64_t nodesGenerated() const { return nodesGenerated_; }
+  // Planets with sources: the I/O thread (nullptr otherwise), and request -> resident time (s) of
+  // every finished job that carried source terms, in finishing order.
+  const SourceRequestPreparer* sourcePreparer() const { return preparer_.get(); }
+  const std::vector<double>& sourceLatencies_s() const { return sourceLatencies_s_; }
 
  private:
   struct Batch {
@@ -63,11 +72,19 @@ class GpuPayloadGenerator final : public PayloadGenerator {
     vk::Buffer jobs;
     vk::Buffer results;
     vk::Buffer scratch;
+    vk::Buffer sourceTerms;  // S * S dvec4 per job with sources (elevation_sources.glsl)
     std::vector<GenerationJob> submitted;
+    std::vector<std::chrono::steady_clock::time_point> sourceQueued;  // per job; max() = no sources
     bool busy = false;
     uint32_t index = 0;  // query slots 2*index, 2*index+1
   };
   Batch& freeBatch();
+  Batch* idleBatch();
+  // Records and submits `requests` in batches; with mayWait false only while a batch is idle.
+  // Removes what it submitted.
+  void submitBatches(std::vector<PreparedRequest>& requests, bool mayWait);
+  void record(Batch& batch, std::span<PreparedRequest> requests);
+  void submitPrepared();
   // Submits a recorded batch; a failed submit (not a lost device) reports its jobs failed instead.
   void submit(Batch& batch);
   void finish(Batch& batch, std::vector<GenerationResult>& finished);
@@ -91,6 +108,9 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   double gpuTime_ms_ = 0.0;
   uint64_t nodesGenerated_ = 0;
   std::string lastFailure_;
+  std::unique_ptr<SourceRequestPreparer> preparer_;
+  std::vector<PreparedRequest> prepared_;  // taken from the I/O thread, waiting for an idle batch
+  std::vector<double> sourceLatencies_s_;
 };
 
 }  // namespace globe

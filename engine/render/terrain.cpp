@@ -1,6 +1,9 @@
 #include "engine/render/terrain.h"
 
 #include "engine/vk/vk_check.h"
+#include "planet/sources/source_mosaic.h"
+#include "planet/sources/tile_cache.h"
+
 #include "planet/geometry/triacontahedron.h"
 #include "planet/lod/frustum.h"
 #include "planet/streaming/payload_reference.h"
@@ -67,6 +70,7 @@ void Terrain::attachPool(std::unique_ptr<PayloadPool> pool) {
   generator_->reserveSlots(pool_->slotCapacity(), settings_.payloadSlotsPerPage);
   TerrainStyle style = settings_.style;
   style.radius_m = model_.radius_m();
+  style.holes = model_.sources() != nullptr && model_.sources()->hasHoles();
   renderer_ = std::make_unique<TerrainRenderer>(device_, settings_.gridCells, style, settings_.vertexPositions);
   drawNodes_.reserve(4096);
 }
@@ -80,6 +84,8 @@ Terrain::~Terrain() {
 }
 
 const FrameStats& Terrain::update(uint64_t frame, const Camera& camera, uint64_t completedFrame) {
+  // Source tiles are read on the source I/O thread only: a lookup here never touches the disk.
+  const ScopedFrameLoopThread frameLoop;
   if (!primed_) prime(frame, camera);
   updateAt(frame + primedRounds_, camera, completedFrame + primedRounds_, false);
   return stats_;
@@ -167,6 +173,7 @@ void Terrain::record(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIn
 }
 
 double Terrain::cameraGroundRadius(const glm::dvec3& unitDirection) const {
+  const ScopedFrameLoopThread frameLoop;
   return std::max(groundRadius(unitDirection),
                   drawnSurfaceRadius(model_, unitDirection, settings_.ranges.maxDepth, settings_.gridCells));
 }

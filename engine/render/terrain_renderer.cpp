@@ -35,11 +35,11 @@ constexpr VkDeviceSize kFrameHeaderBytes = 512;
 static_assert(sizeof(gpu::TerrainFrame) <= kFrameHeaderBytes);
 
 vk::GraphicsPipelineDesc terrainDesc(VkFormat colourFormat, bool wireframe, VkCullModeFlags cull,
-                                     VertexPositions positions) {
+                                     VertexPositions positions, bool holes) {
   vk::GraphicsPipelineDesc d;
   const bool reprojected = positions == VertexPositions::kReprojected;
   d.vertexShader = reprojected ? "terrain_reprojected.vert" : "terrain.vert";
-  d.fragmentShader = "terrain.frag";
+  d.fragmentShader = holes ? "terrain_holes.frag" : "terrain.frag";
   // 0: instances, 1: payloads, 2: frame constants (uniform); reprojected: 3 nodes' (u, v), 4 faces.
   d.storageBuffers = reprojected ? 5 : 3;
   d.uniformMask = 1u << 2;
@@ -94,9 +94,11 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
       style_(style),
       // The surface is seen from above only (the camera never goes under it): its back faces are
       // always hidden behind front faces, and culling them halves the rasteriser's work. Skirts
-      // fill gaps seen from either side.
-      solid_(device, terrainDesc(colourFormat, false, VK_CULL_MODE_BACK_BIT, positions)),
-      skirts_(device, terrainDesc(colourFormat, false, VK_CULL_MODE_NONE, positions)),
+      // fill gaps seen from either side. A planet with kept holes draws both faces, so that the
+      // surface and the hole's rim are seen from below through the hole too.
+      solid_(device, terrainDesc(colourFormat, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT,
+                                 positions, style.holes)),
+      skirts_(device, terrainDesc(colourFormat, false, VK_CULL_MODE_NONE, positions, style.holes)),
       sky_(device, [&] {
         vk::GraphicsPipelineDesc d;
         d.vertexShader = "terrain_sky.vert";
@@ -111,8 +113,8 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
   VkPhysicalDeviceFeatures features{};
   vkGetPhysicalDeviceFeatures(device.physical(), &features);
   if (features.fillModeNonSolid) {
-    wireframe_ =
-        std::make_unique<vk::GraphicsPipeline>(device, terrainDesc(colourFormat, true, VK_CULL_MODE_NONE, positions));
+    wireframe_ = std::make_unique<vk::GraphicsPipeline>(
+        device, terrainDesc(colourFormat, true, VK_CULL_MODE_NONE, positions, false));
   }
 
   // Ranges: full grid, half grid, full skirt strip, half skirt strip.

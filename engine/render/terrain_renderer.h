@@ -57,6 +57,9 @@ struct TerrainStyle {
   // fraction of a pixel may then show between nodes of different levels).
   float skirtOutward = 0.25f;
   float skirtDrop = 0.5f;
+  // The planet has kept no-data holes (nodata = "hole"): fragments inside them are discarded
+  // (terrain_holes.frag); off, the shader has no discard and keeps the early depth test.
+  bool holes = false;
 };
 
 // One node to draw; the caller builds these from the selection and the payload pool.

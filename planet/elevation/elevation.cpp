@@ -1,5 +1,7 @@
 #include "planet/elevation/elevation.h"
 
+#include "planet/sources/source_mosaic.h"
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -127,10 +129,28 @@ Real evaluateElevation(const gpu::ElevationParams& p, Real dx, Real dy, Real dz)
 }  // namespace
 
 ElevationModel::ElevationModel(const PlanetDescription& planet)
-    : params_(packElevationParams(planet)), bounds_(elevationBounds(planet)) {}
+    : params_(packElevationParams(planet)), bounds_(elevationBounds(planet)) {
+  if (planet.sources.empty()) return;
+  sources_ = std::make_shared<const SourceMosaic>(planet.sources, planet.radius_m, planet.seed);
+  if (sources_->layers().empty()) return;
+  // The mosaic mixes the two: the union of both ranges holds every blend.
+  bounds_.min_m = std::min(bounds_.min_m, sources_->minElevation_m());
+  bounds_.max_m = std::max(bounds_.max_m, sources_->maxElevation_m());
+}
+
+double ElevationModel::proceduralElevation_m(const glm::dvec3& unit_direction) const {
+  return evaluateElevation<double>(params_, unit_direction.x, unit_direction.y, unit_direction.z);
+}
+
+SourceTerm ElevationModel::sourceTerm(const glm::dvec3& unit_direction) const {
+  if (!sources_ || !sources_->mayCover(unit_direction)) return {};
+  return sources_->term(unit_direction);
+}
 
 double ElevationModel::elevation_m(const glm::dvec3& unit_direction) const {
-  return evaluateElevation<double>(params_, unit_direction.x, unit_direction.y, unit_direction.z);
+  const double procedural = proceduralElevation_m(unit_direction);
+  if (!sources_) return procedural;
+  return combineSourceTerm(procedural, sourceTerm(unit_direction));
 }
 
 glm::dvec3 ElevationModel::surfacePosition(const glm::dvec3& unit_direction) const {

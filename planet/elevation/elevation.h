@@ -13,11 +13,15 @@
 #include <array>
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <memory>
 
 #include "planet/elevation/planet_description.h"
 #include "shaders/include/elevation_params.h"
 
 namespace globe {
+
+class SourceMosaic;
+struct SourceTerm;
 
 // The 32-bit noise seed of a layer, derived from the planet seed and the layer's index.
 std::uint32_t layerSeed(std::uint64_t planet_seed, int layer_index);
@@ -38,8 +42,15 @@ class ElevationModel {
   explicit ElevationModel(const PlanetDescription& planet);
 
   // Elevation above radius_m at a unit direction, metres. |unit_direction| = 1 is the caller's job
-  // (the result scales with the point d * radius_m).
+  // (the result scales with the point d * radius_m). With sources, the mosaic over the layers
+  // (combineSourceTerm, planet/sources/source_mosaic.h).
   double elevation_m(const glm::dvec3& unit_direction) const;
+  // The procedural layers alone (what the GPU kernels evaluate themselves).
+  double proceduralElevation_m(const glm::dvec3& unit_direction) const;
+  // What the planet's sources contribute at a direction (weight 0 without sources).
+  SourceTerm sourceTerm(const glm::dvec3& unit_direction) const;
+  // The mosaic of the planet's [[sources]], or nullptr for a procedural planet.
+  const SourceMosaic* sources() const { return sources_.get(); }
   // unit_direction * (radius_m + elevation_m), metres, planet-centred.
   glm::dvec3 surfacePosition(const glm::dvec3& unit_direction) const;
   // The same evaluation carried out entirely in float (radius, point, frequencies, noise): only to
@@ -55,6 +66,7 @@ class ElevationModel {
  private:
   gpu::ElevationParams params_{};
   ElevationRange bounds_{};
+  std::shared_ptr<const SourceMosaic> sources_;  // shared by copies
 };
 
 }  // namespace globe

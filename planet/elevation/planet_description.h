@@ -15,6 +15,7 @@
 
 #include "planet/core/error.h"
 #include "planet/elevation/colour_ramp.h"
+#include "planet/sources/source_description.h"
 
 namespace globe {
 
@@ -74,6 +75,8 @@ struct PlanetDescription {
   double surface_gravity_m_s2 = 9.81;  // gravity at radius_m (physics, falling as 1/r^2), (0, 1e4]
   QualityPreset default_quality = QualityPreset::kBalanced;
   ColourRamp colour_ramp;  // surface colour by elevation and slope
+  // Real elevation rasters mosaicked over the layers ([[sources]], planet/sources/); empty = procedural only.
+  std::vector<ElevationSource> sources;
 
   bool operator==(const PlanetDescription&) const = default;
 };

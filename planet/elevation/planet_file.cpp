@@ -2,6 +2,7 @@
 #include "planet/core/input_file.h"
 
 #include "planet/elevation/planet_toml_reader.h"
+#include "planet/sources/source_toml.h"
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
@@ -19,7 +20,7 @@ namespace {
 
 constexpr std::string_view kTopKeys[] = {
     "name",   "radius_m",    "seed", "sea_level_m", "surface_gravity_m_s2", "default_quality",
-    "layers", "colour_ramp", "rock", "snow"};
+    "layers", "colour_ramp", "rock", "snow",        "sources"};
 constexpr std::string_view kStopKeys[] = {"elevation_m", "colour"};
 constexpr std::string_view kRockKeys[] = {"slope_deg", "blend_deg", "colour"};
 constexpr std::string_view kSnowKeys[] = {"elevation_m", "blend_m", "max_slope_deg", "colour"};
@@ -313,7 +314,11 @@ PlanetFileCheck readPlanet(const toml::table& root, std::string_view source_name
     }
     have_radius = have_radius || k == "radius_m";
     have_layers = have_layers || k == "layers";
-    readTopLevel(r, k, node, planet);
+    if (k == "sources") {
+      readSources(r, node, std::filesystem::path(source_name).parent_path().string(), planet.sources);
+    } else {
+      readTopLevel(r, k, node, planet);
+    }
   }
   if (!have_radius) r.fail(root.source(), "radius_m", "missing (required)");
   if (!have_layers) r.fail(root.source(), "layers", "missing (required, at least one [[layers]])");

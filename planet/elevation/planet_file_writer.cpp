@@ -50,6 +50,14 @@ std::string formatPlanetToml(const PlanetDescription& planet) {
                      number(l.modulation_high_m), number(l.modulation_floor));
     }
   }
+  for (const ElevationSource& src : planet.sources) {
+    fmt::format_to(line,
+                   "\n[[sources]]\npath = {}\nnodata = \"{}\"\namplify = {}\npriority = {}\nvertical_scale = {}\n"
+                   "vertical_offset_m = {}\n",
+                   quoted(src.path), noDataModeName(src.nodata), src.amplify ? "true" : "false", src.priority,
+                   number(src.vertical_scale), number(src.vertical_offset_m));
+    if (src.blend_m >= 0.0) fmt::format_to(line, "blend_m = {}\n", number(src.blend_m));
+  }
   const ColourRamp& ramp = planet.colour_ramp;
   for (const ColourRampStop& s : ramp.stops) {
     fmt::format_to(line, "\n[[colour_ramp]]\nelevation_m = {}\ncolour = {}\n", number(s.elevation_m), colour(s.colour));

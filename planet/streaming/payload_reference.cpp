@@ -3,6 +3,7 @@
 #include "planet/elevation/gradient_noise.h"
 #include "planet/geometry/triacontahedron.h"
 #include "planet/lod/lod_ranges.h"
+#include "planet/sources/source_mosaic.h"
 
 #include <glm/geometric.hpp>
 
@@ -34,6 +35,7 @@ gpu::PayloadJob makePayloadJob(const NodeId& node, uint32_t slot, const Elevatio
   job.face = node.face;
   job.slot = slot;
   job.level = node.level;
+  job.sourceBase = GLOBE_NO_SOURCE_TERMS;  // the source I/O thread sets it (planet/sources/request_preparer.h)
   const auto& face = Triacontahedron::get().face(node.face);
   uint32_t n[4];
   for (int e = 0; e < 4; ++e)
@@ -146,14 +148,18 @@ RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::Payload
   const glm::dvec3 centre{job.centre.x, job.centre.y, job.centre.z};
   const double q = job.centre.w;
   std::vector<glm::dvec3> positions(size_t(s) * size_t(s));
+  std::vector<double> holes(size_t(s) * size_t(s));
   RadiusRange range{std::numeric_limits<double>::infinity(), 0.0};
   for (int j = -1; j <= n + 1; ++j) {
     for (int i = -1; i <= n + 1; ++i) {
       size_t index = size_t(j + 1) * size_t(s) + size_t(i + 1);
       glm::dvec3 dir = payloadSampleDirection(job, cells, i, j);
-      double h = model.elevation_m(dir);
-      glm::dvec3 p = model.surfacePosition(dir);
+      // = elevation_m and surfacePosition, with the source term kept for the hole mask.
+      const SourceTerm term = model.sourceTerm(dir);
+      double h = combineSourceTerm(model.proceduralElevation_m(dir), term);
+      glm::dvec3 p = dir * (model.radius_m() + h);
       positions[index] = p;
+      holes[index] = term.hole;
       glm::dvec3 rel = p - centre;
       glm::dvec3 quantised{std::floor(rel.x / q + 0.5) * q, std::floor(rel.y / q + 0.5) * q,
                            std::floor(rel.z / q + 0.5) * q};
@@ -175,7 +181,7 @@ RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::Payload
       glm::dvec3 c{du.y * dv.z - du.z * dv.y, du.z * dv.x - du.x * dv.z, du.x * dv.y - du.y * dv.x};
       glm::dvec3 nrm = normalised(c);
       slot[normals + size_t(j + 1) * size_t(s) + size_t(i + 1)] =
-          glm::vec4(float(nrm.x), float(nrm.y), float(nrm.z), 0.0f);
+          glm::vec4(float(nrm.x), float(nrm.y), float(nrm.z), float(holes[size_t(j + 1) * size_t(s) + size_t(i + 1)]));
     }
   }
   return range;

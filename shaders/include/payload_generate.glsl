@@ -29,6 +29,7 @@ layout(push_constant) uniform Push {
 #define GLOBE_ELEVATION_FLOAT
 #endif
 #include "elevation.glsl"
+#include "elevation_sources.glsl"
 
 shared double sharedMin[GLOBE_PAYLOAD_WORKGROUP];
 shared double sharedMax[GLOBE_PAYLOAD_WORKGROUP];
@@ -102,7 +103,7 @@ void main() {
     double h = double(hFloat);
     dvec3 p = dvec3(pFloat);
 #else
-    double h = globeElevation(dir);
+    double h = globeApplySources(globeElevation(dir), job.sourceBase, index);
     precise double r = GLOBE_ELEVATION_PARAMS.radius_m + h;
     precise dvec3 p = dir * r;
 #endif
@@ -129,7 +130,7 @@ void main() {
     precise dvec3 du = scratch[at + 1u].xyz - scratch[at - 1u].xyz;
     precise dvec3 dv = scratch[at + uint(s)].xyz - scratch[at - uint(s)].xyz;
     precise dvec3 c = dvec3(du.y * dv.z - du.z * dv.y, du.z * dv.x - du.x * dv.z, du.x * dv.y - du.y * dv.x);
-    payloads[normalBase + index] = vec4(vec3(normalised(c)), 0.0);
+    payloads[normalBase + index] = vec4(vec3(normalised(c)), globeSourceHole(job.sourceBase, index));
   }
 
   for (uint stride = GLOBE_PAYLOAD_WORKGROUP / 2u; stride > 0u; stride >>= 1) {

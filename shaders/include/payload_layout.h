@@ -15,8 +15,10 @@
 //                         quantised to multiples of the level's quantum (see below); w = elevation
 //                         above the planet radius, metres
 //   [S*S, S*S + S*S)      normal: xyz = unit surface normal, planet-fixed, from double-precision
-//                         positions (central differences); w = 0. Ring samples hold the normal of the
-//                         nearest vertex (there are no samples beyond the ring).
+//                         positions (central differences); w = the hole mask of the sample (0 without
+//                         elevation sources; >= 0.5 inside a kept no-data hole, elevation_sources.glsl).
+//                         Ring samples hold the normal of the nearest vertex (there are no samples
+//                         beyond the ring).
 // Quantum: positions and node centres are multiples of q(level) = 2^(ceil(log2(node width)) - 18)
 // metres, so that centre + position is the same double from every node of a level that holds the
 // sample, and stays exact in float relative to a floating origin snapped to the coarsest quantum.
@@ -47,6 +49,8 @@ struct uvec4_ {
   (2u * GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells) * GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells))
 // Most jobs one generation dispatch takes.
 #define GLOBE_PAYLOAD_MAX_BATCH 64u
+// PayloadJob.sourceBase of a job without source terms.
+#define GLOBE_NO_SOURCE_TERMS 0xffffffffu
 // Threads per generation workgroup (one workgroup per node).
 #define GLOBE_PAYLOAD_WORKGROUP 128u
 
@@ -57,7 +61,8 @@ struct PayloadJob {
   uint face;              // 64: 0..29
   uint slot;              // 68: payload slot to fill
   uint level;             // 72: quadtree level
-  uint pad0;              // 76
+  uint sourceBase;        // 76: first of the job's S*S source terms (elevation_sources.glsl), or
+                          //     GLOBE_NO_SOURCE_TERMS when no elevation source touches the node
   GLOBE_UVEC4 neighbour;  // 80: across face edge e: neighbour face | (its edge << 8)
 };
 

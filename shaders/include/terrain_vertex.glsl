@@ -66,6 +66,7 @@ struct TerrainVertex {
   vec3 normal;      // planet-fixed unit normal (morphed, renormalised by the fragment shader)
   vec3 up;          // planet-fixed radial unit vector at the vertex
   float elevation;  // metres above the planet radius (morphed)
+  float hole;       // hole mask of elevation sources (payload normal.w, morphed; >= 0.5 is discarded)
   float morph;      // k in [0, 1]
   uint level;       // level the node is drawn at (TerrainInstance.info.z)
 };
@@ -115,8 +116,10 @@ TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCell
   float k = terrainMorphFactor(length(rel0), inst.morph.xy);
 
   vec3 position = world;
-  vec3 normal = payload[terrainSample(base, cells, si, sj) + normals].xyz;
+  vec4 normal0 = payload[terrainSample(base, cells, si, sj) + normals];
+  vec3 normal = normal0.xyz;
   float elevation = sample0.w;
+  float hole = normal0.w;
   bool oddI = (gi & 1u) != 0u, oddJ = (gj & 1u) != 0u;
   if (k > 0.0 && (oddI || oddJ)) {
     // Even neighbours whose midpoint the vertex slides to (never outside the drawn grid: the
@@ -136,8 +139,10 @@ TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCell
     precise vec3 mid = (wa + wb) * 0.5;
     precise vec3 morphed = world + (mid - world) * k;
     position = morphed;
-    normal = mix(normal, payload[ia + normals].xyz + payload[ib + normals].xyz, k);
+    vec4 na = payload[ia + normals], nb = payload[ib + normals];
+    normal = mix(normal, na.xyz + nb.xyz, k);
     elevation = mix(elevation, 0.5 * (sa.w + sb.w), k);
+    hole = mix(hole, 0.5 * (na.w + nb.w), k);
   }
 
 #ifdef GLOBE_TERRAIN_REPROJECT
@@ -167,6 +172,7 @@ TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCell
   v.normal = normal;
   v.up = up;
   v.elevation = elevation;
+  v.hole = hole;
   v.morph = k;
   v.level = inst.info.z;
   return v;

@@ -16,6 +16,7 @@ layout(location = 0) out vec3 outNormal;
 layout(location = 1) out vec3 outAlbedo;
 layout(location = 2) flat out vec4 outSun;  // xyz: towards the sun, w: ambient
 layout(location = 3) out vec3 outRelative;
+layout(location = 4) out float outHole;
 
 void main() {
   TerrainVertex v = terrainVertex(uint(gl_VertexIndex), uint(gl_InstanceIndex), push.draw.drawnCells);
@@ -30,4 +31,5 @@ void main() {
   outAlbedo = mix(ramp, level, bvec3(debug));
   outSun = mix(frame.sun, vec4(0.0, 0.0, 0.0, 1.0), bvec4(debug));  // debug colours are shown unlit
   outRelative = v.relative;
+  outHole = v.hole;
 }

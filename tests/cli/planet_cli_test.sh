@@ -15,8 +15,19 @@ fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 # -- check: every preset is valid; the default planet is found from any directory.
 for p in "$SRC"/assets/planets/*.toml; do
   out=$("$GLOBE" planet check "$p" 2>&1) || fail "check $p: $out"
-  [[ "$out" == "$p: ok" ]] || fail "check $p printed '$out'"
+  # Planets with [[sources]] add one line per source after the verdict.
+  [[ "$(head -1 <<<"$out")" == "$p: ok" ]] || fail "check $p printed '$out'"
 done
+
+# -- sources (docs/elevation-data.md): check reports them, sample draws the mosaic.
+out=$("$GLOBE" planet check "$SRC/assets/planets/earth-dem.toml")
+grep -q "source 0 (rank 0): .*jacksboro.vrt: 403 x 344 px, CRS 'WGS 84'" <<<"$out" || fail "check of earth-dem: '$out'"
+grep -q "source 1 (rank 1): .*topobathy.vrt: 120 x 91 px" <<<"$out" || fail "check of earth-dem: '$out'"
+h=$("$GLOBE" planet sample "$SRC/assets/planets/earth-dem.toml" --at 36.59,-84.25 | cut -d' ' -f2)
+awk -v h="$h" 'BEGIN { exit !(h > 500 && h < 600) }' || fail "earth-dem at Jacksboro: $h m (the DEM says 552 m)"
+sed 's#path = "dem/jacksboro.vrt"#path = "dem/missing.tif"#' "$SRC/assets/planets/earth-dem.toml" >"$WORK/nodem.toml"
+"$GLOBE" planet check "$WORK/nodem.toml" 2>"$WORK/stderr" && fail "a missing source was accepted"
+grep -q "nodem.toml:16:8: sources\[0\].path: no such file" "$WORK/stderr" || fail "missing source: $(cat "$WORK/stderr")"
 (cd / && "$GLOBE" planet check >/dev/null 2>&1) || fail "check of the default planet from /"
 GLOBE_ASSET_DIR=/nonexistent "$GLOBE" planet check >/dev/null 2>&1 && fail "GLOBE_ASSET_DIR is not honoured"
 

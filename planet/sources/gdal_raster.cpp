@@ -1,0 +1,183 @@
+#include "planet/sources/gdal_raster.h"
+
+#include <cpl_conv.h>
+#include <cpl_error.h>
+#include <gdal_priv.h>
+#include <ogr_spatialref.h>
+
+#include <fmt/format.h>
+
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <unordered_map>
+
+namespace globe {
+namespace {
+
+GDALDataset* asDataset(void* handle) { return static_cast<GDALDataset*>(handle); }
+
+std::string lastGdalMessage() {
+  const char* message = CPLGetLastErrorMsg();
+  return message != nullptr && message[0] != '\0' ? std::string(message) : std::string("no reason given");
+}
+
+OGRSpatialReference wgs84() {
+  OGRSpatialReference srs;
+  srs.SetWellKnownGeogCS("WGS84");
+  srs.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);  // (longitude, latitude)
+  return srs;
+}
+
+std::unique_ptr<OGRCoordinateTransformation> makeTransform(const std::string& wkt, bool toRaster) {
+  OGRSpatialReference raster;
+  if (raster.importFromWkt(wkt.c_str()) != OGRERR_NONE) return nullptr;
+  raster.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  OGRSpatialReference geographic = wgs84();
+  return std::unique_ptr<OGRCoordinateTransformation>(toRaster
+                                                          ? OGRCreateCoordinateTransformation(&geographic, &raster)
+                                                          : OGRCreateCoordinateTransformation(&raster, &geographic));
+}
+
+// PROJ transformations are not thread-safe: each thread keeps its own, per raster.
+OGRCoordinateTransformation* threadTransform(std::uint64_t id, const std::string& wkt) {
+  thread_local std::unordered_map<std::uint64_t, std::unique_ptr<OGRCoordinateTransformation>> transforms;
+  auto& slot = transforms[id];
+  if (!slot) slot = makeTransform(wkt, true);
+  return slot.get();
+}
+
+std::atomic<std::uint64_t> nextRasterId{1};
+
+// The latitude/longitude box of the pixel centres: 64 points along each border, to geographic.
+void findLatLonBox(RasterFacts& f, const std::string& wkt, bool needsTransform) {
+  std::unique_ptr<OGRCoordinateTransformation> toGeographic = needsTransform ? makeTransform(wkt, false) : nullptr;
+  f.lat_min_deg = f.lon_min_deg = std::numeric_limits<double>::infinity();
+  f.lat_max_deg = f.lon_max_deg = -std::numeric_limits<double>::infinity();
+  const int n = 64;
+  for (int side = 0; side < 4; ++side) {
+    for (int k = 0; k <= n; ++k) {
+      const double t = double(k) / n;
+      double px = side < 2 ? t * (f.width - 1) : (side == 2 ? 0.0 : f.width - 1.0);
+      double py = side < 2 ? (side == 0 ? 0.0 : f.height - 1.0) : t * (f.height - 1);
+      const double* g = f.geo_transform;
+      double x = g[0] + (px + 0.5) * g[1] + (py + 0.5) * g[2];
+      double y = g[3] + (px + 0.5) * g[4] + (py + 0.5) * g[5];
+      if (toGeographic && !toGeographic->Transform(1, &x, &y)) continue;
+      f.lon_min_deg = std::min(f.lon_min_deg, x);
+      f.lon_max_deg = std::max(f.lon_max_deg, x);
+      f.lat_min_deg = std::min(f.lat_min_deg, y);
+      f.lat_max_deg = std::max(f.lat_max_deg, y);
+    }
+  }
+}
+
+// Pixel size (metres) and the CRS's kind.
+Status describeCrs(const OGRSpatialReference& srs, double radius_m, RasterFacts& f) {
+  f.crs_name = srs.GetName() != nullptr ? srs.GetName() : "unnamed";
+  f.geographic = srs.IsGeographic() != 0;
+  const double* g = f.geo_transform;
+  const double sx = std::hypot(g[1], g[4]), sy = std::hypot(g[2], g[5]);
+  if (f.geographic) {
+    const double radiansPerUnit = srs.GetAngularUnits() * 1.0;  // radians per CRS unit
+    const double centreLat = g[3] + 0.5 * f.height * g[5];
+    const double dx = sx * radiansPerUnit * radius_m * std::cos(centreLat * std::numbers::pi / 180.0);
+    f.pixel_size_m = std::min(std::abs(dx), sy * radiansPerUnit * radius_m);
+  } else if (srs.IsProjected() != 0) {
+    f.pixel_size_m = std::min(sx, sy) * srs.GetLinearUnits();
+  } else {
+    return Error::inFile("", fmt::format("CRS '{}' is neither geographic nor projected", f.crs_name));
+  }
+  if (!(f.pixel_size_m > 0.0) || !std::isfinite(f.pixel_size_m)) return Error::inFile("", "pixel size is not positive");
+  return Ok{};
+}
+
+}  // namespace
+
+void registerGdalDrivers() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    GDALAllRegister();
+    // Our own tile cache (tile_cache.h) holds what is read; GDAL's block cache stays small.
+    GDALSetCacheMax64(std::int64_t(16) << 20);
+    CPLSetErrorHandler(CPLQuietErrorHandler);  // failures come back as Errors, never on stderr
+  });
+}
+
+Result<std::unique_ptr<GdalRaster>> GdalRaster::open(const std::string& path, double radius_m) {
+  registerGdalDrivers();
+  std::unique_ptr<GdalRaster> r(new GdalRaster());
+  r->path_ = path;
+  r->id_ = nextRasterId++;
+  CPLErrorReset();
+  r->dataset_ = GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY);
+  GDALDataset* ds = asDataset(r->dataset_);
+  if (ds == nullptr) return Error::inFile(path, "GDAL cannot read it as a raster: " + lastGdalMessage());
+  if (ds->GetRasterCount() < 1) return Error::inFile(path, "has no raster band");
+  RasterFacts& f = r->facts_;
+  f.width = ds->GetRasterXSize();
+  f.height = ds->GetRasterYSize();
+  if (f.width < 2 || f.height < 2) return Error::inFile(path, "needs at least 2 x 2 pixels");
+  if (ds->GetGeoTransform(f.geo_transform) != CE_None) return Error::inFile(path, "has no georeferencing");
+  if (!GDALInvGeoTransform(f.geo_transform, r->inverse_)) return Error::inFile(path, "has a singular geotransform");
+  const OGRSpatialReference* srs = ds->GetSpatialRef();
+  if (srs == nullptr || srs->IsEmpty()) return Error::inFile(path, "has no CRS");
+  char* wkt = nullptr;
+  srs->exportToWkt(&wkt);
+  r->crs_wkt_ = wkt != nullptr ? wkt : "";
+  CPLFree(wkt);
+  if (Status s = describeCrs(*srs, radius_m, f); !s) return Error::inFile(path, s.error().message);
+  OGRSpatialReference geographic = wgs84();
+  r->needs_transform_ = !(f.geographic && srs->IsSame(&geographic));
+  if (r->needs_transform_ && makeTransform(r->crs_wkt_, true) == nullptr)
+    return Error::inFile(path, fmt::format("PROJ cannot transform WGS 84 to its CRS '{}'", f.crs_name));
+  GDALRasterBand* band = ds->GetRasterBand(1);
+  int hasNoData = 0;
+  f.nodata = band->GetNoDataValue(&hasNoData);
+  f.has_nodata = hasNoData != 0;
+  double minMax[2] = {0.0, 0.0};
+  if (band->ComputeRasterMinMax(FALSE, minMax) != CE_None) return Error::inFile(path, "has no valid pixel");
+  f.min_value = minMax[0];
+  f.max_value = minMax[1];
+  findLatLonBox(f, r->crs_wkt_, r->needs_transform_);
+  return r;
+}
+
+GdalRaster::~GdalRaster() {
+  if (dataset_ != nullptr) GDALClose(asDataset(dataset_));
+}
+
+bool GdalRaster::pixelAt(double latitude_deg, double longitude_deg, double& px, double& py) const {
+  double x = longitude_deg, y = latitude_deg;
+  if (needs_transform_) {
+    OGRCoordinateTransformation* t = threadTransform(id_, crs_wkt_);
+    if (t == nullptr || !t->Transform(1, &x, &y)) return false;
+  }
+  auto toPixel = [&](double cx, double cy) {
+    px = inverse_[0] + cx * inverse_[1] + cy * inverse_[2] - 0.5;
+    py = inverse_[3] + cx * inverse_[4] + cy * inverse_[5] - 0.5;
+    return px >= 0.0 && px <= facts_.width - 1.0 && py >= 0.0 && py <= facts_.height - 1.0;
+  };
+  if (!facts_.geographic) return toPixel(x, y);
+  // Geographic rasters may give longitudes in [0, 360) or beyond 180: try the three wraps.
+  for (double wrap : {0.0, 360.0, -360.0})
+    if (toPixel(x + wrap, y)) return true;
+  return false;
+}
+
+Result<RasterBlock> GdalRaster::read(int x0, int y0, int w, int h) const {
+  RasterBlock block{x0, y0, w, h, std::vector<float>(std::size_t(w) * std::size_t(h))};
+  std::lock_guard lock(read_mutex_);
+  GDALRasterBand* band = asDataset(dataset_)->GetRasterBand(1);
+  if (band->RasterIO(GF_Read, x0, y0, w, h, block.values.data(), w, h, GDT_Float32, 0, 0) != CE_None)
+    return Error::inFile(path_, "read failed: " + lastGdalMessage());
+  if (facts_.has_nodata) {
+    const float nodata = static_cast<float>(facts_.nodata);
+    for (float& v : block.values)
+      if (v == nodata) v = std::numeric_limits<float>::quiet_NaN();
+  }
+  return block;
+}
+
+}  // namespace globe

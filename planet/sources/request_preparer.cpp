@@ -1,0 +1,98 @@
+#include "planet/sources/request_preparer.h"
+
+#include "planet/sources/source_mosaic.h"
+#include "planet/streaming/payload_reference.h"
+
+namespace globe {
+
+std::vector<glm::dvec4> sourceTermsForJob(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells) {
+  const SourceMosaic* mosaic = model.sources();
+  const int n = int(cells), s = n + 3;
+  std::vector<glm::dvec4> terms;
+  if (mosaic == nullptr) return terms;
+  bool any = false;
+  terms.assign(std::size_t(s) * std::size_t(s), glm::dvec4(0.0));
+  for (int j = -1; j <= n + 1; ++j) {
+    for (int i = -1; i <= n + 1; ++i) {
+      const glm::dvec3 dir = payloadSampleDirection(job, cells, i, j);
+      const SourceTerm t = model.sourceTerm(dir);
+      terms[std::size_t(j + 1) * std::size_t(s) + std::size_t(i + 1)] = {t.height_m, t.weight, t.hole, 0.0};
+      any = any || t.weight > 0.0 || t.hole > 0.0;
+    }
+  }
+  if (!any) terms.clear();
+  return terms;
+}
+
+SourceRequestPreparer::SourceRequestPreparer(const ElevationModel& model, uint32_t cells)
+    : model_(model), cells_(cells), thread_([this] { run(); }) {}
+
+SourceRequestPreparer::~SourceRequestPreparer() {
+  {
+    std::lock_guard lock(mutex_);
+    stop_ = true;
+  }
+  wake_.notify_all();
+  thread_.join();
+}
+
+void SourceRequestPreparer::submit(std::span<const GenerationJob> requests) {
+  if (requests.empty()) return;
+  const auto now = std::chrono::steady_clock::now();
+  {
+    std::lock_guard lock(mutex_);
+    for (const GenerationJob& r : requests) queued_.push_back(PreparedRequest{r, {}, {}, now});
+  }
+  wake_.notify_one();
+}
+
+void SourceRequestPreparer::takeReady(std::vector<PreparedRequest>& out, std::size_t maxCount) {
+  std::lock_guard lock(mutex_);
+  while (!ready_.empty() && maxCount-- > 0) {
+    out.push_back(std::move(ready_.front()));
+    ready_.pop_front();
+  }
+}
+
+void SourceRequestPreparer::waitUntilIdle() {
+  std::unique_lock lock(mutex_);
+  ++idleWaits_;
+  idle_.wait(lock, [this] { return queued_.empty() && working_ == 0; });
+}
+
+std::size_t SourceRequestPreparer::pending() const {
+  std::lock_guard lock(mutex_);
+  return queued_.size() + working_ + ready_.size();
+}
+
+std::uint64_t SourceRequestPreparer::prepared() const {
+  std::lock_guard lock(mutex_);
+  return prepared_;
+}
+
+std::uint64_t SourceRequestPreparer::idleWaits() const {
+  std::lock_guard lock(mutex_);
+  return idleWaits_;
+}
+
+void SourceRequestPreparer::run() {
+  std::unique_lock lock(mutex_);
+  for (;;) {
+    wake_.wait(lock, [this] { return stop_ || !queued_.empty(); });
+    if (stop_) return;
+    PreparedRequest r = std::move(queued_.front());
+    queued_.pop_front();
+    ++working_;
+    lock.unlock();
+    // The tile reads happen in here, on this thread.
+    r.job = makePayloadJob(r.request.node, r.request.slot, model_);
+    r.terms = sourceTermsForJob(model_, r.job, cells_);
+    lock.lock();
+    --working_;
+    ++prepared_;
+    ready_.push_back(std::move(r));
+    if (queued_.empty() && working_ == 0) idle_.notify_all();
+  }
+}
+
+}  // namespace globe

@@ -1,0 +1,76 @@
+#pragma once
+// The source I/O thread (docs/elevation-data.md, "Out of core"): for each generation request of a
+// planet with sources it reads and decodes the source tiles the node needs (through the tile
+// cache: disk -> RAM), resolves the mosaic at every payload sample and hands back the job (its
+// centre on the mosaicked surface) with the samples' source terms, which the GPU generator uploads
+// with the job (RAM -> VRAM). Requests are prepared in the order they came, which is the payload
+// pool's priority order (visible, then prefetch along the view and the next level, nearest first;
+// planet/streaming/payload_pool.h) and bounded by its in-flight cap. The frame thread only ever
+// queues and takes with short locks; it never waits for a read (frameLoopWaits stays 0); until a
+// node's data arrives the pool keeps drawing its parent.
+#include "planet/elevation/elevation.h"
+#include "planet/streaming/payload_generator.h"
+#include "shaders/include/payload_layout.h"
+
+#include <glm/vec4.hpp>
+
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <mutex>
+#include <span>
+#include <thread>
+#include <vector>
+
+namespace globe {
+
+struct PreparedRequest {
+  GenerationJob request;
+  gpu::PayloadJob job{};          // slot = request.slot; sourceBase is the uploader's to set
+  std::vector<glm::dvec4> terms;  // S * S (height_m, weight, hole, 0), or empty: no source touches it
+  std::chrono::steady_clock::time_point queued;
+};
+
+// The S * S source terms of `job` (sample (i, j) at (j + 1) * S + (i + 1)); empty when no sample
+// lies in a source's box.
+std::vector<glm::dvec4> sourceTermsForJob(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells);
+
+class SourceRequestPreparer {
+ public:
+  // `model` (with sources) must outlive the preparer.
+  SourceRequestPreparer(const ElevationModel& model, uint32_t cells);
+  ~SourceRequestPreparer();
+  SourceRequestPreparer(const SourceRequestPreparer&) = delete;
+  SourceRequestPreparer& operator=(const SourceRequestPreparer&) = delete;
+
+  // Queues requests for the I/O thread.
+  void submit(std::span<const GenerationJob> requests);
+  // Moves the prepared requests, oldest first, into `out`, at most `maxCount`.
+  void takeReady(std::vector<PreparedRequest>& out, std::size_t maxCount);
+  // Blocks until every queued request is prepared (warm-up rounds, converged frames, shutdown);
+  // counted in idleWaits, never called by the frame loop's normal path.
+  void waitUntilIdle();
+  // Requests queued or being prepared, and prepared but not yet taken.
+  std::size_t pending() const;
+
+  std::uint64_t prepared() const;
+  std::uint64_t idleWaits() const;
+
+ private:
+  void run();
+
+  const ElevationModel& model_;
+  uint32_t cells_;
+  mutable std::mutex mutex_;
+  std::condition_variable wake_;  // new requests or stop
+  std::condition_variable idle_;  // queue drained
+  std::deque<PreparedRequest> queued_;
+  std::deque<PreparedRequest> ready_;
+  std::size_t working_ = 0;
+  std::uint64_t prepared_ = 0, idleWaits_ = 0;
+  bool stop_ = false;
+  std::thread thread_;
+};
+
+}  // namespace globe

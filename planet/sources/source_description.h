@@ -1,0 +1,35 @@
+#pragma once
+// What a planet file's [[sources]] table says about one real elevation raster (docs/elevation-data.md):
+// where it is, how its no-data pixels are treated, whether procedural detail is added below its
+// resolution, and how it ranks in the mosaic. Plain data; reading the raster is gdal_raster.h's job.
+#include <string>
+#include <string_view>
+
+namespace globe {
+
+enum class NoDataMode {
+  kFill,  // no-data pixels take the next coarser source, else the procedural layers (no seam)
+  kHole,  // no-data pixels are a real hole: the terrain there is not drawn
+};
+
+// "fill", "hole".
+std::string_view noDataModeName(NoDataMode mode);
+
+struct ElevationSource {
+  std::string path;  // as resolved: relative paths in a planet file are relative to the file's folder
+  NoDataMode nodata = NoDataMode::kFill;
+  bool amplify = true;          // procedural detail below the source's resolution
+  int priority = 0;             // higher wins where the resolutions tie
+  double vertical_scale = 1.0;  // elevation_m = raster value * vertical_scale + vertical_offset_m
+  double vertical_offset_m = 0.0;
+  // Feather width (metres) at the source's border, over which it fades into what lies beneath;
+  // < 0 means the default, four of the source's pixels.
+  double blend_m = -1.0;
+
+  bool operator==(const ElevationSource&) const = default;
+};
+
+// At most this many sources in one planet (each is an open GDAL dataset).
+inline constexpr int kMaxElevationSources = 16;
+
+}  // namespace globe

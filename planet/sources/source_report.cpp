@@ -1,0 +1,83 @@
+#include "planet/sources/source_report.h"
+
+#include "planet/sources/source_mosaic.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace globe {
+namespace {
+
+// Share of the raster's pixels that hold data (read in tile-sized blocks).
+double validFraction(const GdalRaster& raster) {
+  const RasterFacts& f = raster.facts();
+  std::size_t valid = 0;
+  for (int y = 0; y < f.height; y += kSourceTilePixels) {
+    for (int x = 0; x < f.width; x += kSourceTilePixels) {
+      Result<RasterBlock> b =
+          raster.read(x, y, std::min(kSourceTilePixels, f.width - x), std::min(kSourceTilePixels, f.height - y));
+      if (!b) return 0.0;
+      valid += std::size_t(std::count_if(b->values.begin(), b->values.end(), [](float v) { return !std::isnan(v); }));
+    }
+  }
+  return double(valid) / (double(f.width) * double(f.height));
+}
+
+bool boxesOverlap(const RasterFacts& a, const RasterFacts& b) {
+  if (a.lat_max_deg < b.lat_min_deg || b.lat_max_deg < a.lat_min_deg) return false;
+  for (double wrap : {0.0, 360.0, -360.0})
+    if (a.lon_max_deg + wrap >= b.lon_min_deg && b.lon_max_deg >= a.lon_min_deg + wrap) return true;
+  return false;
+}
+
+}  // namespace
+
+std::vector<std::string> describeSources(const PlanetDescription& planet) {
+  std::vector<std::string> lines;
+  const SourceMosaic mosaic(planet.sources, planet.radius_m, planet.seed);
+  const auto& layers = mosaic.layers();
+  for (std::size_t i = 0; i < layers.size(); ++i) {
+    const RasterFacts& f = layers[i].raster->facts();
+    const ElevationSource& d = layers[i].description;
+    lines.push_back(fmt::format(
+        "source {} (rank {}): {}: {} x {} px, CRS '{}', {:.2f} m pixels, lat {:.5f} .. {:.5f}, lon {:.5f} .. {:.5f}, "
+        "values {} .. {}, {:.1f} % valid, nodata {}, amplify {}, blend {:.1f} m",
+        std::find(planet.sources.begin(), planet.sources.end(), d) - planet.sources.begin(), i, d.path, f.width,
+        f.height, f.crs_name, f.pixel_size_m, f.lat_min_deg, f.lat_max_deg, f.lon_min_deg, f.lon_max_deg, f.min_value,
+        f.max_value, 100.0 * validFraction(*layers[i].raster), noDataModeName(d.nodata), d.amplify ? "yes" : "no",
+        layers[i].blend_m));
+  }
+  for (std::size_t i = 0; i < layers.size(); ++i) {
+    for (std::size_t j = i + 1; j < layers.size(); ++j) {
+      if (!boxesOverlap(layers[i].raster->facts(), layers[j].raster->facts())) continue;
+      lines.push_back(fmt::format("overlap: {} over {} ({} wins: finer or higher priority)", layers[i].description.path,
+                                  layers[j].description.path, layers[i].description.path));
+    }
+  }
+  if (layers.size() != planet.sources.size()) lines.push_back("warning: a source no longer opens");
+  return lines;
+}
+
+std::string sourceStreamingSummary(const SourceMosaic& mosaic, const std::vector<double>& latencies_s) {
+  const TileCacheStats s = mosaic.cache().stats();
+  double dataBytes = 0.0;
+  for (const auto& layer : mosaic.layers())
+    dataBytes += double(layer.raster->facts().width) * double(layer.raster->facts().height) * sizeof(float);
+  std::vector<double> sorted = latencies_s;
+  std::sort(sorted.begin(), sorted.end());
+  auto at = [&](double q) {
+    return sorted.empty() ? 0.0 : sorted[std::min(sorted.size() - 1, std::size_t(q * double(sorted.size())))];
+  };
+  return fmt::format(
+      "sources: {} tiles read+decoded in {:.3f} s ({:.0f} tiles/s), {} hits; request->resident over {} payloads "
+      "p50 {:.1f} ms p99 {:.1f} ms; RAM peak {:.2f} MiB = {:.1f} % of the data ({:.2f} MiB), {} evictions; "
+      "frame-loop waits {}, frame-loop misses {}",
+      s.reads, s.readSeconds, s.readSeconds > 0.0 ? double(s.reads) / s.readSeconds : 0.0, s.hits, sorted.size(),
+      1e3 * at(0.5), 1e3 * at(0.99), double(s.peakResidentBytes) / 1048576.0,
+      dataBytes > 0.0 ? 100.0 * double(s.peakResidentBytes) / dataBytes : 0.0, dataBytes / 1048576.0, s.evictions,
+      s.frameLoopWaits, s.frameThreadMisses);
+}
+
+}  // namespace globe

@@ -1,0 +1,122 @@
+#include "planet/sources/source_toml.h"
+
+#include "planet/sources/gdal_raster.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+
+namespace globe {
+namespace {
+
+constexpr std::string_view kSourceKeys[] = {
+    "path", "nodata", "amplify", "priority", "vertical_scale", "vertical_offset_m", "blend_m"};
+constexpr double kMaxVerticalScale = 1.0e6;
+constexpr double kMaxVerticalOffset_m = 1.0e7;
+
+void readPath(PlanetTomlReader& r, const toml::node& node, const std::string& field, const std::string& directory,
+              ElevationSource& source) {
+  auto v = r.string(node, field);
+  if (!v) return;
+  if (v->empty()) {
+    r.fail(node.source(), field, "must not be empty");
+    return;
+  }
+  std::filesystem::path path(*v);
+  if (path.is_relative() && !directory.empty()) path = std::filesystem::path(directory) / path;
+  source.path = path.lexically_normal().string();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(source.path, ec)) {
+    r.fail(node.source(), field, fmt::format("no such file '{}'", source.path));
+    return;
+  }
+  Result<std::unique_ptr<GdalRaster>> raster = GdalRaster::open(source.path, 6371000.0);
+  if (!raster) r.fail(node.source(), field, fmt::format("'{}' {}", source.path, raster.error().message));
+}
+
+void readNoData(PlanetTomlReader& r, const toml::node& node, const std::string& field, ElevationSource& source) {
+  auto v = r.string(node, field);
+  if (!v) return;
+  if (*v == "fill") {
+    source.nodata = NoDataMode::kFill;
+  } else if (*v == "hole") {
+    source.nodata = NoDataMode::kHole;
+  } else {
+    r.fail(node.source(), field, fmt::format("unknown nodata '{}' (fill, hole)", *v));
+  }
+}
+
+void readRanged(PlanetTomlReader& r, const toml::node& node, const std::string& field, double low, double high,
+                double& out) {
+  auto v = r.number(node, field);
+  if (!v) return;
+  if (*v < low || *v > high) {
+    r.fail(node.source(), field, fmt::format("must be in [{}, {}]", low, high));
+  } else {
+    out = *v;
+  }
+}
+
+void readSourceKey(PlanetTomlReader& r, const std::string& k, const toml::node& node, const std::string& field,
+                   const std::string& directory, ElevationSource& source) {
+  if (k == "path") {
+    readPath(r, node, field, directory, source);
+  } else if (k == "nodata") {
+    readNoData(r, node, field, source);
+  } else if (k == "amplify") {
+    if (const auto* b = node.as_boolean()) {
+      source.amplify = b->get();
+    } else {
+      r.fail(node.source(), field, fmt::format("expected a boolean, got {}", tomlTypeName(node.type())));
+    }
+  } else if (k == "priority") {
+    if (auto v = r.integer(node, field)) {
+      if (*v < -1000000 || *v > 1000000) {
+        r.fail(node.source(), field, "must be in [-1000000, 1000000]");
+      } else {
+        source.priority = int(*v);
+      }
+    }
+  } else if (k == "vertical_scale") {
+    readRanged(r, node, field, -kMaxVerticalScale, kMaxVerticalScale, source.vertical_scale);
+    if (source.vertical_scale == 0.0) r.fail(node.source(), field, "must not be 0");
+  } else if (k == "vertical_offset_m") {
+    readRanged(r, node, field, -kMaxVerticalOffset_m, kMaxVerticalOffset_m, source.vertical_offset_m);
+  } else if (k == "blend_m") {
+    readRanged(r, node, field, 0.0, 1.0e7, source.blend_m);
+  }
+}
+
+void readSource(PlanetTomlReader& r, const toml::table& t, std::size_t index, const std::string& directory,
+                std::vector<ElevationSource>& sources) {
+  const std::string prefix = fmt::format("sources[{}].", index);
+  ElevationSource source;
+  bool havePath = false;
+  for (auto&& [key, node] : t) {
+    const std::string k(key.str());
+    if (!isKnownKey(k, kSourceKeys)) {
+      r.fail(key.source(), prefix + k, unknownKeyMessage(k, kSourceKeys));
+      continue;
+    }
+    havePath = havePath || k == "path";
+    readSourceKey(r, k, node, prefix + k, directory, source);
+  }
+  if (!havePath) r.fail(t.source(), prefix + "path", "missing (required)");
+  sources.push_back(std::move(source));
+}
+
+}  // namespace
+
+void readSources(PlanetTomlReader& r, const toml::node& node, const std::string& planetDirectory,
+                 std::vector<ElevationSource>& sources) {
+  const toml::array* list = r.arrayOfTables(node, "sources");
+  if (list == nullptr) return;
+  if (list->size() > std::size_t(kMaxElevationSources)) {
+    r.fail((*list)[std::size_t(kMaxElevationSources)].source(), "sources",
+           fmt::format("at most {} sources", kMaxElevationSources));
+  }
+  for (std::size_t i = 0; i < list->size(); ++i) readSource(r, *(*list)[i].as_table(), i, planetDirectory, sources);
+}
+
+}  // namespace globe

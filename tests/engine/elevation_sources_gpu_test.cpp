@@ -1,0 +1,159 @@
+// Real elevation sources on the GPU: payloads generated from the source terms the I/O thread
+// prepares equal the CPU reference (planet/streaming/payload_reference.h) to 1e-6 m, and a low
+// flight over the DEM never makes the frame loop wait for a tile (docs/elevation-data.md).
+#include "engine/generation/payload_generator.h"
+#include "engine/render/headless_renderer.h"
+#include "engine/render/render_output.h"
+#include "engine/render/terrain.h"
+#include "planet/camera/camera.h"
+#include "planet/elevation/planet_file.h"
+#include "planet/sources/source_mosaic.h"
+#include "planet/streaming/payload_reference.h"
+#include "tests/support/dem_fixture.h"
+#include "tests/support/gpu_test.h"
+#include "tests/support/temp_dir.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace globe::testing {
+namespace {
+
+constexpr uint32_t kCells = 16;
+
+class ElevationSourcesGpuTest : public GpuTest {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = std::make_unique<TempDir>("elevation_sources_gpu");
+    fixture_ = std::make_unique<DemFixture>(dir_->str() / std::filesystem::path(),
+                                            std::string(GLOBE_SOURCE_DIR) + "/assets/planets/dem/jacksboro.vrt");
+    const std::string sources = "[[sources]]\npath = \"" + fixture_->coarse + "\"\n\n[[sources]]\npath = \"" +
+                                fixture_->holes + "\"\nnodata = \"hole\"\n";
+    Result<PlanetDescription> planet = loadPlanetFile(writeDemPlanet(dir_->str(), "gpu", sources));
+    ASSERT_TRUE(planet.ok()) << planet.error().format();
+    model_ = std::make_unique<ElevationModel>(*planet);
+  }
+  static void TearDownTestSuite() {
+    model_.reset();
+    fixture_.reset();
+    dir_.reset();
+  }
+  static inline std::unique_ptr<TempDir> dir_;
+  static inline std::unique_ptr<DemFixture> fixture_;
+  static inline std::unique_ptr<ElevationModel> model_;
+};
+
+TEST_F(ElevationSourcesGpuTest, PayloadsMatchTheCpuReference) {
+  // Nodes over the DEM from a whole region down to a few pixels: interior, the hole, the border.
+  std::vector<NodeId> nodes;
+  for (const glm::dvec2& p :
+       {glm::dvec2(36.59, -84.25), glm::dvec2(36.70, -84.35), glm::dvec2(36.447, -84.30), glm::dvec2(36.60, -84.079)}) {
+    const FacePoint at = RhombusFaceMapping::get().locate(directionFromLatLon(p.x, p.y));
+    for (int level : {6, 10, 13, 16, 19}) nodes.push_back(nodeAt(at, level));
+  }
+  GpuPayloadGenerator gen(device(), *model_, kCells, GLOBE_PAYLOAD_MAX_BATCH, 1);
+  ASSERT_NE(gen.sourcePreparer(), nullptr);
+  gen.reserveSlots(uint32_t(nodes.size()));
+  std::vector<GenerationJob> jobs;
+  for (uint32_t k = 0; k < nodes.size(); ++k) jobs.push_back({nodes[k], k});
+  gen.generate(jobs);
+  gen.waitIdle();
+  std::vector<GenerationResult> results;
+  gen.collect(results);
+  ASSERT_EQ(results.size(), nodes.size());
+  vk::Buffer readback(device(), gen.payloads().size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::HostVisible,
+                      "payload readback");
+  device().submitAndWait([&](VkCommandBuffer cmd) {
+    VkBufferCopy copy{0, 0, gen.payloads().size()};
+    vkCmdCopyBuffer(cmd, gen.payloads().handle(), readback.handle(), 1, &copy);
+  });
+  const auto gpu = readback.as<glm::vec4>();
+  const size_t perSlot = GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells), samples = perSlot / 2;
+  std::vector<glm::vec4> cpu(perSlot);
+  double worstRadius = 0.0, worstElevation = 0.0;
+  int holeSamples = 0;
+  for (const GenerationResult& r : results) {
+    SCOPED_TRACE(::testing::Message() << "level " << int(r.node.level));
+    const gpu::PayloadJob job = makePayloadJob(r.node, 0, *model_);
+    const RadiusRange range = fillPayloadReference(*model_, job, kCells, cpu);
+    const RadiusRange padded = paddedRadiusRange(model_->params(), range, r.node.level, kCells);
+    worstRadius =
+        std::max({worstRadius, std::abs(r.radius.min_m - padded.min_m), std::abs(r.radius.max_m - padded.max_m)});
+    const glm::vec4* g = &gpu[r.slot * perSlot];
+    EXPECT_EQ(gen.slotCentre(r.slot).x, job.centre.x);
+    for (size_t i = 0; i < samples; ++i) {
+      for (int c = 0; c < 3; ++c) ASSERT_LE(std::abs(double(g[i][c]) - double(cpu[i][c])), job.centre.w * 1.0001) << i;
+      worstElevation = std::max(worstElevation, double(std::abs(g[i].w - cpu[i].w)));
+      ASSERT_LE(std::abs(g[i].w - cpu[i].w), std::max(1e-6f, std::abs(cpu[i].w) * 1.2e-7f)) << i;
+      ASSERT_EQ(g[samples + i].w, cpu[samples + i].w) << i;  // the hole mask
+      holeSamples += cpu[samples + i].w >= 0.5f;
+      ASSERT_LT(glm::length(glm::vec3(g[samples + i]) - glm::vec3(cpu[samples + i])), 1e-5f) << i;
+    }
+  }
+  EXPECT_LE(worstRadius, 1e-6);
+  EXPECT_GT(holeSamples, 0);
+  std::printf("[ info ] %zu nodes over the DEM: worst |radius| diff %.3g m, elevation %.3g m, %d hole samples\n",
+              results.size(), worstRadius, worstElevation, holeSamples);
+}
+
+// The real frame loop (Terrain::update marks its thread as one) flying low over the DEM: tiles
+// are read on the I/O thread only, the frames never wait for it, and payloads with source terms
+// stream in while the parents are drawn.
+TEST_F(ElevationSourcesGpuTest, ALowFlightNeverMakesTheFrameLoopWait) {
+  TerrainSettings settings;
+  settings.gridCells = kCells;
+  settings.primeRounds = 2;
+  settings.style.sky = false;
+  auto terrain = Terrain::create(device(), *model_, settings);
+  ASSERT_TRUE(terrain.ok()) << terrain.error().format();
+  HeadlessRenderer renderer(device(), {96, 64});
+  const double R = model_->radius_m();
+  uint64_t idleWaitsAfterWarmUp = 0;
+  uint32_t emptyFrames = 0;
+  for (int frame = 0; frame < 60; ++frame) {
+    const double t = frame / 60.0, lat = 36.5 + 0.15 * t, lon = -84.35 + 0.2 * t;
+    const Camera cam = cameraFromPose({lat, lon, 3e4 * std::pow(10.0, -2.0 * t), 45, -20, 0},
+                                      (*terrain)->cameraGroundRadius(directionFromLatLon(lat, lon)), R, 1.5);
+    const FrameStats stats = renderer.renderFrame(**terrain, cam, false);
+    emptyFrames += stats.nodes_selected == 0;
+    if (frame == 0) idleWaitsAfterWarmUp = (*terrain)->generator().sourcePreparer()->idleWaits();
+  }
+  const GpuPayloadGenerator& gen = (*terrain)->generator();
+  EXPECT_EQ(gen.sourcePreparer()->idleWaits(), idleWaitsAfterWarmUp);  // frames never waited for the I/O thread
+  const TileCacheStats s = model_->sources()->cache().stats();
+  EXPECT_EQ(s.frameLoopWaits, 0u);
+  EXPECT_EQ(emptyFrames, 0u);
+  EXPECT_GT(gen.sourceLatencies_s().size(), 20u);
+  std::printf("[ info ] DEM flight: %llu payloads, %zu with source terms, %llu tile reads, %llu frame-loop misses\n",
+              (unsigned long long)gen.nodesGenerated(), gen.sourceLatencies_s().size(), (unsigned long long)s.reads,
+              (unsigned long long)s.frameThreadMisses);
+}
+
+// A kept hole is cut by the fragment shader: looking straight down into it, the ground is gone;
+// beside it, the ground is there.
+TEST_F(ElevationSourcesGpuTest, AKeptHoleIsDrawnAsAHole) {
+  TerrainSettings settings;
+  settings.gridCells = kCells;
+  settings.style.sky = false;
+  auto terrain = Terrain::create(device(), *model_, settings);
+  ASSERT_TRUE(terrain.ok()) << terrain.error().format();
+  HeadlessRenderer renderer(device(), {64, 64});
+  auto depthBelow = [&](double lat, double lon) {
+    const Camera cam =
+        cameraFromPose({lat, lon, 3000, 0, -90, 0}, (*terrain)->cameraGroundRadius(directionFromLatLon(lat, lon)),
+                       model_->radius_m(), 1.0);
+    renderer.renderFrame(**terrain, cam, true);
+    const ImageRgba image = toImage(renderer.readback(), cam);
+    return image.z[32 * 64 + 32];
+  };
+  double lat = 0.0, lon = 0.0;
+  RasterReference(fixture_->full).pixelCentre(200.0, 170.0, lat, lon);  // the no-data blob's centre
+  const float inHole = depthBelow(lat, lon);
+  EXPECT_FALSE(inHole < 1.0e5f) << "the ground is drawn inside the hole, " << inHole << " m below";
+  const float beside = depthBelow(36.70, -84.35);
+  EXPECT_LT(beside, 5000.0f);
+  EXPECT_GT(beside, 1000.0f);
+}
+
+}  // namespace
+}  // namespace globe::testing
