@@ -124,22 +124,22 @@ std::vector<glm::dvec3> decodedPositions(const QuantizedMeshTile& tile, double r
   return out;
 }
 
-void setBounds(const std::vector<glm::dvec3>& kept_m, double radius_m, QuantizedMeshTile& tile) {
+void setBounds(const std::vector<glm::dvec3>& positions_m, double radius_m, QuantizedMeshTile& tile) {
   glm::dvec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
-  for (const glm::dvec3& q : kept_m) {
+  for (const glm::dvec3& q : positions_m) {
     lo = glm::min(lo, q);
     hi = glm::max(hi, q);
   }
   const glm::dvec3 centre = 0.5 * (lo + hi);
   double r = 0.0;
-  for (const glm::dvec3& q : kept_m) r = std::max(r, glm::length(q - centre));
+  for (const glm::dvec3& q : positions_m) r = std::max(r, glm::length(q - centre));
   tile.header.center_m = centre;
   tile.header.sphere_center_m = centre;
   tile.header.sphere_radius_m = r;
   const glm::dvec3 axis = glm::normalize(centre);
   // The hemisphere-wide root tiles admit no point: a distant one on the axis is hidden only from
   // viewers right behind the planet, who see none of the tile either (docs/bake.md).
-  tile.header.horizon_occlusion_point = horizonOcclusionPoint(kept_m, radius_m, axis).value_or(axis * 1.0e3);
+  tile.header.horizon_occlusion_point = horizonOcclusionPoint(positions_m, radius_m, axis).value_or(axis * 1.0e3);
 }
 
 }  // namespace

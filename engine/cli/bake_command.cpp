@@ -82,11 +82,12 @@ int runBakeCommand(const BakeOptions& o) {
       static_cast<unsigned long long>(summary->skipped), static_cast<unsigned long long>(summary->plan_tiles), seconds,
       seconds > 0.0 ? double(summary->written) / seconds : 0.0, o.threads, device.name().c_str());
   if (summary->written > 0) {
-    std::printf("  heights %.2f s, meshes/encoding %.2f s, writes %.2f s; %.1f KiB per tile%s\n", summary->heights_s,
-                summary->encode_s, summary->write_s, double(summary->bytes) / double(summary->written) / 1024.0,
-                settings->format == BakeFormat::QuantizedMesh
-                    ? (", " + std::to_string(summary->vertices / summary->written) + " vertices per tile").c_str()
-                    : "");
+    std::printf("  heights %.2f s, meshes/encoding %.2f s, writes %.2f s; %.1f KiB per tile", summary->heights_s,
+                summary->encode_s, summary->write_s, double(summary->bytes) / double(summary->written) / 1024.0);
+    if (settings->format == BakeFormat::QuantizedMesh) {
+      std::printf(", %llu vertices per tile", static_cast<unsigned long long>(summary->vertices / summary->written));
+    }
+    std::printf("\n");
   }
   std::fflush(stdout);
   return kExitOk;

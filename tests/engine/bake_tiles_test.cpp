@@ -18,6 +18,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <memory>
 
 #include <glm/geometric.hpp>
 
@@ -54,9 +55,9 @@ struct Baked {
 class BakeTilesTest : public GpuTest {
  protected:
   const Baked& baked() {
-    static Baked* b = nullptr;
+    static std::unique_ptr<Baked> b;  // destroyed at exit, removing its directory
     if (b == nullptr) {
-      b = new Baked;
+      b = std::make_unique<Baked>();
       GpuHeightSampler heights(device(), earthlikeModel());
       auto summary = runBake(earthlike(), heights, settingsFor(BakeFormat::QuantizedMesh, b->dir.str()), writeFile);
       EXPECT_TRUE(summary.ok()) << summary.error().format();
