@@ -33,6 +33,10 @@ struct SimulationStats {
   uint64_t steps = 0;
   std::vector<double> step_ms;     // each whole step (everything above, synchronous generation included)
   std::vector<double> physics_ms;  // PhysicsWorld::step alone
+  // The same in CPU time of the stepping thread (CLOCK_THREAD_CPUTIME_ID): what a step costs when
+  // the machine is shared and wall time includes waiting for a core.
+  std::vector<double> stepCpu_ms;
+  std::vector<double> physicsCpu_ms;
   uint64_t predictedContacts = 0;  // body-steps with a predicted contact
   uint64_t predictedMissing = 0;   // of those, nodes that were not resident (each generated synchronously)
   uint64_t selectionRounds = 0;
