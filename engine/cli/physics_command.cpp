@@ -32,7 +32,7 @@ struct PhysicsOptions {
   uint32_t bodies = 100;
   double seconds = 10.0;
   int level = 14;
-  double radius_m = 32.0;
+  double radius_m = 8.0;
   int64_t seed = 1;  // >= 0 (signed, so that a negative value is refused rather than wrapped)
   std::string shape = "mixed";
   std::string out = "out/physics";

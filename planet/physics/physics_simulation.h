@@ -22,7 +22,7 @@ namespace globe {
 
 struct SimulationSettings {
   int level = 14;                  // collision node level L
-  double interestRadius_m = 32.0;  // radius of interest R around each body (added to its size)
+  double interestRadius_m = 8.0;  // radius of interest R around each body (added to its size)
   PhysicsSettings physics;         // planetRadius_m and surfaceGravity_m_s2 come from the model
   CollisionPoolConfig pool;
 };
