@@ -21,9 +21,9 @@
 namespace globe {
 
 struct SimulationSettings {
-  int level = 14;                  // collision node level L
+  int level = 14;                 // collision node level L
   double interestRadius_m = 8.0;  // radius of interest R around each body (added to its size)
-  PhysicsSettings physics;         // planetRadius_m and surfaceGravity_m_s2 come from the model
+  PhysicsSettings physics;        // planetRadius_m and surfaceGravity_m_s2 come from the model
   CollisionPoolConfig pool;
 };
 
