@@ -50,6 +50,11 @@ void BM_PhysicsStep(benchmark::State& state) {
   state.counters["p50_ms"] = nearestRankPercentile(steps, 50);
   state.counters["p99_ms"] = nearestRankPercentile(steps, 99);
   state.counters["max_ms"] = steps.back();
+  std::vector<double> cpu(sim.stats().stepCpu_ms.begin() + std::ptrdiff_t(first), sim.stats().stepCpu_ms.end());
+  std::sort(cpu.begin(), cpu.end());
+  state.counters["cpu_p50_ms"] = nearestRankPercentile(cpu, 50);
+  state.counters["cpu_p99_ms"] = nearestRankPercentile(cpu, 99);
+  state.counters["cpu_max_ms"] = cpu.back();
   state.counters["pool_MiB"] = sim.pool().stats().residentMiB();
   state.counters["meshes"] = double(sim.pool().stats().resident);
   state.counters["sync"] = double(sim.pool().stats().generatedSync);

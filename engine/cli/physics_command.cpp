@@ -32,8 +32,8 @@ struct PhysicsOptions {
   uint32_t bodies = 100;
   double seconds = 10.0;
   int level = 14;
-  double radius_m = 32.0;
-  uint64_t seed = 1;
+  double radius_m = 8.0;
+  int64_t seed = 1;  // >= 0 (signed, so that a negative value is refused rather than wrapped)
   std::string shape = "mixed";
   std::string out = "out/physics";
   std::string render;  // empty: no frame
@@ -59,6 +59,7 @@ Result<PhysicsInputs> checkInputs(const PhysicsOptions& o) {
     return Error::inField("--radius", "must be within [0, 10000] metres");
   if (o.gridCells < 16 || o.gridCells > 256 || (o.gridCells & (o.gridCells - 1)) != 0)
     return Error::inField("--grid", "must be a power of two in [16, 256]");
+  if (o.seed < 0) return Error::inField("--seed", "must be >= 0");
   auto shapes = shapeMixFromName(o.shape);
   if (!shapes) return Error::inField("--shape", "must be sphere, box or mixed");
   if (auto s = checkOutputDirectory(o.out, "--out"); !s) return s.error();
@@ -79,7 +80,7 @@ Result<PhysicsInputs> checkInputs(const PhysicsOptions& o) {
     return e;
   }
   in.scenario.bodies = o.bodies;
-  in.scenario.seed = o.seed;
+  in.scenario.seed = uint64_t(o.seed);
   in.scenario.shapes = *shapes;
   in.scenario.clustered = o.clustered;
   in.steps = uint64_t(std::llround(o.seconds / in.simulation.physics.step_s));
@@ -121,6 +122,8 @@ std::string summaryJson(const PhysicsSimulation& sim, const GpuCollisionMeshSour
       "{{\n  \"bodies\": {},\n  \"steps\": {},\n  \"step_s\": {},\n  \"level\": {},\n  \"grid_cells\": {},\n"
       "  \"ms_per_step_p50\": {:.4f},\n  \"ms_per_step_p99\": {:.4f},\n  \"ms_per_step_max\": {:.4f},\n"
       "  \"physics_ms_per_step_p50\": {:.4f},\n  \"physics_ms_per_step_p99\": {:.4f},\n"
+      "  \"cpu_ms_per_step_p50\": {:.4f},\n  \"cpu_ms_per_step_p99\": {:.4f},\n  \"cpu_ms_per_step_max\": {:.4f},\n"
+      "  \"physics_cpu_ms_per_step_p50\": {:.4f},\n  \"physics_cpu_ms_per_step_p99\": {:.4f},\n"
       "  \"nodes_generated_sync\": {},\n  \"nodes_generated_async\": {},\n  \"nodes_evicted\": {},\n"
       "  \"predicted_contacts\": {},\n  \"gpu_ms_per_node\": {:.4f},\n  \"selection_ms_per_round\": {:.4f},\n"
       "  \"collision_pool_mib\": {:.3f},\n  \"collision_pool_budget_mib\": {:.3f},\n  \"resident_meshes\": {},\n"
@@ -129,7 +132,9 @@ std::string summaryJson(const PhysicsSimulation& sim, const GpuCollisionMeshSour
       "  \"wall_s\": {:.3f},\n  \"load_average\": \"{}\"\n}}\n",
       bodies.size(), s.steps, sim.settings().physics.step_s, sim.settings().level, source.cells(),
       percentileOf(s.step_ms, 50), percentileOf(s.step_ms, 99), stepMax, percentileOf(s.physics_ms, 50),
-      percentileOf(s.physics_ms, 99), pool.generatedSync, pool.generatedAsync, pool.evicted, s.predictedContacts,
+      percentileOf(s.physics_ms, 99), percentileOf(s.stepCpu_ms, 50), percentileOf(s.stepCpu_ms, 99),
+      percentileOf(s.stepCpu_ms, 100), percentileOf(s.physicsCpu_ms, 50), percentileOf(s.physicsCpu_ms, 99),
+      pool.generatedSync, pool.generatedAsync, pool.evicted, s.predictedContacts,
       generated ? source.gpuTime_ms() / double(source.nodesGenerated()) : 0.0,
       s.selectionRounds ? s.selection_ms / double(s.selectionRounds) : 0.0, pool.residentMiB(),
       double(sim.pool().budgetBytes()) / (1024.0 * 1024.0), pool.resident, atRest, fastest, worstRest, meshError.p50_m,
@@ -165,7 +170,7 @@ int runPhysics(const PhysicsOptions& o) {
   addPlacedBodies(sim, model, placed);
   for (uint64_t s = 0; s < in->steps; ++s) sim.step();
   const std::vector<BodyReport> bodies = reportBodies(model, sim.world(), placed);
-  const MeshErrorStats meshError = measureMeshError(model, o.level, o.gridCells, 2000, o.seed);
+  const MeshErrorStats meshError = measureMeshError(model, o.level, o.gridCells, 2000, uint64_t(o.seed));
   std::optional<ImageRgba> frame;
   if (!o.render.empty()) {
     auto image = renderBodies(device, model, *in, sim.world(), o.gridCells);

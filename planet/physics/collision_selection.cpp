@@ -3,6 +3,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace globe {
@@ -35,10 +36,17 @@ void selectCollisionNodes(const FaceMapping& mapping, double minSurfaceRadius_m,
   while (!frontier.empty()) {
     const NodeId node = frontier.back();
     frontier.pop_back();
-    const double angle = std::acos(std::clamp(glm::dot(nodeCentreDirection(mapping, node), direction), -1.0, 1.0));
-    const double gap = angle - nodeAngularRadius(mapping, node);
+    // Within `arc` of the patch only if within `arc` of each of its four side planes (great circles
+    // through its edges): a necessary condition, so the test never drops a node that is near.
+    std::array<glm::dvec3, 4> corners;
+    for (int c = 0; c < 4; ++c) corners[size_t(c)] = nodeCornerDirection(mapping, node, c);
+    double gap = 0.0;
+    for (int e = 0; e < 4; ++e) {
+      const glm::dvec4 plane = NodeBounds::sidePlane(corners[size_t(e)], corners[size_t((e + 1) % 4)]);
+      gap = std::max(gap, std::asin(std::clamp(glm::dot(glm::dvec3(plane), direction), -1.0, 1.0)));
+    }
     if (gap > arc + kAngleSlack_rad) continue;
-    out.push_back({node, std::max(0.0, gap) * minSurfaceRadius_m});
+    out.push_back({node, gap * minSurfaceRadius_m});
     for (int e = 0; e < 4; ++e) {
       const NodeId next = edgeNeighbour(node, e);
       if (std::find(seen.begin(), seen.end(), next.key()) != seen.end()) continue;

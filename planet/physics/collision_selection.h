@@ -30,7 +30,8 @@ double nodeAngularRadius(const FaceMapping& mapping, const NodeId& node);
 // Appends to `out` every node at `level` whose patch lies within query.radius_m of the query's
 // direction, measured as an arc on the sphere of radius `minSurfaceRadius_m` (the lowest the
 // surface gets, so the arc is never underestimated). Conservative: may include a node slightly
-// beyond the radius, never misses one within it. Deterministic order. Cost: the nodes found and
+// beyond the radius near a corner, never misses one within it: each node is tested against its four
+// side planes (great circles through its edges). Deterministic order. Cost: the nodes found and
 // their edge neighbours (a flood fill across edges and face seams), not the quadtree depth.
 void selectCollisionNodes(const FaceMapping& mapping, double minSurfaceRadius_m, const CollisionQuery& query, int level,
                           std::vector<SelectedCollisionNode>& out);

@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <ctime>
 
 namespace globe {
 
@@ -15,6 +16,12 @@ namespace {
 
 double msSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+double threadCpu_ms() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
 }
 
 // Slack above the predicted-contact surface (metres): Bullet's contact margin and rounding.
@@ -108,6 +115,7 @@ void PhysicsSimulation::settleSelection() {
 
 void PhysicsSimulation::step() {
   const auto start = std::chrono::steady_clock::now();
+  const double startCpu = threadCpu_ms();
   pool_->beginStep(stats_.steps + 1);
   // A round is applied a fixed number of steps after it was submitted (waiting for the worker if it
   // is late), so which step a request enters the queue never depends on thread timing.
@@ -115,13 +123,16 @@ void PhysicsSimulation::step() {
   predictContacts();
   pool_->dispatch();
   const auto physicsStart = std::chrono::steady_clock::now();
+  const double physicsStartCpu = threadCpu_ms();
   world_->step();
   stats_.physics_ms.push_back(msSince(physicsStart));
+  stats_.physicsCpu_ms.push_back(threadCpu_ms() - physicsStartCpu);
   for (uint32_t id = 0; id < world_->bodyCount(); ++id)
     for (const NodeId& node : world_->contactNodes(id)) pool_->pin(node);
   if (pendingRound_ == 0) submitSelection();
   ++stats_.steps;
   stats_.step_ms.push_back(msSince(start));
+  stats_.stepCpu_ms.push_back(threadCpu_ms() - startCpu);
 }
 
 }  // namespace globe

@@ -21,9 +21,9 @@
 namespace globe {
 
 struct SimulationSettings {
-  int level = 14;                  // collision node level L
-  double interestRadius_m = 32.0;  // radius of interest R around each body (added to its size)
-  PhysicsSettings physics;         // planetRadius_m and surfaceGravity_m_s2 come from the model
+  int level = 14;                 // collision node level L
+  double interestRadius_m = 8.0;  // radius of interest R around each body (added to its size)
+  PhysicsSettings physics;        // planetRadius_m and surfaceGravity_m_s2 come from the model
   CollisionPoolConfig pool;
 };
 
@@ -33,6 +33,10 @@ struct SimulationStats {
   uint64_t steps = 0;
   std::vector<double> step_ms;     // each whole step (everything above, synchronous generation included)
   std::vector<double> physics_ms;  // PhysicsWorld::step alone
+  // The same in CPU time of the stepping thread (CLOCK_THREAD_CPUTIME_ID): what a step costs when
+  // the machine is shared and wall time includes waiting for a core.
+  std::vector<double> stepCpu_ms;
+  std::vector<double> physicsCpu_ms;
   uint64_t predictedContacts = 0;  // body-steps with a predicted contact
   uint64_t predictedMissing = 0;   // of those, nodes that were not resident (each generated synchronously)
   uint64_t selectionRounds = 0;
