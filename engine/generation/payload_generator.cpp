@@ -153,6 +153,7 @@ void GpuPayloadGenerator::record(Batch& batch, std::span<PreparedRequest> reques
   });
   batch.submitted.clear();
   batch.sourceQueued.clear();
+  batch.sourcePad_m.clear();
   for (size_t k = 0; k < count; ++k) {
     const PreparedRequest& r = requests[k];
     batch.submitted.push_back(r.request);
@@ -162,6 +163,7 @@ void GpuPayloadGenerator::record(Batch& batch, std::span<PreparedRequest> reques
     gpuJobs[k].sourceBase = hasTerms ? uint32_t(k * samples) : GLOBE_NO_SOURCE_TERMS;
     if (hasTerms) std::memcpy(terms + k * samples, r.terms.data(), samples * sizeof(glm::dvec4));
     batch.sourceQueued.push_back(hasTerms ? r.queued : std::chrono::steady_clock::time_point::max());
+    batch.sourcePad_m.push_back(sourceDetailPad_m(r.terms));
     slotCentres_[r.request.slot] = {gpuJobs[k].centre.x, gpuJobs[k].centre.y, gpuJobs[k].centre.z};
   }
 
@@ -224,7 +226,10 @@ void GpuPayloadGenerator::finish(Batch& batch, std::vector<GenerationResult>& fi
       lastFailure_ = "payload radius range not finite";
       continue;
     }
-    finished.push_back({job.node, job.slot, paddedRadiusRange(model_.params(), payload, job.node.level, cells_)});
+    RadiusRange padded = paddedRadiusRange(model_.params(), payload, job.node.level, cells_);
+    padded.min_m = std::max(0.0, padded.min_m - batch.sourcePad_m[k]);
+    padded.max_m += batch.sourcePad_m[k];
+    finished.push_back({job.node, job.slot, padded});
   }
   uint64_t stamps[2] = {0, 0};
   VkResult r = vkGetQueryPoolResults(device_.device(), queries_, 2 * batch.index, 2, sizeof(stamps), stamps,

@@ -75,6 +75,7 @@ class GpuPayloadGenerator final : public PayloadGenerator {
     vk::Buffer sourceTerms;  // S * S dvec4 per job with sources (elevation_sources.glsl)
     std::vector<GenerationJob> submitted;
     std::vector<std::chrono::steady_clock::time_point> sourceQueued;  // per job; max() = no sources
+    std::vector<double> sourcePad_m;                                  // per job: sourceDetailPad_m of its terms
     bool busy = false;
     uint32_t index = 0;  // query slots 2*index, 2*index+1
   };

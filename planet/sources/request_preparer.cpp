@@ -3,6 +3,8 @@
 #include "planet/sources/source_mosaic.h"
 #include "planet/streaming/payload_reference.h"
 
+#include <algorithm>
+
 namespace globe {
 
 std::vector<glm::dvec4> sourceTermsForJob(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells) {
@@ -16,12 +18,18 @@ std::vector<glm::dvec4> sourceTermsForJob(const ElevationModel& model, const gpu
     for (int i = -1; i <= n + 1; ++i) {
       const glm::dvec3 dir = payloadSampleDirection(job, cells, i, j);
       const SourceTerm t = model.sourceTerm(dir);
-      terms[std::size_t(j + 1) * std::size_t(s) + std::size_t(i + 1)] = {t.height_m, t.weight, t.hole, 0.0};
+      terms[std::size_t(j + 1) * std::size_t(s) + std::size_t(i + 1)] = {t.height_m, t.weight, t.hole, t.detailBound_m};
       any = any || t.weight > 0.0 || t.hole > 0.0;
     }
   }
   if (!any) terms.clear();
   return terms;
+}
+
+double sourceDetailPad_m(const std::vector<glm::dvec4>& terms) {
+  double pad = 0.0;
+  for (const glm::dvec4& t : terms) pad = std::max(pad, t.w);
+  return pad;
 }
 
 SourceRequestPreparer::SourceRequestPreparer(const ElevationModel& model, uint32_t cells)

@@ -36,6 +36,11 @@ struct PreparedRequest {
 // lies in a source's box.
 std::vector<glm::dvec4> sourceTermsForJob(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells);
 
+// How far a node's finer descendants may reach beyond its payload's radius range because of the
+// amplification detail its samples do not resolve: the largest detail bound of its terms (metres;
+// 0 without terms). The generator adds it to the padded range (paddedRadiusRange).
+double sourceDetailPad_m(const std::vector<glm::dvec4>& terms);
+
 class SourceRequestPreparer {
  public:
   // `model` (with sources) must outlive the preparer.

@@ -182,8 +182,10 @@ SourceTerm SourceMosaic::term(const glm::dvec3& unitDirection) const {
     if (w <= 0.0) continue;
     double h = value * layer.description.vertical_scale + layer.description.vertical_offset_m;
     if (layer.detailOctaves > 0) {
+      const double relief_m = s.relief * std::abs(layer.description.vertical_scale);
       h += amplificationDetail_m(unitDirection, radius_m_, f.pixel_size_m, layer.detailOctaves, layer.detailSeed,
-                                 s.relief * std::abs(layer.description.vertical_scale));
+                                 relief_m);
+      t.detailBound_m += remaining * w * amplificationBoundPerRelief(layer.detailOctaves) * relief_m;
     }
     weighted += remaining * w * h;
     remaining *= 1.0 - w;

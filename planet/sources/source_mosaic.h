@@ -23,12 +23,15 @@
 
 namespace globe {
 
-// What the sources contribute at one point; packed for the GPU as dvec4(height, weight, hole, 0)
+// What the sources contribute at one point; packed for the GPU as dvec4(height, weight, hole, detail bound)
 // (shaders/include/elevation_sources.glsl).
 struct SourceTerm {
   double height_m = 0.0;  // the sources' elevation where weight > 0
   double weight = 0.0;    // W in [0, 1]: share of the procedural surface replaced
   double hole = 0.0;      // hole mask in [0, 1]; >= 0.5 is a kept hole
+  // Bound of the amplification detail in height_m (metres): what samples coarser than the detail
+  // miss, so node radius ranges are padded by it (sourceDetailPad_m, request_preparer.h).
+  double detailBound_m = 0.0;
 };
 
 // (1 - W) * procedural + W * height: W = 1 gives the sources' height exactly. The shader computes

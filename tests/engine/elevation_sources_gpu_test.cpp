@@ -7,6 +7,7 @@
 #include "engine/render/terrain.h"
 #include "planet/camera/camera.h"
 #include "planet/elevation/planet_file.h"
+#include "planet/sources/request_preparer.h"
 #include "planet/sources/source_mosaic.h"
 #include "planet/streaming/payload_reference.h"
 #include "tests/support/dem_fixture.h"
@@ -76,7 +77,9 @@ TEST_F(ElevationSourcesGpuTest, PayloadsMatchTheCpuReference) {
     SCOPED_TRACE(::testing::Message() << "level " << int(r.node.level));
     const gpu::PayloadJob job = makePayloadJob(r.node, 0, *model_);
     const RadiusRange range = fillPayloadReference(*model_, job, kCells, cpu);
-    const RadiusRange padded = paddedRadiusRange(model_->params(), range, r.node.level, kCells);
+    RadiusRange padded = paddedRadiusRange(model_->params(), range, r.node.level, kCells);
+    const double pad = sourceDetailPad_m(sourceTermsForJob(*model_, job, kCells));  // amplification below the samples
+    padded = {std::max(0.0, padded.min_m - pad), padded.max_m + pad};
     worstRadius =
         std::max({worstRadius, std::abs(r.radius.min_m - padded.min_m), std::abs(r.radius.max_m - padded.max_m)});
     const glm::vec4* g = &gpu[r.slot * perSlot];
