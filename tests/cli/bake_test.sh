@@ -42,6 +42,7 @@ bad "shard must satisfy" --format cog --levels 0..2 --shard 3/3
 bad "shard must satisfy" --format cog --levels 0..2 --shard 0/0
 bad "expected K/N" --format cog --levels 0..2 --shard 1of2
 BAD_PLANET="$WORK/missing.toml" bad "missing.toml" --format cog --levels 0..2
+BAD_PLANET="$SRC/assets/planets/earth-dem.toml" bad "does not bake \[\[sources\]\]" --format cog --levels 0..2
 
 # ---- shards with GNU parallel == one run, byte for byte ----
 ARGS=(--planet "$PLANET" --format quantized-mesh --levels 0..6 --region 5,40,12,47)
