@@ -1,10 +1,16 @@
 #include "planet/streaming/frame_budget.h"
 
+#include "planet/lod/lod_ranges.h"
 #include "planet/streaming/payload_pool.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace globe {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}  // namespace
 
 Status validateFrameBudget(const FrameBudget& b, uint64_t trianglesPerNode) {
   if (b.maxDrawnNodes < 30) return Error::inField("max_drawn_nodes", "must be >= 30 (the roots)");
@@ -24,9 +30,35 @@ BudgetedSelection::BudgetedSelection(const FrameBudget& budget, uint64_t triangl
   requests_.reserve(budget.maxRequests);
 }
 
+int BudgetedSelection::deepestCapWithin(const LodSelector& selector, double nodes) const {
+  // By the ranges alone: level k draws at most the nodes whose bounds can meet the ball of R(k-1)
+  // around the camera, about pi (R(k-1) / w(k) + 2)^2 of width w(k), and never more than the level has.
+  const double radius_m = selector.config().radius_m;
+  double total = 0.0;
+  for (int k = 0; k <= maxDepth_; ++k) {
+    double level = 30.0 * std::pow(4.0, k);
+    if (k > 0) {
+      const double reach = selector.ranges().refineRange(k - 1) / nominalNodeWidth(k, radius_m) + 2.0;
+      level = std::min(level, kPi * reach * reach);
+    }
+    total += level;
+    if (total > nodes) return std::max(0, k - 1);
+  }
+  return maxDepth_;
+}
+
 Status BudgetedSelection::select(LodSelector& selector, SelectionCamera camera, PayloadPool& pool, Selection& out) {
   pool_ = &pool;
   camera.maxNodes = nodeLimit_;
+  // Ranges that reach thousands of node widths at the deep levels (relief of 1e6 m grows them, see
+  // LodRanges) would fill the budget many times over: cap at once, before those levels are generated
+  // only to be found too large. The bound ignores the frustum and the horizon, so it is loose; 16
+  // times the budget (two levels) keeps every ordinary view and preset far from it.
+  const int plausible = deepestCapWithin(selector, 16.0 * nodeLimit_);
+  if (plausible < depthCap_) {
+    depthCap_ = plausible;
+    warnLimited();
+  }
   // Over budget: the same frame again one level coarser, until it fits (30 roots always do). Each
   // pass stops at the node limit, so a pass costs at most about that many nodes.
   for (;;) {
@@ -49,7 +81,7 @@ Status BudgetedSelection::select(LodSelector& selector, SelectionCamera camera, 
   // few and the cap would rise and fall, generating levels it then does not draw.
   const uint64_t streaming = uint64_t(out.nodes.size()) + 3 * uint64_t(out.stats.fallbacks);
   const uint64_t predicted = streaming + 3 * uint64_t(out.stats.heldBack);
-  rising_ = depthCap_ < maxDepth_ && out.stats.heldBack > 0 && predicted <= nodeLimit_;
+  rising_ = depthCap_ < std::min(maxDepth_, plausible) && out.stats.heldBack > 0 && predicted <= nodeLimit_;
   if (rising_) {
     ++depthCap_;
   } else if (streaming > nodeLimit_ && depthCap_ > 0) {

@@ -3,8 +3,9 @@
 // so many nodes and triangles and sends at most so many generation requests; memory is the pool's
 // RAM and VRAM budgets. A planet whose relief makes the LOD ranges refine everywhere (amplitudes of
 // 1e6 m, gain 1 with many octaves) is then drawn coarser instead of running away: the deepest level
-// is capped, lowered within the frame until the selection fits, and raised again one level a frame
-// while the next level is predicted to fit. Capping the depth keeps the selection a restricted
+// is capped where the LOD ranges alone show the budget would be overrun many times, lowered within
+// the frame until the selection fits, and raised again one level a frame while the next level is
+// predicted to fit. Capping the depth keeps the selection a restricted
 // quadtree (it replaces every deeper node by its ancestor at the cap, so neighbours still differ by
 // at most one level) and its morph bands unchanged. A warning says so once.
 #include "planet/core/error.h"
@@ -24,7 +25,7 @@ struct FrameBudget {
   // configuration (largest: 6276 nodes, g16 x4; 13.7 M triangles, g64 x2 d24; docs/tradeoffs.md).
   uint32_t maxDrawnNodes = 8192;       // nodes drawn per frame, full and partial; >= 30 (the roots)
   uint64_t maxTriangles = 16'000'000;  // triangles submitted per frame (grids and skirts)
-  uint32_t maxRequests = 4096;         // generation requests per frame (look-ahead: half of them)
+  uint32_t maxRequests = 8192;         // generation requests per frame (look-ahead: half of them)
 };
 
 // Errors name the field (max_drawn_nodes, max_triangles, max_requests).
@@ -63,6 +64,8 @@ class BudgetedSelection final : public NodeResidency {
     double distance_m;
   };
   void warnLimited();
+  // The deepest cap whose levels, by the LOD ranges alone, draw at most `nodes` nodes.
+  int deepestCapWithin(const LodSelector& selector, double nodes) const;
 
   FrameBudget budget_;
   uint64_t trianglesPerNode_;

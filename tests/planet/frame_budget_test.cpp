@@ -91,12 +91,18 @@ TEST(FrameBudget, TrianglesCountAsNodes) {
 }
 
 TEST(FrameBudget, OrdinaryViewIsNotLimited) {
-  BudgetHarness h({}, {}, 2 * 16 * 20);
-  const Camera camera = cameraFromPose({10, 20, 300, 0, -10, 0}, kR, kR, 16.0 / 9.0);
-  for (int f = 0; f < 300; ++f) h.run(camera);
-  EXPECT_EQ(h.budgeted.depthCap(), LodConfig{}.ranges.maxDepth);
-  EXPECT_TRUE(h.budgeted.warning().empty()) << h.budgeted.warning();
-  EXPECT_EQ(h.budgeted.droppedRequests(), 0u);
+  // The default and the heaviest `globe trade` ranges (multiplier 4, depth 24), near the ground.
+  for (const auto& [multiplier, depth] : {std::pair{1.0, 20}, std::pair{4.0, 24}}) {
+    LodConfig lod;
+    lod.ranges.distanceMultiplier = multiplier;
+    lod.ranges.maxDepth = depth;
+    BudgetHarness h({}, lod, 2 * 16 * 20);
+    const Camera camera = cameraFromPose({10, 20, 2, 0, -10, 0}, kR, kR, 16.0 / 9.0);
+    for (int f = 0; f < 300; ++f) h.run(camera);
+    EXPECT_EQ(h.budgeted.depthCap(), depth) << multiplier;
+    EXPECT_TRUE(h.budgeted.warning().empty()) << h.budgeted.warning();
+    EXPECT_EQ(h.budgeted.droppedRequests(), 0u);
+  }
 }
 
 TEST(FrameBudget, RejectsBadBudgets) {
