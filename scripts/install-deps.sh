@@ -38,6 +38,8 @@ if [[ "${1:-}" == "--list" ]]; then
   exit 0
 fi
 
+SUDO=""
+if [[ $(id -u) -ne 0 ]]; then SUDO="sudo"; fi
 missing=()
 for p in "${PACKAGES[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
@@ -49,8 +51,6 @@ if ((${#missing[@]} == 0)); then
   echo "install-deps: all ${#PACKAGES[@]} packages present"
 else
   echo "install-deps: installing ${missing[*]}"
-  SUDO=""
-  if [[ $(id -u) -ne 0 ]]; then SUDO="sudo"; fi
   export DEBIAN_FRONTEND=noninteractive
   $SUDO apt-get update -qq
   $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
@@ -59,6 +59,11 @@ fi
 # The JavaScript client of the bake test (tests/cesium/package-lock.json), installed by npm ci when
 # missing or older than the lock file.
 CESIUM_DIR="$(cd "$(dirname "$0")/../tests/cesium" && pwd)"
+# Debian's nodejs ships npm as a package of its own; NodeSource's nodejs (if preinstalled) carries it.
+if ! command -v npm >/dev/null; then
+  echo "install-deps: installing npm"
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends npm
+fi
 if [[ ! -d "$CESIUM_DIR/node_modules/cesium" || "$CESIUM_DIR/package-lock.json" -nt "$CESIUM_DIR/node_modules/.package-lock.json" ]]; then
   echo "install-deps: npm ci in tests/cesium"
   (cd "$CESIUM_DIR" && npm ci --no-audit --no-fund --loglevel=error)

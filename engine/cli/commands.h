@@ -20,7 +20,7 @@ void addTradeCommand(CLI::App& app, Runner& run);    // globe trade: speed/accur
 void addPathCommand(CLI::App& app, Runner& run);     // globe path import|export: KML tours, CZML
 void addMovieCommand(CLI::App& app, Runner& run);    // globe movie: PNG/EXR sequences, MP4
 void addPhysicsCommand(CLI::App& app, Runner& run);  // globe physics: bodies on the collision meshes
-void addBakeCommand(CLI::App& app, Runner& run);   // globe bake: quantized-mesh / COG terrain tiles
+void addBakeCommand(CLI::App& app, Runner& run);     // globe bake: quantized-mesh / COG terrain tiles
 
 // Exit codes shared by every command.
 constexpr int kExitOk = 0;

@@ -19,8 +19,8 @@ namespace globe {
 namespace {
 
 constexpr std::string_view kTopKeys[] = {
-    "name",   "radius_m",    "seed", "sea_level_m", "surface_gravity_m_s2", "default_quality",
-    "layers", "colour_ramp", "rock", "snow",        "sources"};
+    "name",        "radius_m", "seed", "sea_level_m", "surface_gravity_m_s2", "default_quality", "layers",
+    "colour_ramp", "rock",     "snow", "sources"};
 constexpr std::string_view kStopKeys[] = {"elevation_m", "colour"};
 constexpr std::string_view kRockKeys[] = {"slope_deg", "blend_deg", "colour"};
 constexpr std::string_view kSnowKeys[] = {"elevation_m", "blend_m", "max_slope_deg", "colour"};
