@@ -2,12 +2,7 @@
 # globe bench end to end: outputs exist and parse, two replays are identical except for timings,
 # and malformed inputs write nothing. Usage: bench_test.sh GLOBE SOURCE_DIR WORKDIR
 set -uo pipefail
-GLOBE="$1"
-SRC="$2"
-WORK="$3"
-rm -rf "$WORK" && mkdir -p "$WORK"
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/cli_common.sh"
 
 run() {  # run DIR: a short replay at a small size
   "$GLOBE" bench --path "$SRC/tests/data/short.path" --out "$1" --size 96x64 --keyframes 0,0.25 --rate 20 \

@@ -3,12 +3,7 @@
 # writes bodies.csv (the issue's columns, one row per body, every body at rest on the ground),
 # summary.json and a rendered frame. Usage: physics_test.sh GLOBE SOURCE_DIR WORKDIR
 set -uo pipefail
-GLOBE="$1"
-SRC="$2"
-WORK="$3"
-rm -rf "$WORK" && mkdir -p "$WORK"
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/cli_common.sh"
 
 # expect_bad PATTERN ARGS...: exit 2, one stderr line matching PATTERN, no output directory.
 expect_bad() {

@@ -5,12 +5,7 @@
 # checked against the CPU reference in tests/engine/elevation_export_test.cpp.
 # Usage: planet_cli_test.sh GLOBE SOURCE_DIR WORKDIR
 set -uo pipefail
-GLOBE="$1"
-SRC="$2"
-WORK="$3"
-rm -rf "$WORK" && mkdir -p "$WORK"
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/cli_common.sh"
 
 # -- check: every preset is valid; the default planet is found from any directory.
 for p in "$SRC"/assets/planets/*.toml; do
