@@ -39,8 +39,9 @@ else
 fi
 if wait_for 2; then
   # Two errors: every one is reported, not just the first.
-  sed -e 's/^seed = .*/seed = 7/' -e '0,/^gain = .*/s//gain = -2.0/' "$WORK/planet.toml" | save
-  printf 'no_such_key = 1\n' >>"$WORK/planet.toml"
+  # Both in one save: an append after the rename would race the viewer's reload.
+  { sed -e 's/^seed = .*/seed = 7/' -e '0,/^gain = .*/s//gain = -2.0/' "$WORK/planet.toml"
+    printf 'no_such_key = 1\n'; } | save
 else
   fail "the viewer never waited for the second reload"
 fi
