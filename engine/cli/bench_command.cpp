@@ -6,6 +6,7 @@
 #include "engine/render/quality.h"
 #include "engine/render/render_output.h"
 #include "engine/report/bench_baseline.h"
+#include "engine/report/bench_frame_spool.h"
 #include "engine/report/bench_report.h"
 #include "engine/report/run_environment.h"
 #include "engine/vk/device.h"
@@ -15,7 +16,6 @@
 #include "planet/sources/source_mosaic.h"
 #include "planet/sources/source_report.h"
 #include "progress_bar.h"
-#include "terrain_warnings.h"
 
 #include <fmt/format.h>
 
@@ -120,12 +120,13 @@ Result<BenchInputs> checkBenchInputs(const BenchOptions& o) {
                      std::move(*settings)};
 }
 
-// What the flight produced: a row per frame, the key frames' PNGs (kept in memory and written with
-// the report at the end, so an interrupted run never leaves new key frames beside an earlier run's
-// csv/json/html), and when frame 0 was drawn (process start -> frame 0, with the warm-up).
+// What the flight produced besides its rows (spooled to disk, so memory does not grow with the
+// frame count): the key frames' PNGs (kept in memory and written with the report at the end, so an
+// interrupted run never leaves new key frames beside an earlier run's csv/json/html), frame 0's
+// statistics and when it was drawn (process start -> frame 0, with the warm-up).
 struct BenchFlight {
-  std::vector<BenchFrame> rows;
   std::vector<BenchKeyFrame> keys;
+  FrameStats firstFrame;
   double firstFrame_ms = 0;
 };
 
@@ -146,13 +147,12 @@ Status keepKeyFrames(const BenchInputs& in, double rate_hz, uint64_t k, Headless
 }
 
 Result<BenchFlight> flyPath(const BenchOptions& o, const BenchInputs& in, const ElevationModel& model, Terrain& terrain,
-                            HeadlessRenderer& renderer) {
+                            HeadlessRenderer& renderer, BenchFrameSpool& rows) {
   const double aspect = double(in.size.width) / double(in.size.height);
   // Heights are above the drawn mesh, like `globe render --at` and the viewer (never under it).
   GroundRadiusFn ground = [&](const glm::dvec3& d) { return terrain.cameraGroundRadius(d); };
   const bool converge = o.mode == "converged";
   BenchFlight flight;
-  flight.rows.reserve(in.frames);
   glm::dvec3 previousPosition_m(0.0);
   ProgressBar progress("bench " + std::filesystem::path(o.path).filename().string());
   TerrainWarnings warnings;
@@ -160,12 +160,15 @@ Result<BenchFlight> flyPath(const BenchOptions& o, const BenchInputs& in, const 
     double t = in.path.startTime_s() + double(k) / o.rate_hz;
     Camera camera = in.path.cameraAt(t, model.radius_m(), aspect, ground);
     FrameStats stats = renderer.renderFrame(terrain, camera, converge);
-    warnings.printNew(terrain);
+    printNewWarnings(warnings, terrain);
     double altitude = glm::length(camera.position_m) - ground(glm::normalize(camera.position_m));
     const double speed = k > 0 ? groundSpeed_mps(previousPosition_m, camera.position_m, 1.0 / o.rate_hz) : 0.0;
     previousPosition_m = camera.position_m;
-    flight.rows.push_back({k, t, altitude, speed, stats});
-    if (k == 0) flight.firstFrame_ms = millisecondsSinceProcessStart();
+    if (auto s = rows.append({k, t, altitude, speed, stats}); !s) return s.error();
+    if (k == 0) {
+      flight.firstFrame = stats;
+      flight.firstFrame_ms = millisecondsSinceProcessStart();
+    }
     if (auto s = keepKeyFrames(in, o.rate_hz, k, renderer, camera, flight.keys); !s) return s.error();
     progress.update(double(k + 1) / double(in.frames));
   }
@@ -206,9 +209,17 @@ int runBench(const BenchOptions& o) {
   std::filesystem::create_directories(o.out, ec);
   if (ec) return usageError(Error::inField("--out", "cannot create '" + o.out + "': " + ec.message()));
 
-  auto flight = flyPath(o, *in, model, **terrain, renderer);
+  BenchFrameSpool spool;
+  const Status spoolOpened = spool.open(o.out);
+  auto flight =
+      spoolOpened ? flyPath(o, *in, model, **terrain, renderer, spool) : Result<BenchFlight>(spoolOpened.error());
   if (!flight) {
     printError(flight.error().format());
+    return kExitFailure;
+  }
+  auto rows = spool.rows();
+  if (!rows) {
+    printError(rows.error().format());
     return kExitFailure;
   }
   BenchRunInfo info = runInfo(o, device, settings);
@@ -217,7 +228,7 @@ int runBench(const BenchOptions& o) {
   info.dateUtc = startedUtc;
   info.latency = generationLatency((*terrain)->pool());
   const BenchBaseline* baseline = in->baseline ? &*in->baseline : nullptr;
-  if (auto s = writeBenchReport(o.out, info, flight->rows, flight->keys, baseline); !s) {
+  if (auto s = writeBenchReport(o.out, info, *rows, flight->keys, baseline); !s) {
     printError(s.error().format());
     return kExitFailure;
   }
@@ -225,7 +236,7 @@ int runBench(const BenchOptions& o) {
   std::printf("%llu frames of %s (%s) written to %s/report.html\n", (unsigned long long)in->frames, o.path.c_str(),
               o.mode.c_str(), o.out.c_str());
   // Cold start, and where it went: device, terrain pipelines and buffers, warm-up, frame 0.
-  const FrameStats& first = flight->rows.front().stats;
+  const FrameStats& first = flight->firstFrame;
   std::printf(
       "first frame %.0f ms after process start: device %.0f ms, terrain set-up %.0f ms, frame 0 %.0f ms "
       "(of which warm-up %.0f ms in %u rounds; %u nodes drawn)\n",

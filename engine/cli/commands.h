@@ -1,6 +1,8 @@
 #pragma once
 // The subcommands of `globe`. Each registers its options on the CLI11 app and, when selected,
 // sets `run` to the function that carries it out (returning the process exit code).
+#include "engine/render/terrain_warnings.h"
+
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -31,6 +33,8 @@ constexpr int kExitUsage = 2;    // bad command-line values or input files
 void printError(const std::string& message);
 // Prints "globe: warning: MESSAGE" on one line to stderr: the command goes on.
 void printWarning(const std::string& message);
+// Prints the warnings `terrain` raised since `seen` last looked (engine/render/terrain_warnings.h).
+void printNewWarnings(TerrainWarnings& seen, const Terrain& terrain);
 
 // Milliseconds since the process started (static initialisation of the program): what "cold
 // start" is measured from (docs/benchmark.md).

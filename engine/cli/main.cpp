@@ -29,6 +29,10 @@ void printError(const std::string& message) { printLine("error", message); }
 
 void printWarning(const std::string& message) { printLine("warning", message); }
 
+void printNewWarnings(TerrainWarnings& seen, const Terrain& terrain) {
+  for (const std::string& warning : seen.takeNew(terrain)) printWarning(warning);
+}
+
 }  // namespace globe::cli
 
 int main(int argc, char** argv) {

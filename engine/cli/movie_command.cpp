@@ -31,6 +31,7 @@ struct MovieOptions {
   std::string format = "png";
   int fps = 30;
   std::string quality;  // empty = the planet's default_quality
+  BudgetOptions budget;
 };
 
 bool endsWithMp4(const std::string& file) {
@@ -66,6 +67,7 @@ Result<MovieSettings> movieSettings(const MovieOptions& o, const PlanetDescripti
   auto quality = chooseQualityPreset(o.quality, planet);
   if (!quality) return quality.error();
   s.terrain = terrainSettingsFor(*quality);
+  if (auto st = applyBudgetOptions(o.budget, s.terrain); !st) return st.error();
   s.description = fmt::format("path={} planet={} size={}x{} fps={} format={} quality={}", o.path, o.planet, s.width,
                               s.height, s.fps, o.format, o.quality.empty() ? "default" : o.quality);
   return s;
@@ -84,13 +86,18 @@ int runMovie(const MovieOptions& o) {
   if (settings->format == MovieFormat::mp4) cleanup.emplace(AtomicFile(o.out).tempPath());
   vk::Device device(deviceOptions(o.device));
   ProgressBar progress("movie " + std::filesystem::path(o.path).filename().string());
-  auto summary = renderMovie(device, *planet, *path, *settings,
-                             [&](uint64_t done, uint64_t total) { progress.update(double(done) / double(total)); });
+  TerrainWarnings warnings;
+  auto summary = renderMovie(device, *planet, *path, *settings, [&](uint64_t done, uint64_t total, const Terrain& t) {
+    printNewWarnings(warnings, t);
+    progress.update(double(done) / double(total));
+  });
   progress.finish();
   if (!summary) {
     // An --out directory holding another movie is bad input (nothing was written); the rest failed.
-    if (summary.error().field == "--out") return usageError(summary.error());
-    printError(summary.error().format());
+    // A VRAM budget too small for the 30 roots is the option's fault, named by it.
+    const Error error = budgetOptionError(summary.error());
+    if (error.field.starts_with("--")) return usageError(error);
+    printError(error.format());
     return kExitFailure;
   }
   if (int code = validationExitCode(device); code != kExitOk) return code;
@@ -116,6 +123,7 @@ void addMovieCommand(CLI::App& app, Runner& run) {
   cmd->add_option("--fps", o->fps, "Frames per second: 24, 25, 30, 50 or 60")->capture_default_str();
   cmd->add_option("--size", o->size, "Frame size WxH in pixels (even for MP4)")->capture_default_str();
   addQualityOptions(*cmd, o->quality);
+  addBudgetOptions(*cmd, o->budget);
   cmd->add_option("--out", o->out,
                   "A directory (frame_000000.png ..., resumable) or a .mp4 file (H.264 through FFmpeg's libraries)")
       ->capture_default_str();

@@ -4,6 +4,7 @@
 #include "engine/render/quality.h"
 #include "engine/render/render_output.h"
 #include "engine/render/sphere_preview.h"
+#include "engine/render/terrain_warnings.h"
 #include "engine/vk/device.h"
 #include "options.h"
 #include "planet/analysis/terrain_queries.h"
@@ -12,7 +13,6 @@
 #include "planet/elevation/planet_file.h"
 #include "planet/streaming/payload_reference.h"
 #include "render_terrain.h"
-#include "terrain_warnings.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -29,7 +29,8 @@ Result<ImageRgba> renderTerrain(vk::Device& device, const Camera& camera, const 
   if (!terrain) return budgetOptionError(terrain.error());
   HeadlessRenderer renderer(device, {width, height});
   FrameStats stats = renderer.renderFrame(**terrain, camera, true);
-  TerrainWarnings().printNew(**terrain);
+  TerrainWarnings warnings;
+  printNewWarnings(warnings, **terrain);
   std::printf("%u nodes (%u partial), %llu triangles, %u payloads resident (%.1f MiB), frame %.1f ms (GPU %.1f ms)\n",
               stats.nodes_selected, stats.nodes_partial, (unsigned long long)stats.triangles,
               (*terrain)->pool().stats().residentNodes, stats.resident_mib, stats.frame_ms, stats.gpu_ms);

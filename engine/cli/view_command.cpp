@@ -32,6 +32,7 @@ struct ViewCommandOptions {
   std::string mode = "terrain";
   uint32_t gridCells = 0;  // 0 = the quality preset's
   std::string quality;     // empty = the planet's default_quality
+  BudgetOptions budget;
   std::string recordDir = ".";
   std::string record;
   bool noReload = false;
@@ -105,6 +106,7 @@ Status checkSceneOptions(const ViewCommandOptions& o, const GeodeticPose& pose, 
   scene.watch = !o.noReload;
   auto terrain = terrainSettingsFromOptions(o.quality, o.gridCells, scene.planet);
   if (!terrain) return terrain.error();
+  if (auto s = applyBudgetOptions(o.budget, *terrain); !s) return s.error();
   scene.terrain = *terrain;
   // The sun of `globe render` at the starting point (about 45 degrees up): the first view is lit,
   // and a viewer screenshot matches a render of the same pose.
@@ -192,6 +194,7 @@ void addViewCommand(CLI::App& app, Runner& run) {
       ->check(CLI::IsMember({"terrain", "sphere"}))
       ->capture_default_str();
   addQualityOptions(*cmd, opts->quality, &opts->gridCells);
+  addBudgetOptions(*cmd, opts->budget);
   cmd->add_option("--record-dir", opts->recordDir,
                   "Directory where R (start/stop recording) writes globe-path-YYYYmmdd-HHMMSS.path")
       ->capture_default_str();

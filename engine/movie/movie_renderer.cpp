@@ -111,7 +111,7 @@ Result<MovieSummary> renderSequence(FrameSource& source, const CameraPath& path,
       if (!written) return written.error();
       ++summary.rendered;
     }
-    if (progress) progress(k + 1, summary.frames);
+    if (progress) progress(k + 1, summary.frames, *source.terrain);
   }
   return summary;
 }
@@ -129,7 +129,7 @@ Result<MovieSummary> renderMp4(FrameSource& source, const CameraPath& path, cons
     ImageRgba image = source.render(path, path.startTime_s() + double(k) / s.fps, aspect);
     if (Status st = (*writer)->addFrame(image); !st) return st.error();
     ++summary.rendered;
-    if (progress) progress(k + 1, summary.frames);
+    if (progress) progress(k + 1, summary.frames, *source.terrain);
   }
   if (Status st = (*writer)->finish(); !st) return st.error();
   if (Status st = file.commit(); !st) return st.error();

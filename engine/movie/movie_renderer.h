@@ -41,8 +41,9 @@ struct MovieSummary {
   std::string encoder;    // MP4 only: the libavcodec encoder used
 };
 
-// Called after each frame with (frames done, frames in the movie).
-using MovieProgressFn = std::function<void(uint64_t done, uint64_t total)>;
+// Called after each frame with (frames done, frames in the movie, the terrain that drew it: its
+// warnings, e.g. a frame budget reached).
+using MovieProgressFn = std::function<void(uint64_t done, uint64_t total, const Terrain& terrain)>;
 
 // Errors: unwritable output, a directory holding another movie's frames (settings.description
 // differs), encoder failures. Vulkan failures throw as everywhere.

@@ -60,22 +60,31 @@ Status validateKeyFrames(const std::string& dir, std::span<const BenchKeyFrame> 
   return Ok{};
 }
 
-std::string framesCsv(std::span<const BenchFrame> frames) {
-  std::string out = "frame,t";
-  for (const BenchMetric& m : benchMetrics()) out += std::string(",") + m.name;
-  out += '\n';
-  for (const BenchFrame& f : frames) {
-    out += std::to_string(f.frame);
+void appendCsvRow(const BenchFrame& f, std::string& out) {
+  out += std::to_string(f.frame);
+  out += ',';
+  out += formatFixed(f.t_s, kTimeDecimals);
+  for (const BenchMetric& m : benchMetrics()) {
     out += ',';
-    out += formatFixed(f.t_s, kTimeDecimals);
-    for (const BenchMetric& m : benchMetrics()) {
-      out += ',';
-      out += m.kind == MetricKind::Integer ? std::to_string(static_cast<uint64_t>(m.value(f)))
-                                           : formatFixed(m.value(f), m.decimals);
-    }
-    out += '\n';
+    out += m.kind == MetricKind::Integer ? std::to_string(static_cast<uint64_t>(m.value(f)))
+                                         : formatFixed(m.value(f), m.decimals);
   }
-  return out;
+  out += '\n';
+}
+
+// frames.csv streamed in pieces of ~64 KiB: never the whole table in memory.
+void writeFramesCsv(std::span<const BenchFrame> frames, CheckedFileWriter& file) {
+  constexpr std::size_t kChunkBytes = 64 << 10;
+  std::string chunk = "frame,t";
+  for (const BenchMetric& m : benchMetrics()) chunk += std::string(",") + m.name;
+  chunk += '\n';
+  for (const BenchFrame& f : frames) {
+    appendCsvRow(f, chunk);
+    if (chunk.size() < kChunkBytes) continue;
+    if (!file.write(chunk)) return;
+    chunk.clear();
+  }
+  file.write(chunk);
 }
 
 // Integer metrics keep integer statistics (they are samples); the mean is a real number.
@@ -183,7 +192,7 @@ Status writeBenchReport(const std::string& dir, const BenchRunInfo& info, std::s
     if (!k.png.empty()) outputs.push_back({k.imageFile, k.png});
   try {
     const std::string svg = benchTimelineSvg(info, frames, keyFrames);
-    outputs.push_back({"frames.csv", framesCsv(frames)});
+    outputs.push_back({"frames.csv", {}, [frames](CheckedFileWriter& file) { writeFramesCsv(frames, file); }});
     outputs.push_back({"summary.json", summaryJson(info, frames, keyFrames, baseline)});
     outputs.push_back({"timeline.svg", "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n" + svg});
     outputs.push_back({"report.html", benchReportHtml(info, frames, keyFrames, svg, baseline)});

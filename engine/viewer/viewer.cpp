@@ -2,6 +2,7 @@
 
 #include "engine/io/image_io.h"
 #include "engine/render/render_output.h"
+#include "engine/render/terrain_warnings.h"
 #include "engine/viewer/fly_camera.h"
 #include "engine/viewer/frame_time_log.h"
 #include "engine/viewer/overlay.h"
@@ -89,6 +90,7 @@ struct Viewer::State {
   void renderFrame(uint32_t image, VkCommandBuffer cmd, const Camera& cam);
   Status saveScreenshot(const std::string& path, const Camera& cam);
   void reportReload(const ReloadOutcome& outcome);
+  void reportTerrainWarnings();
   GeodeticPose currentPose(const Camera& cam) const;
   void toggleRecording(const Camera& cam);
   void stopRecording();
@@ -125,6 +127,7 @@ struct Viewer::State {
   bool waitForReloadRequested = false;
   bool swapchainStale = false;
   std::string message;                    // shown in the overlay
+  TerrainWarnings terrainWarnings;        // budgets reached, generation failures: once each
   std::vector<std::string> planetErrors;  // of the planet file on disk, while it is invalid
   FrameStats stats;
   FrameTimeLog frameTimes;
@@ -295,6 +298,16 @@ Status Viewer::State::saveScreenshot(const std::string& path, const Camera& cam)
   return writeImage(path, image, "screenshot");
 }
 
+// The terrain's degradations (a frame budget reached, ...), once each, on stderr and on screen.
+void Viewer::State::reportTerrainWarnings() {
+  if (const Terrain* t = scene->terrain()) {
+    for (const std::string& warning : terrainWarnings.takeNew(*t)) {
+      message = warning;
+      std::fprintf(stderr, "globe: warning: %s\n", warning.c_str());
+    }
+  }
+}
+
 void Viewer::State::reportReload(const ReloadOutcome& outcome) {
   const std::string& file = scene->planetPath();
   std::string when = " (frame " + std::to_string(frame) + ")";
@@ -302,6 +315,7 @@ void Viewer::State::reportReload(const ReloadOutcome& outcome) {
     planetErrors.clear();
     if (outcome.reloaded) {
       bodies.reset();  // they live on the old planet's meshes
+      terrainWarnings.reset();
       message = "reloaded " + file;
       printLine("planet reloaded: " + file + when);
     } else {
@@ -475,6 +489,7 @@ Status Viewer::run() {
     // kFramesInFlight, so its completed frame (its own numbering) is `s.frame` and never underflows:
     // terrain frames below kFramesInFlight never existed, so nothing they "used" can be in flight.
     s.scene->update(s.frame + vk::kFramesInFlight, cam, s.frame);
+    s.reportTerrainWarnings();
     s.buildOverlay(wall_s, cam);
 
     s.renderFrame(*image, slot.cmd, cam);

@@ -110,6 +110,12 @@ Status writeAll(const std::string& tempPath, std::string_view content, const std
 
 Status AtomicFile::write(std::string_view content) { return writeAll(temp_, content, target_, ""); }
 
+Status AtomicFile::write(const std::function<void(CheckedFileWriter&)>& produce) {
+  CheckedFileWriter file(temp_, target_);
+  produce(file);
+  return file.finish();
+}
+
 Status writeFileAtomically(const std::string& path, std::string_view content, const std::string& field) {
   if (auto s = checkWritable(path, field); !s) return s;
   AtomicFile file(path);
@@ -123,7 +129,7 @@ Status writeFilesAtomically(const std::string& dir, std::span<const NamedContent
     const std::string path = (fs::path(dir) / f.name).string();
     if (auto s = checkWritable(path, ""); !s) return Error::inFile(path, s.error().message);
     written.push_back(std::make_unique<AtomicFile>(path));
-    if (auto s = written.back()->write(f.content); !s) return s;
+    if (auto s = f.produce ? written.back()->write(f.produce) : written.back()->write(f.content); !s) return s;
   }
   for (auto& file : written)
     if (auto s = file->commit(); !s) return s;

@@ -5,11 +5,14 @@
 #include "planet/core/error.h"
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
 
 namespace globe {
+
+class CheckedFileWriter;
 
 class AtomicFile {
  public:
@@ -25,6 +28,8 @@ class AtomicFile {
   // Writes `content` to the temporary, checking every write, the fsync and the close (ENOSPC, EFBIG,
   // EIO); the Error names the target and strerror.
   Status write(std::string_view content);
+  // The same, for content too large to hold at once: `produce` writes it piece by piece.
+  Status write(const std::function<void(CheckedFileWriter&)>& produce);
 
   // Renames the temporary over the target.
   Status commit();
@@ -71,10 +76,13 @@ Status checkWritable(const std::string& path, const std::string& field);
 // failure (ENOSPC, EFBIG, EIO) the Error names `path` and the reason, and the old file is untouched.
 Status writeFileAtomically(const std::string& path, std::string_view content, const std::string& field);
 
-// One file of a multi-file output: its name inside the output directory and its whole content.
+// One file of a multi-file output: its name inside the output directory and its whole content, or,
+// for a file too large to build in memory (frames.csv of an hour-long benchmark), a function that
+// streams it (then `content` is unused).
 struct NamedContent {
   std::string name;
   std::string content;
+  std::function<void(CheckedFileWriter&)> produce;
 };
 
 // Writes every file into `dir` so that a failure changes none of them: all temporaries are written

@@ -13,7 +13,7 @@ namespace globe {
 
 namespace {
 
-constexpr std::array<std::string_view, 3> kKinds = {"generation", "device-lost", "fsync"};
+constexpr std::array<std::string_view, 4> kKinds = {"generation", "device-lost", "fsync", "write"};
 constexpr size_t kDeviceLost = 1;  // stays lost: every call after the first failing one fails too
 
 struct Fault {
@@ -49,7 +49,7 @@ bool readPlan() {
     while (kind < kKinds.size() && kKinds[kind] != item.substr(0, at)) ++kind;
     if (kind == kKinds.size() || at == std::string_view::npos)
       throw std::runtime_error("GLOBE_FAULT: unknown fault '" + std::string(item) +
-                               "' (generation@N[+], device-lost@N, fsync@N[+])");
+                               "' (generation@N[+], device-lost@N, fsync@N[+], write@N[+])");
     plan[kind] = parseCount(item.substr(at + 1), item);
     if (kind == kDeviceLost) plan[kind].andLater = true;
     armed = true;

@@ -9,6 +9,7 @@
 //   device-lost   a queue submit of any kind reports VK_ERROR_DEVICE_LOST; a lost device stays lost,
 //                 so every later submit does too (engine/vk)
 //   fsync         a checked file write's fsync fails with EIO (planet/core/atomic_file.h)
+//   write         a write of the benchmark's row spool fails with ENOSPC (engine/report/bench_frame_spool.h)
 // Anything else is an error (std::runtime_error) at the first check.
 #include <string_view>
 

@@ -2,7 +2,7 @@
 # Runaway planets and injected faults (issue 21, docs/reliability.md "Frame budgets", "Faults"):
 # every frame stays within its budgets with ONE warning; a failed generation draws coarser and
 # recovers; generation that keeps failing, a lost device and a failing fsync end with one error
-# line, exit 1 and no output; nothing hangs (every command runs under a timeout).
+# line, exit 1 and no output (also ENOSPC in the bench's row spool); nothing hangs (every command runs under a timeout).
 # Usage: faults_test.sh GLOBE SOURCE_DIR WORKDIR
 set -uo pipefail
 GLOBE="$1"
@@ -54,6 +54,13 @@ code=$?
 if [[ $code -ne 1 || -e "$WORK/gen_dead.png" ]] || ! grep -q "^globe: error: payload generation failed 256 times in a row" "$WORK/stderr"; then
   fail "generation always failing (exit $code):"; cat "$WORK/stderr"; else echo "ok: generation always failing: $(tail -1 "$WORK/stderr")"; fi
 
+# The same planet as a movie (converged frames): within the caps, the warning once.
+run "$GLOBE" movie --planet "$RUNAWAY" --path "$SHORT" --size 64x64 --fps 24 --max-nodes 300 --out "$WORK/movie"
+code=$?
+if [[ $code -ne 0 || $(count "globe: warning: frame budget reached (300 nodes") -ne 1 ]]; then
+  fail "runaway movie exited $code:"; cat "$WORK/stderr"
+else echo "ok: runaway movie: one warning"; fi
+
 # 4. Device lost at a frame's submit (bench) and at the first submit (render): one line, exit 1,
 # no report, no image, no temporaries.
 run env GLOBE_FAULT=device-lost@40 "$GLOBE" bench --path "$SHORT" --size 64x64 --out "$WORK/lost_bench"
@@ -83,6 +90,17 @@ done
 run env GLOBE_FAULT=fsync@1 "$GLOBE" planet export --width 128 --out "$WORK/map.exr"
 if [[ $? -eq 0 ]] || ! grep -q "map.exr: cannot write: Input/output error" "$WORK/stderr" || ! cmp -s "$WORK/map.exr" "$WORK/map.orig"; then
   fail "fsync failure in planet export:"; cat "$WORK/stderr"; else echo "ok: fsync failure in planet export: $(cat "$WORK/stderr")"; fi
+
+# 6. A full disk while the bench spools its rows (ENOSPC at the row file's first write): one line
+# naming the directory, exit 1, the earlier report untouched, no temporary left.
+"$GLOBE" bench --path "$SHORT" --size 64x64 --keyframes 0 --out "$WORK/spool" >/dev/null 2>&1 &&
+  cp "$WORK/spool/summary.json" "$WORK/spool.summary.orig"
+run env GLOBE_FAULT=write@1 "$GLOBE" bench --path "$SHORT" --size 64x64 --keyframes 0 --out "$WORK/spool"
+if [[ $? -ne 1 || $(wc -l <"$WORK/stderr") -ne 1 ]] ||
+  ! grep -q "^globe: error: .*spool: cannot write the benchmark's rows: No space left on device" "$WORK/stderr" ||
+  ! cmp -s "$WORK/spool/summary.json" "$WORK/spool.summary.orig" || ls -A "$WORK/spool" | grep -q '^\.'; then
+  fail "full disk in the bench's rows:"; cat "$WORK/stderr"; ls -A "$WORK/spool"
+else echo "ok: full disk in the bench's rows: $(cat "$WORK/stderr")"; fi
 
 if [[ $failures -ne 0 ]]; then echo "$failures failure(s)"; exit 1; fi
 echo "all fault checks passed"

@@ -131,6 +131,16 @@ expect_usage "--mode: .*" --mode cube
 expect_usage "--screenshot-format: .*" --screenshot-format jpg
 { cat "$(dirname "$SCRIPT")/../../assets/planets/earthlike.toml"; printf 'no_such_key = 1\n'; } >"$WORK/bad_planet.toml"
 expect_usage "bad_planet.toml:[0-9]+:1: .*no_such_key" --planet "$WORK/bad_planet.toml"
+expect_usage "--max-nodes: .*" --max-nodes 0.5
+
+# A runaway planet within a frame budget: the viewer says so once (stderr and overlay), exit 0.
+RUNAWAY="$(dirname "$SCRIPT")/../data/runaway.toml"
+"${XVFB[@]}" "$GLOBE" view --validate --planet "$RUNAWAY" --frames 12 --size 160x90 --max-nodes 300 \
+  >"$WORK/runaway.out" 2>"$WORK/runaway.err"
+code=$?
+if [[ $code -ne 0 || $(grep -c "globe: warning: frame budget reached (300 nodes" "$WORK/runaway.err") -ne 1 ]]; then
+  fail "runaway planet in the viewer (exit $code):"; cat "$WORK/runaway.err"
+else echo "ok: runaway planet in the viewer: $(cat "$WORK/runaway.err")"; fi
 
 echo "viewer: $failures failure(s)"
 exit $((failures > 0))
