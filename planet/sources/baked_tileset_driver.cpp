@@ -2,9 +2,9 @@
 // raster, so that a baked planet is a source like any DEM (the mosaic, the RAM tile cache, the
 // source I/O thread; docs/elevation-data.md, "Baked tilesets").
 //   - COG: an in-memory VRT (GDALBuildVRT) over the finest level's .tif files, gaps no-data.
-//   - quantized mesh: a raster whose pixel centres are the finest level's 65 x 65 vertex grid per
-//     tile (shared edges once); a pixel is the tile's triangles interpolated at that point, so a
-//     block of 256 x 256 pixels decodes 4 x 4 tiles. Missing tiles are no-data (NaN). Every tile is
+//   - quantized mesh: a raster whose pixel centres are a grid 4 x finer than the finest level's
+//     65 x 65 vertex grid, 257 x 257 points per tile (shared edges once); a pixel is the tile's
+//     triangles interpolated at that point, so a block of 256 x 256 pixels decodes one tile. Missing tiles are no-data (NaN). Every tile is
 //     decoded once when the raster opens, for its height range and so that a corrupt tile is an
 //     error naming the file before anything is drawn.
 #include "planet/core/input_file.h"
@@ -33,8 +33,9 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr char kDriverName[] = "GlobeBakedTileset";
-// Cells per tile side of the grid a quantized-mesh tile is read on: the bake's (kMeshCells,
-// engine/bake/tile_grid.h) and Cesium's heightmap tiles'.
+// Cells per tile side of the grid a quantized-mesh tile is read on: 4 x the bake's vertex grid
+// (kMeshCells, engine/bake/tile_grid.h), so that the mosaic's bilinear interpolation between the
+// raster's points stays close to the triangles (measured: docs/elevation-data.md).
 constexpr int kReadCells = 256;
 constexpr std::size_t kMaxTileBytes = std::size_t(64) << 20;
 
@@ -114,8 +115,10 @@ CPLErr QuantizedMeshBand::IReadBlock(int blockX, int blockY, void* image) {
   const int i0 = blockX * nBlockXSize, j0 = blockY * nBlockYSize;
   const int i1 = std::min(i0 + nBlockXSize, nRasterXSize), j1 = std::min(j0 + nBlockYSize, nRasterYSize);
   const int columns = int(t.finest.x1 - t.finest.x0 + 1), rows = int(t.finest.y1 - t.finest.y0 + 1);
-  for (int row = j0 / kReadCells; row <= std::min((j1 - 1) / kReadCells, rows - 1); ++row) {
-    for (int column = i0 / kReadCells; column <= std::min((i1 - 1) / kReadCells, columns - 1); ++column) {
+  // The raster's last row and column are the last tiles' edges (grid index kReadCells).
+  for (int row = std::min(j0 / kReadCells, rows - 1); row <= std::min((j1 - 1) / kReadCells, rows - 1); ++row) {
+    for (int column = std::min(i0 / kReadCells, columns - 1); column <= std::min((i1 - 1) / kReadCells, columns - 1);
+         ++column) {
       const std::string path = t.tilePathOf(t.finest.x0 + std::uint32_t(column), t.finest.y1 - std::uint32_t(row));
       auto mesh = readMeshTile(path);
       if (!mesh) {

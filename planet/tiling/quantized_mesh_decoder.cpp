@@ -118,19 +118,18 @@ std::optional<DecodedMesh> decodeQuantizedMesh(const std::string& bytes, std::st
   return m;
 }
 
-std::vector<double> meshHeightsOnGrid(const DecodedMesh& m, int cells) {
+namespace {
+
+// Writes, at every grid point still NaN, the height of the first triangle of the given orientation
+// that holds it (points on an edge count as inside, within 1e-9 of the tile).
+void fillFromTriangles(const DecodedMesh& m, int cells, bool clockwise, std::vector<double>& out) {
   const std::size_t side = std::size_t(cells) + 1;
-  std::vector<double> out(side * side, std::numeric_limits<double>::quiet_NaN());
-  const double perCell = 32767.0 / cells;
-  // Points on a triangle's edge count as inside it (a tolerance of 1e-9 of the tile).
-  const double tolerance = 1e-9;
+  const double perCell = 32767.0 / cells, tolerance = 1e-9;
   for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3) {
     const std::uint32_t a = m.indices[t], b = m.indices[t + 1], c = m.indices[t + 2];
     const double ua = m.u[a], va = m.v[a], ub = m.u[b], vb = m.v[b], uc = m.u[c], vc = m.v[c];
     const double det = (vb - vc) * (ua - uc) + (uc - ub) * (va - vc);
-    // Degenerate, or folded over its neighbours in u/v (a simplified mesh can fold on steep
-    // ground): counter-clockwise triangles only.
-    if (!(det > 0.0)) continue;
+    if (!(clockwise ? det < 0.0 : det > 0.0)) continue;
     const int iMin = std::max(0, int(std::ceil(std::min({ua, ub, uc}) / perCell - 1e-6)));
     const int iMax = std::min(cells, int(std::floor(std::max({ua, ub, uc}) / perCell + 1e-6)));
     const int jMin = std::max(0, int(std::ceil(std::min({va, vb, vc}) / perCell - 1e-6)));
@@ -142,11 +141,21 @@ std::vector<double> meshHeightsOnGrid(const DecodedMesh& m, int cells) {
         const double lb = ((vc - va) * (u - uc) + (ua - uc) * (v - vc)) / det;
         const double lc = 1.0 - la - lb;
         double& h = out[std::size_t(j) * side + std::size_t(i)];
-        if (la < -tolerance || lb < -tolerance || lc < -tolerance || !std::isnan(h)) continue;  // the first wins
+        if (la < -tolerance || lb < -tolerance || lc < -tolerance || !std::isnan(h)) continue;
         h = la * m.height_m(a) + lb * m.height_m(b) + lc * m.height_m(c);
       }
     }
   }
+}
+
+}  // namespace
+
+std::vector<double> meshHeightsOnGrid(const DecodedMesh& m, int cells) {
+  std::vector<double> out(std::size_t(cells + 1) * std::size_t(cells + 1), std::numeric_limits<double>::quiet_NaN());
+  // Counter-clockwise triangles first; a simplified mesh can fold over itself in u/v on steep
+  // ground, and its clockwise (folded) triangles only answer where no other does.
+  fillFromTriangles(m, cells, false, out);
+  if (std::any_of(out.begin(), out.end(), [](double h) { return std::isnan(h); })) fillFromTriangles(m, cells, true, out);
   return out;
 }
 

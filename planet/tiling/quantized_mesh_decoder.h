@@ -37,8 +37,8 @@ struct DecodedMesh {
 // j * (cells + 1) + i with i eastwards and j northwards from the south-west corner: each point
 // interpolated linearly in the triangle that holds it (u/v as the tile stores them), the first
 // counter-clockwise one where several overlap (a mesh simplified in 3D can fold over itself in u/v
-// on steep ground; clockwise, folded triangles are skipped); NaN at a point no triangle holds
-// (never for a tile that covers its square, as every quantized-mesh tile must).
+// on steep ground; folded, clockwise triangles answer only where no other does); NaN at a point no
+// triangle holds (never for a tile that covers its square, as every quantized-mesh tile must).
 std::vector<double> meshHeightsOnGrid(const DecodedMesh& mesh, int cells);
 
 // Nothing when the bytes are not a well-formed tile (truncated, trailing bytes, index out of range).
