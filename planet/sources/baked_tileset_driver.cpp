@@ -4,9 +4,9 @@
 //   - COG: an in-memory VRT (GDALBuildVRT) over the finest level's .tif files, gaps no-data.
 //   - quantized mesh: a raster whose pixel centres are a grid 4 x finer than the finest level's
 //     65 x 65 vertex grid, 257 x 257 points per tile (shared edges once); a pixel is the tile's
-//     triangles interpolated at that point, so a block of 256 x 256 pixels decodes one tile. Missing tiles are no-data (NaN). Every tile is
-//     decoded once when the raster opens, for its height range and so that a corrupt tile is an
-//     error naming the file before anything is drawn.
+//     triangles interpolated at that point, so a block of 256 x 256 pixels decodes one tile.
+//     Missing tiles are no-data (NaN). Every tile is decoded once when the raster opens, for its
+//     height range and so that a corrupt tile is an error naming the file before anything is drawn.
 #include "planet/core/input_file.h"
 #include "planet/sources/baked_tileset.h"
 #include "planet/sources/tile_cache.h"

@@ -155,7 +155,8 @@ std::vector<double> meshHeightsOnGrid(const DecodedMesh& m, int cells) {
   // Counter-clockwise triangles first; a simplified mesh can fold over itself in u/v on steep
   // ground, and its clockwise (folded) triangles only answer where no other does.
   fillFromTriangles(m, cells, false, out);
-  if (std::any_of(out.begin(), out.end(), [](double h) { return std::isnan(h); })) fillFromTriangles(m, cells, true, out);
+  if (std::any_of(out.begin(), out.end(), [](double h) { return std::isnan(h); }))
+    fillFromTriangles(m, cells, true, out);
   return out;
 }
 
