@@ -233,8 +233,11 @@ TEST_F(BakedSourceTest, BadTilesetsAreOneLineErrorsNamingTheFile) {
   expectOneLineError(writePlanet(bad / "corrupt.toml", sourceToml(corrupt.string())), tile.string() + ": corrupt");
 }
 
+// Bakes of a planet with [[sources]] (no read-back tileset needed).
+class BakeWithSourcesTest : public GpuTest {};
+
 // earth-dem.toml's DEM on the GPU sampler: the source terms from the CPU, blended by the kernel.
-TEST_F(BakedSourceTest, GpuHeightsOverTheDemEqualTheCpuReference) {
+TEST_F(BakeWithSourcesTest, GpuHeightsOverTheDemEqualTheCpuReference) {
   auto planet = loadPlanetFile(std::string(GLOBE_SOURCE_DIR) + "/assets/planets/earth-dem.toml");
   ASSERT_TRUE(planet.ok()) << planet.error().format();
   const ElevationModel model(*planet);
@@ -261,14 +264,15 @@ TEST_F(BakedSourceTest, GpuHeightsOverTheDemEqualTheCpuReference) {
               a.size(), onDem);
 }
 
-TEST_F(BakedSourceTest, ARegionOfEarthDemBakesFromTheDem) {
+TEST_F(BakeWithSourcesTest, ARegionOfEarthDemBakesFromTheDem) {
   auto planet = loadPlanetFile(std::string(GLOBE_SOURCE_DIR) + "/assets/planets/earth-dem.toml");
   ASSERT_TRUE(planet.ok()) << planet.error().format();
   const ElevationModel model(*planet);
   BakeSettings s;
   s.levels = {11, 11};
   s.region = {-84.28, 36.57, -84.22, 36.62};
-  s.out_dir = (*dir_ / "earth-dem").string();
+  const TempDir out("bake_earth_dem");
+  s.out_dir = out.str();
   s.threads = 2;
   GpuHeightSampler heights(device(), model, 2);
   auto summary = runBake(*planet, heights, s, writeFile);
