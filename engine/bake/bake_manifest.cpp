@@ -8,11 +8,16 @@
 
 namespace globe {
 
-std::uint64_t elevationModelHash(const gpu::ElevationParams& params) {
+std::uint64_t elevationModelHash(const gpu::ElevationParams& params, const std::vector<ElevationSource>& sources) {
   unsigned char bytes[sizeof(params)];
   std::memcpy(bytes, &params, sizeof(params));
   std::uint64_t h = 0;
   for (std::size_t k = 0; k < sizeof(bytes); ++k) h = mix64(h ^ bytes[k]);
+  for (const ElevationSource& s : sources) {
+    const std::string text = fmt::format("{}|{}|{}|{}|{:a}|{:a}|{:a}", s.path, noDataModeName(s.nodata), s.amplify,
+                                         s.priority, s.vertical_scale, s.vertical_offset_m, s.blend_m);
+    for (unsigned char c : text) h = mix64(h ^ c);
+  }
   return h;
 }
 

@@ -7,6 +7,7 @@
 #include "planet/tiling/bake_plan.h"
 
 #include <string>
+#include <vector>
 
 namespace globe {
 
@@ -16,10 +17,12 @@ struct BakeDescription {
   GeoRect region;
   std::string planet_name;
   double radius_m = 0.0;
-  std::uint64_t model_hash = 0;  // of the packed elevation parameters: the model itself, not its file
+  std::uint64_t model_hash = 0;  // of the packed elevation parameters and the sources: the model, not its file
 };
 
-std::uint64_t elevationModelHash(const gpu::ElevationParams& params);
+// The packed parameters' bytes, then every source's description (its path and keys; not the
+// raster's bytes): without sources, the parameters' hash alone.
+std::uint64_t elevationModelHash(const gpu::ElevationParams& params, const std::vector<ElevationSource>& sources = {});
 
 std::string bakeJson(const BakeDescription& bake);
 std::string layerJson(const BakeDescription& bake, const BakePlan& plan);

@@ -120,8 +120,9 @@ Result<BakeSummary> runBake(const PlanetDescription& planet, HeightSampler& heig
                             const TileWriter& write, const ProgressFn& progress) {
   const BakePlan plan(settings.levels, settings.region);
   const ElevationModel model(planet);
-  const BakeDescription description{settings.format, settings.levels, settings.region,
-                                    planet.name,     planet.radius_m, elevationModelHash(model.params())};
+  const BakeDescription description{settings.format, settings.levels,
+                                    settings.region, planet.name,
+                                    planet.radius_m, elevationModelHash(model.params(), planet.sources)};
   std::error_code ec;
   fs::create_directories(settings.out_dir, ec);
   if (ec) return Error::inField("--out", "cannot create '" + settings.out_dir + "': " + ec.message());

@@ -1,12 +1,12 @@
 #include "engine/bake/cog_tile.h"
 
 #include "planet/camera/camera.h"
+#include "planet/sources/baked_tileset.h"
 
 #include <cpl_conv.h>
 #include <cpl_string.h>
 #include <cpl_vsi.h>
 #include <gdal.h>
-#include <ogr_srs_api.h>
 
 #include <atomic>
 #include <memory>
@@ -25,19 +25,6 @@ void appendCogDirections(const TileId& tile, std::vector<glm::dvec3>& out) {
 }
 
 namespace {
-
-// Longitude/latitude on a sphere of the planet's radius (inverse flattening 0), as WKT.
-std::string sphereWkt(double radius_m, const std::string& planet_name) {
-  OGRSpatialReferenceH srs = OSRNewSpatialReference(nullptr);
-  OSRSetGeogCS(srs, ("globe " + planet_name).c_str(), "globe sphere", "sphere", radius_m, 0.0, "Reference meridian",
-               0.0, "degree", 0.0174532925199433);
-  char* wkt = nullptr;
-  OSRExportToWkt(srs, &wkt);
-  std::string text = wkt != nullptr ? wkt : "";
-  CPLFree(wkt);
-  OSRDestroySpatialReference(srs);
-  return text;
-}
 
 struct DatasetCloser {
   void operator()(void* dataset) const { GDALClose(dataset); }
@@ -72,7 +59,7 @@ Result<std::string> encodeCogTile(const TileId& tile, const std::vector<double>&
   static std::atomic<unsigned> serial{0};
   const std::string name = tilePath(tile, ".tif");
   const std::string path = "/vsimem/globe_bake_" + std::to_string(serial++) + ".tif";
-  Dataset mem = memoryRaster(tile, heights_m, sphereWkt(radius_m, planet_name));
+  Dataset mem = memoryRaster(tile, heights_m, sphereCrsWkt(radius_m, planet_name));
   if (!mem) return Error::inFile(name, std::string("GDAL: ") + CPLGetLastErrorMsg());
   char** options = nullptr;
   options = CSLSetNameValue(options, "COMPRESS", "DEFLATE");

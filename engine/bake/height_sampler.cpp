@@ -1,13 +1,16 @@
 #include "engine/bake/height_sampler.h"
 
 #include "planet/core/parallel_for.h"
+#include "planet/sources/request_preparer.h"
 
 #include <algorithm>
 
 namespace globe {
 
-GpuHeightSampler::GpuHeightSampler(vk::Device& device, const ElevationModel& model)
-    : sampler_(device, model.params(), kBatchDirections) {}
+GpuHeightSampler::GpuHeightSampler(vk::Device& device, const ElevationModel& model, unsigned threads)
+    : model_(model),
+      threads_(threads),
+      sampler_(device, model.params(), kBatchDirections, model.sources() != nullptr) {}
 
 std::vector<double> GpuHeightSampler::heights_m(const std::vector<glm::dvec3>& directions) {
   std::vector<double> out;
@@ -16,7 +19,8 @@ std::vector<double> GpuHeightSampler::heights_m(const std::vector<glm::dvec3>& d
   for (std::size_t first = 0; first < directions.size(); first += kBatchDirections) {
     const std::size_t last = std::min(directions.size(), first + kBatchDirections);
     batch.assign(directions.begin() + std::ptrdiff_t(first), directions.begin() + std::ptrdiff_t(last));
-    const std::vector<double> h = sampler_.sample(batch);
+    const std::vector<glm::dvec4> terms = sourceTermsAt(model_, batch, threads_);
+    const std::vector<double> h = sampler_.sample(batch, terms);
     out.insert(out.end(), h.begin(), h.end());
   }
   return out;

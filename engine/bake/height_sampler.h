@@ -1,7 +1,9 @@
 #pragma once
 // Where a bake's heights come from: the GPU kernel the renderer's payloads share
 // (shaders/include/elevation.glsl, through ElevationSampler) in batches, or the CPU reference
-// (ElevationModel) it is tested against.
+// (ElevationModel) it is tested against. A planet with [[sources]] gets each sample's source term
+// from the CPU (sourceTermsAt, the payloads' own path: tiles read through the sources' tile cache
+// on the calling threads) and the kernel blends it over the procedural layers.
 #include "engine/generation/elevation_sampler.h"
 #include "planet/elevation/elevation.h"
 
@@ -22,10 +24,13 @@ class HeightSampler {
 class GpuHeightSampler final : public HeightSampler {
  public:
   static constexpr std::uint32_t kBatchDirections = 1u << 18;  // 10 MiB of buffers
-  GpuHeightSampler(vk::Device& device, const ElevationModel& model);
+  // `threads`: CPU threads resolving the source terms (a planet with sources).
+  GpuHeightSampler(vk::Device& device, const ElevationModel& model, unsigned threads = 1);
   std::vector<double> heights_m(const std::vector<glm::dvec3>& directions) override;
 
  private:
+  const ElevationModel& model_;
+  unsigned threads_;
   ElevationSampler sampler_;
 };
 

@@ -60,17 +60,9 @@ int runBakeCommand(const BakeOptions& o) {
   if (!settings) return usageError(settings.error());
   const auto planet = loadPlanetForCommand(o.planet);
   if (!planet) return kExitUsage;
-  // The GPU height sampler evaluates the procedural layers only: baking a mosaic of real rasters
-  // would silently drop them, so it is refused until the sampler carries source terms.
-  if (!planet->sources.empty()) {
-    printError(o.planet +
-               ": sources: globe bake does not bake [[sources]] (DEM rasters) yet; remove them to bake the "
-               "procedural planet");
-    return kExitUsage;
-  }
   const ElevationModel model(*planet);
   vk::Device device(deviceOptions(o.device));
-  GpuHeightSampler heights(device, model);
+  GpuHeightSampler heights(device, model, o.threads);
   const auto start = std::chrono::steady_clock::now();
   Result<BakeSummary> summary = [&] {
     ProgressBar bar("baking");

@@ -1,5 +1,7 @@
 #include "planet/sources/gdal_raster.h"
 
+#include "planet/sources/baked_tileset.h"
+
 #include <cpl_conv.h>
 #include <cpl_error.h>
 #include <gdal_priv.h>
@@ -102,6 +104,7 @@ void registerGdalDrivers() {
     // Our own tile cache (tile_cache.h) holds what is read; GDAL's block cache stays small.
     GDALSetCacheMax64(std::int64_t(16) << 20);
     CPLSetErrorHandler(CPLQuietErrorHandler);  // failures come back as Errors, never on stderr
+    registerBakedTilesetDriver();              // baked tileset directories (baked_tileset.h)
   });
 }
 

@@ -3,27 +3,40 @@
 #include "planet/sources/source_mosaic.h"
 #include "planet/streaming/payload_reference.h"
 
+#include "planet/core/parallel_for.h"
+
 #include <algorithm>
+#include <atomic>
 
 namespace globe {
 
-std::vector<glm::dvec4> sourceTermsForJob(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells) {
-  const SourceMosaic* mosaic = model.sources();
-  const int n = int(cells), s = n + 3;
+std::vector<glm::dvec4> sourceTermsAt(const ElevationModel& model, std::span<const glm::dvec3> directions,
+                                      unsigned threads) {
   std::vector<glm::dvec4> terms;
-  if (mosaic == nullptr) return terms;
-  bool any = false;
-  terms.assign(std::size_t(s) * std::size_t(s), glm::dvec4(0.0));
-  for (int j = -1; j <= n + 1; ++j) {
-    for (int i = -1; i <= n + 1; ++i) {
-      const glm::dvec3 dir = payloadSampleDirection(job, cells, i, j);
-      const SourceTerm t = model.sourceTerm(dir);
-      terms[std::size_t(j + 1) * std::size_t(s) + std::size_t(i + 1)] = {t.height_m, t.weight, t.hole, t.detailBound_m};
-      any = any || t.weight > 0.0 || t.hole > 0.0;
+  if (model.sources() == nullptr) return terms;
+  terms.resize(directions.size());
+  std::atomic<bool> any{false};
+  parallelFor(directions.size(), 1024, threads, [&](std::size_t begin, std::size_t end) {
+    bool touched = false;
+    for (std::size_t k = begin; k < end; ++k) {
+      const SourceTerm t = model.sourceTerm(directions[k]);
+      terms[k] = {t.height_m, t.weight, t.hole, t.detailBound_m};
+      touched = touched || t.weight > 0.0 || t.hole > 0.0;
     }
-  }
+    if (touched) any = true;
+  });
   if (!any) terms.clear();
   return terms;
+}
+
+std::vector<glm::dvec4> sourceTermsForJob(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells) {
+  if (model.sources() == nullptr) return {};
+  const int n = int(cells);
+  std::vector<glm::dvec3> directions;
+  directions.reserve(std::size_t(n + 3) * std::size_t(n + 3));
+  for (int j = -1; j <= n + 1; ++j)
+    for (int i = -1; i <= n + 1; ++i) directions.push_back(payloadSampleDirection(job, cells, i, j));
+  return sourceTermsAt(model, directions);
 }
 
 double sourceDetailPad_m(const std::vector<glm::dvec4>& terms) {

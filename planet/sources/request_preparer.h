@@ -32,6 +32,12 @@ struct PreparedRequest {
   std::chrono::steady_clock::time_point queued;
 };
 
+// The packed source terms dvec4(height_m, weight, hole, detail bound) at `directions` (the one way
+// terms are made, for payloads and for `globe bake`'s sampler), on `threads` threads; empty when
+// no direction has one (weight and hole 0 everywhere).
+std::vector<glm::dvec4> sourceTermsAt(const ElevationModel& model, std::span<const glm::dvec3> directions,
+                                      unsigned threads = 1);
+
 // The S * S source terms of `job` (sample (i, j) at (j + 1) * S + (i + 1)); empty when no sample
 // lies in a source's box.
 std::vector<glm::dvec4> sourceTermsForJob(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells);

@@ -1,5 +1,6 @@
 #include "planet/sources/source_toml.h"
 
+#include "planet/sources/baked_source_toml.h"
 #include "planet/sources/gdal_raster.h"
 
 #include <fmt/format.h>
@@ -11,7 +12,7 @@ namespace globe {
 namespace {
 
 constexpr std::string_view kSourceKeys[] = {
-    "path", "nodata", "amplify", "priority", "vertical_scale", "vertical_offset_m", "blend_m"};
+    "path", "format", "nodata", "amplify", "priority", "vertical_scale", "vertical_offset_m", "blend_m"};
 constexpr double kMaxVerticalScale = 1.0e6;
 constexpr double kMaxVerticalOffset_m = 1.0e7;
 
@@ -27,6 +28,7 @@ void readPath(PlanetTomlReader& r, const toml::node& node, const std::string& fi
   if (path.is_relative() && !directory.empty()) path = std::filesystem::path(directory) / path;
   source.path = path.lexically_normal().string();
   std::error_code ec;
+  if (std::filesystem::is_directory(source.path, ec)) return;  // a baked tileset: checkBakedSource
   if (!std::filesystem::is_regular_file(source.path, ec)) {
     r.fail(node.source(), field, fmt::format("no such file '{}'", source.path));
     return;
@@ -92,17 +94,20 @@ void readSource(PlanetTomlReader& r, const toml::table& t, std::size_t index, co
                 std::vector<ElevationSource>& sources) {
   const std::string prefix = fmt::format("sources[{}].", index);
   ElevationSource source;
-  bool havePath = false;
+  BakedSourceKeys baked;
   for (auto&& [key, node] : t) {
     const std::string k(key.str());
     if (!isKnownKey(k, kSourceKeys)) {
       r.fail(key.source(), prefix + k, unknownKeyMessage(k, kSourceKeys));
       continue;
     }
-    havePath = havePath || k == "path";
-    readSourceKey(r, k, node, prefix + k, directory, source);
+    if (k == "path") baked.path = &node;
+    if (k == "format") baked.format = &node;
+    baked.amplifyGiven = baked.amplifyGiven || k == "amplify";
+    if (k != "format") readSourceKey(r, k, node, prefix + k, directory, source);
   }
-  if (!havePath) r.fail(t.source(), prefix + "path", "missing (required)");
+  if (baked.path == nullptr) r.fail(t.source(), prefix + "path", "missing (required)");
+  if (baked.path != nullptr && !source.path.empty()) checkBakedSource(r, baked, prefix, source);
   sources.push_back(std::move(source));
 }
 

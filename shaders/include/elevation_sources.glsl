@@ -1,4 +1,4 @@
-// Real elevation sources in the payload kernel (planet/sources, docs/elevation-data.md). The CPU's
+// Real elevation sources in the payload and elevation-sample kernels (planet/sources, docs/elevation-data.md). The CPU's
 // source I/O thread resolves the mosaic at every sample of a job (latitude/longitude, reprojection
 // and bilinear lookups need double trigonometry and PROJ, which GLSL lacks) and uploads one
 // dvec4 (height_m, weight, hole, 0) per sample; here the kernel only blends them over its own
@@ -7,7 +7,11 @@
 // Jobs with sourceBase == GLOBE_NO_SOURCE_TERMS (every job of a procedural planet) read nothing.
 // The branch reads a storage buffer value, so it never makes lavapipe compile a new variant.
 
-layout(std430, binding = 6) readonly buffer SourceTerms { dvec4 sourceTerms[]; };
+// The terms' binding: 6 in the payload kernel; a kernel with other bindings defines its own.
+#ifndef GLOBE_SOURCE_TERMS_BINDING
+#define GLOBE_SOURCE_TERMS_BINDING 6
+#endif
+layout(std430, binding = GLOBE_SOURCE_TERMS_BINDING) readonly buffer SourceTerms { dvec4 sourceTerms[]; };
 
 // Elevation (metres) at sample `index` of a job whose terms start at `sourceBase`.
 double globeApplySources(double procedural_m, uint sourceBase, uint index) {

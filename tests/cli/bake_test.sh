@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # globe bake end to end (issue 19): bad options fail on one line with nothing written; shards run by
 # GNU parallel give byte-identical tiles to one run; a killed bake leaves no half-written tile and
-# resumes to the same result; COG tiles are valid Cloud-Optimized GeoTIFFs (gdalinfo).
+# resumes to the same result; COG tiles are valid Cloud-Optimized GeoTIFFs (gdalinfo); a baked tileset
+# reads back as a planet source (planet check, planet sample, a bad tileset); a planet with DEM
+# sources bakes.
 # Usage: bake_test.sh GLOBE SOURCE_DIR WORK_DIR
 set -uo pipefail
 GLOBE="$1"
@@ -42,7 +44,6 @@ bad "shard must satisfy" --format cog --levels 0..2 --shard 3/3
 bad "shard must satisfy" --format cog --levels 0..2 --shard 0/0
 bad "expected K/N" --format cog --levels 0..2 --shard 1of2
 BAD_PLANET="$WORK/missing.toml" bad "missing.toml" --format cog --levels 0..2
-BAD_PLANET="$SRC/assets/planets/earth-dem.toml" bad "does not bake \[\[sources\]\]" --format cog --levels 0..2
 
 # ---- shards with GNU parallel == one run, byte for byte ----
 ARGS=(--planet "$PLANET" --format quantized-mesh --levels 0..6 --region 5,40,12,47)
@@ -103,6 +104,44 @@ for f in $(find "$WORK/cog" -name '*.tif' | sort); do
   fi
 done
 echo "ok: $(find "$WORK/cog" -name '*.tif' | wc -l) COG tiles pass gdalinfo (LAYOUT=COG, 256x256, sphere CRS, overview)"
+
+# ---- read back: the baked tileset as the source of a planet with earthlike's layers ----
+RB="$WORK/readback"
+mkdir -p "$RB"
+if ! "$GLOBE" bake --planet "$PLANET" --format quantized-mesh --levels 12 --region -99.05,38.95,-99.0,39.0 \
+  --out "$RB/qm" >"$RB/bake.log" 2>&1; then
+  fail "read-back bake failed: $(cat "$RB/bake.log")"
+fi
+{ cat "$PLANET"; printf '\n[[sources]]\npath = "qm"\n'; } >"$RB/baked.toml"
+if ! "$GLOBE" planet check "$RB/baked.toml" >"$RB/check.log" 2>&1 || ! grep -q "source 0 (rank 0): .*/qm:" "$RB/check.log"; then
+  fail "planet check of the baked planet: $(cat "$RB/check.log")"
+fi
+# Level 12's error is 18.8 m; these points lie inside the region, away from its tiles' borders.
+at=(--at 38.97,-99.03 --at 38.985,-99.012 --at 38.96,-99.04)
+baked=$("$GLOBE" planet sample "$RB/baked.toml" "${at[@]}" | awk '{print $2}')
+original=$("$GLOBE" planet sample "$PLANET" "${at[@]}" | awk '{print $2}')
+if ! paste <(echo "$baked") <(echo "$original") | awk '{d = $1 - $2; if (d < 0) d = -d; if (d > 18.8 || NF != 2) bad = 1} END {exit bad}'; then
+  fail "baked vs original samples differ by more than the level's error: $baked / $original"
+else
+  echo "ok: planet sample over the baked source = the original within level 12's error ($(echo $baked) vs $(echo $original))"
+fi
+# A planet with [[sources]] bakes its DEM mosaic (earth-dem's Jacksboro grid).
+if ! "$GLOBE" bake --planet "$SRC/assets/planets/earth-dem.toml" --format cog --levels 11 \
+  --region -84.28,36.57,-84.25,36.6 --out "$RB/dem" >"$RB/dem.log" 2>&1; then
+  fail "earth-dem bake failed: $(cat "$RB/dem.log")"
+else
+  echo "ok: earth-dem bakes: $(head -1 "$RB/dem.log")"
+fi
+# A bad tileset: one error line naming the file (then planet check's count), exit 2.
+rm "$RB/qm/layer.json"
+"$GLOBE" planet check "$RB/baked.toml" >"$RB/bad.stdout" 2>"$RB/bad.stderr"
+code=$?
+if [[ $code -ne 2 ]] || [[ $(grep -c "sources\[0\]" "$RB/bad.stderr") -ne 1 ]] ||
+  ! grep -q "baked.toml:[0-9]*:[0-9]*: sources\[0\].path: .*qm/layer.json: no such file" "$RB/bad.stderr"; then
+  fail "missing layer.json -> exit $code: $(cat "$RB/bad.stderr")"
+else
+  echo "ok: $(cat "$RB/bad.stderr")"
+fi
 
 if ((failures > 0)); then
   echo "$failures failures"

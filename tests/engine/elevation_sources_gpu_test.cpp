@@ -10,6 +10,7 @@
 #include "planet/sources/request_preparer.h"
 #include "planet/sources/source_mosaic.h"
 #include "planet/streaming/payload_reference.h"
+#include "tests/engine/source_payload_check.h"
 #include "tests/support/dem_fixture.h"
 #include "tests/support/gpu_test.h"
 #include "tests/support/temp_dir.h"
@@ -52,51 +53,12 @@ TEST_F(ElevationSourcesGpuTest, PayloadsMatchTheCpuReference) {
     const FacePoint at = RhombusFaceMapping::get().locate(directionFromLatLon(p.x, p.y));
     for (int level : {6, 10, 13, 16, 19}) nodes.push_back(nodeAt(at, level));
   }
-  GpuPayloadGenerator gen(device(), *model_, kCells, GLOBE_PAYLOAD_MAX_BATCH, 1);
-  ASSERT_NE(gen.sourcePreparer(), nullptr);
-  gen.reserveSlots(uint32_t(nodes.size()));
-  std::vector<GenerationJob> jobs;
-  for (uint32_t k = 0; k < nodes.size(); ++k) jobs.push_back({nodes[k], k});
-  gen.generate(jobs);
-  gen.waitIdle();
-  std::vector<GenerationResult> results;
-  gen.collect(results);
-  ASSERT_EQ(results.size(), nodes.size());
-  vk::Buffer readback(device(), gen.payloads().size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::HostVisible,
-                      "payload readback");
-  device().submitAndWait([&](VkCommandBuffer cmd) {
-    VkBufferCopy copy{0, 0, gen.payloads().size()};
-    vkCmdCopyBuffer(cmd, gen.payloads().handle(), readback.handle(), 1, &copy);
-  });
-  const auto gpu = readback.as<glm::vec4>();
-  const size_t perSlot = GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells), samples = perSlot / 2;
-  std::vector<glm::vec4> cpu(perSlot);
-  double worstRadius = 0.0, worstElevation = 0.0;
-  int holeSamples = 0;
-  for (const GenerationResult& r : results) {
-    SCOPED_TRACE(::testing::Message() << "level " << int(r.node.level));
-    const gpu::PayloadJob job = makePayloadJob(r.node, 0, *model_);
-    const RadiusRange range = fillPayloadReference(*model_, job, kCells, cpu);
-    RadiusRange padded = paddedRadiusRange(model_->params(), range, r.node.level, kCells);
-    const double pad = sourceDetailPad_m(sourceTermsForJob(*model_, job, kCells));  // amplification below the samples
-    padded = {std::max(0.0, padded.min_m - pad), padded.max_m + pad};
-    worstRadius =
-        std::max({worstRadius, std::abs(r.radius.min_m - padded.min_m), std::abs(r.radius.max_m - padded.max_m)});
-    const glm::vec4* g = &gpu[r.slot * perSlot];
-    EXPECT_EQ(gen.slotCentre(r.slot).x, job.centre.x);
-    for (size_t i = 0; i < samples; ++i) {
-      for (int c = 0; c < 3; ++c) ASSERT_LE(std::abs(double(g[i][c]) - double(cpu[i][c])), job.centre.w * 1.0001) << i;
-      worstElevation = std::max(worstElevation, double(std::abs(g[i].w - cpu[i].w)));
-      ASSERT_LE(std::abs(g[i].w - cpu[i].w), std::max(1e-6f, std::abs(cpu[i].w) * 1.2e-7f)) << i;
-      ASSERT_EQ(g[samples + i].w, cpu[samples + i].w) << i;  // the hole mask
-      holeSamples += cpu[samples + i].w >= 0.5f;
-      ASSERT_LT(glm::length(glm::vec3(g[samples + i]) - glm::vec3(cpu[samples + i])), 1e-5f) << i;
-    }
-  }
-  EXPECT_LE(worstRadius, 1e-6);
-  EXPECT_GT(holeSamples, 0);
+  SourcePayloadComparison c;
+  compareSourcePayloads(device(), *model_, nodes, kCells, c);
+  EXPECT_LE(c.worstRadius_m, 1e-6);
+  EXPECT_GT(c.holeSamples, 0);
   std::printf("[ info ] %zu nodes over the DEM: worst |radius| diff %.3g m, elevation %.3g m, %d hole samples\n",
-              results.size(), worstRadius, worstElevation, holeSamples);
+              c.nodes, c.worstRadius_m, c.worstElevation_m, c.holeSamples);
 }
 
 // The real frame loop (Terrain::update marks its thread as one) flying low over the DEM: tiles

@@ -1,11 +1,13 @@
-#include "tests/engine/quantized_mesh_decoder.h"
+#include "planet/tiling/quantized_mesh_decoder.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 #include <glm/geometric.hpp>
 
-namespace globe::testing {
+namespace globe {
 
 namespace {
 
@@ -89,13 +91,17 @@ std::optional<DecodedMesh> decodeQuantizedMesh(const std::string& bytes, std::st
     return fail("truncated header");
   if (!readDeltas(r, vertices, m.u) || !readDeltas(r, vertices, m.v) || !readDeltas(r, vertices, m.h))
     return fail("truncated vertex data");
+  for (const std::vector<int>* values : {&m.u, &m.v, &m.h})
+    for (int value : *values)
+      if (value < 0 || value > 32767) return fail("vertex coordinate outside [0, 32767]");
   const bool wide = vertices > 65536;
   r.align(wide ? 4 : 2);
   if (!r.read(triangles)) return fail("truncated triangle count");
   std::uint32_t highest = 0;
   for (std::uint32_t k = 0; k < triangles * 3; ++k) {
     std::uint32_t code = 0;
-    if (!readIndex(r, wide, code) || code > highest) return fail("bad high-water-mark index");
+    if (!readIndex(r, wide, code) || code > highest || highest - code >= vertices)
+      return fail("bad high-water-mark index");
     m.indices.push_back(highest - code);
     if (code == 0) ++highest;
   }
@@ -112,4 +118,46 @@ std::optional<DecodedMesh> decodeQuantizedMesh(const std::string& bytes, std::st
   return m;
 }
 
-}  // namespace globe::testing
+namespace {
+
+// Writes, at every grid point still NaN, the height of the first triangle of the given orientation
+// that holds it (points on an edge count as inside, within 1e-9 of the tile).
+void fillFromTriangles(const DecodedMesh& m, int cells, bool clockwise, std::vector<double>& out) {
+  const std::size_t side = std::size_t(cells) + 1;
+  const double perCell = 32767.0 / cells, tolerance = 1e-9;
+  for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3) {
+    const std::uint32_t a = m.indices[t], b = m.indices[t + 1], c = m.indices[t + 2];
+    const double ua = m.u[a], va = m.v[a], ub = m.u[b], vb = m.v[b], uc = m.u[c], vc = m.v[c];
+    const double det = (vb - vc) * (ua - uc) + (uc - ub) * (va - vc);
+    if (!(clockwise ? det < 0.0 : det > 0.0)) continue;
+    const int iMin = std::max(0, int(std::ceil(std::min({ua, ub, uc}) / perCell - 1e-6)));
+    const int iMax = std::min(cells, int(std::floor(std::max({ua, ub, uc}) / perCell + 1e-6)));
+    const int jMin = std::max(0, int(std::ceil(std::min({va, vb, vc}) / perCell - 1e-6)));
+    const int jMax = std::min(cells, int(std::floor(std::max({va, vb, vc}) / perCell + 1e-6)));
+    for (int j = jMin; j <= jMax; ++j) {
+      for (int i = iMin; i <= iMax; ++i) {
+        const double u = i * perCell, v = j * perCell;
+        const double la = ((vb - vc) * (u - uc) + (uc - ub) * (v - vc)) / det;
+        const double lb = ((vc - va) * (u - uc) + (ua - uc) * (v - vc)) / det;
+        const double lc = 1.0 - la - lb;
+        double& h = out[std::size_t(j) * side + std::size_t(i)];
+        if (la < -tolerance || lb < -tolerance || lc < -tolerance || !std::isnan(h)) continue;
+        h = la * m.height_m(a) + lb * m.height_m(b) + lc * m.height_m(c);
+      }
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<double> meshHeightsOnGrid(const DecodedMesh& m, int cells) {
+  std::vector<double> out(std::size_t(cells + 1) * std::size_t(cells + 1), std::numeric_limits<double>::quiet_NaN());
+  // Counter-clockwise triangles first; a simplified mesh can fold over itself in u/v on steep
+  // ground, and its clockwise (folded) triangles only answer where no other does.
+  fillFromTriangles(m, cells, false, out);
+  if (std::any_of(out.begin(), out.end(), [](double h) { return std::isnan(h); }))
+    fillFromTriangles(m, cells, true, out);
+  return out;
+}
+
+}  // namespace globe

@@ -1,0 +1,26 @@
+#pragma once
+// GPU payloads of a planet with [[sources]] against the CPU reference (fillPayloadReference): the
+// raster sources' test and the baked tilesets' (elevation_sources_gpu_test.cpp,
+// baked_source_test.cpp) share it.
+#include "engine/vk/device.h"
+#include "planet/elevation/elevation.h"
+#include "planet/geometry/node_id.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace globe::testing {
+
+struct SourcePayloadComparison {
+  std::size_t nodes = 0;
+  double worstRadius_m = 0.0, worstElevation_m = 0.0;
+  int holeSamples = 0;
+};
+
+// Generates `nodes` on the GPU (source terms from the I/O thread) and checks every sample against
+// the CPU reference with gtest: positions within a quantum, elevation <= 1e-6 m or 1.2e-7 relative,
+// the hole mask equal, normals <= 1e-5. Worst figures in `out`.
+void compareSourcePayloads(vk::Device& device, const ElevationModel& model, const std::vector<NodeId>& nodes,
+                           std::uint32_t cells, SourcePayloadComparison& out);
+
+}  // namespace globe::testing
