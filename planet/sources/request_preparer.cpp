@@ -14,10 +14,11 @@ std::vector<glm::dvec4> sourceTermsForJob(const ElevationModel& model, const gpu
   if (mosaic == nullptr) return terms;
   bool any = false;
   terms.assign(std::size_t(s) * std::size_t(s), glm::dvec4(0.0));
+  const double spacing_m = payloadSampleSpacing_m(job, cells, model.radius_m());
   for (int j = -1; j <= n + 1; ++j) {
     for (int i = -1; i <= n + 1; ++i) {
       const glm::dvec3 dir = payloadSampleDirection(job, cells, i, j);
-      const SourceTerm t = model.sourceTerm(dir);
+      const SourceTerm t = model.sourceTerm(dir, spacing_m);
       terms[std::size_t(j + 1) * std::size_t(s) + std::size_t(i + 1)] = {t.height_m, t.weight, t.hole, t.detailBound_m};
       any = any || t.weight > 0.0 || t.hole > 0.0;
     }
