@@ -131,13 +131,12 @@ LayerRead readLevel(TileCache& cache, const SourceMosaic::Layer& layer, int leve
   return r;
 }
 
-// The level the samples resolve (pyramidLevelFor); outside the raster, in the feather, the border
-// is read at a level that coarsens with the distance (pixels about half of it, two levels mixed),
+// Level k (or coarser): outside the raster, in the feather, the border is read at a level that
+// coarsens with the distance (pixels about half of it, two levels mixed),
 // so the border's heights reach out as a smooth ramp instead of stripes.
-LayerRead readLayer(TileCache& cache, const SourceMosaic::Layer& layer, double px, double py, double spacing_m,
-                    double outside_m) {
+LayerRead readFrom(TileCache& cache, const SourceMosaic::Layer& layer, double px, double py, int k, double outside_m) {
   const double pixel_m = layer.raster->facts().pixel_size_m;
-  const int levels = layer.tiles->levelCount(), k = pyramidLevelFor(pixel_m, spacing_m, levels);
+  const int levels = layer.tiles->levelCount();
   if (outside_m <= 0.0) return readLevel(cache, layer, k, px, py);
   const double wanted = std::clamp(std::log2(std::max(1.0, 0.5 * outside_m / pixel_m)), double(k), levels - 1.0);
   const int a = int(std::floor(wanted)), b = std::min(a + 1, levels - 1);
@@ -148,6 +147,20 @@ LayerRead readLayer(TileCache& cache, const SourceMosaic::Layer& layer, double p
   auto lerp = [&](double x, double y) { return (1.0 - mix) * x + mix * y; };
   return {lerp(ra.coverage, rb.coverage), lerp(ra.value, rb.value), lerp(ra.relief, rb.relief),
           std::max(ra.deviation, rb.deviation), ra.missing || rb.missing};
+}
+
+// readFrom at the level the samples resolve; where its tiles are missing (a frame-loop thread never
+// reads: the camera's ground clamp), the next coarser level that is resident, like the pool draws
+// a node's parent until its payload arrives.
+LayerRead readLayer(TileCache& cache, const SourceMosaic::Layer& layer, double px, double py, double spacing_m,
+                    double outside_m) {
+  const int levels = layer.tiles->levelCount();
+  LayerRead r;
+  for (int k = pyramidLevelFor(layer.raster->facts().pixel_size_m, spacing_m, levels); k < levels; ++k) {
+    r = readFrom(cache, layer, px, py, k, outside_m);
+    if (!r.missing) return r;
+  }
+  return r;
 }
 
 }  // namespace
