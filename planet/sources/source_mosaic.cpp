@@ -27,6 +27,7 @@ class PixelWindow {
 
   // Raw value of pixel (x, y), clamped to the level; NaN for no-data.
   float at(int x, int y) {
+    if (missing) return std::numeric_limits<float>::quiet_NaN();  // the caller ignores this read
     x = std::clamp(x, 0, size_.width - 1);
     y = std::clamp(y, 0, size_.height - 1);
     const int tx = x / kSourceTilePixels, ty = y / kSourceTilePixels;

@@ -36,12 +36,26 @@ class ElevationSourcesGpuTest : public GpuTest {
     Result<PlanetDescription> planet = loadPlanetFile(writeDemPlanet(dir_->str(), "gpu", sources));
     ASSERT_TRUE(planet.ok()) << planet.error().format();
     model_ = std::make_unique<ElevationModel>(*planet);
+    // Build the sources' pyramids now (first use), as an earlier run's disk cache would have them:
+    // under load the build's fsync can outlast the short flight below.
+    model_->sourceTerm(directionFromLatLon(36.59, -84.25), 1.0e9);
   }
   static void TearDownTestSuite() {
     ::unsetenv("GLOBE_SOURCE_CACHE_DIR");
     model_.reset();
     fixture_.reset();
     dir_.reset();
+  }
+  // The generator's whole payload buffer, copied back to the host.
+  std::vector<glm::vec4> readPayloads(GpuPayloadGenerator& gen) {
+    vk::Buffer readback(device(), gen.payloads().size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::HostVisible,
+                        "payload readback");
+    device().submitAndWait([&](VkCommandBuffer cmd) {
+      VkBufferCopy copy{0, 0, gen.payloads().size()};
+      vkCmdCopyBuffer(cmd, gen.payloads().handle(), readback.handle(), 1, &copy);
+    });
+    const auto mapped = readback.as<glm::vec4>();
+    return std::vector<glm::vec4>(mapped.begin(), mapped.end());
   }
   static inline std::unique_ptr<TempDir> dir_;
   static inline std::unique_ptr<DemFixture> fixture_;
@@ -66,13 +80,7 @@ TEST_F(ElevationSourcesGpuTest, PayloadsMatchTheCpuReference) {
   std::vector<GenerationResult> results;
   gen.collect(results);
   ASSERT_EQ(results.size(), nodes.size());
-  vk::Buffer readback(device(), gen.payloads().size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::HostVisible,
-                      "payload readback");
-  device().submitAndWait([&](VkCommandBuffer cmd) {
-    VkBufferCopy copy{0, 0, gen.payloads().size()};
-    vkCmdCopyBuffer(cmd, gen.payloads().handle(), readback.handle(), 1, &copy);
-  });
-  const auto gpu = readback.as<glm::vec4>();
+  const std::vector<glm::vec4> gpu = readPayloads(gen);
   const size_t perSlot = GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells), samples = perSlot / 2;
   std::vector<glm::vec4> cpu(perSlot);
   double worstRadius = 0.0, worstElevation = 0.0;
@@ -117,13 +125,7 @@ TEST_F(ElevationSourcesGpuTest, TheFloatKernelBlendsTheSourcesToo) {
   std::vector<GenerationResult> results;
   gen.collect(results);
   ASSERT_EQ(results.size(), 1u);
-  vk::Buffer readback(device(), gen.payloads().size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::HostVisible,
-                      "payload readback");
-  device().submitAndWait([&](VkCommandBuffer cmd) {
-    VkBufferCopy copy{0, 0, gen.payloads().size()};
-    vkCmdCopyBuffer(cmd, gen.payloads().handle(), readback.handle(), 1, &copy);
-  });
-  const auto gpu = readback.as<glm::vec4>();
+  const std::vector<glm::vec4> gpu = readPayloads(gen);
   const gpu::PayloadJob reference = makePayloadJob(node, 0, *model_);
   const std::vector<glm::dvec4> terms = sourceTermsForJob(*model_, reference, kCells);
   ASSERT_EQ(terms.size(), GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells) / 2);
