@@ -142,9 +142,9 @@ double ElevationModel::proceduralElevation_m(const glm::dvec3& unit_direction) c
   return evaluateElevation<double>(params_, unit_direction.x, unit_direction.y, unit_direction.z);
 }
 
-SourceTerm ElevationModel::sourceTerm(const glm::dvec3& unit_direction) const {
+SourceTerm ElevationModel::sourceTerm(const glm::dvec3& unit_direction, double sample_spacing_m) const {
   if (!sources_ || !sources_->mayCover(unit_direction)) return {};
-  return sources_->term(unit_direction);
+  return sources_->term(unit_direction, sample_spacing_m);
 }
 
 double ElevationModel::elevation_m(const glm::dvec3& unit_direction) const {

@@ -47,8 +47,10 @@ class ElevationModel {
   double elevation_m(const glm::dvec3& unit_direction) const;
   // The procedural layers alone (what the GPU kernels evaluate themselves).
   double proceduralElevation_m(const glm::dvec3& unit_direction) const;
-  // What the planet's sources contribute at a direction (weight 0 without sources).
-  SourceTerm sourceTerm(const glm::dvec3& unit_direction) const;
+  // What the planet's sources contribute at a direction (weight 0 without sources), read at the
+  // pyramid level that samples `sample_spacing_m` apart resolve (0: full resolution;
+  // SourceMosaic::term).
+  SourceTerm sourceTerm(const glm::dvec3& unit_direction, double sample_spacing_m = 0.0) const;
   // The mosaic of the planet's [[sources]], or nullptr for a procedural planet.
   const SourceMosaic* sources() const { return sources_.get(); }
   // unit_direction * (radius_m + elevation_m), metres, planet-centred.

@@ -151,7 +151,7 @@ GdalRaster::~GdalRaster() {
   if (dataset_ != nullptr) GDALClose(asDataset(dataset_));
 }
 
-bool GdalRaster::pixelAt(double latitude_deg, double longitude_deg, double& px, double& py) const {
+bool GdalRaster::pixelAt(double latitude_deg, double longitude_deg, double& px, double& py, double margin_px) const {
   double x = longitude_deg, y = latitude_deg;
   if (needs_transform_) {
     OGRCoordinateTransformation* t = threadTransform(id_, crs_wkt_);
@@ -160,7 +160,8 @@ bool GdalRaster::pixelAt(double latitude_deg, double longitude_deg, double& px, 
   auto toPixel = [&](double cx, double cy) {
     px = inverse_[0] + cx * inverse_[1] + cy * inverse_[2] - 0.5;
     py = inverse_[3] + cx * inverse_[4] + cy * inverse_[5] - 0.5;
-    return px >= 0.0 && px <= facts_.width - 1.0 && py >= 0.0 && py <= facts_.height - 1.0;
+    return px >= -margin_px && px <= facts_.width - 1.0 + margin_px && py >= -margin_px &&
+           py <= facts_.height - 1.0 + margin_px;
   };
   if (!facts_.geographic) return toPixel(x, y);
   // Geographic rasters may give longitudes in [0, 360) or beyond 180: try the three wraps.
@@ -169,10 +170,23 @@ bool GdalRaster::pixelAt(double latitude_deg, double longitude_deg, double& px, 
   return false;
 }
 
-Result<RasterBlock> GdalRaster::read(int x0, int y0, int w, int h) const {
+std::vector<std::pair<int, int>> GdalRaster::overviewSizes() const {
+  std::lock_guard lock(read_mutex_);
+  GDALRasterBand* band = asDataset(dataset_)->GetRasterBand(1);
+  std::vector<std::pair<int, int>> sizes;
+  for (int i = 0; i < band->GetOverviewCount(); ++i) {
+    GDALRasterBand* overview = band->GetOverview(i);
+    if (overview != nullptr) sizes.emplace_back(overview->GetXSize(), overview->GetYSize());
+  }
+  return sizes;
+}
+
+Result<RasterBlock> GdalRaster::read(int x0, int y0, int w, int h, int overview) const {
   RasterBlock block{x0, y0, w, h, std::vector<float>(std::size_t(w) * std::size_t(h))};
   std::lock_guard lock(read_mutex_);
   GDALRasterBand* band = asDataset(dataset_)->GetRasterBand(1);
+  if (overview >= 0) band = overview < band->GetOverviewCount() ? band->GetOverview(overview) : nullptr;
+  if (band == nullptr) return Error::inFile(path_, fmt::format("has no overview {}", overview));
   if (band->RasterIO(GF_Read, x0, y0, w, h, block.values.data(), w, h, GDT_Float32, 0, 0) != CE_None)
     return Error::inFile(path_, "read failed: " + lastGdalMessage());
   if (facts_.has_nodata) {

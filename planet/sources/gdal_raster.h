@@ -10,6 +10,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace globe {
@@ -47,12 +48,16 @@ class GdalRaster {
   std::uint64_t id() const { return id_; }  // unique per opened raster in this process
 
   // Continuous pixel coordinates (pixel centre (i, j) at (i, j) exactly, i.e. GDAL's minus 0.5) of
-  // a latitude/longitude; false when the point has no image in the raster's CRS. Thread-safe (each
-  // thread has its own PROJ transformation).
-  bool pixelAt(double latitude_deg, double longitude_deg, double& px, double& py) const;
+  // a latitude/longitude; false when the point has no image in the raster's CRS or lies more than
+  // `margin_px` pixels beyond the pixel centres. Thread-safe (each thread has its own PROJ
+  // transformation).
+  bool pixelAt(double latitude_deg, double longitude_deg, double& px, double& py, double margin_px = 0.0) const;
 
-  // Reads pixels [x0, x0 + w) x [y0, y0 + h) of band 1. Thread-safe (one read at a time per raster).
-  Result<RasterBlock> read(int x0, int y0, int w, int h) const;
+  // Reads pixels [x0, x0 + w) x [y0, y0 + h) of band 1, or of its overview `overview` (>= 0: one
+  // of GDAL's reduced-resolution copies, overviewSizes()). Thread-safe (one read at a time per raster).
+  Result<RasterBlock> read(int x0, int y0, int w, int h, int overview = -1) const;
+  // (width, height) of band 1's overviews, in GDAL's order; empty when the file has none.
+  std::vector<std::pair<int, int>> overviewSizes() const;
 
  private:
   GdalRaster() = default;

@@ -11,7 +11,7 @@
 namespace globe {
 
 std::vector<glm::dvec4> sourceTermsAt(const ElevationModel& model, std::span<const glm::dvec3> directions,
-                                      unsigned threads) {
+                                      unsigned threads, double sampleSpacing_m) {
   std::vector<glm::dvec4> terms;
   if (model.sources() == nullptr) return terms;
   terms.resize(directions.size());
@@ -19,7 +19,7 @@ std::vector<glm::dvec4> sourceTermsAt(const ElevationModel& model, std::span<con
   parallelFor(directions.size(), 1024, threads, [&](std::size_t begin, std::size_t end) {
     bool touched = false;
     for (std::size_t k = begin; k < end; ++k) {
-      const SourceTerm t = model.sourceTerm(directions[k]);
+      const SourceTerm t = model.sourceTerm(directions[k], sampleSpacing_m);
       terms[k] = {t.height_m, t.weight, t.hole, t.detailBound_m};
       touched = touched || t.weight > 0.0 || t.hole > 0.0;
     }
@@ -36,7 +36,8 @@ std::vector<glm::dvec4> sourceTermsForJob(const ElevationModel& model, const gpu
   directions.reserve(std::size_t(n + 3) * std::size_t(n + 3));
   for (int j = -1; j <= n + 1; ++j)
     for (int i = -1; i <= n + 1; ++i) directions.push_back(payloadSampleDirection(job, cells, i, j));
-  return sourceTermsAt(model, directions);
+  // The pyramid level whose pixels match the payload's spacing (the CPU reference reads the same).
+  return sourceTermsAt(model, directions, 1, payloadSampleSpacing_m(job, cells, model.radius_m()));
 }
 
 double sourceDetailPad_m(const std::vector<glm::dvec4>& terms) {

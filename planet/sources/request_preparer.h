@@ -33,10 +33,11 @@ struct PreparedRequest {
 };
 
 // The packed source terms dvec4(height_m, weight, hole, detail bound) at `directions` (the one way
-// terms are made, for payloads and for `globe bake`'s sampler), on `threads` threads; empty when
-// no direction has one (weight and hole 0 everywhere).
+// terms are made, for payloads and for `globe bake`'s sampler), on `threads` threads, read from the
+// sources' pyramid level for `sampleSpacing_m` (0: full resolution, as `globe bake` and
+// ElevationModel::elevation_m use); empty when no direction has one (weight and hole 0 everywhere).
 std::vector<glm::dvec4> sourceTermsAt(const ElevationModel& model, std::span<const glm::dvec3> directions,
-                                      unsigned threads = 1);
+                                      unsigned threads = 1, double sampleSpacing_m = 0.0);
 
 // The S * S source terms of `job` (sample (i, j) at (j + 1) * S + (i + 1)); empty when no sample
 // lies in a source's box.

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace globe {
 namespace {
@@ -16,20 +17,22 @@ double smoothstep01(double x) {
   return t * t * (3.0 - 2.0 * t);
 }
 
-// Pixels of one raster read through the tile cache, remembering the last tile (the 4 x 4 pixels
-// a point needs almost always lie in one). `missing` is set when a tile could not be had (a
-// frame-loop thread, a failed read): the caller then ignores the source at this point.
+// Pixels of one level of a source's pyramid read through the tile cache, remembering the last
+// tile (the 4 x 4 pixels a point needs almost always lie in one). `missing` is set when a tile
+// could not be had (a frame-loop thread, a failed read): the caller then ignores the source here.
 class PixelWindow {
  public:
-  PixelWindow(TileCache& cache, const GdalRaster& raster) : cache_(cache), raster_(raster), facts_(raster.facts()) {}
+  PixelWindow(TileCache& cache, const TileSource& source, int level)
+      : cache_(cache), source_(source), level_(level), size_(source.level(level)) {}
 
-  // Raw value of pixel (x, y), clamped to the raster; NaN for no-data.
+  // Raw value of pixel (x, y), clamped to the level; NaN for no-data.
   float at(int x, int y) {
-    x = std::clamp(x, 0, facts_.width - 1);
-    y = std::clamp(y, 0, facts_.height - 1);
+    if (missing) return std::numeric_limits<float>::quiet_NaN();  // the caller ignores this read
+    x = std::clamp(x, 0, size_.width - 1);
+    y = std::clamp(y, 0, size_.height - 1);
     const int tx = x / kSourceTilePixels, ty = y / kSourceTilePixels;
     if (!tile_ || tx != tx_ || ty != ty_) {
-      tile_ = cache_.tile(raster_, tx, ty);
+      tile_ = cache_.tile(source_, level_, tx, ty);
       tx_ = tx;
       ty_ = ty;
       if (!tile_) {
@@ -39,12 +42,14 @@ class PixelWindow {
     }
     return tile_->values[std::size_t(y - tile_->y0) * std::size_t(tile_->width) + std::size_t(x - tile_->x0)];
   }
+  const PyramidLevel& size() const { return size_; }
   bool missing = false;
 
  private:
   TileCache& cache_;
-  const GdalRaster& raster_;
-  const RasterFacts& facts_;
+  const TileSource& source_;
+  int level_;
+  PyramidLevel size_;
   std::shared_ptr<const RasterBlock> tile_;
   int tx_ = -1, ty_ = -1;
 };
@@ -61,8 +66,9 @@ struct LayerSample {
   double coverage = 0.0, value = 0.0, relief = 0.0;
 };
 
-LayerSample sampleLayer(PixelWindow& w, const RasterFacts& f, double px, double py, bool wantRelief) {
-  const int x0 = std::min(int(std::floor(px)), f.width - 2), y0 = std::min(int(std::floor(py)), f.height - 2);
+LayerSample sampleLayer(PixelWindow& w, double px, double py, bool wantRelief) {
+  const int x0 = std::min(int(std::floor(px)), w.size().width - 2);
+  const int y0 = std::min(int(std::floor(py)), w.size().height - 2);
   const double tx = px - x0, ty = py - y0;
   const double b[4] = {(1.0 - tx) * (1.0 - ty), tx * (1.0 - ty), (1.0 - tx) * ty, tx * ty};
   const int dx[4] = {0, 1, 0, 1}, dy[4] = {0, 0, 1, 1};
@@ -104,6 +110,60 @@ double nearbyValue(PixelWindow& w, double px, double py, int radius) {
 // Pixels around a kept hole's border over which the source's heights continue under the hole.
 constexpr int kHoleFillPixels = 4;
 
+// One layer at (clamped) level-0 pixel coordinates: its coverage, height (raw units; NaN inside a
+// kept hole beyond kHoleFillPixels), relief per level-0 pixel and the deviation bound of the level.
+struct LayerRead {
+  double coverage = 0.0, value = 0.0, relief = 0.0, deviation = 0.0;
+  bool missing = false;
+};
+
+LayerRead readLevel(TileCache& cache, const SourceMosaic::Layer& layer, int level, double px, double py) {
+  const RasterFacts& f = layer.raster->facts();
+  PixelWindow window(cache, *layer.tiles, level);
+  // Level-k pixel centres in the level's own grid (a level-k pixel spans 2^k level-0 pixels).
+  const double sx = double(window.size().width) / f.width, sy = double(window.size().height) / f.height;
+  px = (px + 0.5) * sx - 0.5;
+  py = (py + 0.5) * sy - 0.5;
+  const LayerSample s = sampleLayer(window, px, py, layer.detailOctaves > 0);
+  LayerRead r{s.coverage, s.value, s.relief * std::min(sx, sy), window.size().deviationBound, window.missing};
+  if (layer.description.nodata == NoDataMode::kHole && s.coverage <= 0.0)
+    r.value = nearbyValue(window, px, py, kHoleFillPixels);
+  r.missing = r.missing || window.missing;
+  return r;
+}
+
+// Level k (or coarser): outside the raster, in the feather, the border is read at a level that
+// coarsens with the distance (pixels about half of it, two levels mixed),
+// so the border's heights reach out as a smooth ramp instead of stripes.
+LayerRead readFrom(TileCache& cache, const SourceMosaic::Layer& layer, double px, double py, int k, double outside_m) {
+  const double pixel_m = layer.raster->facts().pixel_size_m;
+  const int levels = layer.tiles->levelCount();
+  if (outside_m <= 0.0) return readLevel(cache, layer, k, px, py);
+  const double wanted = std::clamp(std::log2(std::max(1.0, 0.5 * outside_m / pixel_m)), double(k), levels - 1.0);
+  const int a = int(std::floor(wanted)), b = std::min(a + 1, levels - 1);
+  const double mix = wanted - a;
+  const LayerRead ra = readLevel(cache, layer, a, px, py);
+  if (mix <= 0.0 || a == b) return ra;
+  const LayerRead rb = readLevel(cache, layer, b, px, py);
+  auto lerp = [&](double x, double y) { return (1.0 - mix) * x + mix * y; };
+  return {lerp(ra.coverage, rb.coverage), lerp(ra.value, rb.value), lerp(ra.relief, rb.relief),
+          std::max(ra.deviation, rb.deviation), ra.missing || rb.missing};
+}
+
+// readFrom at the level the samples resolve; where its tiles are missing (a frame-loop thread never
+// reads: the camera's ground clamp), the next coarser level that is resident, like the pool draws
+// a node's parent until its payload arrives.
+LayerRead readLayer(TileCache& cache, const SourceMosaic::Layer& layer, double px, double py, double spacing_m,
+                    double outside_m) {
+  const int levels = layer.tiles->levelCount();
+  LayerRead r;
+  for (int k = pyramidLevelFor(layer.raster->facts().pixel_size_m, spacing_m, levels); k < levels; ++k) {
+    r = readFrom(cache, layer, px, py, k, outside_m);
+    if (!r.missing) return r;
+  }
+  return r;
+}
+
 }  // namespace
 
 SourceMosaic::SourceMosaic(const std::vector<ElevationSource>& sources, double radius_m, std::uint64_t seed,
@@ -115,8 +175,13 @@ SourceMosaic::SourceMosaic(const std::vector<ElevationSource>& sources, double r
     Result<std::unique_ptr<GdalRaster>> raster = GdalRaster::open(sources[i].path, radius_m);
     if (!raster) continue;
     Layer layer{sources[i], std::move(*raster)};
+    layer.tiles = std::make_unique<RasterPyramid>(*layer.raster, sourceCacheDirectory());
     const RasterFacts& f = layer.raster->facts();
-    layer.blend_m = sources[i].blend_m >= 0.0 ? sources[i].blend_m : 4.0 * f.pixel_size_m;
+    layer.blend_m = sources[i].blend_m >= 0.0 ? sources[i].blend_m : defaultBlend_m(f.pixel_size_m);
+    layer.marginLat_deg = layer.blend_m / radius_m * 180.0 / std::numbers::pi;
+    const double widestLat_deg =
+        std::min(89.0, std::max(std::abs(f.lat_min_deg), std::abs(f.lat_max_deg)) + layer.marginLat_deg);
+    layer.marginLon_deg = std::min(360.0, layer.marginLat_deg / std::cos(widestLat_deg * std::numbers::pi / 180.0));
     layer.detailOctaves = sources[i].amplify ? amplificationOctaves(f.pixel_size_m) : 0;
     layer.detailSeed = hashMix32(std::uint32_t(seed) ^ hashMix32(std::uint32_t(i) + 0x51ed27u));
     const double a = sources[i].vertical_scale * f.min_value + sources[i].vertical_offset_m;
@@ -144,45 +209,44 @@ bool SourceMosaic::mayCover(const glm::dvec3& unitDirection) const {
   const glm::dvec2 ll = latLonFromPosition(unitDirection);
   for (const Layer& layer : layers_) {
     const RasterFacts& f = layer.raster->facts();
-    if (ll.x < f.lat_min_deg - 1e-6 || ll.x > f.lat_max_deg + 1e-6) continue;
+    const double mLat = layer.marginLat_deg + 1e-6, mLon = layer.marginLon_deg + 1e-6;
+    if (ll.x < f.lat_min_deg - mLat || ll.x > f.lat_max_deg + mLat) continue;
     for (double wrap : {0.0, 360.0, -360.0})
-      if (ll.y + wrap >= f.lon_min_deg - 1e-6 && ll.y + wrap <= f.lon_max_deg + 1e-6) return true;
+      if (ll.y + wrap >= f.lon_min_deg - mLon && ll.y + wrap <= f.lon_max_deg + mLon) return true;
   }
   return false;
 }
 
-SourceTerm SourceMosaic::term(const glm::dvec3& unitDirection) const {
+SourceTerm SourceMosaic::term(const glm::dvec3& unitDirection, double sampleSpacing_m) const {
   SourceTerm t;
   if (layers_.empty()) return t;
   const glm::dvec2 ll = latLonFromPosition(unitDirection);
   double remaining = 1.0, weighted = 0.0;
   for (const Layer& layer : layers_) {
-    double px = 0.0, py = 0.0;
-    if (!layer.raster->pixelAt(ll.x, ll.y, px, py)) continue;
     const RasterFacts& f = layer.raster->facts();
-    const double edge_m =
-        std::min(std::min(px, f.width - 1.0 - px), std::min(py, f.height - 1.0 - py)) * f.pixel_size_m;
-    const double feather = layer.blend_m > 0.0 ? smoothstep01(edge_m / layer.blend_m) : 1.0;
+    double px = 0.0, py = 0.0;
+    if (!layer.raster->pixelAt(ll.x, ll.y, px, py, layer.blend_m / f.pixel_size_m)) continue;
+    // The feather lies outside the raster: inside, the raster's own heights; beyond its last pixel
+    // centres they reach out over blend_m, fading into what lies beneath (a ramp, not a cliff).
+    const double ex = std::max({0.0, -px, px - (f.width - 1.0)}), ey = std::max({0.0, -py, py - (f.height - 1.0)});
+    const double outside_m = std::hypot(ex, ey) * f.pixel_size_m;
+    const double feather =
+        outside_m <= 0.0 ? 1.0 : (layer.blend_m > 0.0 ? smoothstep01(1.0 - outside_m / layer.blend_m) : 0.0);
     if (feather <= 0.0) continue;
-    PixelWindow window(cache_, *layer.raster);
-    const LayerSample s = sampleLayer(window, f, px, py, layer.detailOctaves > 0);
-    if (window.missing) continue;
-    // A kept hole's geometry keeps the source's own heights (normalised over the valid corners,
-    // then the mean of the valid pixels within kHoleFillPixels), so the drawn surface meets the
-    // discarded part without a wall; deeper inside, hidden, what lies beneath. Fill ramps to what
-    // lies beneath across the last pixel.
+    const LayerRead r = readLayer(cache_, layer, std::clamp(px, 0.0, f.width - 1.0),
+                                  std::clamp(py, 0.0, f.height - 1.0), sampleSpacing_m, outside_m);
+    if (r.missing) continue;
+    // A kept hole's geometry keeps the source's own heights (readLayer), so the drawn surface meets
+    // the discarded part without a wall; fill ramps to what lies beneath across the last pixel.
     const bool hole = layer.description.nodata == NoDataMode::kHole;
-    if (hole) t.hole += remaining * feather * (1.0 - s.coverage);
-    double value = s.value;
-    if (hole && s.coverage <= 0.0) {
-      value = nearbyValue(window, px, py, kHoleFillPixels);
-      if (window.missing || std::isnan(value)) continue;
-    }
-    const double w = feather * (hole ? 1.0 : s.coverage);
-    if (w <= 0.0) continue;
-    double h = value * layer.description.vertical_scale + layer.description.vertical_offset_m;
+    if (hole) t.hole += remaining * feather * (1.0 - r.coverage);
+    const double w = feather * (hole ? 1.0 : r.coverage);
+    if (w <= 0.0 || std::isnan(r.value)) continue;
+    double h = r.value * layer.description.vertical_scale + layer.description.vertical_offset_m;
+    const double scale = std::abs(layer.description.vertical_scale);
+    t.detailBound_m += remaining * w * r.deviation * scale;  // the finer levels beneath
     if (layer.detailOctaves > 0) {
-      const double relief_m = s.relief * std::abs(layer.description.vertical_scale);
+      const double relief_m = r.relief * scale;
       h += amplificationDetail_m(unitDirection, radius_m_, f.pixel_size_m, layer.detailOctaves, layer.detailSeed,
                                  relief_m);
       t.detailBound_m += remaining * w * amplificationBoundPerRelief(layer.detailOctaves) * relief_m;

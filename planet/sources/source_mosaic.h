@@ -12,6 +12,7 @@
 // Amplification adds fBm of gradient noise below the source's pixel size, its amplitude following
 // the source's local relief per pixel (amplification.h).
 #include "planet/sources/gdal_raster.h"
+#include "planet/sources/raster_pyramid.h"
 #include "planet/sources/source_description.h"
 #include "planet/sources/tile_cache.h"
 
@@ -29,8 +30,9 @@ struct SourceTerm {
   double height_m = 0.0;  // the sources' elevation where weight > 0
   double weight = 0.0;    // W in [0, 1]: share of the procedural surface replaced
   double hole = 0.0;      // hole mask in [0, 1]; >= 0.5 is a kept hole
-  // Bound of the amplification detail in height_m (metres): what samples coarser than the detail
-  // miss, so node radius ranges are padded by it (sourceDetailPad_m, request_preparer.h).
+  // Bound of the amplification detail in height_m plus how far the finer pyramid levels beneath may
+  // lie from it (metres): what samples coarser than the detail miss, so node radius ranges are
+  // padded by it (sourceDetailPad_m, request_preparer.h).
   double detailBound_m = 0.0;
 };
 
@@ -47,8 +49,10 @@ class SourceMosaic {
   struct Layer {
     ElevationSource description;
     std::unique_ptr<GdalRaster> raster;
-    double blend_m = 0.0;   // resolved (the default is four pixels)
-    int detailOctaves = 0;  // 0 when not amplified
+    std::unique_ptr<TileSource> tiles;                // its overview pyramid, what the tile cache reads
+    double blend_m = 0.0;                             // resolved (defaultBlend_m when the file gives none)
+    double marginLat_deg = 0.0, marginLon_deg = 0.0;  // the feather beyond the lat/lon box
+    int detailOctaves = 0;                            // 0 when not amplified
     std::uint32_t detailSeed = 0;
   };
 
@@ -57,7 +61,9 @@ class SourceMosaic {
   SourceMosaic(const std::vector<ElevationSource>& sources, double radius_m, std::uint64_t seed,
                std::size_t ramBudgetBytes = kDefaultSourceRamBudget);
 
-  SourceTerm term(const glm::dvec3& unitDirection) const;
+  // At `sampleSpacing_m` > 0 (a payload's sample spacing, metres) each source is read at the
+  // coarsest pyramid level whose pixel is no larger (raster_pyramid.h); 0 reads full resolution.
+  SourceTerm term(const glm::dvec3& unitDirection, double sampleSpacing_m = 0.0) const;
   // True when some source's lat/lon box holds the direction (a cheap test before term()).
   bool mayCover(const glm::dvec3& unitDirection) const;
 

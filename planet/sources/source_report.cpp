@@ -71,11 +71,12 @@ std::string sourceStreamingSummary(const SourceMosaic& mosaic, const std::vector
     return sorted.empty() ? 0.0 : sorted[std::min(sorted.size() - 1, std::size_t(q * double(sorted.size())))];
   };
   return fmt::format(
-      "sources: {} tiles read+decoded in {:.3f} s ({:.0f} tiles/s), {} hits; request->resident over {} payloads "
+      "sources: {} tiles read+decoded ({} of pyramid levels >= 1) in {:.3f} s ({:.0f} tiles/s), {} hits; "
+      "request->resident over {} payloads "
       "p50 {:.1f} ms p99 {:.1f} ms; RAM peak {:.2f} MiB = {:.1f} % of the data ({:.2f} MiB), {} evictions; "
       "frame-loop waits {}, frame-loop misses {}",
-      s.reads, s.readSeconds, s.readSeconds > 0.0 ? double(s.reads) / s.readSeconds : 0.0, s.hits, sorted.size(),
-      1e3 * at(0.5), 1e3 * at(0.99), double(s.peakResidentBytes) / 1048576.0,
+      s.reads, s.coarseReads, s.readSeconds, s.readSeconds > 0.0 ? double(s.reads) / s.readSeconds : 0.0, s.hits,
+      sorted.size(), 1e3 * at(0.5), 1e3 * at(0.99), double(s.peakResidentBytes) / 1048576.0,
       dataBytes > 0.0 ? 100.0 * double(s.peakResidentBytes) / dataBytes : 0.0, dataBytes / 1048576.0, s.evictions,
       s.frameLoopWaits, s.frameThreadMisses);
 }

@@ -11,8 +11,8 @@ thread_local bool tFrameLoopThread = false;
 ScopedFrameLoopThread::ScopedFrameLoopThread() : previous_(tFrameLoopThread) { tFrameLoopThread = true; }
 ScopedFrameLoopThread::~ScopedFrameLoopThread() { tFrameLoopThread = previous_; }
 
-std::shared_ptr<const RasterBlock> TileCache::tile(const GdalRaster& raster, int tx, int ty) {
-  const Key key{raster.id(), tx, ty};
+std::shared_ptr<const RasterBlock> TileCache::tile(const TileSource& source, int level, int tx, int ty) {
+  const Key key{source.tileSourceId(), level, tx, ty};
   {
     std::lock_guard lock(mutex_);
     if (auto it = entries_.find(key); it != entries_.end()) {
@@ -27,15 +27,16 @@ std::shared_ptr<const RasterBlock> TileCache::tile(const GdalRaster& raster, int
   }
   // Read outside the lock so lookups of resident tiles go on meanwhile.
   const auto start = std::chrono::steady_clock::now();
-  const RasterFacts& f = raster.facts();
+  const PyramidLevel l = source.level(level);
   const int x0 = tx * kSourceTilePixels, y0 = ty * kSourceTilePixels;
-  Result<RasterBlock> block =
-      raster.read(x0, y0, std::min(kSourceTilePixels, f.width - x0), std::min(kSourceTilePixels, f.height - y0));
+  Result<RasterBlock> block = source.readLevel(level, x0, y0, std::min(kSourceTilePixels, l.width - x0),
+                                               std::min(kSourceTilePixels, l.height - y0));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!block) return nullptr;
   auto shared = std::make_shared<const RasterBlock>(std::move(*block));
   std::lock_guard lock(mutex_);
   ++stats_.reads;
+  stats_.coarseReads += level > 0;
   stats_.readSeconds += seconds;
   if (auto it = entries_.find(key); it != entries_.end()) return it->second.block;  // read twice meanwhile
   lru_.push_front(key);
@@ -46,9 +47,9 @@ std::shared_ptr<const RasterBlock> TileCache::tile(const GdalRaster& raster, int
   return shared;
 }
 
-bool TileCache::resident(const GdalRaster& raster, int tx, int ty) const {
+bool TileCache::resident(const TileSource& source, int level, int tx, int ty) const {
   std::lock_guard lock(mutex_);
-  return entries_.count(Key{raster.id(), tx, ty}) != 0;
+  return entries_.count(Key{source.tileSourceId(), level, tx, ty}) != 0;
 }
 
 void TileCache::evictLocked() {

@@ -1,13 +1,15 @@
 #pragma once
 // The RAM tier of the out-of-core source data (docs/elevation-data.md, "Out of core"): tiles of
-// kSourceTilePixels x kSourceTilePixels pixels read from the rasters on disk on demand, kept under
+// kSourceTilePixels x kSourceTilePixels pixels of one level of a source's pyramid (raster_pyramid.h)
+// read from disk on demand, kept under
 // a byte budget and evicted least recently used. The VRAM tier is the payload pool, which holds the
 // node payloads generated from them. Reads happen on the thread that asks: the source I/O thread
 // (request_preparer.h) and the command-line tools. A thread marked as a frame loop
 // (ScopedFrameLoopThread) never reads: a miss there returns nothing (the caller falls back to what
 // lies beneath) and is counted; frameLoopWaits counts reads that would have blocked a frame and
 // must stay 0.
-#include "planet/sources/gdal_raster.h"
+#include "planet/core/hash.h"
+#include "planet/sources/raster_pyramid.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -18,11 +20,10 @@
 
 namespace globe {
 
-inline constexpr int kSourceTilePixels = 256;
-
 struct TileCacheStats {
   std::uint64_t hits = 0;               // lookups answered from RAM
   std::uint64_t reads = 0;              // tiles read and decoded from disk
+  std::uint64_t coarseReads = 0;        // of which from levels >= 1 (the pyramid)
   std::uint64_t evictions = 0;          // tiles dropped for the budget
   std::uint64_t frameThreadMisses = 0;  // lookups on a frame-loop thread that found no tile
   std::uint64_t frameLoopWaits = 0;     // disk reads done on a frame-loop thread (kept at 0)
@@ -34,26 +35,26 @@ class TileCache {
  public:
   explicit TileCache(std::size_t budgetBytes) : budget_(budgetBytes) {}
 
-  // Tile (tx, ty) of `raster` (pixels [tx * kSourceTilePixels, ...) clipped to the raster), read now
-  // when it is not resident, unless this is a frame-loop thread (then nullptr). nullptr also when
-  // the read fails. The tile stays valid while held, evicted or not.
-  std::shared_ptr<const RasterBlock> tile(const GdalRaster& raster, int tx, int ty);
+  // Tile (tx, ty) of `source`'s level `level` (pixels [tx * kSourceTilePixels, ...) clipped to the
+  // level), read now when it is not resident, unless this is a frame-loop thread (then nullptr).
+  // nullptr also when the read fails. The tile stays valid while held, evicted or not.
+  std::shared_ptr<const RasterBlock> tile(const TileSource& source, int level, int tx, int ty);
   // True when the tile is resident (no read).
-  bool resident(const GdalRaster& raster, int tx, int ty) const;
+  bool resident(const TileSource& source, int level, int tx, int ty) const;
 
   void setBudget(std::size_t budgetBytes);
   TileCacheStats stats() const;
 
  private:
   struct Key {
-    std::uint64_t raster;
-    std::int32_t tx, ty;
+    std::uint64_t source;
+    std::int32_t level, tx, ty;
     bool operator==(const Key&) const = default;
   };
   struct KeyHash {
     std::size_t operator()(const Key& k) const {
-      return std::size_t(k.raster * 0x9e3779b97f4a7c15ULL ^ (std::uint64_t(std::uint32_t(k.tx)) << 32) ^
-                         std::uint32_t(k.ty));
+      return std::size_t(mix64(k.source ^ (std::uint64_t(std::uint32_t(k.level)) << 56)) ^
+                         (std::uint64_t(std::uint32_t(k.tx)) << 32) ^ std::uint32_t(k.ty));
     }
   };
   struct Entry {

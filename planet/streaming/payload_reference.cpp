@@ -134,6 +134,10 @@ double unresolvedRelief_m(const gpu::ElevationParams& params, double sampleSpaci
   return relief + sag;
 }
 
+double payloadSampleSpacing_m(const gpu::PayloadJob& job, uint32_t cells, double radius_m) {
+  return metresPerSample(int(job.level), int(cells), radius_m);
+}
+
 RadiusRange paddedRadiusRange(const gpu::ElevationParams& params, const RadiusRange& payload, int level,
                               uint32_t cells) {
   double pad = unresolvedRelief_m(params, metresPerSample(level, int(cells), params.radius_m));
@@ -150,12 +154,14 @@ RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::Payload
   std::vector<glm::dvec3> positions(size_t(s) * size_t(s));
   std::vector<double> holes(size_t(s) * size_t(s));
   RadiusRange range{std::numeric_limits<double>::infinity(), 0.0};
+  const double spacing_m = payloadSampleSpacing_m(job, cells, model.radius_m());
   for (int j = -1; j <= n + 1; ++j) {
     for (int i = -1; i <= n + 1; ++i) {
       size_t index = size_t(j + 1) * size_t(s) + size_t(i + 1);
       glm::dvec3 dir = payloadSampleDirection(job, cells, i, j);
-      // = elevation_m and surfacePosition, with the source term kept for the hole mask.
-      const SourceTerm term = model.sourceTerm(dir);
+      // = elevation_m and surfacePosition (at the job's source level), with the source term kept
+      // for the hole mask.
+      const SourceTerm term = model.sourceTerm(dir, spacing_m);
       double h = combineSourceTerm(model.proceduralElevation_m(dir), term);
       glm::dvec3 p = dir * (model.radius_m() + h);
       positions[index] = p;

@@ -26,6 +26,10 @@ glm::dvec3 payloadCentre(const NodeId& node, const ElevationModel& model);
 // The generation job for `node` into `slot`: snapped centre, (u, v) square, neighbour faces.
 gpu::PayloadJob makePayloadJob(const NodeId& node, uint32_t slot, const ElevationModel& model);
 
+// The sample spacing (metres) of a job's node: which pyramid level its source terms are read at
+// (planet/sources/raster_pyramid.h), on the CPU reference and the source I/O thread alike.
+double payloadSampleSpacing_m(const gpu::PayloadJob& job, uint32_t cells, double radius_m);
+
 // Unit direction of sample (i, j), i, j in [-1, cells + 1], of a job's node: on its own face, or on
 // the neighbouring face for ring samples beyond a face edge (bit-identical to that face's samples).
 glm::dvec3 payloadSampleDirection(const gpu::PayloadJob& job, uint32_t cells, int i, int j);

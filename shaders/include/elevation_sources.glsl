@@ -21,6 +21,14 @@ double globeApplySources(double procedural_m, uint sourceBase, uint index) {
   return h;
 }
 
+// The float kernel's blend (payload_generate_float.comp, `globe trade`'s fp32 comparison): the same
+// expression in float, so a planet with sources is compared like with like.
+float globeApplySourcesFloat(float procedural_m, uint sourceBase, uint index) {
+  if (sourceBase == GLOBE_NO_SOURCE_TERMS) return procedural_m;
+  vec2 t = vec2(sourceTerms[sourceBase + index].xy);
+  return (1.0 - t.y) * procedural_m + t.y * t.x;
+}
+
 // Hole mask in [0, 1] at sample `index` (>= 0.5: a kept no-data hole; the fragment shader discards).
 float globeSourceHole(uint sourceBase, uint index) {
   if (sourceBase == GLOBE_NO_SOURCE_TERMS) return 0.0;

@@ -98,7 +98,7 @@ void main() {
     // What an all-float pipeline computes: the direction rounded to float, the elevation and the
     // planet-centred position in float (a 0.5 m grid at Earth radius), then made relative.
     vec3 dirFloat = vec3(dir);
-    float hFloat = globeElevationFloat(dirFloat);
+    float hFloat = globeApplySourcesFloat(globeElevationFloat(dirFloat), job.sourceBase, index);
     vec3 pFloat = dirFloat * (float(GLOBE_ELEVATION_PARAMS.radius_m) + hFloat);
     double h = double(hFloat);
     dvec3 p = dvec3(pFloat);

@@ -17,6 +17,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <span>
 
 namespace globe::testing {
 namespace {
@@ -27,6 +29,7 @@ class ElevationSourcesGpuTest : public GpuTest {
  protected:
   static void SetUpTestSuite() {
     dir_ = std::make_unique<TempDir>("elevation_sources_gpu");
+    ::setenv("GLOBE_SOURCE_CACHE_DIR", (dir_->str() / std::filesystem::path("cache")).c_str(), 1);
     fixture_ = std::make_unique<DemFixture>(dir_->str() / std::filesystem::path(),
                                             std::string(GLOBE_SOURCE_DIR) + "/assets/planets/dem/jacksboro.vrt");
     const std::string sources = "[[sources]]\npath = \"" + fixture_->coarse + "\"\n\n[[sources]]\npath = \"" +
@@ -34,8 +37,12 @@ class ElevationSourcesGpuTest : public GpuTest {
     Result<PlanetDescription> planet = loadPlanetFile(writeDemPlanet(dir_->str(), "gpu", sources));
     ASSERT_TRUE(planet.ok()) << planet.error().format();
     model_ = std::make_unique<ElevationModel>(*planet);
+    // Build the sources' pyramids now (first use), as an earlier run's disk cache would have them:
+    // under load the build's fsync can outlast the short flight below.
+    model_->sourceTerm(directionFromLatLon(36.59, -84.25), 1.0e9);
   }
   static void TearDownTestSuite() {
+    ::unsetenv("GLOBE_SOURCE_CACHE_DIR");
     model_.reset();
     fixture_.reset();
     dir_.reset();
@@ -59,6 +66,37 @@ TEST_F(ElevationSourcesGpuTest, PayloadsMatchTheCpuReference) {
   EXPECT_GT(c.holeSamples, 0);
   std::printf("[ info ] %zu nodes over the DEM: worst |radius| diff %.3g m, elevation %.3g m, %d hole samples\n",
               c.nodes, c.worstRadius_m, c.worstElevation_m, c.holeSamples);
+}
+
+// `globe trade`'s float kernel blends the same source terms (in float): where a source replaces the
+// procedural surface (weight 1) its elevation is the source's height to float rounding, not the
+// procedural layers' (docs/elevation-data.md, "On the GPU").
+TEST_F(ElevationSourcesGpuTest, TheFloatKernelBlendsTheSourcesToo) {
+  const FacePoint at = RhombusFaceMapping::get().locate(directionFromLatLon(36.65, -84.20));
+  const NodeId node = nodeAt(at, 14);
+  GpuPayloadGenerator gen(device(), *model_, kCells, GLOBE_PAYLOAD_MAX_BATCH, 1, GenerationPrecision::kFloat);
+  gen.reserveSlots(1);
+  const GenerationJob job{node, 0};
+  gen.generate(std::span(&job, 1));
+  gen.waitIdle();
+  std::vector<GenerationResult> results;
+  gen.collect(results);
+  ASSERT_EQ(results.size(), 1u);
+  const std::vector<glm::vec4> gpu = readPayloadBuffer(device(), gen);
+  const gpu::PayloadJob reference = makePayloadJob(node, 0, *model_);
+  const std::vector<glm::dvec4> terms = sourceTermsForJob(*model_, reference, kCells);
+  ASSERT_EQ(terms.size(), GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells) / 2);
+  int replaced = 0;
+  double worst = 0.0;
+  for (size_t i = 0; i < terms.size(); ++i) {
+    if (terms[i].y != 1.0) continue;
+    ++replaced;
+    worst = std::max(worst, std::abs(double(gpu[i].w) - terms[i].x));
+  }
+  EXPECT_GT(replaced, 100);
+  EXPECT_LE(worst, 1e-3);  // float rounding of a few hundred metres; the procedural layers differ by far more
+  std::printf("[ info ] float kernel over the DEM: %d samples replaced by the source, worst |diff| %.3g m\n", replaced,
+              worst);
 }
 
 // The real frame loop (Terrain::update marks its thread as one) flying low over the DEM: tiles

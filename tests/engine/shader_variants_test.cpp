@@ -6,13 +6,17 @@
 // 20 frames at 20 different cameras (moving floating origin, altitudes from 2 m to 2e7 m so the
 // morph ranges change, sun directions, debug views, generation batches of different sizes) plus
 // elevation batches and sphere previews with the latitude/longitude grid, of different sizes, must
-// add none. No timing is asserted.
+// add none; the same views over a DEM with a kept no-data hole (a `nodata = "hole"` source: the
+// double-sided terrain_holes.frag pipeline) too. No timing is asserted.
 #include "engine/generation/elevation_sampler.h"
 #include "engine/render/headless_renderer.h"
 #include "engine/render/sphere_grid.h"
 #include "engine/render/sphere_preview.h"
 #include "engine/vk/offscreen_target.h"
+#include "planet/elevation/planet_file.h"
+#include "tests/support/dem_fixture.h"
 #include "tests/support/gpu_test.h"
+#include "tests/support/temp_dir.h"
 
 #include <unistd.h>
 #include <chrono>
@@ -78,10 +82,17 @@ std::vector<View> variedViews() {
   return views;
 }
 
+// The view moved by the same offsets to the Jacksboro DEM's no-data blob (tests/support/dem_fixture.h).
+GeodeticPose overTheHole(GeodeticPose pose) {
+  pose.latitude_deg += 36.59 - 22.0;
+  pose.longitude_deg += -84.25 + 98.5;
+  return pose;
+}
+
 // One process-like run on a fresh device (its own Mesa screen and cache handle): the views through
 // Terrain + HeadlessRenderer (budgeted frames, every fourth converged, so generation batches vary
 // in size), each view also as a sphere preview and an elevation batch of a different size.
-void renderViews(const std::vector<View>& views) {
+void renderViews(const std::vector<View>& views, const ElevationModel& holes) {
   vk::DeviceOptions options;
   options.validation = true;
   options.deviceName = vk::deviceNameFromEnvironment();
@@ -97,6 +108,9 @@ void renderViews(const std::vector<View>& views) {
   SpherePreview sphere(device);
   SphereGrid grid(device);
   ElevationSampler sampler(device, model.params(), 512);
+  auto holeTerrain = Terrain::create(device, holes, settings);
+  ASSERT_TRUE(holeTerrain.ok()) << holeTerrain.error().format();
+  ASSERT_TRUE((*holeTerrain)->renderer().style().holes);
   int k = 0;
   for (const View& v : views) {
     const glm::dvec3 down = directionFromLatLon(v.pose.latitude_deg, v.pose.longitude_deg);
@@ -114,6 +128,15 @@ void renderViews(const std::vector<View>& views) {
       sphereTarget.end(cmd);
     });
     sampler.sample(std::vector<glm::dvec3>(size_t(1 + 13 * k), glm::normalize(camera.position_m)));
+    const GeodeticPose pose = overTheHole(v.pose);
+    const glm::dvec3 holeDown = directionFromLatLon(pose.latitude_deg, pose.longitude_deg);
+    const Camera holeCamera =
+        cameraFromPose(pose, (*holeTerrain)->cameraGroundRadius(holeDown), holes.radius_m(), double(w) / h);
+    TerrainStyle holeStyle = (*holeTerrain)->renderer().style();  // keeps `holes`
+    holeStyle.sunDirection = v.sun;
+    holeStyle.debug = v.debug;
+    (*holeTerrain)->renderer().setStyle(holeStyle);
+    renderer.renderFrame(**holeTerrain, holeCamera, k % 4 == 0);
     ++k;
   }
   const auto messages = device.validation().messages();
@@ -129,11 +152,20 @@ TEST(ShaderVariants, NoNewShaderVariantsAfterWarmUp) {
   ::unsetenv("MESA_SHADER_CACHE_DISABLE");
   ::unsetenv("MESA_GLSL_CACHE_DISABLE");
 
-  renderViews(warmUpViews());
+  const TempDir dir("shader_variants");
+  ::setenv("GLOBE_SOURCE_CACHE_DIR", (dir.str() / fs::path("sources")).c_str(), 1);
+  const DemFixture dem(dir.str() / fs::path(), std::string(GLOBE_SOURCE_DIR) + "/assets/planets/dem/jacksboro.vrt");
+  Result<PlanetDescription> planet = loadPlanetFile(
+      writeDemPlanet(dir.str(), "holes", "[[sources]]\npath = \"" + dem.holes + "\"\nnodata = \"hole\"\n"));
+  ASSERT_TRUE(planet.ok()) << planet.error().format();
+  const ElevationModel holes(*planet);
+
+  renderViews(warmUpViews(), holes);
   const size_t afterWarmUp = settledCacheEntries(cache);
   std::vector<View> views = warmUpViews();
   for (const View& v : variedViews()) views.push_back(v);
-  renderViews(views);
+  renderViews(views, holes);
+  ::unsetenv("GLOBE_SOURCE_CACHE_DIR");
   const size_t afterVaried = settledCacheEntries(cache);
   std::printf("[ info ] shader cache entries: %zu after warm-up, %zu after 20 more cameras\n", afterWarmUp,
               afterVaried);

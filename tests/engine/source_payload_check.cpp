@@ -13,6 +13,17 @@
 
 namespace globe::testing {
 
+std::vector<glm::vec4> readPayloadBuffer(vk::Device& device, const GpuPayloadGenerator& gen) {
+  vk::Buffer readback(device, gen.payloads().size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::HostVisible,
+                      "payload readback");
+  device.submitAndWait([&](VkCommandBuffer cmd) {
+    VkBufferCopy copy{0, 0, gen.payloads().size()};
+    vkCmdCopyBuffer(cmd, gen.payloads().handle(), readback.handle(), 1, &copy);
+  });
+  const auto mapped = readback.as<glm::vec4>();
+  return std::vector<glm::vec4>(mapped.begin(), mapped.end());
+}
+
 void compareSourcePayloads(vk::Device& device, const ElevationModel& model, const std::vector<NodeId>& nodes,
                            std::uint32_t cells, SourcePayloadComparison& out) {
   GpuPayloadGenerator gen(device, model, cells, GLOBE_PAYLOAD_MAX_BATCH, 1);
@@ -25,13 +36,7 @@ void compareSourcePayloads(vk::Device& device, const ElevationModel& model, cons
   std::vector<GenerationResult> results;
   gen.collect(results);
   ASSERT_EQ(results.size(), nodes.size());
-  vk::Buffer readback(device, gen.payloads().size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::HostVisible,
-                      "payload readback");
-  device.submitAndWait([&](VkCommandBuffer cmd) {
-    VkBufferCopy copy{0, 0, gen.payloads().size()};
-    vkCmdCopyBuffer(cmd, gen.payloads().handle(), readback.handle(), 1, &copy);
-  });
-  const auto gpu = readback.as<glm::vec4>();
+  const std::vector<glm::vec4> gpu = readPayloadBuffer(device, gen);
   const size_t perSlot = GLOBE_PAYLOAD_VEC4_PER_SLOT(cells), samples = perSlot / 2;
   std::vector<glm::vec4> cpu(perSlot);
   double worstRadius = 0.0, worstElevation = 0.0;

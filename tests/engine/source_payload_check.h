@@ -2,6 +2,7 @@
 // GPU payloads of a planet with [[sources]] against the CPU reference (fillPayloadReference): the
 // raster sources' test and the baked tilesets' (elevation_sources_gpu_test.cpp,
 // baked_source_test.cpp) share it.
+#include "engine/generation/payload_generator.h"
 #include "engine/vk/device.h"
 #include "planet/elevation/elevation.h"
 #include "planet/geometry/node_id.h"
@@ -9,7 +10,12 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/vec4.hpp>
+
 namespace globe::testing {
+
+// The generator's whole payload buffer, copied back to the host.
+std::vector<glm::vec4> readPayloadBuffer(vk::Device& device, const GpuPayloadGenerator& gen);
 
 struct SourcePayloadComparison {
   std::size_t nodes = 0;

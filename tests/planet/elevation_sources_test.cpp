@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <memory>
 #include <random>
 
@@ -27,8 +28,10 @@ class ElevationSourcesTest : public ::testing::Test {
     dir_ = std::make_unique<testing::TempDir>("elevation_sources");
     fixture_ = std::make_unique<DemFixture>(dir_->str() / std::filesystem::path(),
                                             std::string(GLOBE_SOURCE_DIR) + "/assets/planets/dem/jacksboro.vrt");
+    ::setenv("GLOBE_SOURCE_CACHE_DIR", (dir_->str() / std::filesystem::path("cache")).c_str(), 1);
   }
   static void TearDownTestSuite() {
+    ::unsetenv("GLOBE_SOURCE_CACHE_DIR");
     fixture_.reset();
     dir_.reset();
   }
@@ -225,23 +228,24 @@ TEST_F(ElevationSourcesTest, RelativePathsResolveAgainstThePlanetFile) {
 TEST_F(ElevationSourcesTest, TheTileCacheKeepsItsBudgetAndNeverReadsOnAFrameLoop) {
   Result<std::unique_ptr<GdalRaster>> raster = GdalRaster::open(fixture_->full, 6371000.0);
   ASSERT_TRUE(raster.ok());
+  const RasterPyramid tiles(**raster, sourceCacheDirectory());
   const std::size_t tileBytes = std::size_t(kSourceTilePixels) * kSourceTilePixels * sizeof(float);
   TileCache cache(tileBytes + 1);
   {
     const ScopedFrameLoopThread frameLoop;
-    EXPECT_EQ(cache.tile(**raster, 0, 0), nullptr);
+    EXPECT_EQ(cache.tile(tiles, 0, 0, 0), nullptr);
   }
   EXPECT_EQ(cache.stats().reads, 0u);
   EXPECT_EQ(cache.stats().frameThreadMisses, 1u);
   for (int tx = 0; tx < 2; ++tx)
-    for (int ty = 0; ty < 2; ++ty) ASSERT_NE(cache.tile(**raster, tx, ty), nullptr);
+    for (int ty = 0; ty < 2; ++ty) ASSERT_NE(cache.tile(tiles, 0, tx, ty), nullptr);
   const TileCacheStats s = cache.stats();
   EXPECT_EQ(s.reads, 4u);
   EXPECT_GE(s.evictions, 2u);  // edge tiles are clipped to the raster, so two small ones may share the budget
   EXPECT_LE(s.peakResidentBytes, tileBytes + 1);
   EXPECT_EQ(s.frameLoopWaits, 0u);
   const ScopedFrameLoopThread frameLoop;
-  EXPECT_NE(cache.tile(**raster, 1, 1), nullptr);  // resident: a frame loop may use it
+  EXPECT_NE(cache.tile(tiles, 0, 1, 1), nullptr);  // resident: a frame loop may use it
 }
 
 TEST_F(ElevationSourcesTest, TheIoThreadPreparesWhatTheCpuReferenceComputes) {
@@ -260,7 +264,8 @@ TEST_F(ElevationSourcesTest, TheIoThreadPreparesWhatTheCpuReferenceComputes) {
   EXPECT_EQ(ready[0].job.centre.x, expected.centre.x);
   ASSERT_EQ(ready[0].terms.size(), 19u * 19u);
   const glm::dvec4 t = ready[0].terms[5 * 19 + 7];
-  const SourceTerm reference = model.sourceTerm(payloadSampleDirection(expected, 16, 6, 4));
+  const SourceTerm reference = model.sourceTerm(payloadSampleDirection(expected, 16, 6, 4),
+                                                payloadSampleSpacing_m(expected, 16, model.radius_m()));
   EXPECT_EQ(t.x, reference.height_m);
   EXPECT_EQ(t.y, reference.weight);
   EXPECT_EQ(t.y, 1.0);

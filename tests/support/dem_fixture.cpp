@@ -109,6 +109,15 @@ DemFixture::DemFixture(const std::filesystem::path& dir, const std::string& vrt)
   utm = (dir / "jacksboro_utm.tif").string();
   flat = (dir / "flat.tif").string();
   writeGrid(full, base, false);
+  overviews = (dir / "jacksboro_overviews.tif").string();
+  writeGrid(overviews, base, false);
+  {
+    GDALDatasetH ds = GDALOpen(overviews.c_str(), GA_Update);
+    int factors[] = {2, 4, 8, 16, 32, 64, 128, 256};
+    const CPLErr built = GDALBuildOverviews(ds, "AVERAGE", 8, factors, 0, nullptr, nullptr, nullptr);
+    GDALClose(ds);
+    if (built != CE_None) throw std::runtime_error("cannot build overviews in " + overviews);
+  }
   writeGrid(coarse, coarsened(base, 4), false);
   writeGrid(fineCrop, window(base, 140, 110, 120, 120), false);
   Grid holed = base;

@@ -11,12 +11,13 @@ namespace globe::testing {
 struct DemFixture {
   // Writes every file into `dir`; `vrt` is assets/planets/dem/jacksboro.vrt.
   DemFixture(const std::filesystem::path& dir, const std::string& vrt);
-  std::string full;      // the DEM as Float32 GeoTIFF, WGS 84, 403 x 344 at 3"
-  std::string coarse;    // 4 x 4 pixel means: 100 x 86 at 12"
-  std::string fineCrop;  // a 120 x 120 window of `full` (pixels 140.., 110..)
-  std::string holes;     // `full` with an irregular no-data blob (-32768) around pixel (200, 170)
-  std::string utm;       // `full` warped to UTM zone 17N (EPSG:32617), 90 m, bilinear, no-data -32768
-  std::string flat;      // 64 x 64 pixels of 100 m at lat 10..10.05, lon 10..10.05
+  std::string full;       // the DEM as Float32 GeoTIFF, WGS 84, 403 x 344 at 3"
+  std::string coarse;     // 4 x 4 pixel means: 100 x 86 at 12"
+  std::string fineCrop;   // a 120 x 120 window of `full` (pixels 140.., 110..)
+  std::string holes;      // `full` with an irregular no-data blob (-32768) around pixel (200, 170)
+  std::string utm;        // `full` warped to UTM zone 17N (EPSG:32617), 90 m, bilinear, no-data -32768
+  std::string flat;       // 64 x 64 pixels of 100 m at lat 10..10.05, lon 10..10.05
+  std::string overviews;  // `full` with GDAL overviews inside the file (AVERAGE, factors 2 .. 256)
 };
 
 // The height of a GeoTIFF at a latitude/longitude by its own bilinear interpolation between pixel
