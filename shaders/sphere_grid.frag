@@ -1,4 +1,6 @@
 #version 450
+#extension GL_GOOGLE_include_directive : require
+#include "include/display_encoding.glsl"
 // The viewer's debug view over the sphere preview: latitude/longitude lines every 10 degrees
 // (equator and prime meridian brighter), ray-cast in double like sphere_preview.frag and blended
 // on top (premultiplied alpha). The terrain renderer's LOD colours reuse the same toggle.
@@ -38,5 +40,6 @@ void main() {
   vec3 colour = principal ? vec3(1.0, 0.35, 0.2) : vec3(0.9, 0.85, 0.4);
   float alpha = line * 0.8;
   if (alpha <= 0.0) discard;
-  outColour = vec4(colour * alpha, alpha);
+  // Premultiplied in the stored encoding: blending happens on what the target holds.
+  outColour = vec4(encodeDisplay(colour, alpha).rgb * alpha, alpha);
 }

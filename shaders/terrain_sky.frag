@@ -1,4 +1,6 @@
 #version 450
+#extension GL_GOOGLE_include_directive : require
+#include "include/display_encoding.glsl"
 // Background behind the terrain: a cheap sky gradient by the angle between the view ray and the
 // local vertical, fading to black space as the camera climbs through the atmosphere height.
 // No depth written (the depth buffer stays at its clear value 0 = infinitely far).
@@ -18,5 +20,5 @@ layout(push_constant) uniform Push {
 void main() {
   float t = inUp * inversesqrt(dot(inRay, inRay));  // cosine of the ray's angle to the vertical
   vec3 sky = mix(push.horizon.rgb, push.zenith.rgb, sqrt(clamp(t, 0.0, 1.0)));
-  outColour = vec4(sky * push.zenith.w, 1.0);
+  outColour = encodeDisplay(sky * push.zenith.w, 1.0);
 }

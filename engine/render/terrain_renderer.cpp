@@ -234,6 +234,7 @@ DrawStats TerrainRenderer::recordTerrain(VkCommandBuffer cmd, const Camera& came
       positions_ == VertexPositions::kReprojected ? beginReprojection(frameIndex, camera) : nullptr;
   const uint32_t pageCount = std::max(payloads.pageCount(), 1u);
   groupInstances(nodes, payloads, pageCount, skirts);
+  orderNearFirst(nodes, camera.position_m);
   const uint32_t partial = writeInstances(bytes, origin_m, nodes, payloads, pageCount, skirts, reprojection);
   DrawStats stats = recordDraws(cmd, payloads, pageCount, frameIndex, view == TerrainDebugView::kWireframe,
                                 reprojection != nullptr, nextMark);
@@ -308,6 +309,18 @@ void TerrainRenderer::groupInstances(std::span<const DrawNode> nodes, const Payl
   for (size_t g = 1; g < instancesOf_.size(); ++g) firstInstance_[g] = firstInstance_[g - 1] + instancesOf_[g - 1];
 }
 
+void TerrainRenderer::orderNearFirst(std::span<const DrawNode> nodes, const glm::dvec3& camera_m) {
+  // Near nodes first within each draw: the depth test then rejects most hidden fragments before
+  // they are shaded (lavapipe skips a block's shader when its whole depth mask fails).
+  distances_.resize(nodes.size());
+  order_.resize(nodes.size());
+  for (size_t k = 0; k < nodes.size(); ++k) {
+    distances_[k] = glm::length(nodes[k].centre_m - camera_m);
+    order_[k] = uint32_t(k);
+  }
+  std::sort(order_.begin(), order_.end(), [&](uint32_t a, uint32_t b) { return distances_[a] < distances_[b]; });
+}
+
 uint32_t TerrainRenderer::writeInstances(unsigned char* bytes, const glm::dvec3& origin_m,
                                          std::span<const DrawNode> nodes, const PayloadPages& payloads,
                                          uint32_t pageCount, bool skirts, gpu::TerrainReprojectionNode* reprojection) {
@@ -316,7 +329,7 @@ uint32_t TerrainRenderer::writeInstances(unsigned char* bytes, const glm::dvec3&
   std::vector<uint32_t>& next = nextInstance_;
   next = firstInstance_;
   uint32_t partial = 0;
-  for (size_t k = 0; k < nodes.size(); ++k) {
+  for (const uint32_t k : order_) {
     const DrawNode& n = nodes[k];
     const gpu::TerrainReprojectionNode mapping{{n.id.uMin(), n.id.vMin(), n.id.size(), double(n.id.face)}};
     gpu::TerrainInstance inst{};

@@ -97,7 +97,7 @@ class TerrainRenderer {
   // unless `colourFormat` says otherwise (e.g. a swapchain's).
   TerrainRenderer(vk::Device& device, uint32_t gridCells, const TerrainStyle& style = {},
                   VertexPositions positions = VertexPositions::kStored, uint32_t initialNodes = 1024,
-                  VkFormat colourFormat = VK_FORMAT_R16G16B16A16_SFLOAT);
+                  VkFormat colourFormat = vk::kSceneColourFormat);
   ~TerrainRenderer();
   TerrainRenderer(const TerrainRenderer&) = delete;
   TerrainRenderer& operator=(const TerrainRenderer&) = delete;
@@ -142,6 +142,8 @@ class TerrainRenderer {
   std::array<uint32_t, 2> markSkirtedEdges(std::span<const DrawNode> nodes);
   TerrainDebugView writeFrameConstants(unsigned char* bytes, const Camera& camera, const glm::dvec3& origin_m,
                                        bool skirts) const;
+  // Fills order_: the indices of `nodes` by distance from the camera, nearest first.
+  void orderNearFirst(std::span<const DrawNode> nodes, const glm::dvec3& camera_m);
   void groupInstances(std::span<const DrawNode> nodes, const PayloadPages& payloads, uint32_t pageCount, bool skirts);
   uint32_t writeInstances(unsigned char* bytes, const glm::dvec3& origin_m, std::span<const DrawNode> nodes,
                           const PayloadPages& payloads, uint32_t pageCount, bool skirts,
@@ -171,6 +173,8 @@ class TerrainRenderer {
   // Per-frame scratch for the skirt test, kept to avoid allocating every frame.
   std::vector<std::pair<uint64_t, bool>> drawn_;  // (NodeId key, partial) of every drawn node, sorted
   std::vector<uint8_t> skirtMask_;                // per drawn node: bit e = edge e has a skirt
+  std::vector<double> distances_;                 // per drawn node: metres from the camera
+  std::vector<uint32_t> order_;                   // drawn nodes' indices, nearest first
   // Per draw group (index range x payload page): instance count, first instance, next free one.
   std::vector<uint32_t> instancesOf_, firstInstance_, nextInstance_;
 };

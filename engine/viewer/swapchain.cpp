@@ -10,7 +10,8 @@ namespace globe::vk {
 
 namespace {
 
-// 8-bit sRGB so the blit from the linear HDR target encodes gamma in hardware; it must accept blits.
+// 8-bit UNORM like the scene target, whose display encoding is close to sRGB (display_encoding.h),
+// so the blit is a copy; it must accept blits. A surface with only sRGB formats shows it brighter.
 VkSurfaceFormatKHR chooseFormat(VkPhysicalDevice physical, VkSurfaceKHR surface) {
   uint32_t count = 0;
   GLOBE_VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(physical, surface, &count, nullptr));
@@ -22,7 +23,7 @@ VkSurfaceFormatKHR chooseFormat(VkPhysicalDevice physical, VkSurfaceKHR surface)
     return (props.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_DST_BIT) != 0;
   };
   for (VkFormat preferred :
-       {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_R8G8B8A8_UNORM}) {
+       {VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_R8G8B8A8_SRGB}) {
     for (const auto& f : formats)
       if (f.format == preferred && f.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR && blittable(f.format)) return f;
   }

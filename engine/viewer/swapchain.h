@@ -1,5 +1,5 @@
 #pragma once
-// The window's swapchain: images the viewer blits its HDR frame into and presents. Recreated when
+// The window's swapchain: images the viewer blits its frame into and presents. Recreated when
 // the window changes size or the surface reports it out of date; the old swapchain's objects are
 // released through the DeferredReleaseQueue once the frames that used them are done.
 #include "engine/vk/deferred_release_queue.h"

@@ -111,7 +111,7 @@ struct Viewer::State {
   vk::DeferredReleaseQueue releases;  // destroyed after everything below that it may hold
   vk::Swapchain swapchain;
   vk::FrameRing ring;
-  std::unique_ptr<vk::OffscreenTarget> target;  // swapchain-sized HDR colour + reversed-Z depth
+  std::unique_ptr<vk::OffscreenTarget> target;  // swapchain-sized display-encoded colour + reversed-Z depth
   std::unique_ptr<ViewerScene> scene;
   std::unique_ptr<Overlay> overlay;
   FlyCamera camera;
@@ -266,13 +266,13 @@ void Viewer::State::renderFrame(uint32_t image, VkCommandBuffer cmd, const Camer
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   GLOBE_VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
 
-  // Scene: HDR colour and reversed-Z depth. The terrain's per-frame buffers are indexed by
+  // Scene: display-encoded colour and reversed-Z depth. The terrain's per-frame buffers are indexed by
   // frame % kFramesInFlight, the FrameRing slot whose fence begin() waited for.
   target->begin(cmd, kSpaceColour);
   scene->record(cmd, cam, uint32_t(frame % vk::kFramesInFlight));
   target->end(cmd);  // colour is now TRANSFER_SRC_OPTIMAL
 
-  // Blit into the swapchain image; the sRGB format encodes gamma and clamps HDR to [0, 1].
+  // Copy into the swapchain image (same 8-bit encoding; a blit also converts other formats).
   VkImage swapImage = swapchain.image(image);
   vk::transitionImage(cmd, swapImage, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);

@@ -1,9 +1,9 @@
 #pragma once
 // `globe view`: the windowed frame loop. Each frame updates the planet's terrain (selection,
-// streaming, generation: engine/render/terrain.h) for the fly camera, draws it into an HDR offscreen
-// target with reversed-Z depth, blits that into the swapchain image (the sRGB swapchain format
-// encodes gamma), draws the overlay on top and presents, with two frames in flight. Input comes
-// from the window and, for tests, from an input script. The planet file is watched and reloaded
+// streaming, generation: engine/render/terrain.h) for the fly camera, draws it into an offscreen
+// target with reversed-Z depth, blits that into the swapchain image (both 8-bit UNORM in the
+// display encoding of shaders/include/display_encoding.h), draws the overlay on top and presents, with two frames in
+// flight. Input comes from the window and, for tests, from an input script. The planet file is watched and reloaded
 // when it changes (engine/viewer/viewer_scene.h); R records the flight as a camera path.
 #include "engine/viewer/input_script.h"
 #include "engine/viewer/viewer_scene.h"

@@ -53,7 +53,7 @@ class ViewerScene {
 
   // CPU part of viewer frame `frame`; `completedFrame` as for Terrain::update. Terrain only.
   void update(uint64_t frame, const Camera& camera, uint64_t completedFrame);
-  // Records the scene into the current dynamic-rendering pass (HDR target); draw calls are
+  // Records the scene into the current dynamic-rendering pass (the scene target); draw calls are
   // counted in stats().
   void record(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex);
 

@@ -9,13 +9,18 @@
 
 namespace globe::vk {
 
+// The scene's colour format: 8-bit UNORM holding the display encoding of shaders/include/
+// display_encoding.h (lavapipe stores it cheaper than sRGB or half float), blue first like the
+// swapchains of most surfaces so the viewer's blit is a plain copy.
+inline constexpr VkFormat kSceneColourFormat = VK_FORMAT_B8G8R8A8_UNORM;
+
 struct GraphicsPipelineDesc {
   std::string vertexShader;     // e.g. "terrain.vert"
   std::string fragmentShader;   // e.g. "terrain.frag"
   uint32_t storageBuffers = 0;  // buffer bindings 0..n-1 (storage, or uniform per uniformMask)
   uint32_t uniformMask = 0;     // bit b: binding b is a uniform buffer (see compute_pipeline.h)
   uint32_t pushConstantBytes = 0;
-  VkFormat colourFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+  VkFormat colourFormat = kSceneColourFormat;
   VkFormat depthFormat = VK_FORMAT_D32_SFLOAT;
   bool depthTest = true;  // reversed-Z: GREATER_OR_EQUAL passes nearer fragments
   bool depthWrite = true;

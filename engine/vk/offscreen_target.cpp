@@ -1,6 +1,9 @@
 #include "engine/vk/offscreen_target.h"
 
-#include <Imath/half.h>
+#include "shaders/include/display_encoding.h"
+
+#include <array>
+#include <cmath>
 
 #include <stdexcept>
 
@@ -18,6 +21,21 @@ VkExtent2D checkedExtent(const Device& device, VkExtent2D extent) {
   if (auto s = checkImageExtent(device, extent, "image size"); !s) throw std::runtime_error(s.error().format());
   return extent;
 }
+
+// Linear colour of each stored 8-bit code: the exact inverse of display_encoding.glsl.
+const std::array<float, 256>& linearOfCode() {
+  static const std::array<float, 256> table = [] {
+    std::array<float, 256> t{};
+    const double a = GLOBE_DISPLAY_ENCODING_A;
+    for (int code = 0; code < 256; ++code) {
+      const double e = code / 255.0;
+      const double root = (a - std::sqrt(std::max(a * a - 4.0 * (a - 1.0) * e, 0.0))) / (2.0 * (a - 1.0));
+      t[size_t(code)] = float(root * root);
+    }
+    return t;
+  }();
+  return table;
+}
 }  // namespace
 
 OffscreenTarget::OffscreenTarget(Device& device, VkExtent2D extent)
@@ -28,7 +46,7 @@ OffscreenTarget::OffscreenTarget(Device& device, VkExtent2D extent)
       depth_(device, kDepthFormat, extent,
              VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_DEPTH_BIT,
              "offscreen depth"),
-      colourReadback_(device, VkDeviceSize(extent.width) * extent.height * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+      colourReadback_(device, VkDeviceSize(extent.width) * extent.height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                       MemoryUse::HostVisible, "colour readback"),
       depthReadback_(device, VkDeviceSize(extent.width) * extent.height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                      MemoryUse::HostVisible, "depth readback") {}
@@ -95,11 +113,15 @@ ReadbackImage OffscreenTarget::readback() {
   out.height = e.height;
   size_t n = size_t(e.width) * e.height;
   out.rgba.resize(n * 4);
-  const auto* halves = static_cast<const uint16_t*>(colourReadback_.mapped());
-  for (size_t i = 0; i < n * 4; ++i) {
-    Imath::half h;
-    h.setBits(halves[i]);
-    out.rgba[i] = float(h);
+  static_assert(kColourFormat == VK_FORMAT_B8G8R8A8_UNORM, "the decode below reads B, G, R, A bytes");
+  const auto* bgra = static_cast<const uint8_t*>(colourReadback_.mapped());
+  const std::array<float, 256>& linear = linearOfCode();
+  for (size_t i = 0; i < n; ++i) {
+    const uint8_t* p = bgra + 4 * i;
+    out.rgba[4 * i + 0] = linear[p[2]];
+    out.rgba[4 * i + 1] = linear[p[1]];
+    out.rgba[4 * i + 2] = linear[p[0]];
+    out.rgba[4 * i + 3] = float(p[3]) / 255.0f;
   }
   const auto* depths = static_cast<const float*>(depthReadback_.mapped());
   out.depth.assign(depths, depths + n);

@@ -1,6 +1,7 @@
 #pragma once
-// An offscreen render target: linear HDR colour (RGBA16F) and a 32-bit float depth buffer
-// (reversed-Z: 1 is near, 0 is infinitely far), with readback to the CPU.
+// An offscreen render target: display-encoded 8-bit colour (kSceneColourFormat) and a 32-bit float
+// depth buffer (reversed-Z: 1 is near, 0 is infinitely far), with readback to linear floats.
+#include "engine/vk/graphics_pipeline.h"
 #include "engine/vk/resources.h"
 #include "planet/core/error.h"
 
@@ -27,7 +28,7 @@ Status checkImageExtent(const Device& device, VkExtent2D extent, const std::stri
 
 class OffscreenTarget {
  public:
-  static constexpr VkFormat kColourFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+  static constexpr VkFormat kColourFormat = kSceneColourFormat;
   static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
   OffscreenTarget(Device& device, VkExtent2D extent);

@@ -1,6 +1,8 @@
 // Body of the terrain fragment stages (terrain.frag; terrain_holes.frag defines
 // GLOBE_TERRAIN_HOLES first). Lambert light from the sun on the interpolated (morphed) normal times
 // the vertex colour (terrain.vert). Reads no buffers: per-fragment cost is what bounds lavapipe.
+#include "display_encoding.glsl"
+
 layout(location = 0) in vec3 inNormal;
 layout(location = 1) in vec3 inAlbedo;
 layout(location = 2) flat in vec4 inSun;
@@ -25,5 +27,5 @@ void main() {
 #ifdef GLOBE_TERRAIN_HOLES
   colour = mix(colour, vec3(0.05, 0.02, 0.02), step(0.5 - kHoleRim, inHole));
 #endif
-  outColour = vec4(colour, 1.0);
+  outColour = encodeDisplay(colour, 1.0);
 }
