@@ -63,6 +63,8 @@ void BM_PhysicsStep(benchmark::State& state) {
   state.counters["pool_MiB"] = sim.pool().stats().residentMiB();
   state.counters["meshes"] = double(sim.pool().stats().resident);
   state.counters["sync"] = double(sim.pool().stats().generatedSync);
+  state.counters["async"] = double(sim.pool().stats().generatedAsync);
+  state.counters["evicted"] = double(sim.pool().stats().evicted);
 }
 BENCHMARK(BM_PhysicsStep)->ArgsProduct({{1, 10, 100, 1000}, {0, 1}})->Iterations(600)->Unit(benchmark::kMillisecond);
 
