@@ -109,9 +109,10 @@ std::string summaryJson(const PhysicsSimulation& sim, const GpuCollisionMeshSour
                         std::span<const BodyReport> bodies, const MeshErrorStats& meshError, double wall_s) {
   const SimulationStats& s = sim.stats();
   const CollisionPoolStats& pool = sim.pool().stats();
-  uint32_t atRest = 0;
+  uint32_t atRest = 0, asleep = 0;
   double worstRest = 0.0, fastest = 0.0;
   for (const BodyReport& b : bodies) {
+    asleep += sim.world().state(b.id).sleeping ? 1u : 0u;
     atRest += b.speed_m_s < 0.05 ? 1u : 0u;
     worstRest = std::max(worstRest, std::abs(b.restHeight_m));
     fastest = std::max(fastest, b.speed_m_s);
@@ -127,7 +128,8 @@ std::string summaryJson(const PhysicsSimulation& sim, const GpuCollisionMeshSour
       "  \"nodes_generated_sync\": {},\n  \"nodes_generated_async\": {},\n  \"nodes_evicted\": {},\n"
       "  \"predicted_contacts\": {},\n  \"gpu_ms_per_node\": {:.4f},\n  \"selection_ms_per_round\": {:.4f},\n"
       "  \"collision_pool_mib\": {:.3f},\n  \"collision_pool_budget_mib\": {:.3f},\n  \"resident_meshes\": {},\n"
-      "  \"bodies_at_rest\": {},\n  \"max_speed_m_s\": {:.5f},\n  \"max_abs_rest_height_m\": {:.4f},\n"
+      "  \"bodies_at_rest\": {},\n  \"bodies_asleep\": {},\n  \"max_speed_m_s\": {:.5f},\n  \"max_abs_rest_height_m\": "
+      "{:.4f},\n"
       "  \"mesh_error_m\": {{\"p50\": {:.4f}, \"p99\": {:.4f}, \"max\": {:.4f}, \"samples\": {}}},\n"
       "  \"wall_s\": {:.3f},\n  \"load_average\": \"{}\"\n}}\n",
       bodies.size(), s.steps, sim.settings().physics.step_s, sim.settings().level, source.cells(),
@@ -137,8 +139,8 @@ std::string summaryJson(const PhysicsSimulation& sim, const GpuCollisionMeshSour
       pool.generatedSync, pool.generatedAsync, pool.evicted, s.predictedContacts,
       generated ? source.gpuTime_ms() / double(source.nodesGenerated()) : 0.0,
       s.selectionRounds ? s.selection_ms / double(s.selectionRounds) : 0.0, pool.residentMiB(),
-      double(sim.pool().budgetBytes()) / (1024.0 * 1024.0), pool.resident, atRest, fastest, worstRest, meshError.p50_m,
-      meshError.p99_m, meshError.max_m, meshError.samples, wall_s, loadAverage());
+      double(sim.pool().budgetBytes()) / (1024.0 * 1024.0), pool.resident, atRest, asleep, fastest, worstRest,
+      meshError.p50_m, meshError.p99_m, meshError.max_m, meshError.samples, wall_s, loadAverage());
 }
 
 // A frame looking down at the first body from 25 m, with the bodies drawn in.

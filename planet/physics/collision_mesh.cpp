@@ -11,7 +11,8 @@ namespace globe {
 size_t collisionMeshBytes(uint32_t cells) {
   const size_t vertices = size_t(cells + 1) * size_t(cells + 1);
   const size_t triangles = 2 * size_t(cells) * size_t(cells);
-  return vertices * 3 * sizeof(double) + triangles * 2 * 16 + 1024;
+  // The pool's vertices, the physics world's copy in the node's tangent frame, the BVH.
+  return 2 * vertices * 3 * sizeof(double) + triangles * 2 * 16 + 1024;
 }
 
 size_t CollisionMesh::bytes() const { return collisionMeshBytes(cells); }

@@ -1,6 +1,7 @@
 #include "planet/physics/physics_simulation.h"
 
 #include "planet/analysis/surface_ray.h"
+#include "planet/core/parallel_for.h"
 #include "planet/geometry/face_mapping.h"
 #include "planet/lod/lod_ranges.h"
 
@@ -75,18 +76,32 @@ void PhysicsSimulation::applyRound(const CollisionSelectionRound& round) {
 }
 
 void PhysicsSimulation::predictContacts() {
+  // The test per body reads only the world and the pool, so it runs on the physics threads; the
+  // synchronous generations then happen in id order, as if the loop were serial.
   const double dt = settings_.physics.step_s;
-  for (uint32_t id = 0; id < world_->bodyCount(); ++id) {
-    const BodyState state = world_->state(id);
-    if (state.sleeping) continue;
-    const BodyMotion motion{state.position_m, state.velocity_m_s, world_->boundingRadius(id)};
-    const CollisionQuery swept = sweptContactQuery(motion, dt, kContactSlack_m);
-    if (!predictsContact(motion, dt, surfaceMaxRadius(swept.position_m, swept.radius_m) + kContactSlack_m)) continue;
-    ++stats_.predictedContacts;
-    scratch_.clear();
-    selectCollisionNodes(RhombusFaceMapping::get(), minSurfaceRadius_m_, swept, settings_.level, scratch_);
-    for (const SelectedCollisionNode& s : scratch_) {
-      if (pool_->isResident(s.node)) continue;
+  predictions_.resize(world_->bodyCount());
+  parallelFor(predictions_.size(), 128, settings_.physics.threads, [&](size_t begin, size_t end) {
+    std::vector<SelectedCollisionNode> nodes;
+    for (size_t id = begin; id < end; ++id) {
+      ContactPrediction& p = predictions_[id];
+      p.contact = false;
+      p.missing.clear();
+      const BodyState state = world_->state(uint32_t(id));
+      if (state.sleeping) continue;
+      const BodyMotion motion{state.position_m, state.velocity_m_s, world_->boundingRadius(uint32_t(id))};
+      const CollisionQuery swept = sweptContactQuery(motion, dt, kContactSlack_m);
+      if (!predictsContact(motion, dt, surfaceMaxRadius(swept.position_m, swept.radius_m) + kContactSlack_m)) continue;
+      p.contact = true;
+      nodes.clear();
+      selectCollisionNodes(RhombusFaceMapping::get(), minSurfaceRadius_m_, swept, settings_.level, nodes);
+      for (const SelectedCollisionNode& s : nodes)
+        if (!pool_->isResident(s.node)) p.missing.push_back(s);
+    }
+  });
+  for (const ContactPrediction& p : predictions_) {
+    stats_.predictedContacts += p.contact ? 1 : 0;
+    for (const SelectedCollisionNode& s : p.missing) {
+      if (pool_->isResident(s.node)) continue;  // an earlier body's contact generated it
       ++stats_.predictedMissing;
       pool_->requireNow(s.node, s.distance_m);
     }

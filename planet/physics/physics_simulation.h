@@ -79,7 +79,11 @@ class PhysicsSimulation {
   uint64_t pendingRound_ = 0;
   uint64_t roundSubmitStep_ = 0;
   CollisionSelectionRound round_;
-  std::vector<SelectedCollisionNode> scratch_;
+  struct ContactPrediction {
+    bool contact = false;
+    std::vector<SelectedCollisionNode> missing;  // nodes under the swept sphere not resident
+  };
+  std::vector<ContactPrediction> predictions_;  // per body, this step
   SimulationStats stats_;
 };
 

@@ -1,5 +1,8 @@
 #include "planet/physics/physics_world.h"
 
+#include "planet/core/parallel_for.h"
+#include "planet/physics/body_groups.h"
+
 #include <btBulletCollisionCommon.h>
 #include <btBulletDynamicsCommon.h>
 
@@ -28,15 +31,64 @@ btScalar combinedRollingFriction(const btCollisionObject* a, const btCollisionOb
   return a->getRollingFriction() * b->getFriction() + b->getRollingFriction() * a->getFriction();
 }
 
-// A static terrain mesh: Bullet's view of the pool's vertices (shared, not copied) and the shared
-// index grid, its BVH and its object at the node centre.
+// A static terrain mesh: its vertices turned into the node's tangent frame (z up at the node
+// centre), the shared index grid, its BVH and its object at the node centre. In the tangent frame
+// the BVH's boxes are flat slabs around the terrain, so a body above the ground misses the root box
+// at once; in planet-aligned axes a tilted patch's boxes are cubes full of empty air and every query
+// walked deep into the tree (a third of a step with 1 000 bodies).
 struct StaticMesh {
   NodeId node;
+  std::vector<double> local_m;   // xyz per vertex in the tangent frame
+  btVector3 localMin, localMax;  // bounds of local_m
   btIndexedMesh part;
   std::unique_ptr<btTriangleIndexVertexArray> array;
   std::unique_ptr<btBvhTriangleMeshShape> shape;
-  std::unique_ptr<btCollisionObject> object;
+  std::vector<std::unique_ptr<btCollisionObject>> objects;  // one per world, sharing the shape
 };
+
+// Columns east, north, up of the tangent frame at `centre_m` (any east where the up is a pole).
+btMatrix3x3 tangentFrame(const glm::dvec3& centre_m) {
+  const glm::dvec3 up = glm::normalize(centre_m);
+  const glm::dvec3 pole = std::abs(up.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+  const glm::dvec3 east = glm::normalize(glm::cross(pole, up));
+  const glm::dvec3 north = glm::cross(up, east);
+  return {east.x, north.x, up.x, east.y, north.y, up.y, east.z, north.z, up.z};
+}
+
+// Bullet's broadphase pairs a body with every mesh whose planet-aligned box holds it, and a tilted
+// 250 m patch's box holds the air above it and its neighbours' ground: ~1.5 pairs a body, each a
+// BVH walk. This skips the narrowphase of a pair whose body (a sphere around its broadphase box,
+// which covers its motion in the step and the contact threshold) misses the mesh's box in the
+// mesh's tangent frame, where that box is a thin slab; its contacts were all beyond breaking
+// distance, so they are dropped as Bullet's refresh would have dropped them.
+void meshNearCallback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher, const btDispatcherInfo& info) {
+  btBroadphaseProxy* meshProxy = pair.m_pProxy0;
+  btBroadphaseProxy* bodyProxy = pair.m_pProxy1;
+  auto isMesh = [](const btBroadphaseProxy* p) {
+    return static_cast<const btCollisionObject*>(p->m_clientObject)->getUserIndex() < 0;
+  };
+  if (!isMesh(meshProxy)) std::swap(meshProxy, bodyProxy);
+  if (isMesh(meshProxy) && !isMesh(bodyProxy)) {
+    const auto* object = static_cast<const btCollisionObject*>(meshProxy->m_clientObject);
+    const auto* mesh = static_cast<const StaticMesh*>(object->getUserPointer());
+    constexpr double kSlack_m = 0.1;
+    const btVector3 centre = 0.5 * (bodyProxy->m_aabbMin + bodyProxy->m_aabbMax);
+    const double radius = 0.5 * (bodyProxy->m_aabbMax - bodyProxy->m_aabbMin).length() + kSlack_m;
+    const btVector3 local = object->getWorldTransform().invXform(centre);
+    bool apart = false;
+    for (int axis = 0; axis < 3; ++axis)
+      apart |= local[axis] + radius < mesh->localMin[axis] || local[axis] - radius > mesh->localMax[axis];
+    if (apart) {
+      if (pair.m_algorithm) {
+        btManifoldArray manifolds;
+        pair.m_algorithm->getAllContactManifolds(manifolds);
+        for (int m = 0; m < manifolds.size(); ++m) manifolds[m]->clearManifold();
+      }
+      return;
+    }
+  }
+  btCollisionDispatcher::defaultNearCallback(pair, dispatcher, info);
+}
 
 struct Body {
   BodySpec spec;
@@ -45,19 +97,35 @@ struct Body {
   std::unique_ptr<btRigidBody> rigid;
   std::vector<NodeId> contacts;
   double boundingRadius_m = 0.0;
+  uint32_t world = 0;  // which Shard holds it
 };
 
-}  // namespace
-
-struct PhysicsWorld::Impl {
+// One independent Bullet world: its own pools (in the configuration), broadphase and solver, so
+// shards step on different threads without sharing anything but the read-only mesh shapes.
+struct Shard {
   btDefaultCollisionConfiguration configuration;
   btCollisionDispatcher dispatcher{&configuration};
   btDbvtBroadphase broadphase;
   btSequentialImpulseConstraintSolver solver;
   btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
+  std::vector<uint32_t> bodies;  // ids, ascending
+};
+
+// Groups are formed again every this many steps; a body's reach covers its motion over twice that.
+constexpr uint64_t kRegroupSteps = 4;
+constexpr double kReachSlack_m = 1.0;
+
+}  // namespace
+
+struct PhysicsWorld::Impl {
+  std::vector<std::unique_ptr<Shard>> shards;
   std::vector<Body> bodies;
   std::unordered_map<uint64_t, std::unique_ptr<StaticMesh>> meshes;
   std::unordered_map<uint32_t, std::vector<int>> indices;  // per cells
+  uint64_t steps = 0;
+
+  void regroup(double step_s);
+  void stepShard(Shard& shard, const PhysicsSettings& settings);
 };
 
 std::string_view bodyShapeName(BodyShape shape) {
@@ -73,17 +141,24 @@ std::string_view bodyShapeName(BodyShape shape) {
 }
 
 PhysicsWorld::PhysicsWorld(const PhysicsSettings& settings) : settings_(settings), impl_(std::make_unique<Impl>()) {
-  impl_->world.setGravity(btVector3(0, 0, 0));  // radial, per body (step())
-  // Terrain meshes never move: only active bodies' bounds are updated each step (Bullet's default
-  // recomputes every object's, ~10 % of a step with 1 600 meshes resident).
-  impl_->world.setForceUpdateAllAabbs(false);
+  for (uint32_t w = 0; w < std::max(settings_.worlds, 1u); ++w) {
+    auto shard = std::make_unique<Shard>();
+    shard->world.setGravity(btVector3(0, 0, 0));  // radial, per body (step())
+    // Terrain meshes never move: only active bodies' bounds are updated each step (Bullet's default
+    // recomputes every object's, ~10 % of a step with 1 600 meshes resident).
+    shard->world.setForceUpdateAllAabbs(false);
+    shard->dispatcher.setNearCallback(&meshNearCallback);
+    impl_->shards.push_back(std::move(shard));
+  }
   gCalculateCombinedRollingFrictionCallback = &combinedRollingFriction;
   gCalculateCombinedSpinningFrictionCallback = &combinedRollingFriction;
 }
 
 PhysicsWorld::~PhysicsWorld() {
-  for (Body& b : impl_->bodies) impl_->world.removeRigidBody(b.rigid.get());
-  for (auto& [key, mesh] : impl_->meshes) impl_->world.removeCollisionObject(mesh->object.get());
+  for (Body& b : impl_->bodies) impl_->shards[b.world]->world.removeRigidBody(b.rigid.get());
+  for (auto& [key, mesh] : impl_->meshes)
+    for (size_t w = 0; w < mesh->objects.size(); ++w)
+      impl_->shards[w]->world.removeCollisionObject(mesh->objects[w].get());
 }
 
 uint32_t PhysicsWorld::addBody(const BodySpec& spec) {
@@ -133,7 +208,9 @@ uint32_t PhysicsWorld::addBody(const BodySpec& spec) {
   body.rigid->setCcdSweptSphereRadius(0.4 * spec.size_m);
   const uint32_t id = uint32_t(impl_->bodies.size());
   body.rigid->setUserIndex(int(id));
-  impl_->world.addRigidBody(body.rigid.get());
+  body.world = id % uint32_t(impl_->shards.size());  // assignWorlds' start; regroup() moves it if needed
+  impl_->shards[body.world]->world.addRigidBody(body.rigid.get());
+  impl_->shards[body.world]->bodies.push_back(id);
   impl_->bodies.push_back(std::move(body));
   return id;
 }
@@ -186,27 +263,64 @@ std::vector<glm::dvec3> PhysicsWorld::surfacePoints(uint32_t id) const {
   return points;
 }
 
-void PhysicsWorld::step() {
-  const double g0 = settings_.surfaceGravity_m_s2, r0 = settings_.planetRadius_m;
-  for (Body& b : impl_->bodies) {
+// Bodies that may meet share a world (planet/physics/body_groups.h); a body whose group moved is
+// taken out of its old world and added to the new one, in id order.
+void PhysicsWorld::Impl::regroup(double step_s) {
+  std::vector<BodyReach> reach(bodies.size());
+  std::vector<uint32_t> previous(bodies.size());
+  for (size_t i = 0; i < bodies.size(); ++i) {
+    const btRigidBody& rigid = *bodies[i].rigid;
+    const double travel_m = rigid.getLinearVelocity().length() * step_s * double(2 * kRegroupSteps);
+    reach[i] = {fromBt(rigid.getCenterOfMassPosition()), bodies[i].boundingRadius_m + travel_m + kReachSlack_m};
+    previous[i] = bodies[i].world;
+  }
+  const std::vector<uint32_t> worlds = assignWorlds(groupBodies(reach), previous, uint32_t(shards.size()));
+  bool moved = false;
+  for (uint32_t i = 0; i < bodies.size(); ++i) {
+    Body& b = bodies[i];
+    if (worlds[i] == b.world) continue;
+    const btVector3 gravity = b.rigid->getGravity();  // addRigidBody sets the world's (zero)
+    shards[b.world]->world.removeRigidBody(b.rigid.get());
+    b.world = worlds[i];
+    shards[b.world]->world.addRigidBody(b.rigid.get());
+    b.rigid->setGravity(gravity);
+    moved = true;
+  }
+  if (!moved) return;
+  for (auto& shard : shards) shard->bodies.clear();
+  for (uint32_t i = 0; i < bodies.size(); ++i) shards[bodies[i].world]->bodies.push_back(i);
+}
+
+void PhysicsWorld::Impl::stepShard(Shard& shard, const PhysicsSettings& settings) {
+  const double g0 = settings.surfaceGravity_m_s2, r0 = settings.planetRadius_m;
+  for (uint32_t id : shard.bodies) {
+    Body& b = bodies[id];
+    b.contacts.clear();
     if (!b.rigid->isActive()) continue;
     const glm::dvec3 p = fromBt(b.rigid->getCenterOfMassPosition());
     const double r = glm::length(p);
     b.rigid->setGravity(toBt(p * (-g0 * (r0 / r) * (r0 / r) / r)));
   }
-  impl_->world.stepSimulation(settings_.step_s, 0);  // 0 substeps: exactly one step of step_s
-  for (Body& b : impl_->bodies) b.contacts.clear();
-  const int manifolds = impl_->dispatcher.getNumManifolds();
+  shard.world.stepSimulation(settings.step_s, 0);  // 0 substeps: exactly one step of step_s
+  const int manifolds = shard.dispatcher.getNumManifolds();
   for (int m = 0; m < manifolds; ++m) {
-    const btPersistentManifold* manifold = impl_->dispatcher.getManifoldByIndexInternal(m);
+    const btPersistentManifold* manifold = shard.dispatcher.getManifoldByIndexInternal(m);
     if (manifold->getNumContacts() == 0) continue;
     const btCollisionObject* a = manifold->getBody0();
     const btCollisionObject* b = manifold->getBody1();
     if (a->getUserIndex() < 0) std::swap(a, b);
     if (a->getUserIndex() < 0 || b->getUserIndex() >= 0) continue;  // body-body or mesh-mesh
-    impl_->bodies[size_t(a->getUserIndex())].contacts.push_back(
-        static_cast<const StaticMesh*>(b->getUserPointer())->node);
+    bodies[size_t(a->getUserIndex())].contacts.push_back(static_cast<const StaticMesh*>(b->getUserPointer())->node);
   }
+}
+
+void PhysicsWorld::step() {
+  if (impl_->shards.size() > 1 && impl_->steps % kRegroupSteps == 0) impl_->regroup(settings_.step_s);
+  // Shards share no mutable state: each writes only its own bodies' contacts.
+  parallelFor(impl_->shards.size(), 1, settings_.threads, [&](size_t begin, size_t end) {
+    for (size_t w = begin; w < end; ++w) impl_->stepShard(*impl_->shards[w], settings_);
+  });
+  ++impl_->steps;
 }
 
 std::span<const NodeId> PhysicsWorld::contactNodes(uint32_t id) const { return impl_->bodies[id].contacts; }
@@ -216,7 +330,7 @@ std::optional<double> PhysicsWorld::rayCastMeshes(const glm::dvec3& origin_m, co
   const btVector3 from = toBt(origin_m), to = toBt(origin_m + direction * maxDistance_m);
   btCollisionWorld::ClosestRayResultCallback hit(from, to);
   hit.m_collisionFilterMask = btBroadphaseProxy::StaticFilter;
-  impl_->world.rayTest(from, to, hit);
+  impl_->shards[0]->world.rayTest(from, to, hit);  // every world holds every mesh
   if (!hit.hasHit()) return std::nullopt;
   return hit.m_closestHitFraction * maxDistance_m;
 }
@@ -226,36 +340,53 @@ void PhysicsWorld::meshResident(const CollisionMesh& mesh) {
   if (indices.empty()) indices = collisionGridIndices(mesh.cells);
   auto s = std::make_unique<StaticMesh>();
   s->node = mesh.node;
+  const btMatrix3x3 frame = tangentFrame(mesh.centre_m);
+  s->local_m.resize(mesh.vertices_m.size());
+  s->localMin = btVector3(BT_LARGE_FLOAT, BT_LARGE_FLOAT, BT_LARGE_FLOAT);
+  s->localMax = -s->localMin;
+  for (size_t k = 0; k + 2 < mesh.vertices_m.size(); k += 3) {
+    const btVector3 local = btVector3(mesh.vertices_m[k], mesh.vertices_m[k + 1], mesh.vertices_m[k + 2]) * frame;
+    s->local_m[k] = local.x(), s->local_m[k + 1] = local.y(), s->local_m[k + 2] = local.z();
+    s->localMin.setMin(local);
+    s->localMax.setMax(local);
+  }
   s->part.m_numTriangles = int(indices.size() / 3);
   s->part.m_triangleIndexBase = reinterpret_cast<const unsigned char*>(indices.data());
   s->part.m_triangleIndexStride = 3 * sizeof(int);
   s->part.m_numVertices = int(mesh.vertexCount());
-  s->part.m_vertexBase = reinterpret_cast<const unsigned char*>(mesh.vertices_m.data());
+  s->part.m_vertexBase = reinterpret_cast<const unsigned char*>(s->local_m.data());
   s->part.m_vertexStride = 3 * sizeof(double);
   s->part.m_indexType = PHY_INTEGER;
   s->part.m_vertexType = PHY_DOUBLE;
   s->array = std::make_unique<btTriangleIndexVertexArray>();
   s->array->addIndexedMesh(s->part, PHY_INTEGER);
+  // Bullet would find the bounds with six support queries over every triangle (a third of a
+  // BVH build); they are known.
+  s->array->setPremadeAabb(s->localMin, s->localMax);
   s->shape = std::make_unique<btBvhTriangleMeshShape>(s->array.get(), /*useQuantizedAabbCompression=*/true);
   s->shape->setMargin(settings_.meshMargin_m);
-  s->object = std::make_unique<btCollisionObject>();
-  s->object->setCollisionShape(s->shape.get());
-  s->object->setWorldTransform(btTransform(btQuaternion::getIdentity(), toBt(mesh.centre_m)));
-  s->object->setCollisionFlags(btCollisionObject::CF_STATIC_OBJECT);
-  s->object->setFriction(1.0);
-  s->object->setRollingFriction(0.0);  // the pair's rolling friction is the body's (see addBody)
-  s->object->setRestitution(1.0);
-  s->object->setUserIndex(-1);
-  s->object->setUserPointer(s.get());
-  impl_->world.addCollisionObject(s->object.get(), btBroadphaseProxy::StaticFilter,
-                                  btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
+  for (auto& shard : impl_->shards) {
+    auto object = std::make_unique<btCollisionObject>();
+    object->setCollisionShape(s->shape.get());
+    object->setWorldTransform(btTransform(frame, toBt(mesh.centre_m)));
+    object->setCollisionFlags(btCollisionObject::CF_STATIC_OBJECT);
+    object->setFriction(1.0);
+    object->setRollingFriction(0.0);  // the pair's rolling friction is the body's (see addBody)
+    object->setRestitution(1.0);
+    object->setUserIndex(-1);
+    object->setUserPointer(s.get());
+    shard->world.addCollisionObject(object.get(), btBroadphaseProxy::StaticFilter,
+                                    btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
+    s->objects.push_back(std::move(object));
+  }
   impl_->meshes[mesh.node.key()] = std::move(s);
 }
 
 void PhysicsWorld::meshEvicted(const NodeId& node) {
   auto it = impl_->meshes.find(node.key());
   if (it == impl_->meshes.end()) return;
-  impl_->world.removeCollisionObject(it->second->object.get());
+  for (size_t w = 0; w < it->second->objects.size(); ++w)
+    impl_->shards[w]->world.removeCollisionObject(it->second->objects[w].get());
   impl_->meshes.erase(it);
 }
 

@@ -50,6 +50,10 @@ struct PhysicsSettings {
   double sleepLinear_m_s = 0.04;  // below both for Bullet's deactivation time (2 s) -> asleep
   double sleepAngular_rad_s = 0.1;
   double meshMargin_m = 0.0;  // collision margin of the terrain triangles
+  // Independent Bullet worlds (planet/physics/body_groups.h): bodies that may meet share one. A
+  // fixed number, so a run's result does not depend on the machine; stepped on up to `threads`.
+  uint32_t worlds = 2;
+  unsigned threads = 2;
 };
 
 struct BodyState {

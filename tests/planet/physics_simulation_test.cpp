@@ -2,6 +2,7 @@
 // payload kernel: they come to rest everywhere (vertices, poles, seams, ±180°), within the level's
 // own mesh error of the exact surface, never fall through (also at 50 m/s), wait for a mesh only on
 // a predicted contact, and the same seed gives the same run bit for bit.
+#include "planet/camera/camera.h"
 #include "planet/elevation/planet_file.h"
 #include "planet/physics/mesh_error.h"
 #include "planet/physics/physics_scenario.h"
@@ -129,6 +130,29 @@ TEST(PhysicsSimulation, SynchronousGenerationOnlyForPredictedContacts) {
   EXPECT_GT(closeRun.sim->pool().stats().generatedSync, 0u);
   EXPECT_EQ(closeRun.sim->pool().stats().generatedSync, closeRun.sim->stats().predictedMissing)
       << "every synchronous generation is a predicted contact's missing node";
+}
+
+// Bodies 0 and 1 start in different Bullet worlds (id % 2); one dropped onto the other must still
+// land on it: the grouping moves them into one world before they meet.
+TEST(PhysicsSimulation, BodiesInSeparateWorldsStillCollide) {
+  CpuCollisionMeshSource source(testModel(), kCells);
+  SimulationSettings settings;
+  settings.level = kLevel;
+  ASSERT_EQ(settings.physics.worlds, 2u);
+  PhysicsSimulation sim(testModel(), source, settings);
+  const glm::dvec3 up = directionFromLatLon(12.0, 34.0);
+  const double ground_m = testModel().radius_m() + testModel().elevation_m(up);
+  BodySpec lower;
+  lower.shape = BodyShape::kBox;
+  lower.position_m = up * (ground_m + 0.5);
+  BodySpec upper = lower;
+  upper.position_m = up * (ground_m + 6.0);
+  sim.addBody(lower);
+  sim.addBody(upper);
+  sim.settleSelection();
+  for (int s = 0; s < 180; ++s) sim.step();  // the upper box lands after ~1 s
+  const double gap_m = glm::length(sim.world().state(1).position_m) - glm::length(sim.world().state(0).position_m);
+  EXPECT_GT(gap_m, 0.8) << "the upper box passed through the lower one";
 }
 
 TEST(PhysicsSimulation, DeterministicForASeed) {
