@@ -3,7 +3,8 @@
 // every sample (vertices and the extra ring) in double — face mapping, then elevation — and stores
 // positions relative to the node centre, quantised, as floats, plus the double positions in a
 // scratch buffer; pass 2 derives normals from those double positions by central differences; a
-// shared-memory reduction gives the node's min/max vertex radius. Mirrors
+// shared-memory reduction gives the node's min/max vertex radius and its geometric error (the
+// largest distance a vertex moves when the node morphs to its parent's mesh). Mirrors
 // planet/streaming/payload_reference.cpp operation for operation (the double kernel).
 #include "payload_layout.h"
 #include "elevation_params.h"
@@ -33,6 +34,18 @@ layout(push_constant) uniform Push {
 
 shared double sharedMin[GLOBE_PAYLOAD_WORKGROUP];
 shared double sharedMax[GLOBE_PAYLOAD_WORKGROUP];
+shared double sharedError[GLOBE_PAYLOAD_WORKGROUP];
+
+// How far the vertex at scratch index `at` moves when the node morphs to its parent's mesh: the
+// distance to the midpoint of the even neighbours the vertex shader slides it to (row, column, or
+// the parent cell's diagonal), i.e. half the second difference of seed 004's density term.
+double morphDeviation(uint at, int i, int j, int s) {
+  bool oddI = (i & 1) != 0, oddJ = (j & 1) != 0;
+  if (!oddI && !oddJ) return 0.0lf;
+  uint step = uint(oddI ? 1 : 0) + uint(oddJ ? s : 0);
+  precise dvec3 d = (scratch[at - step].xyz + scratch[at + step].xyz) * 0.5lf - scratch[at].xyz;
+  return sqrt((d.x * d.x + d.y * d.y) + d.z * d.z);
+}
 
 void edgeToUv(uint edge, double s, double d, out double u, out double v) {
   if (edge == 0u) { u = s; v = d; }
@@ -123,22 +136,26 @@ void main() {
   barrier();
 
   uint normalBase = slotBase + samples;
+  double localError = 0.0lf;
   for (uint index = gl_LocalInvocationID.x; index < samples; index += GLOBE_PAYLOAD_WORKGROUP) {
     int i = clamp(int(index % uint(s)) - 1, 0, n);
     int j = clamp(int(index / uint(s)) - 1, 0, n);
     uint at = scratchBase + uint((j + 1) * s + (i + 1));
+    localError = max(localError, morphDeviation(at, i, j, s));
     precise dvec3 du = scratch[at + 1u].xyz - scratch[at - 1u].xyz;
     precise dvec3 dv = scratch[at + uint(s)].xyz - scratch[at - uint(s)].xyz;
     precise dvec3 c = dvec3(du.y * dv.z - du.z * dv.y, du.z * dv.x - du.x * dv.z, du.x * dv.y - du.y * dv.x);
     payloads[normalBase + index] = vec4(vec3(normalised(c)), globeSourceHole(job.sourceBase, index));
   }
+  sharedError[gl_LocalInvocationID.x] = localError;
 
   for (uint stride = GLOBE_PAYLOAD_WORKGROUP / 2u; stride > 0u; stride >>= 1) {
     barrier();
     if (gl_LocalInvocationID.x < stride) {
       sharedMin[gl_LocalInvocationID.x] = min(sharedMin[gl_LocalInvocationID.x], sharedMin[gl_LocalInvocationID.x + stride]);
       sharedMax[gl_LocalInvocationID.x] = max(sharedMax[gl_LocalInvocationID.x], sharedMax[gl_LocalInvocationID.x + stride]);
+      sharedError[gl_LocalInvocationID.x] = max(sharedError[gl_LocalInvocationID.x], sharedError[gl_LocalInvocationID.x + stride]);
     }
   }
-  if (gl_LocalInvocationID.x == 0u) results[jobIndex] = PayloadResult(sharedMin[0], sharedMax[0]);
+  if (gl_LocalInvocationID.x == 0u) results[jobIndex] = PayloadResult(sharedMin[0], sharedMax[0], sharedError[0], 0.0lf);
 }

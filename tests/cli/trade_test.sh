@@ -12,7 +12,7 @@ fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
   >"$WORK/stdout" 2>"$WORK/stderr" || { fail "trade run"; cat "$WORK/stderr"; }
 for f in trade.csv pareto.svg; do [[ -s "$WORK/t/$f" ]] || fail "missing $f"; done
 header=$(head -1 "$WORK/t/trade.csv")
-expected="config,camera,grid_cells,distance_multiplier,max_depth,morph_fraction,generation,positions,width,height,converged,frame_median_ms,frame_p95_ms,select_ms,triangles,nodes,resident_mib,gen_ms_per_node,err_p50_px,err_p95_px,err_max_px,err_p50_m,err_p95_m,err_max_m,silhouette_mismatches,silhouette_max_px,samples,samples_both_hit,truth_unresolved"
+expected="config,camera,grid_cells,distance_multiplier,max_depth,morph_fraction,generation,positions,lod,tolerance_px,width,height,converged,frame_median_ms,frame_p95_ms,select_ms,triangles,nodes,resident_mib,gen_ms_per_node,err_p50_px,err_p95_px,err_max_px,err_p50_m,err_p95_m,err_max_m,silhouette_mismatches,silhouette_max_px,samples,samples_both_hit,truth_unresolved"
 [[ "$header" == "$expected" ]] || fail "trade.csv header: $header"
 rows=$(($(wc -l <"$WORK/t/trade.csv") - 1))
 [[ $rows -eq 3 ]] || fail "trade.csv has $rows rows, expected 3 (two cameras and the worst)"
