@@ -39,6 +39,7 @@ struct TradeOptions {
   uint32_t stride = 0;   // 0 = 4
   uint32_t configs = 0;  // 0 = all
   bool quick = false;
+  bool lodSweep = false;  // only distance multipliers vs tolerances around the baseline
 };
 
 struct TradeConfig {
@@ -72,7 +73,8 @@ bool sameKnobs(const TerrainSettings& a, const TerrainSettings& b) {
 }
 
 // One knob at a time around the baseline, then the presets and a few combinations.
-std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::string& baseName, bool quick) {
+std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::string& baseName, bool quick,
+                                      bool lodSweep) {
   std::vector<TradeConfig> list;
   auto add = [&](const std::string& label, TerrainSettings s) {
     for (const TradeConfig& c : list)
@@ -107,6 +109,11 @@ std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::st
   auto reproject = [](TerrainSettings& s, double v) {
     s.vertexPositions = v != 0.0 ? VertexPositions::kReprojected : VertexPositions::kStored;
   };
+  if (lodSweep) {  // distance ranges vs tolerance-driven ranges at the baseline's grid and depth
+    vary(mult, {0.25, 0.5, 0.75, 1, 1.5, 2, 4});
+    vary(tolerance, {0.5, 1, 2, 3, 4, 6, 8, 16});
+    return list;
+  }
   if (quick) {  // the cheap knobs only: a minute or two on lavapipe
     vary(grid, {16, 32, 64});
     vary(mult, {0.5, 1, 2});
@@ -359,7 +366,7 @@ int runTrade(const TradeOptions& o) {
   auto in = checkTradeInputs(o);
   if (!in) return usageError(in.error());
   ElevationModel model(in->planet);
-  std::vector<TradeConfig> configs = tradeConfigs(in->baseline, std::string(qualityPresetName(in->preset)), o.quick);
+  std::vector<TradeConfig> configs = tradeConfigs(in->baseline, std::string(qualityPresetName(in->preset)), o.quick, o.lodSweep);
   if (o.lod != "both")  // keep one LOD rule's configurations
     std::erase_if(configs, [&](const TradeConfig& c) { return (c.settings.ranges.tolerance_px > 0) != (o.lod == "tolerance"); });
   if (configs.empty()) return usageError(Error::inField("--lod", "no configuration of this LOD rule to run"));
@@ -414,6 +421,8 @@ void addTradeCommand(CLI::App& app, Runner& run) {
   cmd->add_option("--out", opts->out, "Output directory (trade.csv, pareto.svg)")->capture_default_str();
   cmd->add_flag("--quick", opts->quick, "Few configurations, two cameras, 320x180: about a minute");
   addQualityOptions(*cmd, opts->quality, /*withGrid=*/false);  // the baseline configuration
+  cmd->add_flag("--lod-sweep", opts->lodSweep,
+                "Only the LOD comparison: the baseline with distance multipliers 0.25-4 and tolerances 0.5-16 px");
   cmd->add_option("--lod", opts->lod, "LOD rules to sweep: distance, tolerance or both")->capture_default_str();
   cmd->add_option("--size", opts->size, "Image size WxH (default 1280x720, --quick 320x180)");
   cmd->add_option("--frames", opts->frames,

@@ -45,5 +45,23 @@ grep -q "unknown quality 'best'" "$WORK/bad.err" || fail "render --quality: $(ca
 "$GLOBE" render --quality fast --size 64x48 --out "$WORK/fast.png" >"$WORK/r.out" 2>"$WORK/r.err" || fail "render --quality fast"
 [[ -s "$WORK/fast.png" ]] || fail "render --quality fast wrote nothing"
 
+# --tolerance on the rendering commands: bad values are one line naming the option, exit 2.
+for value in 0 -1 nan abc 5000; do
+  for command in render bench movie view trade; do
+    (cd "$WORK" && "$GLOBE" "$command" --tolerance "$value" >"$WORK/bad.out" 2>"$WORK/bad.err")
+    code=$?
+    [[ $code -eq 2 ]] || fail "$command --tolerance $value: exit $code, expected 2"
+    [[ $(wc -l <"$WORK/bad.err") -eq 1 ]] || fail "$command --tolerance $value: stderr is not one line"
+    grep -q -- '--tolerance' "$WORK/bad.err" || fail "$command --tolerance $value: $(cat "$WORK/bad.err")"
+  done
+done
+# A tolerance-driven trade row says so in the lod column.
+"$GLOBE" trade --quick --size 96x64 --configs 1 --frames 1 --stride 4 --cameras 1km --tolerance 2 \
+  --out "$WORK/tt" >"$WORK/tt.out" 2>"$WORK/tt.err" || { fail "trade --tolerance"; cat "$WORK/tt.err"; }
+lod=$(awk -F, 'NR == 2 { print $9 "," $10 }' "$WORK/tt/trade.csv")
+[[ "$lod" == "tolerance,2.000" ]] || fail "trade --tolerance 2: lod,tolerance_px = $lod"
+lod=$(awk -F, 'NR == 2 { print $9 }' "$WORK/t/trade.csv")
+[[ "$lod" == "distance" ]] || fail "trade (balanced): lod = $lod"
+
 if [[ $failures -ne 0 ]]; then echo "$failures failure(s)"; exit 1; fi
 echo "trade: all checks passed"
