@@ -68,8 +68,8 @@ Result<MovieSettings> movieSettings(const MovieOptions& o, const PlanetDescripti
   if (!terrain) return terrain.error();
   s.terrain = *terrain;
   if (auto st = applyBudgetOptions(o.budget, s.terrain); !st) return st.error();
-  s.description = fmt::format("path={} planet={} size={}x{} fps={} format={} quality={}{}", o.path, o.planet,
-                              s.width, s.height, s.fps, o.format, o.quality.quality.empty() ? "default" : o.quality.quality,
+  s.description = fmt::format("path={} planet={} size={}x{} fps={} format={} quality={}{}", o.path, o.planet, s.width,
+                              s.height, s.fps, o.format, o.quality.quality.empty() ? "default" : o.quality.quality,
                               o.quality.tolerance_px > 0 ? fmt::format(" tolerance={}", o.quality.tolerance_px) : "");
   return s;
 }

@@ -30,14 +30,14 @@ struct TradeOptions {
   DeviceFlags device;
   std::string planet;
   std::string out = "out/trade";
-  QualityOptions quality;  // baseline: --quality (empty: the planet's default_quality), --tolerance
+  QualityOptions quality;    // baseline: --quality (empty: the planet's default_quality), --tolerance
   std::string lod = "both";  // which LOD rules to sweep: distance, tolerance or both
-  std::string size;      // empty = 1280x720, --quick 320x180
-  std::string path;      // path sampled for extra cameras (full sweep only)
-  std::string cameras;   // comma-separated camera names to keep; empty = all
-  uint32_t frames = 0;   // 0 = 11, --quick 3
-  uint32_t stride = 0;   // 0 = 4
-  uint32_t configs = 0;  // 0 = all
+  std::string size;          // empty = 1280x720, --quick 320x180
+  std::string path;          // path sampled for extra cameras (full sweep only)
+  std::string cameras;       // comma-separated camera names to keep; empty = all
+  uint32_t frames = 0;       // 0 = 11, --quick 3
+  uint32_t stride = 0;       // 0 = 4
+  uint32_t configs = 0;      // 0 = all
   bool quick = false;
   bool lodSweep = false;  // only distance multipliers vs tolerances around the baseline
 };
@@ -366,9 +366,11 @@ int runTrade(const TradeOptions& o) {
   auto in = checkTradeInputs(o);
   if (!in) return usageError(in.error());
   ElevationModel model(in->planet);
-  std::vector<TradeConfig> configs = tradeConfigs(in->baseline, std::string(qualityPresetName(in->preset)), o.quick, o.lodSweep);
+  std::vector<TradeConfig> configs =
+      tradeConfigs(in->baseline, std::string(qualityPresetName(in->preset)), o.quick, o.lodSweep);
   if (o.lod != "both")  // keep one LOD rule's configurations
-    std::erase_if(configs, [&](const TradeConfig& c) { return (c.settings.ranges.tolerance_px > 0) != (o.lod == "tolerance"); });
+    std::erase_if(configs,
+                  [&](const TradeConfig& c) { return (c.settings.ranges.tolerance_px > 0) != (o.lod == "tolerance"); });
   if (configs.empty()) return usageError(Error::inField("--lod", "no configuration of this LOD rule to run"));
   if (o.configs) configs.resize(std::min<size_t>(configs.size(), o.configs));
   auto cameras = tradeCameras(o, *in, model);

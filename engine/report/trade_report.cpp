@@ -84,14 +84,15 @@ std::string tradeCsv(const std::vector<TradeRow>& rows) {
     s += csvField(r.config) + "," + csvField(r.camera) + "," + std::to_string(r.gridCells) + "," +
          formatFixed(r.distanceMultiplier, 3) + "," + std::to_string(r.maxDepth) + "," +
          formatFixed(r.morphFraction, 3) + "," + csvField(r.generation) + "," + csvField(r.positions) + "," +
-         csvField(r.lod) + "," + formatFixed(r.tolerance_px, 3) + "," + std::to_string(r.width) + "," + std::to_string(r.height) + "," + (r.converged ? "1" : "0") + "," +
-         formatFixed(r.frameMedian_ms, 3) + "," + formatFixed(r.frameP95_ms, 3) + "," + formatFixed(r.select_ms, 4) +
-         "," + std::to_string(r.triangles) + "," + std::to_string(r.nodes) + "," + formatFixed(r.resident_mib, 3) +
-         "," + formatFixed(finite(r.genPerNode_ms), 4) + "," + formatFixed(e.p50_px, 4) + "," +
-         formatFixed(e.p95_px, 4) + "," + formatFixed(finite(e.max_px), 4) + "," + formatFixed(e.p50_m, 4) + "," +
-         formatFixed(e.p95_m, 4) + "," + formatFixed(finite(e.max_m), 4) + "," +
-         std::to_string(e.silhouetteMismatches) + "," + formatFixed(e.silhouetteMax_px, 1) + "," +
-         std::to_string(e.samples) + "," + std::to_string(e.bothHit) + "," + std::to_string(e.unresolved) + "\n";
+         csvField(r.lod) + "," + formatFixed(r.tolerance_px, 3) + "," + std::to_string(r.width) + "," +
+         std::to_string(r.height) + "," + (r.converged ? "1" : "0") + "," + formatFixed(r.frameMedian_ms, 3) + "," +
+         formatFixed(r.frameP95_ms, 3) + "," + formatFixed(r.select_ms, 4) + "," + std::to_string(r.triangles) + "," +
+         std::to_string(r.nodes) + "," + formatFixed(r.resident_mib, 3) + "," +
+         formatFixed(finite(r.genPerNode_ms), 4) + "," + formatFixed(e.p50_px, 4) + "," + formatFixed(e.p95_px, 4) +
+         "," + formatFixed(finite(e.max_px), 4) + "," + formatFixed(e.p50_m, 4) + "," + formatFixed(e.p95_m, 4) + "," +
+         formatFixed(finite(e.max_m), 4) + "," + std::to_string(e.silhouetteMismatches) + "," +
+         formatFixed(e.silhouetteMax_px, 1) + "," + std::to_string(e.samples) + "," + std::to_string(e.bothHit) + "," +
+         std::to_string(e.unresolved) + "\n";
   }
   return s;
 }

@@ -85,8 +85,7 @@ bool LodRanges::recompute() {
   double finer = 0.0;  // R(d+1), none below the last refinable depth
   for (int d = config_.maxDepth - 1; d >= 0; --d) {
     const size_t i = static_cast<size_t>(d);
-    double value =
-        toleranceDriven() ? pixelsPerRadian_ * estimatedError(d) / config_.tolerance_px : nominal_[i];
+    double value = toleranceDriven() ? pixelsPerRadian_ * estimatedError(d) / config_.tolerance_px : nominal_[i];
     if (d + 1 <= config_.maxDepth - 1) {
       value = std::max(value, (finer + maxDiagonal_[i + 1]) * (1.0 + kRestrictionSlack) + kRestrictionPad_m);
     }

@@ -1,14 +1,13 @@
 // Body of the payload kernels (payload_generate.comp, payload_generate_float.comp, which set the
-// version, the extensions and the precision). Fills node payloads (shaders/include/payload_layout.h): one workgroup per node. Pass 1 evaluates
-// every sample (vertices and the extra ring) in double — face mapping, then elevation — and stores
-// positions relative to the node centre, quantised, as floats, plus the double positions in a
-// scratch buffer; pass 2 derives normals from those double positions by central differences; a
-// shared-memory reduction gives the node's min/max vertex radius and its geometric error (the
-// largest distance a vertex moves when the node morphs to its parent's mesh). Mirrors
-// planet/streaming/payload_reference.cpp operation for operation (the double kernel).
-#include "payload_layout.h"
+// version, the extensions and the precision). Fills node payloads (shaders/include/payload_layout.h): one workgroup per
+// node. Pass 1 evaluates every sample (vertices and the extra ring) in double — face mapping, then elevation — and
+// stores positions relative to the node centre, quantised, as floats, plus the double positions in a scratch buffer;
+// pass 2 derives normals from those double positions by central differences; a shared-memory reduction gives the node's
+// min/max vertex radius and its geometric error (the largest distance a vertex moves when the node morphs to its
+// parent's mesh). Mirrors planet/streaming/payload_reference.cpp operation for operation (the double kernel).
 #include "elevation_params.h"
 #include "face_mapping.glsl"
+#include "payload_layout.h"
 
 layout(local_size_x = GLOBE_PAYLOAD_WORKGROUP) in;
 
@@ -23,7 +22,8 @@ layout(std430, binding = 5) writeonly buffer Results { PayloadResult results[]; 
 layout(push_constant) uniform Push {
   uint cells;     // grid cells per side (power of two)
   uint jobCount;  // jobs in this dispatch
-} push;
+}
+push;
 
 #define GLOBE_ELEVATION_PARAMS elevation
 #ifdef GLOBE_PAYLOAD_FLOAT
@@ -48,10 +48,19 @@ double morphDeviation(uint at, int i, int j, int s) {
 }
 
 void edgeToUv(uint edge, double s, double d, out double u, out double v) {
-  if (edge == 0u) { u = s; v = d; }
-  else if (edge == 1u) { u = 1.0lf - d; v = s; }
-  else if (edge == 2u) { u = 1.0lf - s; v = 1.0lf - d; }
-  else { u = d; v = 1.0lf - s; }
+  if (edge == 0u) {
+    u = s;
+    v = d;
+  } else if (edge == 1u) {
+    u = 1.0lf - d;
+    v = s;
+  } else if (edge == 2u) {
+    u = 1.0lf - s;
+    v = 1.0lf - d;
+  } else {
+    u = d;
+    v = 1.0lf - s;
+  }
 }
 
 dvec3 normalised(dvec3 p) {
@@ -72,10 +81,23 @@ dvec3 sampleDirection(PayloadJob job, int i, int j) {
     uint edge;
     precise double s;
     precise double d;
-    if (v < 0.0lf) { edge = 0u; s = u; d = -v; }
-    else if (u > 1.0lf) { edge = 1u; s = v; d = u - 1.0lf; }
-    else if (v > 1.0lf) { edge = 2u; s = 1.0lf - u; d = v - 1.0lf; }
-    else { edge = 3u; s = 1.0lf - v; d = -u; }
+    if (v < 0.0lf) {
+      edge = 0u;
+      s = u;
+      d = -v;
+    } else if (u > 1.0lf) {
+      edge = 1u;
+      s = v;
+      d = u - 1.0lf;
+    } else if (v > 1.0lf) {
+      edge = 2u;
+      s = 1.0lf - u;
+      d = v - 1.0lf;
+    } else {
+      edge = 3u;
+      s = 1.0lf - v;
+      d = -u;
+    }
     uint packed = job.neighbour[edge];
     double nu, nv;
     edgeToUv(packed >> 8, 1.0lf - s, d, nu, nv);
@@ -152,10 +174,14 @@ void main() {
   for (uint stride = GLOBE_PAYLOAD_WORKGROUP / 2u; stride > 0u; stride >>= 1) {
     barrier();
     if (gl_LocalInvocationID.x < stride) {
-      sharedMin[gl_LocalInvocationID.x] = min(sharedMin[gl_LocalInvocationID.x], sharedMin[gl_LocalInvocationID.x + stride]);
-      sharedMax[gl_LocalInvocationID.x] = max(sharedMax[gl_LocalInvocationID.x], sharedMax[gl_LocalInvocationID.x + stride]);
-      sharedError[gl_LocalInvocationID.x] = max(sharedError[gl_LocalInvocationID.x], sharedError[gl_LocalInvocationID.x + stride]);
+      sharedMin[gl_LocalInvocationID.x] =
+          min(sharedMin[gl_LocalInvocationID.x], sharedMin[gl_LocalInvocationID.x + stride]);
+      sharedMax[gl_LocalInvocationID.x] =
+          max(sharedMax[gl_LocalInvocationID.x], sharedMax[gl_LocalInvocationID.x + stride]);
+      sharedError[gl_LocalInvocationID.x] =
+          max(sharedError[gl_LocalInvocationID.x], sharedError[gl_LocalInvocationID.x + stride]);
     }
   }
-  if (gl_LocalInvocationID.x == 0u) results[jobIndex] = PayloadResult(sharedMin[0], sharedMax[0], sharedError[0], 0.0lf);
+  if (gl_LocalInvocationID.x == 0u)
+    results[jobIndex] = PayloadResult(sharedMin[0], sharedMax[0], sharedError[0], 0.0lf);
 }

@@ -81,9 +81,11 @@ std::vector<glm::dvec3> specialDirections() {
 
 // The restriction and tiling tests run with distance ranges (0) and tolerance-driven ranges (px).
 class SelectionLod : public ::testing::TestWithParam<double> {};
-INSTANTIATE_TEST_SUITE_P(Ranges, SelectionLod, ::testing::Values(0.0, 1.0, 8.0), [](const ::testing::TestParamInfo<double>& p) {
-  return p.param == 0.0 ? std::string("Distance") : "Tolerance" + std::to_string(int(p.param)) + "px";
-});
+INSTANTIATE_TEST_SUITE_P(Ranges, SelectionLod, ::testing::Values(0.0, 1.0, 8.0),
+                         [](const ::testing::TestParamInfo<double>& p) {
+                           return p.param == 0.0 ? std::string("Distance")
+                                                 : "Tolerance" + std::to_string(int(p.param)) + "px";
+                         });
 
 TEST_P(SelectionLod, RestrictedQuadtreeOverRandomCameras) {
   LodSelector selector = makeSelector(20, true, GetParam());

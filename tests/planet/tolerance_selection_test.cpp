@@ -45,8 +45,8 @@ Selection selectSettled(LodSelector& selector, const SelectionCamera& camera, No
 std::vector<glm::dvec3> cameraPositions() {
   std::vector<glm::dvec3> eyes;
   for (double altitude : {1.0, 300.0, 2e4, 1e6}) {
-    eyes.push_back(testing::fromLatLon(30, -40) * (kEarthRadius_m + altitude));   // rough terrain
-    eyes.push_back(testing::fromLatLon(-20, 100) * (kEarthRadius_m + altitude));  // flat terrain
+    eyes.push_back(testing::fromLatLon(30, -40) * (kEarthRadius_m + altitude));                      // rough terrain
+    eyes.push_back(testing::fromLatLon(-20, 100) * (kEarthRadius_m + altitude));                     // flat terrain
     eyes.push_back(RhombusFaceMapping::get().unitPoint(3, 0.5, 0.0) * (kEarthRadius_m + altitude));  // a seam
   }
   return eyes;
@@ -59,7 +59,8 @@ TEST(ToleranceSelection, LowerToleranceNeverSelectsFewerTriangles) {
     for (double tolerance : {64.0, 16.0, 4.0, 2.0, 1.0, 0.5, 0.25}) {
       LodSelector selector = toleranceSelector(tolerance);
       const double units = triangleUnits(selectSettled(selector, {eye, nullptr}, residency));
-      EXPECT_GE(units, previous) << "tolerance " << tolerance << " px at altitude " << glm::length(eye) - kEarthRadius_m;
+      EXPECT_GE(units, previous) << "tolerance " << tolerance << " px at altitude "
+                                 << glm::length(eye) - kEarthRadius_m;
       previous = units;
     }
   }
@@ -92,7 +93,7 @@ TEST(ToleranceSelection, RangesFollowTheObservedErrors) {
   auto r = LodRanges::create(config, kEarthRadius_m);
   ASSERT_TRUE(r.ok());
   EXPECT_FALSE(r->setPixelsPerRadian(1000.0));  // no error observed yet: no range changes
-  EXPECT_EQ(r->estimatedError(5), 0.0);  // nothing observed: no refinement but the growth floor
+  EXPECT_EQ(r->estimatedError(5), 0.0);         // nothing observed: no refinement but the growth floor
   EXPECT_TRUE(r->observeError(0, 8000.0));
   EXPECT_DOUBLE_EQ(r->estimatedError(0), 4000.0);  // depth 1 unseen: extrapolated by 1/2 a level
   EXPECT_DOUBLE_EQ(r->estimatedError(3), 500.0);

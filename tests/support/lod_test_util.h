@@ -95,7 +95,7 @@ struct SyntheticTerrain {
   double errorOf(const NodeId& id) const {
     const RadiusRange r = rangeOf(id);
     const glm::dvec3 c = RhombusFaceMapping::get().unitPoint(id.face, (id.x + 0.5) / double(1u << id.level),
-                                                              (id.y + 0.5) / double(1u << id.level));
+                                                             (id.y + 0.5) / double(1u << id.level));
     const double roughness = c.z > 0.0 && c.y < 0.0 ? 0.25 : 0.01;
     return roughness * (r.max_m - r.min_m);
   }
