@@ -41,8 +41,7 @@ struct BenchOptions {
   std::string size = "1280x720";
   std::string keyFrames = "0,7,12,18";
   double rate_hz = 60.0;
-  uint32_t gridCells = 0;  // 0 = the quality preset's
-  std::string quality;     // empty = the planet's default_quality
+  QualityOptions quality;  // --quality, --grid, --tolerance
   std::string baseline;    // an earlier run's output directory (its summary.json), or empty
   BudgetOptions budget;
   std::string commandLine;
@@ -112,7 +111,7 @@ Result<BenchInputs> checkBenchInputs(const BenchOptions& o) {
   if (frames > kMaxBenchFrames)
     return Error::inField("--rate", fmt::format("{:g} s of path at {:g} Hz is {} frames, more than the limit of {}",
                                                 path->duration_s(), o.rate_hz, frames, kMaxBenchFrames));
-  auto settings = terrainSettingsFromOptions(o.quality, o.gridCells, *planet);
+  auto settings = terrainSettingsFromOptions(o.quality, *planet, size->height);
   if (!settings) return settings.error();
   if (auto s = applyBudgetOptions(o.budget, *settings); !s) return s.error();
   if (auto s = checkOutputDirectory(o.out, "--out"); !s) return s.error();
@@ -268,7 +267,7 @@ void addBenchCommand(CLI::App& app, Runner& run, const std::string& commandLine)
   cmd->add_option("--keyframes", opts->keyFrames, "Path times (s) whose frames are saved as PNG")
       ->capture_default_str();
   cmd->add_option("--rate", opts->rate_hz, "Frames per second of path time (fixed step)")->capture_default_str();
-  addQualityOptions(*cmd, opts->quality, &opts->gridCells);
+  addQualityOptions(*cmd, opts->quality);
   addBudgetOptions(*cmd, opts->budget);
   cmd->add_option("--baseline", opts->baseline,
                   "An earlier run's output directory: its summary.json's numbers go beside this run's, with ratios");

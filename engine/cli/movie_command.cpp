@@ -30,7 +30,7 @@ struct MovieOptions {
   std::string size = "640x360";
   std::string format = "png";
   int fps = 30;
-  std::string quality;  // empty = the planet's default_quality
+  QualityOptions quality;  // --quality, --tolerance
   BudgetOptions budget;
 };
 
@@ -64,12 +64,13 @@ Result<MovieSettings> movieSettings(const MovieOptions& o, const PlanetDescripti
     if (auto st = checkOutputDirectory(o.out, "--out"); !st) return st.error();
   }
   s.out = o.out;
-  auto quality = chooseQualityPreset(o.quality, planet);
-  if (!quality) return quality.error();
-  s.terrain = terrainSettingsFor(*quality);
+  auto terrain = terrainSettingsFromOptions(o.quality, planet, s.height);
+  if (!terrain) return terrain.error();
+  s.terrain = *terrain;
   if (auto st = applyBudgetOptions(o.budget, s.terrain); !st) return st.error();
-  s.description = fmt::format("path={} planet={} size={}x{} fps={} format={} quality={}", o.path, o.planet, s.width,
-                              s.height, s.fps, o.format, o.quality.empty() ? "default" : o.quality);
+  s.description = fmt::format("path={} planet={} size={}x{} fps={} format={} quality={}{}", o.path, o.planet, s.width,
+                              s.height, s.fps, o.format, o.quality.quality.empty() ? "default" : o.quality.quality,
+                              o.quality.tolerance_px > 0 ? fmt::format(" tolerance={}", o.quality.tolerance_px) : "");
   return s;
 }
 
@@ -122,7 +123,7 @@ void addMovieCommand(CLI::App& app, Runner& run) {
   cmd->add_option("--planet", o->planet, "Planet file (TOML)")->capture_default_str();
   cmd->add_option("--fps", o->fps, "Frames per second: 24, 25, 30, 50 or 60")->capture_default_str();
   cmd->add_option("--size", o->size, "Frame size WxH in pixels (even for MP4)")->capture_default_str();
-  addQualityOptions(*cmd, o->quality);
+  addQualityOptions(*cmd, o->quality, /*withGrid=*/false);
   addBudgetOptions(*cmd, o->budget);
   cmd->add_option("--out", o->out,
                   "A directory (frame_000000.png ..., resumable) or a .mp4 file (H.264 through FFmpeg's libraries)")

@@ -91,23 +91,35 @@ int validationExitCode(vk::Device& device) {
   return kExitFailure;
 }
 
-void addQualityOptions(CLI::App& cmd, std::string& quality, uint32_t* gridCells) {
-  if (gridCells != nullptr) {
-    cmd.add_option("--grid", *gridCells,
+void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid) {
+  if (withGrid) {
+    cmd.add_option("--grid", options.gridCells,
                    "Grid cells per node side (power of two, 16..256; default: the quality preset's)")
         ->check(CLI::Range(16U, 256U));
   }
-  cmd.add_option("--quality", quality,
+  cmd.add_option("--quality", options.quality,
                  "fast, balanced or exact (docs/tradeoffs.md; default: the planet's default_quality)")
       ->check(nonEmptyValue());
+  cmd.add_option("--tolerance", options.tolerance_px,
+                 "Screen error in pixels the LOD keeps within (0.05..1000; docs/lod.md; default: the preset's LOD)")
+      ->check(CLI::Validator(
+          [](const std::string& text) -> std::string {
+            double px = 0;
+            if (!CLI::detail::lexical_cast(text, px) || !(px >= kMinTolerancePx && px <= kMaxTolerancePx))
+              return "must be a number of pixels in [0.05, 1000], got '" + text + "'";
+            return {};
+          },
+          "PX"));
 }
 
-Result<TerrainSettings> terrainSettingsFromOptions(const std::string& quality, uint32_t gridCells,
-                                                   const PlanetDescription& planet) {
-  auto preset = chooseQualityPreset(quality, planet);
+Result<TerrainSettings> terrainSettingsFromOptions(const QualityOptions& options, const PlanetDescription& planet,
+                                                   double viewHeight_px) {
+  auto preset = chooseQualityPreset(options.quality, planet);
   if (!preset) return preset.error();
   TerrainSettings settings = terrainSettingsFor(*preset);
-  if (gridCells) settings.gridCells = gridCells;
+  if (options.gridCells) settings.gridCells = options.gridCells;
+  if (options.tolerance_px > 0) settings.ranges.tolerance_px = options.tolerance_px;
+  settings.viewHeight_px = viewHeight_px;
   if (auto s = validateTerrainSettings(settings); !s) {
     Error e = s.error();
     if (e.field == "grid_cells") e.field = "--grid";

@@ -23,6 +23,10 @@ inline constexpr std::uint64_t kMaxImageSidePx = 16384;
 inline constexpr std::uint64_t kRenderBytesPerPixel = 64;
 inline constexpr std::uint64_t kMaxImageMemoryMiB = 4096;
 
+// --tolerance: below 0.05 px the ranges reach the max depth everywhere; above 1000 px nothing refines.
+inline constexpr double kMinTolerancePx = 0.05;
+inline constexpr double kMaxTolerancePx = 1000.0;
+
 // "WxH" with 16 <= W, H <= 16384 and W * H * kRenderBytesPerPixel within kMaxImageMemoryMiB.
 Result<ImageSize> parseSize(const std::string& text, const std::string& field);
 
@@ -39,10 +43,15 @@ struct DeviceFlags {
 };
 void addDeviceFlags(CLI::App& cmd, DeviceFlags& flags);
 
-// --quality (into `quality`; empty: the planet's default_quality) and, when `gridCells` is given,
-// --grid (0: the preset's grid), with the same help and checks on every rendering command; read
-// them back with terrainSettingsFromOptions.
-void addQualityOptions(CLI::App& cmd, std::string& quality, uint32_t* gridCells = nullptr);
+// The quality options of every rendering command.
+struct QualityOptions {
+  std::string quality;      // --quality; empty: the planet's default_quality
+  uint32_t gridCells = 0;   // --grid; 0: the preset's grid
+  double tolerance_px = 0;  // --tolerance; 0: the preset's LOD (distance or tolerance ranges)
+};
+// --quality, --tolerance and, when withGrid, --grid, with the same help and checks on every
+// rendering command; read them back with terrainSettingsFromOptions.
+void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid = true);
 vk::DeviceOptions deviceOptions(const DeviceFlags& flags);
 
 // With validation on, any message makes the command fail after it has reported them.
@@ -67,10 +76,10 @@ Status applyBudgetOptions(const BudgetOptions& budget, TerrainSettings& settings
 // roots) named by its option.
 Error budgetOptionError(Error error);
 
-// The settings of --quality (empty: the planet's default_quality) with --grid (0: the preset's grid)
-// applied; errors name the options.
-Result<TerrainSettings> terrainSettingsFromOptions(const std::string& quality, uint32_t gridCells,
-                                                   const PlanetDescription& planet);
+// The settings of --quality (empty: the planet's default_quality) with --grid and --tolerance
+// applied; `viewHeight_px` is the drawn image's height (the tolerance's pixels). Errors name the options.
+Result<TerrainSettings> terrainSettingsFromOptions(const QualityOptions& options, const PlanetDescription& planet,
+                                                   double viewHeight_px);
 
 // Prints the error and returns kExitUsage.
 int usageError(const Error& error);

@@ -146,7 +146,7 @@ std::string summaryJson(const PhysicsSimulation& sim, const GpuCollisionMeshSour
 // A frame looking down at the first body from 25 m, with the bodies drawn in.
 Result<ImageRgba> renderBodies(vk::Device& device, const ElevationModel& model, const PhysicsInputs& in,
                                const PhysicsWorld& world, uint32_t cells) {
-  auto settings = terrainSettingsFromOptions("", cells, in.planet);
+  auto settings = terrainSettingsFromOptions({"", cells, 0}, in.planet, 720);
   if (!settings) return settings.error();
   const glm::dvec2 latLon = latLonFromPosition(world.state(0).position_m);
   const GeodeticPose pose{latLon.x - 0.0002, latLon.y, 25.0, 0.0, -50.0, 0.0};

@@ -48,8 +48,7 @@ struct RenderOptions {
   std::string size = "1280x720";
   std::string out = "out/render.png";
   std::string mode = "terrain";
-  uint32_t gridCells = 0;  // 0 = the quality preset's
-  std::string quality;     // empty = the planet's default_quality
+  QualityOptions quality;  // --quality, --grid, --tolerance
   BudgetOptions budget;
 };
 
@@ -75,7 +74,7 @@ int runRender(const RenderOptions& o) {
   if (auto s = checkImageExtension(o.out, "--out"); !s) return usageError(s.error());
   auto planet = loadPlanetFile(o.planet);
   if (!planet) return usageError(planet.error());
-  auto settings = terrainSettingsFromOptions(o.quality, o.gridCells, *planet);
+  auto settings = terrainSettingsFromOptions(o.quality, *planet, size->height);
   if (!settings) return usageError(settings.error());
   if (auto s = applyBudgetOptions(o.budget, *settings); !s) return usageError(s.error());
 
@@ -127,7 +126,7 @@ void addRenderCommand(CLI::App& app, Runner& run) {
   cmd->add_option("--mode", opts->mode, "terrain (the planet) or sphere (its reference sphere, analytic)")
       ->check(CLI::IsMember({"terrain", "sphere"}))
       ->capture_default_str();
-  addQualityOptions(*cmd, opts->quality, &opts->gridCells);
+  addQualityOptions(*cmd, opts->quality);
   addBudgetOptions(*cmd, opts->budget);
   addDeviceFlags(*cmd, opts->device);
   cmd->callback([opts, &run] { run = [opts] { return runRender(*opts); }; });

@@ -30,14 +30,16 @@ struct TradeOptions {
   DeviceFlags device;
   std::string planet;
   std::string out = "out/trade";
-  std::string quality;   // baseline; empty = the planet's default_quality
-  std::string size;      // empty = 1280x720, --quick 320x180
-  std::string path;      // path sampled for extra cameras (full sweep only)
-  std::string cameras;   // comma-separated camera names to keep; empty = all
-  uint32_t frames = 0;   // 0 = 11, --quick 3
-  uint32_t stride = 0;   // 0 = 4
-  uint32_t configs = 0;  // 0 = all
+  QualityOptions quality;    // baseline: --quality (empty: the planet's default_quality), --tolerance
+  std::string lod = "both";  // which LOD rules to sweep: distance, tolerance or both
+  std::string size;          // empty = 1280x720, --quick 320x180
+  std::string path;          // path sampled for extra cameras (full sweep only)
+  std::string cameras;       // comma-separated camera names to keep; empty = all
+  uint32_t frames = 0;       // 0 = 11, --quick 3
+  uint32_t stride = 0;       // 0 = 4
+  uint32_t configs = 0;      // 0 = all
   bool quick = false;
+  bool lodSweep = false;  // only distance multipliers vs tolerances around the baseline
 };
 
 struct TradeConfig {
@@ -51,9 +53,14 @@ struct TradeCamera {
 };
 
 std::string knobName(const TerrainSettings& s) {
-  char text[96];
-  std::snprintf(text, sizeof(text), "g%u x%g d%d f%g%s%s", s.gridCells, s.ranges.distanceMultiplier, s.ranges.maxDepth,
-                s.ranges.morphFraction, s.generation == GenerationPrecision::kFloat ? " float" : "",
+  char lod[32];  // tolerance ranges ignore the multiplier: name the tolerance instead
+  if (s.ranges.tolerance_px > 0)
+    std::snprintf(lod, sizeof(lod), "t%gpx", s.ranges.tolerance_px);
+  else
+    std::snprintf(lod, sizeof(lod), "x%g", s.ranges.distanceMultiplier);
+  char text[128];
+  std::snprintf(text, sizeof(text), "g%u %s d%d f%g%s%s", s.gridCells, lod, s.ranges.maxDepth, s.ranges.morphFraction,
+                s.generation == GenerationPrecision::kFloat ? " float" : "",
                 s.vertexPositions == VertexPositions::kReprojected ? " reprojected" : "");
   return text;
 }
@@ -61,11 +68,13 @@ std::string knobName(const TerrainSettings& s) {
 bool sameKnobs(const TerrainSettings& a, const TerrainSettings& b) {
   return a.gridCells == b.gridCells && a.ranges.distanceMultiplier == b.ranges.distanceMultiplier &&
          a.ranges.maxDepth == b.ranges.maxDepth && a.ranges.morphFraction == b.ranges.morphFraction &&
-         a.generation == b.generation && a.vertexPositions == b.vertexPositions;
+         a.generation == b.generation && a.vertexPositions == b.vertexPositions &&
+         a.ranges.tolerance_px == b.ranges.tolerance_px;
 }
 
 // One knob at a time around the baseline, then the presets and a few combinations.
-std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::string& baseName, bool quick) {
+std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::string& baseName, bool quick,
+                                      bool lodSweep) {
   std::vector<TradeConfig> list;
   auto add = [&](const std::string& label, TerrainSettings s) {
     for (const TradeConfig& c : list)
@@ -81,7 +90,15 @@ std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::st
     }
   };
   auto grid = [](TerrainSettings& s, double v) { s.gridCells = uint32_t(v); };
-  auto mult = [](TerrainSettings& s, double v) { s.ranges.distanceMultiplier = v; };
+  auto mult = [](TerrainSettings& s, double v) {
+    s.ranges.distanceMultiplier = v;
+    s.ranges.tolerance_px = 0;  // a multiplier is a distance-range knob
+  };
+  // Tolerance-driven ranges (docs/lod.md) instead of distance ranges: the multiplier is unused.
+  auto tolerance = [](TerrainSettings& s, double v) {
+    s.ranges.tolerance_px = v;
+    s.ranges.distanceMultiplier = 1;
+  };
   auto depth = [](TerrainSettings& s, double v) { s.ranges.maxDepth = int(v); };
   auto morph = [](TerrainSettings& s, double v) { s.ranges.morphFraction = v; };
   // Generation in float instead of double (what double buys; never a preset).
@@ -92,11 +109,17 @@ std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::st
   auto reproject = [](TerrainSettings& s, double v) {
     s.vertexPositions = v != 0.0 ? VertexPositions::kReprojected : VertexPositions::kStored;
   };
+  if (lodSweep) {  // distance ranges vs tolerance-driven ranges at the baseline's grid and depth
+    vary(mult, {0.25, 0.5, 0.75, 1, 1.5, 2, 4});
+    vary(tolerance, {0.5, 1, 2, 3, 4, 6, 8, 16});
+    return list;
+  }
   if (quick) {  // the cheap knobs only: a minute or two on lavapipe
     vary(grid, {16, 32, 64});
     vary(mult, {0.5, 1, 2});
     vary(precision, {1});
     vary(reproject, {1});
+    vary(tolerance, {2});
     return list;
   }
   // The presets and the knobs that do not change the triangle count much first: --configs N keeps
@@ -123,6 +146,15 @@ std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::st
     depth(s, 24);
     add("", s);
   }
+  // The tolerance sweep against the multiplier sweep above (docs/tradeoffs.md, "Tolerance vs distance").
+  vary(tolerance, {0.5, 1, 2, 4, 8, 16});
+  for (double t : {1.0, 2.0, 4.0}) {
+    TerrainSettings s = base;
+    grid(s, 32);
+    tolerance(s, t);
+    depth(s, 24);
+    add("", s);
+  }
   return list;
 }
 
@@ -137,6 +169,7 @@ std::string loadAverage() {
 struct TradeInputs {
   PlanetDescription planet;
   QualityPreset preset = QualityPreset::kBalanced;
+  TerrainSettings baseline;  // the preset with --tolerance applied
   ImageSize size;
   uint32_t frames = 0;
   uint32_t stride = 0;  // screen error sampled every `stride` px
@@ -149,12 +182,17 @@ Result<TradeInputs> checkTradeInputs(const TradeOptions& o) {
   auto planet = loadPlanetFile(o.planet);
   if (!planet) return planet.error();
   in.planet = std::move(*planet);
-  auto preset = chooseQualityPreset(o.quality, in.planet);
+  auto preset = chooseQualityPreset(o.quality.quality, in.planet);
   if (!preset) return preset.error();
   in.preset = *preset;
   auto size = parseSize(o.size.empty() ? (o.quick ? "320x180" : "1280x720") : o.size, "--size");
   if (!size) return size.error();
   in.size = *size;
+  auto baseline = terrainSettingsFromOptions(o.quality, in.planet, double(in.size.height));
+  if (!baseline) return baseline.error();
+  in.baseline = *baseline;
+  if (o.lod != "both" && o.lod != "distance" && o.lod != "tolerance")
+    return Error::inField("--lod", "must be distance, tolerance or both, got '" + o.lod + "'");
   in.frames = o.frames ? o.frames : (o.quick ? 3 : 11);
   in.stride = o.stride ? o.stride : 4;
   if (in.frames > 1000) return Error::inField("--frames", "must be within [1, 1000]");
@@ -232,6 +270,8 @@ TradeRow tradeRow(const TradeConfig& config, const TradeCamera& camera, const Te
   row.morphFraction = settings.ranges.morphFraction;
   row.generation = settings.generation == GenerationPrecision::kFloat ? "float" : "double";
   row.positions = settings.vertexPositions == VertexPositions::kReprojected ? "reprojected" : "stored";
+  row.lod = settings.ranges.tolerance_px > 0 ? "tolerance" : "distance";
+  row.tolerance_px = settings.ranges.tolerance_px;
   row.width = in.size.width;
   row.height = in.size.height;
   row.frameMedian_ms = nearestRankPercentile(frame_ms, 50);
@@ -258,6 +298,7 @@ Result<TradeRow> measure(TradeRig& rig, const TradeConfig& config, const TradeCa
   TerrainSettings settings = config.settings;
   settings.style.sunDirection = defaultSunDirection(camera.camera.position_m);
   settings.style.ramp = rig.in.planet.colour_ramp;
+  settings.viewHeight_px = double(rig.in.size.height);
   // A fresh terrain per camera: resident memory and generation cost belong to this view alone.
   auto terrain = Terrain::create(rig.device, rig.model, settings);
   if (!terrain) return terrain.error();
@@ -282,6 +323,7 @@ Result<TradeRow> measure(TradeRig& rig, const TradeConfig& config, const TradeCa
 Status warmUp(TradeRig& rig, const TradeConfig& config, const TradeCamera& camera) {
   TerrainSettings settings = config.settings;
   settings.style.ramp = rig.in.planet.colour_ramp;
+  settings.viewHeight_px = double(rig.in.size.height);
   auto terrain = Terrain::create(rig.device, rig.model, settings);
   if (!terrain) return terrain.error();
   rig.renderer.renderFrame(**terrain, camera.camera, true);
@@ -325,7 +367,11 @@ int runTrade(const TradeOptions& o) {
   if (!in) return usageError(in.error());
   ElevationModel model(in->planet);
   std::vector<TradeConfig> configs =
-      tradeConfigs(terrainSettingsFor(in->preset), std::string(qualityPresetName(in->preset)), o.quick);
+      tradeConfigs(in->baseline, std::string(qualityPresetName(in->preset)), o.quick, o.lodSweep);
+  if (o.lod != "both")  // keep one LOD rule's configurations
+    std::erase_if(configs,
+                  [&](const TradeConfig& c) { return (c.settings.ranges.tolerance_px > 0) != (o.lod == "tolerance"); });
+  if (configs.empty()) return usageError(Error::inField("--lod", "no configuration of this LOD rule to run"));
   if (o.configs) configs.resize(std::min<size_t>(configs.size(), o.configs));
   auto cameras = tradeCameras(o, *in, model);
   if (!cameras) return usageError(cameras.error());
@@ -376,9 +422,10 @@ void addTradeCommand(CLI::App& app, Runner& run) {
   cmd->add_option("--planet", opts->planet, "Planet file (TOML)")->capture_default_str();
   cmd->add_option("--out", opts->out, "Output directory (trade.csv, pareto.svg)")->capture_default_str();
   cmd->add_flag("--quick", opts->quick, "Few configurations, two cameras, 320x180: about a minute");
-  cmd->add_option("--quality", opts->quality,
-                  "Baseline preset: fast, balanced or exact (default: the planet's default_quality)")
-      ->check(nonEmptyValue());
+  addQualityOptions(*cmd, opts->quality, /*withGrid=*/false);  // the baseline configuration
+  cmd->add_flag("--lod-sweep", opts->lodSweep,
+                "Only the LOD comparison: the baseline with distance multipliers 0.25-4 and tolerances 0.5-16 px");
+  cmd->add_option("--lod", opts->lod, "LOD rules to sweep: distance, tolerance or both")->capture_default_str();
   cmd->add_option("--size", opts->size, "Image size WxH (default 1280x720, --quick 320x180)");
   cmd->add_option("--frames", opts->frames,
                   "Timed converged frames per configuration and camera (default 11, --quick 3)");

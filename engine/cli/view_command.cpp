@@ -30,8 +30,7 @@ struct ViewCommandOptions {
   std::string screenshotFormat = "png";
   std::string planet;
   std::string mode = "terrain";
-  uint32_t gridCells = 0;  // 0 = the quality preset's
-  std::string quality;     // empty = the planet's default_quality
+  QualityOptions quality;  // --quality, --grid, --tolerance
   BudgetOptions budget;
   std::string recordDir = ".";
   std::string record;
@@ -93,7 +92,7 @@ Status checkViewerOptions(const ViewCommandOptions& o, ViewerOptions& viewer) {
 // then keeps the planet on screen) and the terrain settings. Every planet error at once, like
 // `globe planet check`: all but the last are printed here, the last is returned.
 Status checkSceneOptions(const ViewCommandOptions& o, const GeodeticPose& pose, const std::optional<CameraPath>& path,
-                         ViewerSceneOptions& scene) {
+                         const ImageSize& size, ViewerSceneOptions& scene) {
   PlanetFileCheck planet = checkPlanetFile(o.planet);
   if (!planet.ok()) {
     const std::vector<std::string> lines = formatErrorList(planet.errors);
@@ -104,7 +103,7 @@ Status checkSceneOptions(const ViewCommandOptions& o, const GeodeticPose& pose, 
   scene.planetPath = o.planet;
   scene.planet = std::move(planet.planet);
   scene.watch = !o.noReload;
-  auto terrain = terrainSettingsFromOptions(o.quality, o.gridCells, scene.planet);
+  auto terrain = terrainSettingsFromOptions(o.quality, scene.planet, size.height);
   if (!terrain) return terrain.error();
   if (auto s = applyBudgetOptions(o.budget, *terrain); !s) return s.error();
   scene.terrain = *terrain;
@@ -160,7 +159,7 @@ int runView(const ViewCommandOptions& o) {
   ViewerOptions viewer;
   viewer.pose = *pose;
   if (auto s = checkViewerOptions(o, viewer); !s) return usageError(s.error());
-  if (auto s = checkSceneOptions(o, *pose, viewer.path, viewer.scene); !s) return usageError(s.error());
+  if (auto s = checkSceneOptions(o, *pose, viewer.path, *size, viewer.scene); !s) return usageError(s.error());
   return runViewer(o, *size, std::move(viewer));
 }
 
@@ -193,7 +192,7 @@ void addViewCommand(CLI::App& app, Runner& run) {
   cmd->add_option("--mode", opts->mode, "terrain (the planet) or sphere (its reference sphere, analytic)")
       ->check(CLI::IsMember({"terrain", "sphere"}))
       ->capture_default_str();
-  addQualityOptions(*cmd, opts->quality, &opts->gridCells);
+  addQualityOptions(*cmd, opts->quality);
   addBudgetOptions(*cmd, opts->budget);
   cmd->add_option("--record-dir", opts->recordDir,
                   "Directory where R (start/stop recording) writes globe-path-YYYYmmdd-HHMMSS.path")

@@ -221,15 +221,17 @@ void GpuPayloadGenerator::finish(Batch& batch, std::vector<GenerationResult>& fi
     RadiusRange payload{results[k].minRadius_m, results[k].maxRadius_m};
     // A payload whose radii are not finite (a broken device or driver) is not drawn: bounds from it
     // would break culling and the LOD ranges.
-    if (!(std::isfinite(payload.min_m) && std::isfinite(payload.max_m) && payload.min_m <= payload.max_m)) {
+    const double error_m = results[k].geometricError_m;
+    if (!(std::isfinite(payload.min_m) && std::isfinite(payload.max_m) && payload.min_m <= payload.max_m &&
+          std::isfinite(error_m) && error_m >= 0.0)) {
       finished.push_back({job.node, job.slot, {}, true});
-      lastFailure_ = "payload radius range not finite";
+      lastFailure_ = "payload radius range or geometric error not finite";
       continue;
     }
     RadiusRange padded = paddedRadiusRange(model_.params(), payload, job.node.level, cells_);
     padded.min_m = std::max(0.0, padded.min_m - batch.sourcePad_m[k]);
     padded.max_m += batch.sourcePad_m[k];
-    finished.push_back({job.node, job.slot, padded});
+    finished.push_back({job.node, job.slot, padded, false, error_m});
   }
   uint64_t stamps[2] = {0, 0};
   VkResult r = vkGetQueryPoolResults(device_.device(), queries_, 2 * batch.index, 2, sizeof(stamps), stamps,

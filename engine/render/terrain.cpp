@@ -26,6 +26,10 @@ Status validateTerrainSettings(const TerrainSettings& s) {
     return Error::inField("grid_cells", "must be a power of two in [16, 256], got " + std::to_string(s.gridCells));
   if (!std::isfinite(s.originThreshold_m) || s.originThreshold_m < 0)
     return Error::inField("origin_threshold_m", "must be a finite number >= 0");
+  if (!(std::isfinite(s.viewHeight_px) && s.viewHeight_px >= 1.0))
+    return Error::inField("view_height_px", "must be a finite number >= 1");
+  if (!(std::isfinite(s.ranges.tolerance_px) && s.ranges.tolerance_px >= 0.0))
+    return Error::inField("tolerance", "must be a finite number of pixels > 0 (0: distance ranges)");
   if (auto v = validateStreamingConfig(s.streaming); !v) return v;
   return validateFrameBudget(s.streaming.budget, TerrainRenderer::maxTrianglesPerNode(s.gridCells));
 }
@@ -116,6 +120,7 @@ void Terrain::updateAt(uint64_t poolFrame, const Camera& camera, uint64_t poolCo
   auto start = std::chrono::steady_clock::now();
   auto frustum = Frustum::fromViewProjection(camera.projection() * camera.viewFromWorld(glm::dvec3(0.0)));
   SelectionCamera sc{camera.position_m, frustum ? &*frustum : nullptr};
+  selector_.ranges().setPixelsPerRadian(pixelsPerRadian(settings_.viewHeight_px, camera.verticalFov_rad));
   Status selected = budgeted_.select(selector_, sc, *pool_, selection_);
   stats_.select_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (!selected) selection_.nodes.clear();  // a non-finite camera draws nothing (the caller validated it)

@@ -20,8 +20,11 @@
 namespace globe {
 
 struct TerrainSettings {
-  uint32_t gridCells = 32;       // cells per node side: power of two in [16, 256]
-  LodRangeConfig ranges;         // view ranges, max depth, morph region
+  uint32_t gridCells = 32;  // cells per node side: power of two in [16, 256]
+  LodRangeConfig ranges;    // view ranges, max depth, morph region
+  // Height (pixels) of the image the view is drawn in: tolerance-driven ranges (ranges.tolerance_px)
+  // keep the screen error within the tolerance in pixels of this height. The commands set it.
+  double viewHeight_px = 720.0;
   StreamingConfig streaming;     // budgets: memory (RAM, VRAM), generation, per-frame nodes/triangles/requests
   double originThreshold_m = 0;  // floating origin re-base distance (0 = camera-relative)
   TerrainStyle style;            // shading (the planet's colour ramp); its radius is set from the planet

@@ -73,7 +73,8 @@ double finite(double v) { return std::isfinite(v) ? v : 0.0; }
 
 std::string tradeCsv(const std::vector<TradeRow>& rows) {
   std::string s =
-      "config,camera,grid_cells,distance_multiplier,max_depth,morph_fraction,generation,positions,width,height,"
+      "config,camera,grid_cells,distance_multiplier,max_depth,morph_fraction,generation,positions,lod,tolerance_px,"
+      "width,height,"
       "converged,frame_median_ms,"
       "frame_p95_ms,select_ms,triangles,nodes,resident_mib,gen_ms_per_node,err_p50_px,err_p95_px,err_max_px,"
       "err_p50_m,err_p95_m,err_max_m,silhouette_mismatches,silhouette_max_px,samples,samples_both_hit,"
@@ -83,14 +84,15 @@ std::string tradeCsv(const std::vector<TradeRow>& rows) {
     s += csvField(r.config) + "," + csvField(r.camera) + "," + std::to_string(r.gridCells) + "," +
          formatFixed(r.distanceMultiplier, 3) + "," + std::to_string(r.maxDepth) + "," +
          formatFixed(r.morphFraction, 3) + "," + csvField(r.generation) + "," + csvField(r.positions) + "," +
-         std::to_string(r.width) + "," + std::to_string(r.height) + "," + (r.converged ? "1" : "0") + "," +
-         formatFixed(r.frameMedian_ms, 3) + "," + formatFixed(r.frameP95_ms, 3) + "," + formatFixed(r.select_ms, 4) +
-         "," + std::to_string(r.triangles) + "," + std::to_string(r.nodes) + "," + formatFixed(r.resident_mib, 3) +
-         "," + formatFixed(finite(r.genPerNode_ms), 4) + "," + formatFixed(e.p50_px, 4) + "," +
-         formatFixed(e.p95_px, 4) + "," + formatFixed(finite(e.max_px), 4) + "," + formatFixed(e.p50_m, 4) + "," +
-         formatFixed(e.p95_m, 4) + "," + formatFixed(finite(e.max_m), 4) + "," +
-         std::to_string(e.silhouetteMismatches) + "," + formatFixed(e.silhouetteMax_px, 1) + "," +
-         std::to_string(e.samples) + "," + std::to_string(e.bothHit) + "," + std::to_string(e.unresolved) + "\n";
+         csvField(r.lod) + "," + formatFixed(r.tolerance_px, 3) + "," + std::to_string(r.width) + "," +
+         std::to_string(r.height) + "," + (r.converged ? "1" : "0") + "," + formatFixed(r.frameMedian_ms, 3) + "," +
+         formatFixed(r.frameP95_ms, 3) + "," + formatFixed(r.select_ms, 4) + "," + std::to_string(r.triangles) + "," +
+         std::to_string(r.nodes) + "," + formatFixed(r.resident_mib, 3) + "," +
+         formatFixed(finite(r.genPerNode_ms), 4) + "," + formatFixed(e.p50_px, 4) + "," + formatFixed(e.p95_px, 4) +
+         "," + formatFixed(finite(e.max_px), 4) + "," + formatFixed(e.p50_m, 4) + "," + formatFixed(e.p95_m, 4) + "," +
+         formatFixed(finite(e.max_m), 4) + "," + std::to_string(e.silhouetteMismatches) + "," +
+         formatFixed(e.silhouetteMax_px, 1) + "," + std::to_string(e.samples) + "," + std::to_string(e.bothHit) + "," +
+         std::to_string(e.unresolved) + "\n";
   }
   return s;
 }

@@ -20,6 +20,8 @@ struct TradeRow {
   double morphFraction = 0;
   std::string generation = "double";  // payload generation precision: "double" or "float"
   std::string positions = "stored";   // vertex positions: "stored" (payload) or "reprojected" (double, per frame)
+  std::string lod = "distance";       // LOD ranges: "distance" (nominal ranges) or "tolerance" (screen error)
+  double tolerance_px = 0;            // the tolerance of "tolerance" rows (pixels at this height), else 0
   bool converged = true;              // false: the pool could not hold the view (drawn coarser)
   uint32_t width = 0, height = 0;
   double frameMedian_ms = 0, frameP95_ms = 0;  // converged frames (render cost alone)

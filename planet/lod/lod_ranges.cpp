@@ -20,6 +20,10 @@ double morphFactor(const MorphRange& morph, double distance_m) {
   return std::clamp((distance_m - morph.start_m) / (morph.end_m - morph.start_m), 0.0, 1.0);
 }
 
+double pixelsPerRadian(double height_px, double verticalFov_rad) {
+  return height_px / (2.0 * std::tan(0.5 * verticalFov_rad));
+}
+
 double nominalNodeWidth(int depth, double radius_m) {
   return std::ldexp(Triacontahedron::get().edgeArc() * radius_m, -depth);
 }
@@ -38,8 +42,11 @@ Result<LodRanges> LodRanges::create(const LodRangeConfig& c, double radius_m) {
     return bad("distanceMultiplier", "must be finite and > 0");
   }
   if (!(c.morphFraction > 0.0 && c.morphFraction <= 1.0)) return bad("morphFraction", "must be in (0, 1]");
+  if (!(std::isfinite(c.tolerance_px) && c.tolerance_px >= 0.0)) return bad("tolerance", "must be finite and >= 0");
   LodRanges r;
   r.config_ = c;
+  r.maxError_.fill(-1.0);
+  r.pixelsPerRadian_ = pixelsPerRadian(720.0, 1.0471975511965976);  // until the view sets its own
   const double base =
       (c.baseRange_m > 0.0 ? c.baseRange_m : kAutoBaseRangeInNodeWidths * nominalNodeWidth(c.maxDepth, radius_m)) *
       c.distanceMultiplier;
@@ -52,12 +59,33 @@ Result<LodRanges> LodRanges::create(const LodRangeConfig& c, double radius_m) {
   return r;
 }
 
+double LodRanges::estimatedError(int depth) const {
+  // The deepest observed payload depth k <= depth + 1, its error scaled by 1 / ratio per level.
+  for (int k = std::min(depth + 1, kMaxNodeLevel); k >= 0; --k) {
+    const double e = maxError_[static_cast<size_t>(k)];
+    if (e >= 0.0) return e * std::pow(config_.rangeRatio, -(depth + 1 - k));
+  }
+  return 0.0;
+}
+
+bool LodRanges::observeError(int depth, double error_m) {
+  if (!toleranceDriven() || !(error_m > maxError_[static_cast<size_t>(depth)])) return false;
+  maxError_[static_cast<size_t>(depth)] = error_m;
+  return recompute();
+}
+
+bool LodRanges::setPixelsPerRadian(double lambda) {
+  if (!toleranceDriven() || !(std::isfinite(lambda) && lambda > 0.0) || lambda == pixelsPerRadian_) return false;
+  pixelsPerRadian_ = lambda;
+  return recompute();
+}
+
 bool LodRanges::recompute() {
   bool changed = false;
   double finer = 0.0;  // R(d+1), none below the last refinable depth
   for (int d = config_.maxDepth - 1; d >= 0; --d) {
     const size_t i = static_cast<size_t>(d);
-    double value = nominal_[i];
+    double value = toleranceDriven() ? pixelsPerRadian_ * estimatedError(d) / config_.tolerance_px : nominal_[i];
     if (d + 1 <= config_.maxDepth - 1) {
       value = std::max(value, (finer + maxDiagonal_[i + 1]) * (1.0 + kRestrictionSlack) + kRestrictionPad_m);
     }
@@ -87,6 +115,7 @@ bool LodRanges::recompute() {
 
 void LodRanges::resetObservedDiagonals() {
   maxDiagonal_.fill(0.0);
+  maxError_.fill(-1.0);
   recompute();
 }
 

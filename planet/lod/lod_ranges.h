@@ -8,6 +8,15 @@
 // neighbours differ by at most one level) even over tall terrain — a node at depth d+2 is only
 // selected within R(d+1) + D(d+1) of the camera, and a depth-d node only beyond R(d).
 //
+// Tolerance-driven ranges (tolerance_px > 0) replace the nominal ranges by the screen-space error
+// rule [Cozzi 2011, §12.1]: a node is refined while rho = lambda * E / d > tolerance,
+// lambda = pixels per radian of the view, d = distance to the node's bounds, E = the error of drawing
+// depth d instead of d+1. Per depth, E(d) is the largest geometric error observed in payloads of
+// depth d+1 (a depth-(d+1) payload's morph deviation is the error its parent's resolution makes
+// there), extrapolated by 1 / rangeRatio per level from the deepest observed level until depth d+1
+// has been seen. Nominal R(d) = lambda * E(d) / tolerance; the growth rule below still applies, so
+// the selection stays restricted and the morph bands stay per level (crack-free across seams).
+//
 // A node drawn at depth d (full) lives between R(d) and R(d-1) and morphs towards its parent's
 // resolution over the last `morphFraction` of that band: morphEnd = R(d-1), morphStart = morphEnd -
 // morphFraction * (R(d-1) - R(d)). Depth 0 never morphs (start = end = +infinity).
@@ -24,7 +33,14 @@ struct LodRangeConfig {
   double rangeRatio = 2.0;          // R(d) / R(d+1) before growth; >= 1
   double distanceMultiplier = 1.0;  // scales every range: > 1 = finer detail farther away
   double morphFraction = 0.5;       // (0, 1]: last part of each band that morphs (source: half)
+  // > 0: ranges from the payloads' geometric error so the screen error stays within this many pixels
+  // (distanceMultiplier and baseRange_m are then unused); 0: distance ranges.
+  double tolerance_px = 0.0;
 };
+
+// Pixels per radian of a view `height_px` tall with vertical field of view `verticalFov_rad`:
+// lambda = height / (2 tan(fov / 2)) (seed 000's w / (2 tan(fov / 2)) with the vertical pair).
+double pixelsPerRadian(double height_px, double verticalFov_rad);
 
 // Auto base range: this many max-depth node widths (nominal edge arc length). Chosen with the
 // selection benchmark (docs/lod.md): ~6 gives ~1000 selected nodes for a ground camera with a 90°
@@ -65,6 +81,16 @@ class LodRanges {
     return recompute();
   }
   double maxDiagonal(int depth) const { return maxDiagonal_[static_cast<size_t>(depth)]; }
+
+  bool toleranceDriven() const { return config_.tolerance_px > 0.0; }
+  // Tolerance mode: record a payload's geometric error (metres) at its depth; true when a range
+  // changed (re-select, as for observeDiagonal). Errors only grow, so ranges never shrink once
+  // their depth has been seen: no popping from the statistics.
+  bool observeError(int depth, double error_m);
+  // Tolerance mode: the view's pixels per radian (pixelsPerRadian()); true when a range changed.
+  bool setPixelsPerRadian(double lambda);
+  // E(d) the tolerance ranges use (metres; 0 before any payload is known).
+  double estimatedError(int depth) const;
   // Forget observed diagonals (e.g. after switching planets).
   void resetObservedDiagonals();
 
@@ -74,6 +100,8 @@ class LodRanges {
   std::array<double, kMaxNodeLevel + 1> nominal_{};
   std::array<double, kMaxNodeLevel + 1> range_{};
   std::array<double, kMaxNodeLevel + 1> maxDiagonal_{};
+  std::array<double, kMaxNodeLevel + 1> maxError_{};  // per payload depth; < 0: none observed
+  double pixelsPerRadian_ = 0.0;
   std::array<MorphRange, kMaxNodeLevel + 1> morph_{};  // per drawn depth, derived from range_
 };
 

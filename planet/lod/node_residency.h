@@ -46,6 +46,12 @@ class NodeResidency {
     (void)node;
     return std::nullopt;
   }
+  // The node's geometric error (metres) once its payload is known: the largest distance a vertex of
+  // its mesh moves when it morphs to its parent's mesh. Feeds tolerance-driven ranges (LodRanges).
+  virtual std::optional<double> knownGeometricError(const NodeId& node) const {
+    (void)node;
+    return std::nullopt;
+  }
 };
 
 }  // namespace globe

@@ -168,6 +168,10 @@ void LodSelector::visit(const NodeId& id, const NodeBounds& b, VisitState state,
   if (!survivesCulling(id, b, state, ctx)) return;
   const int depth = id.level;
   if (state.knownRange && ranges_.observeDiagonal(depth, b.diagonal())) ctx.grew = true;
+  if (state.knownRange && ranges_.toleranceDriven()) {
+    const std::optional<double> error = ctx.residency->knownGeometricError(id);
+    if (error && ranges_.observeError(depth, *error)) ctx.grew = true;
+  }
   if (state.partial) {
     addSelected(id, true, ctx);
     return;

@@ -109,6 +109,10 @@ std::optional<RadiusRange> BudgetedSelection::knownRadiusRange(const NodeId& nod
   return pool_->knownRadiusRange(node);
 }
 
+std::optional<double> BudgetedSelection::knownGeometricError(const NodeId& node) const {
+  return pool_->knownGeometricError(node);
+}
+
 void BudgetedSelection::request(const NodeId& node, RequestPriority priority, double distance_m) {
   // Look-ahead gets at most half the requests, so what the view waits for always has room.
   const size_t limit = priority == RequestPriority::kPrefetch ? budget_.maxRequests / 2 : budget_.maxRequests;

@@ -56,6 +56,7 @@ class BudgetedSelection final : public NodeResidency {
   bool isResidentForPrefetch(const NodeId& node) const override;
   void request(const NodeId& node, RequestPriority priority, double distance_m) override;
   std::optional<RadiusRange> knownRadiusRange(const NodeId& node) const override;
+  std::optional<double> knownGeometricError(const NodeId& node) const override;
 
  private:
   struct Request {

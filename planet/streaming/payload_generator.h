@@ -23,6 +23,7 @@ struct GenerationResult {
   // The job did not produce a payload (its submit failed, or its output was not finite): the slot
   // holds nothing usable; the pool forgets the node, so the view draws its parent and asks again.
   bool failed = false;
+  double geometricError_m = 0.0;  // largest vertex move when the mesh morphs to its parent's (metres)
 };
 
 class PayloadGenerator {

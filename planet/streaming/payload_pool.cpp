@@ -162,6 +162,12 @@ std::optional<RadiusRange> PayloadPool::knownRadiusRange(const NodeId& node) con
   return table_[size_t(i)].radius;
 }
 
+std::optional<double> PayloadPool::knownGeometricError(const NodeId& node) const {
+  int64_t i = find(node.key());
+  if (i < 0 || table_[size_t(i)].state != State::kResident) return std::nullopt;
+  return table_[size_t(i)].geometricError_m;
+}
+
 void PayloadPool::request(const NodeId& node, RequestPriority priority, double distance_m) {
   const bool prefetch = priority == RequestPriority::kPrefetch;
   int64_t i = find(node.key());
@@ -248,6 +254,7 @@ void PayloadPool::beginFrame(uint64_t frame, const glm::dvec3& camera_m, uint64_
     NodeRecord& r = table_[size_t(i)];
     r.state = State::kResident;
     r.radius = done.radius;
+    r.geometricError_m = done.geometricError_m;
     r.lastUsedFrame = 0;
     if (r.visibleRequested) {
       uint64_t frames = frame_ - r.firstRequestFrame;

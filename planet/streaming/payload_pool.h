@@ -68,6 +68,7 @@ class PayloadPool final : public NodeResidency {
   bool isResidentForPrefetch(const NodeId& node) const override;
   void request(const NodeId& node, RequestPriority priority, double distance_m) override;
   std::optional<RadiusRange> knownRadiusRange(const NodeId& node) const override;
+  std::optional<double> knownGeometricError(const NodeId& node) const override;
 
   // Starts frame `frame` (strictly increasing). `completedFrame`: every frame <= it has finished on
   // the GPU, so slots only those frames used may be rewritten.
@@ -124,6 +125,7 @@ class PayloadPool final : public NodeResidency {
     double distance_m = 0.0;
     glm::dvec3 centre_m{0.0};  // node centre on the reference sphere, metres
     RadiusRange radius;
+    double geometricError_m = 0.0;
   };
   static constexpr uint64_t kEmptyKey = ~uint64_t{0};
   static constexpr uint64_t kTombstone = ~uint64_t{0} - 1;

@@ -221,4 +221,20 @@ double drawnSurfaceRadius(const ElevationModel& model, const glm::dvec3& unitDir
   return best > 0.0 ? best : fallback;
 }
 
+double payloadGeometricError_m(std::span<const glm::vec4> slot, uint32_t cells) {
+  const int n = int(cells), s = n + 3;
+  auto at = [&](int i, int j) { return glm::dvec3(slot[size_t((j + 1) * s + (i + 1))]); };
+  double error = 0.0;
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= n; ++i) {
+      const bool oddI = (i & 1) != 0, oddJ = (j & 1) != 0;
+      if (!oddI && !oddJ) continue;
+      const int di = oddI ? 1 : 0, dj = oddJ ? 1 : 0;
+      const glm::dvec3 mid = (at(i - di, j - dj) + at(i + di, j + dj)) * 0.5;
+      error = std::max(error, glm::length(mid - at(i, j)));
+    }
+  }
+  return error;
+}
+
 }  // namespace globe

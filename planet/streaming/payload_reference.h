@@ -44,6 +44,11 @@ double unresolvedRelief_m(const gpu::ElevationParams& params, double sampleSpaci
 RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
                                  std::span<glm::vec4> slot);
 
+// The node's geometric error (metres) from a filled slot's positions, as the shader computes it in
+// double (PayloadResult::geometricError_m): the largest distance a vertex moves when the mesh morphs
+// to its parent's (the midpoint of its even row, column or diagonal neighbours).
+double payloadGeometricError_m(std::span<const glm::vec4> slot, uint32_t cells);
+
 // The radius range a pool should use for a node: the payload's range padded by unresolvedRelief_m.
 RadiusRange paddedRadiusRange(const gpu::ElevationParams& params, const RadiusRange& payload, int level,
                               uint32_t cells);

@@ -1,13 +1,13 @@
 // Body of the payload kernels (payload_generate.comp, payload_generate_float.comp, which set the
-// version, the extensions and the precision). Fills node payloads (shaders/include/payload_layout.h): one workgroup per node. Pass 1 evaluates
-// every sample (vertices and the extra ring) in double — face mapping, then elevation — and stores
-// positions relative to the node centre, quantised, as floats, plus the double positions in a
-// scratch buffer; pass 2 derives normals from those double positions by central differences; a
-// shared-memory reduction gives the node's min/max vertex radius. Mirrors
-// planet/streaming/payload_reference.cpp operation for operation (the double kernel).
-#include "payload_layout.h"
+// version, the extensions and the precision). Fills node payloads (shaders/include/payload_layout.h): one workgroup per
+// node. Pass 1 evaluates every sample (vertices and the extra ring) in double — face mapping, then elevation — and
+// stores positions relative to the node centre, quantised, as floats, plus the double positions in a scratch buffer;
+// pass 2 derives normals from those double positions by central differences; a shared-memory reduction gives the node's
+// min/max vertex radius and its geometric error (the largest distance a vertex moves when the node morphs to its
+// parent's mesh). Mirrors planet/streaming/payload_reference.cpp operation for operation (the double kernel).
 #include "elevation_params.h"
 #include "face_mapping.glsl"
+#include "payload_layout.h"
 
 layout(local_size_x = GLOBE_PAYLOAD_WORKGROUP) in;
 
@@ -22,7 +22,8 @@ layout(std430, binding = 5) writeonly buffer Results { PayloadResult results[]; 
 layout(push_constant) uniform Push {
   uint cells;     // grid cells per side (power of two)
   uint jobCount;  // jobs in this dispatch
-} push;
+}
+push;
 
 #define GLOBE_ELEVATION_PARAMS elevation
 #ifdef GLOBE_PAYLOAD_FLOAT
@@ -33,12 +34,33 @@ layout(push_constant) uniform Push {
 
 shared double sharedMin[GLOBE_PAYLOAD_WORKGROUP];
 shared double sharedMax[GLOBE_PAYLOAD_WORKGROUP];
+shared double sharedError[GLOBE_PAYLOAD_WORKGROUP];
+
+// How far the vertex at scratch index `at` moves when the node morphs to its parent's mesh: the
+// distance to the midpoint of the even neighbours the vertex shader slides it to (row, column, or
+// the parent cell's diagonal), i.e. half the second difference of seed 004's density term.
+double morphDeviation(uint at, int i, int j, int s) {
+  bool oddI = (i & 1) != 0, oddJ = (j & 1) != 0;
+  if (!oddI && !oddJ) return 0.0lf;
+  uint step = uint(oddI ? 1 : 0) + uint(oddJ ? s : 0);
+  precise dvec3 d = (scratch[at - step].xyz + scratch[at + step].xyz) * 0.5lf - scratch[at].xyz;
+  return sqrt((d.x * d.x + d.y * d.y) + d.z * d.z);
+}
 
 void edgeToUv(uint edge, double s, double d, out double u, out double v) {
-  if (edge == 0u) { u = s; v = d; }
-  else if (edge == 1u) { u = 1.0lf - d; v = s; }
-  else if (edge == 2u) { u = 1.0lf - s; v = 1.0lf - d; }
-  else { u = d; v = 1.0lf - s; }
+  if (edge == 0u) {
+    u = s;
+    v = d;
+  } else if (edge == 1u) {
+    u = 1.0lf - d;
+    v = s;
+  } else if (edge == 2u) {
+    u = 1.0lf - s;
+    v = 1.0lf - d;
+  } else {
+    u = d;
+    v = 1.0lf - s;
+  }
 }
 
 dvec3 normalised(dvec3 p) {
@@ -59,10 +81,23 @@ dvec3 sampleDirection(PayloadJob job, int i, int j) {
     uint edge;
     precise double s;
     precise double d;
-    if (v < 0.0lf) { edge = 0u; s = u; d = -v; }
-    else if (u > 1.0lf) { edge = 1u; s = v; d = u - 1.0lf; }
-    else if (v > 1.0lf) { edge = 2u; s = 1.0lf - u; d = v - 1.0lf; }
-    else { edge = 3u; s = 1.0lf - v; d = -u; }
+    if (v < 0.0lf) {
+      edge = 0u;
+      s = u;
+      d = -v;
+    } else if (u > 1.0lf) {
+      edge = 1u;
+      s = v;
+      d = u - 1.0lf;
+    } else if (v > 1.0lf) {
+      edge = 2u;
+      s = 1.0lf - u;
+      d = v - 1.0lf;
+    } else {
+      edge = 3u;
+      s = 1.0lf - v;
+      d = -u;
+    }
     uint packed = job.neighbour[edge];
     double nu, nv;
     edgeToUv(packed >> 8, 1.0lf - s, d, nu, nv);
@@ -123,22 +158,30 @@ void main() {
   barrier();
 
   uint normalBase = slotBase + samples;
+  double localError = 0.0lf;
   for (uint index = gl_LocalInvocationID.x; index < samples; index += GLOBE_PAYLOAD_WORKGROUP) {
     int i = clamp(int(index % uint(s)) - 1, 0, n);
     int j = clamp(int(index / uint(s)) - 1, 0, n);
     uint at = scratchBase + uint((j + 1) * s + (i + 1));
+    localError = max(localError, morphDeviation(at, i, j, s));
     precise dvec3 du = scratch[at + 1u].xyz - scratch[at - 1u].xyz;
     precise dvec3 dv = scratch[at + uint(s)].xyz - scratch[at - uint(s)].xyz;
     precise dvec3 c = dvec3(du.y * dv.z - du.z * dv.y, du.z * dv.x - du.x * dv.z, du.x * dv.y - du.y * dv.x);
     payloads[normalBase + index] = vec4(vec3(normalised(c)), globeSourceHole(job.sourceBase, index));
   }
+  sharedError[gl_LocalInvocationID.x] = localError;
 
   for (uint stride = GLOBE_PAYLOAD_WORKGROUP / 2u; stride > 0u; stride >>= 1) {
     barrier();
     if (gl_LocalInvocationID.x < stride) {
-      sharedMin[gl_LocalInvocationID.x] = min(sharedMin[gl_LocalInvocationID.x], sharedMin[gl_LocalInvocationID.x + stride]);
-      sharedMax[gl_LocalInvocationID.x] = max(sharedMax[gl_LocalInvocationID.x], sharedMax[gl_LocalInvocationID.x + stride]);
+      sharedMin[gl_LocalInvocationID.x] =
+          min(sharedMin[gl_LocalInvocationID.x], sharedMin[gl_LocalInvocationID.x + stride]);
+      sharedMax[gl_LocalInvocationID.x] =
+          max(sharedMax[gl_LocalInvocationID.x], sharedMax[gl_LocalInvocationID.x + stride]);
+      sharedError[gl_LocalInvocationID.x] =
+          max(sharedError[gl_LocalInvocationID.x], sharedError[gl_LocalInvocationID.x + stride]);
     }
   }
-  if (gl_LocalInvocationID.x == 0u) results[jobIndex] = PayloadResult(sharedMin[0], sharedMax[0]);
+  if (gl_LocalInvocationID.x == 0u)
+    results[jobIndex] = PayloadResult(sharedMin[0], sharedMax[0], sharedError[0], 0.0lf);
 }

@@ -71,11 +71,15 @@ struct PayloadJob {
 struct PayloadResult {
   double minRadius_m;
   double maxRadius_m;
+  // Geometric error (metres): the largest distance a vertex of the node's mesh moves when it morphs
+  // to its parent's mesh (half the largest second difference); feeds tolerance-driven LOD ranges.
+  double geometricError_m;
+  double unused;  // keeps the std430 array stride a multiple of 16 bytes
 };
 
 #ifdef __cplusplus
 static_assert(sizeof(PayloadJob) == 96);
-static_assert(sizeof(PayloadResult) == 16);
+static_assert(sizeof(PayloadResult) == 32);
 }  // namespace globe::gpu
 #endif
 #undef GLOBE_DVEC4

@@ -12,7 +12,7 @@ fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
   >"$WORK/stdout" 2>"$WORK/stderr" || { fail "trade run"; cat "$WORK/stderr"; }
 for f in trade.csv pareto.svg; do [[ -s "$WORK/t/$f" ]] || fail "missing $f"; done
 header=$(head -1 "$WORK/t/trade.csv")
-expected="config,camera,grid_cells,distance_multiplier,max_depth,morph_fraction,generation,positions,width,height,converged,frame_median_ms,frame_p95_ms,select_ms,triangles,nodes,resident_mib,gen_ms_per_node,err_p50_px,err_p95_px,err_max_px,err_p50_m,err_p95_m,err_max_m,silhouette_mismatches,silhouette_max_px,samples,samples_both_hit,truth_unresolved"
+expected="config,camera,grid_cells,distance_multiplier,max_depth,morph_fraction,generation,positions,lod,tolerance_px,width,height,converged,frame_median_ms,frame_p95_ms,select_ms,triangles,nodes,resident_mib,gen_ms_per_node,err_p50_px,err_p95_px,err_max_px,err_p50_m,err_p95_m,err_max_m,silhouette_mismatches,silhouette_max_px,samples,samples_both_hit,truth_unresolved"
 [[ "$header" == "$expected" ]] || fail "trade.csv header: $header"
 rows=$(($(wc -l <"$WORK/t/trade.csv") - 1))
 [[ $rows -eq 3 ]] || fail "trade.csv has $rows rows, expected 3 (two cameras and the worst)"
@@ -44,6 +44,24 @@ grep -q "unknown quality 'best'" "$WORK/bad.err" || fail "render --quality: $(ca
 [[ -e "$WORK/r.png" ]] && fail "render wrote a file"
 "$GLOBE" render --quality fast --size 64x48 --out "$WORK/fast.png" >"$WORK/r.out" 2>"$WORK/r.err" || fail "render --quality fast"
 [[ -s "$WORK/fast.png" ]] || fail "render --quality fast wrote nothing"
+
+# --tolerance on the rendering commands: bad values are one line naming the option, exit 2.
+badTolerance() {  # badTolerance COMMAND VALUE
+  (cd "$WORK" && "$GLOBE" "$1" --tolerance "$2" >"$WORK/bad.out" 2>"$WORK/bad.err")
+  local code=$?
+  [[ $code -eq 2 ]] || fail "$1 --tolerance $2: exit $code, expected 2"
+  [[ $(wc -l <"$WORK/bad.err") -eq 1 ]] || fail "$1 --tolerance $2: stderr is not one line"
+  grep -q -- '--tolerance' "$WORK/bad.err" || fail "$1 --tolerance $2: $(cat "$WORK/bad.err")"
+}
+for value in 0 -1 nan 5000; do badTolerance render "$value"; done
+for command in bench movie view trade; do badTolerance "$command" abc; done
+# A tolerance-driven trade row says so in the lod column.
+"$GLOBE" trade --quick --size 96x64 --configs 1 --frames 1 --stride 4 --cameras 1km --tolerance 2 \
+  --out "$WORK/tt" >"$WORK/tt.out" 2>"$WORK/tt.err" || { fail "trade --tolerance"; cat "$WORK/tt.err"; }
+lod=$(awk -F, 'NR == 2 { print $9 "," $10 }' "$WORK/tt/trade.csv")
+[[ "$lod" == "tolerance,2.000" ]] || fail "trade --tolerance 2: lod,tolerance_px = $lod"
+lod=$(awk -F, 'NR == 2 { print $9 }' "$WORK/t/trade.csv")
+[[ "$lod" == "distance" ]] || fail "trade (balanced): lod = $lod"
 
 if [[ $failures -ne 0 ]]; then echo "$failures failure(s)"; exit 1; fi
 echo "trade: all checks passed"

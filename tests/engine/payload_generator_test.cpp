@@ -72,7 +72,7 @@ TEST_F(PayloadGeneratorTest, MatchesCpuReferenceAtEveryDepth) {
   const size_t perSlot = GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells);
   const size_t samples = perSlot / 2;
   std::vector<glm::vec4> cpu(perSlot);
-  double worstRadius = 0, worstElevation = 0, worstNormal = 0;
+  double worstRadius = 0, worstElevation = 0, worstNormal = 0, worstError = 0;
   for (size_t k = 0; k < nodes.size(); ++k) {
     SCOPED_TRACE(::testing::Message() << "node face " << int(nodes[k].face) << " level " << int(nodes[k].level));
     gpu::PayloadJob job = makePayloadJob(nodes[k], 0, *model_);
@@ -83,6 +83,12 @@ TEST_F(PayloadGeneratorTest, MatchesCpuReferenceAtEveryDepth) {
     EXPECT_NEAR(results[k].radius.max_m, padded.max_m, 1e-6);
     worstRadius = std::max({worstRadius, std::abs(results[k].radius.min_m - padded.min_m),
                             std::abs(results[k].radius.max_m - padded.max_m)});
+    // The geometric error (double positions on the GPU) against the CPU's from the quantised
+    // positions: within two quanta (each of the three positions is within half a quantum per axis).
+    const double cpuError = payloadGeometricError_m(cpu, kCells);
+    EXPECT_NEAR(results[k].geometricError_m, cpuError, 2.0 * job.centre.w + 1e-9 * cpuError);
+    EXPECT_GT(results[k].geometricError_m, 0.0);
+    worstError = std::max(worstError, std::abs(results[k].geometricError_m - cpuError) / job.centre.w);
     const glm::vec4* g = &gpu[k * perSlot];
     for (size_t i = 0; i < samples; ++i) {
       // Positions are quantised floats: equal, or one quantum apart where GPU and CPU doubles
@@ -96,8 +102,10 @@ TEST_F(PayloadGeneratorTest, MatchesCpuReferenceAtEveryDepth) {
       ASSERT_NEAR(glm::length(gn), 1.0f, 1e-5f);
     }
   }
-  std::printf("[ info ] %zu nodes, depths 0-24: worst |radius| diff %.3g m, elevation %.3g m, normal %.3g\n",
-              nodes.size(), worstRadius, worstElevation, worstNormal);
+  std::printf(
+      "[ info ] %zu nodes, depths 0-24: worst |radius| diff %.3g m, elevation %.3g m, normal %.3g, geometric error "
+      "%.3g quanta\n",
+      nodes.size(), worstRadius, worstElevation, worstNormal, worstError);
 }
 
 // The float variant (GenerationPrecision::kFloat, measured by globe trade) is the float model: its

@@ -69,6 +69,7 @@ class CpuPayloads final : public NodeResidency {
     glm::dvec3 centre_m{0.0};
     RadiusRange vertices;  // unpadded
     RadiusRange padded;
+    double geometricError_m = 0.0;  // as the generator reports it (payloadGeometricError_m)
   };
 
   const Entry& entry(const NodeId& id) const {
@@ -84,12 +85,14 @@ class CpuPayloads final : public NodeResidency {
         model_, job, kCells,
         all.subspan(size_t(e.slot) * GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells), GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells)));
     e.padded = paddedRadiusRange(model_.params(), e.vertices, id.level, kCells);
+    e.geometricError_m = payloadGeometricError_m(slot(e.slot), kCells);
     return entries_.emplace(id, e).first->second;
   }
 
   bool isResident(const NodeId&) const override { return true; }
   void request(const NodeId&, RequestPriority, double) override {}
   std::optional<RadiusRange> knownRadiusRange(const NodeId& node) const override { return entry(node).padded; }
+  std::optional<double> knownGeometricError(const NodeId& node) const override { return entry(node).geometricError_m; }
 
   void clear() {
     entries_.clear();
@@ -150,8 +153,10 @@ class TerrainRenderTest : public GpuTest {
     return cameraFromPose(pose, ground, kRadius_m, double(kWidth) / kHeight);
   }
 
-  LodSelector makeSelector() const {
+  // tolerance_px > 0: tolerance-driven ranges from the payloads' geometric errors.
+  LodSelector makeSelector(double tolerance_px = 0.0) const {
     LodConfig config;
+    config.ranges.tolerance_px = tolerance_px;
     config.radius_m = kRadius_m;
     ElevationRange range = model_.bounds();
     config.minElevation_m = range.min_m;
@@ -271,37 +276,41 @@ TEST_F(TerrainRenderTest, NoCracksAtSeamsVerticesPolesAndAntimeridian) {
   style.radius_m = kRadius_m;
   TerrainRenderer renderer(device(), kCells, style);
   CpuPayloads payloads(device(), model_, 6000);
-  for (const CrackCase& c : crackCases()) {
-    payloads.clear();
-    LodSelector selector = makeSelector();  // fresh ranges: diagonals observed for this camera only
-    const glm::dvec2 ll = latLonFromPosition(c.direction);
-    const Camera camera = cameraAt(ll.x, ll.y, c.height_m, c.heading_deg, c.pitch_deg);
-    auto start = std::chrono::steady_clock::now();
-    Frame f = render(renderer, payloads, selector, camera);
-    double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    int inside = 0;
-    int holes = countHoles(f, camera, &inside);
-    std::printf(
-        "[ info ] %-18s nodes %4u (partial %3u, morphing %3u) triangles %7llu, inside %5d px, holes %d (%.0f ms)\n",
-        c.name, f.stats.nodes, f.stats.partialNodes, f.morphing, (unsigned long long)f.stats.triangles, inside, holes,
-        ms);
-    EXPECT_EQ(holes, 0) << c.name;
-    EXPECT_GT(inside, int(kWidth * kHeight / 10)) << c.name << ": the planet should fill part of the view";
-    EXPECT_GT(f.stats.nodes, 0u);
-    if (c.height_m < 1.0e6) {
-      EXPECT_GT(f.morphing, 0u) << c.name << ": morphing should be active";
+  // Distance ranges, then tolerance-driven ranges (docs/lod.md): both must stay crack-free.
+  for (const double tolerance : {0.0, 2.0})
+    for (const CrackCase& c : crackCases()) {
+      payloads.clear();
+      LodSelector selector = makeSelector(tolerance);  // fresh ranges: observed for this camera only
+      const glm::dvec2 ll = latLonFromPosition(c.direction);
+      const Camera camera = cameraAt(ll.x, ll.y, c.height_m, c.heading_deg, c.pitch_deg);
+      auto start = std::chrono::steady_clock::now();
+      Frame f = render(renderer, payloads, selector, camera);
+      double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      int inside = 0;
+      int holes = countHoles(f, camera, &inside);
+      std::printf(
+          "[ info ] %-18s %4.1f px nodes %4u (partial %3u, morphing %3u) triangles %7llu, inside %5d px, holes %d "
+          "(%.0f ms)\n",
+          c.name, tolerance, f.stats.nodes, f.stats.partialNodes, f.morphing, (unsigned long long)f.stats.triangles,
+          inside, holes, ms);
+      EXPECT_EQ(holes, 0) << c.name << " tolerance " << tolerance;
+      EXPECT_GT(inside, int(kWidth * kHeight / 10))
+          << c.name << " tolerance " << tolerance << ": the planet should fill part of the view";
+      EXPECT_GT(f.stats.nodes, 0u);
+      if (c.height_m < 1.0e6) {
+        EXPECT_GT(f.morphing, 0u) << c.name << " tolerance " << tolerance << ": morphing should be active";
+      }
+      if (holes) save(f, std::string("terrain_cracks_") + c.name);
+      // CDLOD's guarantee (LodRanges::morph), checked on the ranges this selection used: where a
+      // depth-d node meets a finer neighbour (at most R(d) + D(d) away) its band has not started.
+      const LodRanges& ranges = selector.ranges();
+      for (int d = 1; d < ranges.maxDepth(); ++d) {
+        if (ranges.maxDiagonal(d) == 0.0) continue;  // depth not reached by this selection
+        const double needed = ranges.refineRange(d) + ranges.maxDiagonal(d);
+        EXPECT_GE(ranges.morph(d).start_m, needed) << c.name << " tolerance " << tolerance << " depth " << d;
+        EXPECT_LE(ranges.morph(d).start_m, ranges.morph(d).end_m);
+      }
     }
-    if (holes) save(f, std::string("terrain_cracks_") + c.name);
-    // CDLOD's guarantee (LodRanges::morph), checked on the ranges this selection used: where a
-    // depth-d node meets a finer neighbour (at most R(d) + D(d) away) its band has not started.
-    const LodRanges& ranges = selector.ranges();
-    for (int d = 1; d < ranges.maxDepth(); ++d) {
-      if (ranges.maxDiagonal(d) == 0.0) continue;  // depth not reached by this selection
-      const double needed = ranges.refineRange(d) + ranges.maxDiagonal(d);
-      EXPECT_GE(ranges.morph(d).start_m, needed) << c.name << " depth " << d;
-      EXPECT_LE(ranges.morph(d).start_m, ranges.morph(d).end_m);
-    }
-  }
 }
 
 TEST_F(TerrainRenderTest, WithoutSkirtsMorphedEdgesStillMeet) {
@@ -311,17 +320,18 @@ TEST_F(TerrainRenderTest, WithoutSkirtsMorphedEdgesStillMeet) {
   CpuPayloads payloads(device(), model_, 6000);
   int total = 0;
   const auto cases = crackCases();
-  for (const CrackCase& c : std::span(cases).first(4)) {
-    payloads.clear();
-    LodSelector selector = makeSelector();
-    const glm::dvec2 ll = latLonFromPosition(c.direction);
-    const Camera camera = cameraAt(ll.x, ll.y, c.height_m, c.heading_deg, c.pitch_deg);
-    Frame f = render(renderer, payloads, selector, camera);
-    int holes = countHoles(f, camera);
-    total += holes;
-    EXPECT_LE(holes, 3) << c.name;
-  }
-  std::printf("[ info ] without skirts: %d background pixel(s) inside silhouettes over 4 views\n", total);
+  for (const double tolerance : {0.0, 2.0})
+    for (const CrackCase& c : std::span(cases).first(4)) {
+      payloads.clear();
+      LodSelector selector = makeSelector(tolerance);
+      const glm::dvec2 ll = latLonFromPosition(c.direction);
+      const Camera camera = cameraAt(ll.x, ll.y, c.height_m, c.heading_deg, c.pitch_deg);
+      Frame f = render(renderer, payloads, selector, camera);
+      int holes = countHoles(f, camera);
+      total += holes;
+      EXPECT_LE(holes, 3) << c.name << " tolerance " << tolerance;
+    }
+  std::printf("[ info ] without skirts: %d background pixel(s) inside silhouettes over 8 views\n", total);
 }
 
 // A flat square payload facing the camera: side_m wide, centred on the node centre.

@@ -19,9 +19,11 @@ using testing::kEarthRadius_m;
 using testing::PartlyResident;
 using testing::SyntheticTerrain;
 
-LodSelector makeSelector(int maxDepth = 20, bool horizon = true) {
+// tolerance_px > 0: tolerance-driven ranges (from SyntheticTerrain::errorOf), else distance ranges.
+LodSelector makeSelector(int maxDepth = 20, bool horizon = true, double tolerance_px = 0.0) {
   LodConfig c;
   c.ranges.maxDepth = maxDepth;
+  c.ranges.tolerance_px = tolerance_px;
   c.minElevation_m = -8000.0;
   c.maxElevation_m = 8000.0;
   c.horizonCulling = horizon;
@@ -77,8 +79,16 @@ std::vector<glm::dvec3> specialDirections() {
   return d;
 }
 
-TEST(Selection, RestrictedQuadtreeOverRandomCameras) {
-  LodSelector selector = makeSelector();
+// The restriction and tiling tests run with distance ranges (0) and tolerance-driven ranges (px).
+class SelectionLod : public ::testing::TestWithParam<double> {};
+INSTANTIATE_TEST_SUITE_P(Ranges, SelectionLod, ::testing::Values(0.0, 1.0, 8.0),
+                         [](const ::testing::TestParamInfo<double>& p) {
+                           return p.param == 0.0 ? std::string("Distance")
+                                                 : "Tolerance" + std::to_string(int(p.param)) + "px";
+                         });
+
+TEST_P(SelectionLod, RestrictedQuadtreeOverRandomCameras) {
+  LodSelector selector = makeSelector(20, true, GetParam());
   AllResident residency{SyntheticTerrain{}};
   Selection out;
   std::mt19937_64 rng(99);
@@ -100,11 +110,11 @@ TEST(Selection, RestrictedQuadtreeOverRandomCameras) {
       total += out.nodes.size();
     }
   }
-  EXPECT_GT(total, 10000u);
+  EXPECT_GT(total, GetParam() > 4.0 ? 3000u : 10000u);
 }
 
-TEST(Selection, TilesTheSphereWithoutCulling) {
-  LodSelector selector = makeSelector(20, false);
+TEST_P(SelectionLod, TilesTheSphereWithoutCulling) {
+  LodSelector selector = makeSelector(20, false, GetParam());
   AllResident residency{SyntheticTerrain{}};
   Selection out;
   for (const glm::dvec3& d : specialDirections()) {

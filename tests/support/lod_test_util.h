@@ -89,6 +89,16 @@ struct SyntheticTerrain {
     const double a = std::min(amplitude_m, relief * nominalNodeWidth(id.level, radius_m)) * wobble;
     return {radius_m - a, radius_m + a};
   }
+  // Geometric error of a node's payload (its parent's mesh vs its own): a fraction of its relief,
+  // rough in the northern hemisphere's western half and flat (1 %) elsewhere, so tolerance-driven
+  // ranges see terrain that differs between neighbours and across seams.
+  double errorOf(const NodeId& id) const {
+    const RadiusRange r = rangeOf(id);
+    const glm::dvec3 c = RhombusFaceMapping::get().unitPoint(id.face, (id.x + 0.5) / double(1u << id.level),
+                                                             (id.y + 0.5) / double(1u << id.level));
+    const double roughness = c.z > 0.0 && c.y < 0.0 ? 0.25 : 0.01;
+    return roughness * (r.max_m - r.min_m);
+  }
 };
 
 // Every node resident; known ranges from a synthetic terrain (or a smooth sphere when relief = 0).
@@ -98,6 +108,7 @@ class AllResident : public NodeResidency {
   bool isResident(const NodeId&) const override { return true; }
   void request(const NodeId&, RequestPriority, double) override { ++requests; }
   std::optional<RadiusRange> knownRadiusRange(const NodeId& id) const override { return terrain_.rangeOf(id); }
+  std::optional<double> knownGeometricError(const NodeId& id) const override { return terrain_.errorOf(id); }
   int requests = 0;
 
  private:
@@ -116,6 +127,10 @@ class PartlyResident : public NodeResidency {
   std::optional<RadiusRange> knownRadiusRange(const NodeId& id) const override {
     if (!isResident(id)) return std::nullopt;
     return terrain_.rangeOf(id);
+  }
+  std::optional<double> knownGeometricError(const NodeId& id) const override {
+    if (!isResident(id)) return std::nullopt;
+    return terrain_.errorOf(id);
   }
   std::vector<NodeId> requested;
   std::vector<double> distances;

@@ -1,0 +1,116 @@
+// Tolerance-driven LOD ranges (planet/lod/lod_ranges.h): the screen-error rule per depth, the
+// growth that keeps the quadtree restricted, monotonicity in the tolerance. The restriction and
+// tiling tests of selection_test.cpp also run with tolerance-driven ranges (SelectionLod).
+#include "planet/lod/selection.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "tests/support/lod_test_util.h"
+
+namespace globe {
+namespace {
+
+using testing::AllResident;
+using testing::kEarthRadius_m;
+using testing::SyntheticTerrain;
+
+LodSelector toleranceSelector(double tolerance_px, int maxDepth = 22) {
+  LodConfig c;
+  c.ranges.maxDepth = maxDepth;
+  c.ranges.tolerance_px = tolerance_px;
+  c.minElevation_m = -8000.0;
+  c.maxElevation_m = 8000.0;
+  auto s = LodSelector::create(c);
+  EXPECT_TRUE(s.ok());
+  return std::move(s.value());
+}
+
+// Triangles drawn: a partial node draws a quarter of a full one's.
+double triangleUnits(const Selection& s) {
+  double units = 0.0;
+  for (const SelectedNode& n : s.nodes) units += n.partial ? 0.25 : 1.0;
+  return units;
+}
+
+// Selects twice: the first pass observes the errors and diagonals of what it visits.
+Selection selectSettled(LodSelector& selector, const SelectionCamera& camera, NodeResidency& residency) {
+  Selection out;
+  EXPECT_TRUE(selector.select(camera, residency, out).ok());
+  EXPECT_TRUE(selector.select(camera, residency, out).ok());
+  return out;
+}
+
+std::vector<glm::dvec3> cameraPositions() {
+  std::vector<glm::dvec3> eyes;
+  for (double altitude : {1.0, 300.0, 2e4, 1e6}) {
+    eyes.push_back(testing::fromLatLon(30, -40) * (kEarthRadius_m + altitude));                      // rough terrain
+    eyes.push_back(testing::fromLatLon(-20, 100) * (kEarthRadius_m + altitude));                     // flat terrain
+    eyes.push_back(RhombusFaceMapping::get().unitPoint(3, 0.5, 0.0) * (kEarthRadius_m + altitude));  // a seam
+  }
+  return eyes;
+}
+
+TEST(ToleranceSelection, LowerToleranceNeverSelectsFewerTriangles) {
+  AllResident residency{SyntheticTerrain{}};
+  for (const glm::dvec3& eye : cameraPositions()) {
+    double previous = 0.0;
+    for (double tolerance : {64.0, 16.0, 4.0, 2.0, 1.0, 0.5, 0.25}) {
+      LodSelector selector = toleranceSelector(tolerance);
+      const double units = triangleUnits(selectSettled(selector, {eye, nullptr}, residency));
+      EXPECT_GE(units, previous) << "tolerance " << tolerance << " px at altitude "
+                                 << glm::length(eye) - kEarthRadius_m;
+      previous = units;
+    }
+  }
+}
+
+TEST(ToleranceSelection, DrawnNodesStayWithinTheTolerance) {
+  // rho = lambda * E(d) / distance <= tolerance for every full node the ranges did not refine.
+  AllResident residency{SyntheticTerrain{}};
+  const double lambda = pixelsPerRadian(720.0, 1.0471975511965976);
+  for (double tolerance : {0.5, 2.0, 8.0}) {
+    for (const glm::dvec3& eye : cameraPositions()) {
+      LodSelector selector = toleranceSelector(tolerance);
+      const Selection out = selectSettled(selector, {eye, nullptr}, residency);
+      int checked = 0;
+      for (const SelectedNode& n : out.nodes) {
+        if (n.partial || n.id.level >= selector.ranges().maxDepth()) continue;
+        const double distance = distanceToBounds(selector.boundsFor(n.id, residency), eye);
+        const double rho = lambda * selector.ranges().estimatedError(n.id.level) / distance;
+        EXPECT_LE(rho, tolerance * (1.0 + 1e-9)) << "node level " << int(n.id.level);
+        ++checked;
+      }
+      EXPECT_GT(checked, 0);
+    }
+  }
+}
+
+TEST(ToleranceSelection, RangesFollowTheObservedErrors) {
+  LodRangeConfig config;
+  config.tolerance_px = 2.0;
+  auto r = LodRanges::create(config, kEarthRadius_m);
+  ASSERT_TRUE(r.ok());
+  EXPECT_FALSE(r->setPixelsPerRadian(1000.0));  // no error observed yet: no range changes
+  EXPECT_EQ(r->estimatedError(5), 0.0);         // nothing observed: no refinement but the growth floor
+  EXPECT_TRUE(r->observeError(0, 8000.0));
+  EXPECT_DOUBLE_EQ(r->estimatedError(0), 4000.0);  // depth 1 unseen: extrapolated by 1/2 a level
+  EXPECT_DOUBLE_EQ(r->estimatedError(3), 500.0);
+  EXPECT_FALSE(r->observeError(0, 100.0));  // errors only grow
+  EXPECT_TRUE(r->observeError(4, 20.0));    // depth 4 seen: depth 3's error is what depth 4 measured
+  EXPECT_DOUBLE_EQ(r->estimatedError(3), 20.0);
+  EXPECT_DOUBLE_EQ(r->estimatedError(4), 10.0);
+  EXPECT_GE(r->refineRange(3), 1000.0 * 20.0 / 2.0);
+  for (int d = 0; d + 1 < r->maxDepth(); ++d)
+    EXPECT_GE(r->refineRange(d), r->refineRange(d + 1) + r->maxDiagonal(d + 1)) << d;
+  EXPECT_TRUE(r->setPixelsPerRadian(2000.0));  // a taller view refines farther
+  EXPECT_GE(r->refineRange(3), 2000.0 * 20.0 / 2.0);
+  config.tolerance_px = -1.0;
+  auto bad = LodRanges::create(config, kEarthRadius_m);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_EQ(bad.error().field, "tolerance");
+}
+
+}  // namespace
+}  // namespace globe
