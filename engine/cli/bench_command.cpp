@@ -10,6 +10,7 @@
 #include "engine/report/bench_report.h"
 #include "engine/report/run_environment.h"
 #include "engine/vk/device.h"
+#include "globe_commit.h"
 #include "options.h"
 #include "planet/camera/camera_path_file.h"
 #include "planet/elevation/planet_file.h"

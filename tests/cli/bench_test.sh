@@ -29,6 +29,12 @@ for key in '"driver"' '"shader_cache"' '"load_average_start"' '"load_average_end
   '"generation_latency_frames"' '"phases"'; do
   grep -q "$key" "$WORK/a/summary.json" || fail "summary.json lacks $key"
 done
+# The commit is the one the binary was built from (cmake/GlobeCommit.cmake runs at every build).
+if command -v git >/dev/null && [[ -e "$SRC/.git" ]]; then
+  head=$(git -C "$SRC" rev-parse --short=12 HEAD 2>/dev/null)
+  grep -Eq "\"commit\": \"$head(-dirty)?\"" "$WORK/a/summary.json" ||
+    fail "summary.json names another commit than HEAD $head (binary not rebuilt since?)"
+fi
 nodes0=$(sed -n 2p "$WORK/a/frames.csv" | cut -d, -f7)
 [[ $nodes0 -ge 1 ]] || fail "frame 0 draws $nodes0 nodes"
 # Determinism: everything but the timing columns (*_ms) is identical.
