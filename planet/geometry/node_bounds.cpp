@@ -148,7 +148,11 @@ void NodeBounds::tightenOnEllipsoid(const RadiusRange& real, const Ellipsoid& sh
     corners[i] = intersectPlanes(before, planes[i], planes[4]);
     corners[4 + i] = intersectPlanes(before, planes[i], planes[5]);
   }
-  sphereCentre = c * (0.5 * (top + bottom));
+  // Centred on the corners, not on the axis: the geodetic normals' line through the centre passes up to
+  // e_max (21 km on WGS84) beside the node.
+  sphereCentre = glm::dvec3(0.0);
+  for (const glm::dvec3& corner : corners) sphereCentre += corner;
+  sphereCentre *= 0.125;
   double radius2 = 0.0;
   for (const glm::dvec3& corner : corners)
     radius2 = std::max(radius2, glm::dot(corner - sphereCentre, corner - sphereCentre));

@@ -118,13 +118,14 @@ TEST_P(EllipsoidBounds, TerrainPointsInsideOwnAndParentBoundsDownToDepth24) {
 TEST_P(EllipsoidBounds, PlanesStayCloseToTheSurface) {
   const Ellipsoid e = shapeOf(GetParam());
   const RhombusFaceMapping& m = RhombusFaceMapping::get();
-  double worstSide = 0.0, worstCap = 0.0;
+  double worstSide = 0.0, worstCap = 0.0, worstDiagonal = 0.0;
   for (const auto& path : testPaths(20)) {
     for (const NodeId& id : path) {
       if (id.level < 4) continue;
       const std::vector<glm::dvec3> points = terrainPoints(e, id, 9, {0.0});
       const NodeBounds b = NodeBounds::forNode(m, id, rangeOf(points), e);
       const double width = nominalNodeWidth(id.level, kA_m);
+      worstDiagonal = std::max(worstDiagonal, b.diagonal() / width);
       for (size_t k = 0; k < 6; ++k) {
         double gap = 1e300;
         for (const glm::dvec3& p : points) gap = std::min(gap, -(glm::dot(glm::dvec3(b.planes[k]), p) + b.planes[k].w));
@@ -138,6 +139,9 @@ TEST_P(EllipsoidBounds, PlanesStayCloseToTheSurface) {
   RecordProperty("worst_top_bottom_gap_node_widths", std::to_string(worstCap));
   EXPECT_LE(worstSide, std::max(1e-3, 2.5 * e.flattening())) << worstSide;
   EXPECT_LE(worstCap, std::max(1e-3, 2.5 * e.flattening())) << worstCap;
+  // The bounding sphere stays about the node's size (the LOD ranges grow with the largest diagonal).
+  RecordProperty("worst_diagonal_node_widths", std::to_string(worstDiagonal));
+  EXPECT_LE(worstDiagonal, 2.0 * (1.0 + 2.5 * e.flattening())) << worstDiagonal;
 }
 
 // The visibility truth: for terrain no lower than h = 0 the occluder is the ellipsoid itself, and the

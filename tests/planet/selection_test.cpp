@@ -20,8 +20,12 @@ using testing::PartlyResident;
 using testing::SyntheticTerrain;
 
 // tolerance_px > 0: tolerance-driven ranges (from SyntheticTerrain::errorOf), else distance ranges.
-LodSelector makeSelector(int maxDepth = 20, bool horizon = true, double tolerance_px = 0.0) {
+LodSelector makeSelector(int maxDepth = 20, bool horizon = true, double tolerance_px = 0.0, double flattening = 0.0) {
   LodConfig c;
+  if (flattening > 0.0) {
+    c.radius_m = 6378137.0;
+    c.flattening = flattening;
+  }
   c.ranges.maxDepth = maxDepth;
   c.ranges.tolerance_px = tolerance_px;
   c.minElevation_m = -8000.0;
@@ -124,6 +128,53 @@ TEST_P(SelectionLod, TilesTheSphereWithoutCulling) {
       EXPECT_EQ(countRestrictionViolations(out), 0);
     }
   }
+}
+
+// The same restriction and tiling checks on ellipsoids (WGS84 and an extreme flattening of 0.1), with
+// distance ranges and a 2 px tolerance, cameras placed at ellipsoidal heights 1 mm .. 1e8 m.
+struct EllipsoidCase {
+  const char* name;
+  double flattening;
+  double tolerance_px;
+};
+class EllipsoidSelectionLod : public ::testing::TestWithParam<EllipsoidCase> {};
+INSTANTIATE_TEST_SUITE_P(Shapes, EllipsoidSelectionLod,
+                         ::testing::Values(EllipsoidCase{"WGS84", 1.0 / 298.257223563, 0.0},
+                                           EllipsoidCase{"WGS84Tolerance2px", 1.0 / 298.257223563, 2.0},
+                                           EllipsoidCase{"Flattening0p1", 0.1, 0.0},
+                                           EllipsoidCase{"Flattening0p1Tolerance2px", 0.1, 2.0}),
+                         [](const ::testing::TestParamInfo<EllipsoidCase>& p) { return std::string(p.param.name); });
+
+TEST_P(EllipsoidSelectionLod, RestrictedAndTilingOverCameras) {
+  const EllipsoidCase& param = GetParam();
+  const Ellipsoid shape = Ellipsoid::create(6378137.0, param.flattening).value();
+  LodSelector culled = makeSelector(20, true, param.tolerance_px, param.flattening);
+  LodSelector unculled = makeSelector(20, false, param.tolerance_px, param.flattening);
+  SyntheticTerrain terrain;
+  terrain.radius_m = 6378137.0;
+  terrain.flattening = param.flattening;
+  AllResident residency{terrain};
+  Selection out;
+  std::mt19937_64 rng(98);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<glm::dvec3> directions = specialDirections();
+  while (directions.size() < 60) directions.push_back(testing::randomDirection(rng));
+  size_t total = 0;
+  for (size_t i = 0; i < directions.size(); ++i) {
+    const double altitude = std::pow(10.0, -3.0 + 11.0 * unit(rng));
+    const glm::dvec3 eye = shape.position(directions[i], altitude);
+    const auto frustum =
+        Frustum::fromViewProjection(lookingAt(eye, glm::normalize(testing::randomDirection(rng) - directions[i])));
+    ASSERT_TRUE(frustum.ok());
+    ASSERT_TRUE(culled.select({eye, &frustum.value()}, residency, out).ok());
+    EXPECT_EQ(countRestrictionViolations(out), 0) << "camera " << i << " altitude " << altitude;
+    total += out.nodes.size();
+    ASSERT_TRUE(unculled.select({eye, nullptr}, residency, out).ok());
+    EXPECT_EQ(countRestrictionViolations(out), 0) << "camera " << i << " altitude " << altitude;
+    expectTiling(out);
+    total += out.nodes.size();
+  }
+  EXPECT_GT(total, 3000u);
 }
 
 TEST(Selection, SmoothSphereReachesMaxDepthNearTheGround) {
