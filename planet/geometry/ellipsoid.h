@@ -8,7 +8,7 @@
 // the same n), and on a sphere p(n) + h n is n * (a + h) bit for bit.
 //
 // Conversions between geodetic latitude/longitude/height and planet-fixed (ECEF) metres go through
-// GeographicLib::Geocentric [Karney 2011]; nothing here inverts the mapping by hand.
+// GeographicLib::Geocentric [Karney 2013]; nothing here inverts the mapping by hand.
 #include <glm/vec3.hpp>
 
 #include "planet/core/error.h"

@@ -10,7 +10,7 @@
 // inside the occluder ball (below the minimum elevation, or inside the planet) disables the test.
 // No sqrt of a negative number: the only sqrt is |camera| itself.
 //
-// On an ellipsoid the test runs in its scaled space [Cozzi 2011, §12.4]: x -> (x / sa, y / sa, z / sb)
+// On an ellipsoid the test runs in its scaled space [Ring 2013]: x -> (x / sa, y / sa, z / sb)
 // maps the occluder ellipsoid s E (semi-axes sa, sa, sb) to the unit ball, convex hulls to convex
 // hulls and lines of sight to lines of sight, so the sphere test above is exact there. The occluder is
 // E itself when no terrain lies below it, else E scaled by s = 1 + minElevation / b: its points lie
