@@ -83,6 +83,31 @@ std::vector<glm::dvec3> specialDirections() {
   return d;
 }
 
+// Seeded cameras over the special directions, then random ones up to `count`: altitude log-uniform
+// 1 mm .. 1e8 m, placed by `placeEye(up, altitude)`, looking at a random direction below the horizon.
+struct SeededCamera {
+  glm::dvec3 eye;
+  Frustum frustum;
+  double altitude_m;
+};
+template <class PlaceEye>
+std::vector<SeededCamera> seededCameras(uint64_t seed, size_t count, PlaceEye placeEye) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<glm::dvec3> directions = specialDirections();
+  while (directions.size() < count) directions.push_back(testing::randomDirection(rng));
+  std::vector<SeededCamera> cameras;
+  for (const glm::dvec3& up : directions) {
+    const double altitude = std::pow(10.0, -3.0 + 11.0 * unit(rng));
+    const glm::dvec3 eye = placeEye(up, altitude);
+    const auto frustum =
+        Frustum::fromViewProjection(lookingAt(eye, glm::normalize(testing::randomDirection(rng) - up)));
+    EXPECT_TRUE(frustum.ok());
+    cameras.push_back({eye, frustum.value(), altitude});
+  }
+  return cameras;
+}
+
 // The restriction and tiling tests run with distance ranges (0) and tolerance-driven ranges (px).
 class SelectionLod : public ::testing::TestWithParam<double> {};
 INSTANTIATE_TEST_SUITE_P(Ranges, SelectionLod, ::testing::Values(0.0, 1.0, 8.0),
@@ -95,21 +120,15 @@ TEST_P(SelectionLod, RestrictedQuadtreeOverRandomCameras) {
   LodSelector selector = makeSelector(20, true, GetParam());
   AllResident residency{SyntheticTerrain{}};
   Selection out;
-  std::mt19937_64 rng(99);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<glm::dvec3> directions = specialDirections();
-  while (directions.size() < 160) directions.push_back(testing::randomDirection(rng));
+  const std::vector<SeededCamera> cameras =
+      seededCameras(99, 160, [](const glm::dvec3& up, double altitude) { return up * (kEarthRadius_m + altitude); });
   size_t total = 0;
-  for (size_t i = 0; i < directions.size(); ++i) {
-    const double altitude = std::pow(10.0, -3.0 + 11.0 * unit(rng));  // 1 mm .. 1e8 m
-    const glm::dvec3 eye = directions[i] * (kEarthRadius_m + altitude);
-    const auto frustum =
-        Frustum::fromViewProjection(lookingAt(eye, glm::normalize(testing::randomDirection(rng) - directions[i])));
-    ASSERT_TRUE(frustum.ok());
+  for (size_t i = 0; i < cameras.size(); ++i) {
+    const SeededCamera& c = cameras[i];
     for (bool culling : {false, true}) {
-      SelectionCamera camera{eye, culling ? &frustum.value() : nullptr};
+      SelectionCamera camera{c.eye, culling ? &c.frustum : nullptr};
       ASSERT_TRUE(selector.select(camera, residency, out).ok());
-      EXPECT_EQ(countRestrictionViolations(out), 0) << "camera " << i << " altitude " << altitude;
+      EXPECT_EQ(countRestrictionViolations(out), 0) << "camera " << i << " altitude " << c.altitude_m;
       EXPECT_EQ(out.stats.selected, out.nodes.size());
       total += out.nodes.size();
     }
@@ -155,22 +174,16 @@ TEST_P(EllipsoidSelectionLod, RestrictedAndTilingOverCameras) {
   terrain.flattening = param.flattening;
   AllResident residency{terrain};
   Selection out;
-  std::mt19937_64 rng(98);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<glm::dvec3> directions = specialDirections();
-  while (directions.size() < 60) directions.push_back(testing::randomDirection(rng));
+  const std::vector<SeededCamera> cameras =
+      seededCameras(98, 60, [&shape](const glm::dvec3& up, double altitude) { return shape.position(up, altitude); });
   size_t total = 0;
-  for (size_t i = 0; i < directions.size(); ++i) {
-    const double altitude = std::pow(10.0, -3.0 + 11.0 * unit(rng));
-    const glm::dvec3 eye = shape.position(directions[i], altitude);
-    const auto frustum =
-        Frustum::fromViewProjection(lookingAt(eye, glm::normalize(testing::randomDirection(rng) - directions[i])));
-    ASSERT_TRUE(frustum.ok());
-    ASSERT_TRUE(culled.select({eye, &frustum.value()}, residency, out).ok());
-    EXPECT_EQ(countRestrictionViolations(out), 0) << "camera " << i << " altitude " << altitude;
+  for (size_t i = 0; i < cameras.size(); ++i) {
+    const SeededCamera& c = cameras[i];
+    ASSERT_TRUE(culled.select({c.eye, &c.frustum}, residency, out).ok());
+    EXPECT_EQ(countRestrictionViolations(out), 0) << "camera " << i << " altitude " << c.altitude_m;
     total += out.nodes.size();
-    ASSERT_TRUE(unculled.select({eye, nullptr}, residency, out).ok());
-    EXPECT_EQ(countRestrictionViolations(out), 0) << "camera " << i << " altitude " << altitude;
+    ASSERT_TRUE(unculled.select({c.eye, nullptr}, residency, out).ok());
+    EXPECT_EQ(countRestrictionViolations(out), 0) << "camera " << i << " altitude " << c.altitude_m;
     expectTiling(out);
     total += out.nodes.size();
   }
