@@ -1,7 +1,8 @@
 // CDLOD selection cost (docs/lod.md): nodes visited, nodes selected and time per visited node at
 // camera altitudes 1 m .. 1e8 m over a 6371 km planet, max depth 20, all nodes resident with known
 // (tightened) radius ranges from a synthetic terrain. "Frustum": 60° vertical, 16:9, looking at the
-// horizon; "All": no frustum culling (horizon culling only).
+// horizon; "All": no frustum culling (horizon culling only). "SelectionWGS84": the same on the WGS84
+// ellipsoid (a = 6378137 m), the camera at the same geodetic place and ellipsoidal height.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -18,19 +19,33 @@ namespace {
 constexpr double kRadius_m = 6371000.0;
 
 // Terrain relief shrinking with the node (5 % of its width, at most 8 km), like real payload ranges.
+// On an ellipsoid: the distance of the node centre's surface point, widened by the relief and by the
+// slope of the ellipsoid against the spheres |p| = r (f node widths).
 class ResidentTerrain final : public NodeResidency {
  public:
+  explicit ResidentTerrain(const Ellipsoid& shape) : shape_(shape) {}
   bool isResident(const NodeId&) const override { return true; }
   void request(const NodeId&, RequestPriority, double) override {}
   std::optional<RadiusRange> knownRadiusRange(const NodeId& id) const override {
-    const double a = std::min(8000.0, 0.05 * nominalNodeWidth(id.level, kRadius_m));
-    return RadiusRange{kRadius_m - a, kRadius_m + a};
+    const double width = nominalNodeWidth(id.level, shape_.equatorialRadius_m());
+    const double a = std::min(8000.0, 0.05 * width);
+    if (shape_.isSphere()) return RadiusRange{kRadius_m - a, kRadius_m + a};
+    const glm::dvec3 n = nodeCentreDirection(RhombusFaceMapping::get(), id);
+    const double r = glm::length(shape_.surfacePoint(n));
+    const double slope = shape_.flattening() * width;
+    return RadiusRange{r - a - slope, r + a + slope};
   }
+
+ private:
+  Ellipsoid shape_;
 };
 
-void selection(benchmark::State& state, double altitude_m, bool withFrustum) {
+void selection(benchmark::State& state, double altitude_m, bool withFrustum, double flattening) {
+  const Ellipsoid shape =
+      flattening == 0.0 ? Ellipsoid::sphere(kRadius_m) : Ellipsoid::create(6378137.0, flattening).value();
   LodConfig config;
-  config.radius_m = kRadius_m;
+  config.radius_m = shape.equatorialRadius_m();
+  config.flattening = flattening;
   config.minElevation_m = -8000.0;
   config.maxElevation_m = 8000.0;
   config.ranges.maxDepth = 20;
@@ -42,7 +57,7 @@ void selection(benchmark::State& state, double altitude_m, bool withFrustum) {
   const double lat = 46.5 * std::numbers::pi / 180.0;
   const double lon = 7.5 * std::numbers::pi / 180.0;
   const glm::dvec3 up(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
-  const glm::dvec3 eye = up * (kRadius_m + altitude_m);
+  const glm::dvec3 eye = shape.position(up, altitude_m);
   const glm::dvec3 north = glm::normalize(glm::dvec3(0, 0, 1) - up * up.z);
   // Look at the horizon (or straight down from far away, where the horizon is below the view).
   const double dip = std::acos(std::min(1.0, kRadius_m / (kRadius_m + altitude_m)));
@@ -51,7 +66,7 @@ void selection(benchmark::State& state, double altitude_m, bool withFrustum) {
                                     glm::lookAt(eye, eye + forward, altitude_m > 1e6 ? north : up);
   const auto frustum = Frustum::fromViewProjection(viewProjection);
   const SelectionCamera camera{eye, withFrustum ? &frustum.value() : nullptr};
-  ResidentTerrain residency;
+  ResidentTerrain residency(shape);
   Selection out;
   (void)selector->select(camera, residency, out);  // warm-up: ranges settle, the buffer grows once
   for (auto _ : state) {
@@ -72,14 +87,18 @@ void selection(benchmark::State& state, double altitude_m, bool withFrustum) {
 }
 
 void registerAll() {
-  for (bool frustum : {true, false}) {
-    for (double altitude : {1.0, 100.0, 1e4, 1e6, 1e8}) {
-      const std::string name = std::string("Selection/") + (frustum ? "Frustum" : "All") + "/altitude_m:" +
-                               (altitude < 1e4 ? std::to_string(static_cast<int>(altitude))
-                                               : (altitude == 1e4   ? "1e4"
-                                                  : altitude == 1e6 ? "1e6"
-                                                                    : "1e8"));
-      benchmark::RegisterBenchmark(name.c_str(), selection, altitude, frustum)->Unit(benchmark::kMicrosecond);
+  for (double flattening : {0.0, 1.0 / 298.257223563}) {
+    for (bool frustum : {true, false}) {
+      for (double altitude : {1.0, 100.0, 1e4, 1e6, 1e8}) {
+        const std::string name = std::string(flattening == 0.0 ? "Selection/" : "SelectionWGS84/") +
+                                 (frustum ? "Frustum" : "All") + "/altitude_m:" +
+                                 (altitude < 1e4 ? std::to_string(static_cast<int>(altitude))
+                                                 : (altitude == 1e4   ? "1e4"
+                                                    : altitude == 1e6 ? "1e6"
+                                                                      : "1e8"));
+        benchmark::RegisterBenchmark(name.c_str(), selection, altitude, frustum, flattening)
+            ->Unit(benchmark::kMicrosecond);
+      }
     }
   }
 }

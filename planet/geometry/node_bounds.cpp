@@ -21,6 +21,8 @@ double distanceToSegment(const glm::dvec3& p, const glm::dvec3& a, const glm::dv
   return glm::length(p - (a + t * ab));
 }
 
+glm::dvec3 intersectPlanes(const glm::dvec4& p1, const glm::dvec4& p2, const glm::dvec4& p3);
+
 }  // namespace
 
 glm::dvec4 NodeBounds::sidePlane(const glm::dvec3& a, const glm::dvec3& b) {
@@ -30,7 +32,8 @@ glm::dvec4 NodeBounds::sidePlane(const glm::dvec3& a, const glm::dvec3& b) {
   return {n, 0.0};
 }
 
-NodeBounds NodeBounds::forNode(const FaceMapping& mapping, const NodeId& node, const RadiusRange& radius) {
+NodeBounds NodeBounds::forNode(const FaceMapping& mapping, const NodeId& node, const RadiusRange& radius,
+                               const Ellipsoid& shape) {
   std::array<glm::dvec3, 4> directions;
   for (int c = 0; c < 4; ++c) directions[static_cast<size_t>(c)] = nodeCornerDirection(mapping, node, c);
   std::array<glm::dvec4, 4> sides;
@@ -38,22 +41,26 @@ NodeBounds NodeBounds::forNode(const FaceMapping& mapping, const NodeId& node, c
   // Centre direction: the normalised sum of the corner rays (the selection derives children the same
   // way); any direction inside the patch would do.
   const glm::dvec3 centre = glm::normalize((directions[0] + directions[1]) + (directions[2] + directions[3]));
-  return fromRays(directions, sides, centre, radius);
+  return fromRays(directions, sides, centre, radius, shape);
 }
 
 NodeBounds NodeBounds::fromRays(const std::array<glm::dvec3, 4>& cornerDirections,
                                 const std::array<glm::dvec4, 4>& sidePlanes, const glm::dvec3& centreDirection,
-                                const RadiusRange& radius) {
+                                const RadiusRange& radius, const Ellipsoid& shape) {
   NodeBounds b;
   b.cornerDirections = cornerDirections;
   b.centreDirection = centreDirection;
   for (size_t e = 0; e < 4; ++e) b.planes[e] = sidePlanes[e];
-  b.tighten(radius);
+  b.tighten(radius, shape);
   return b;
 }
 
-void NodeBounds::tighten(const RadiusRange& real) {
+void NodeBounds::tighten(const RadiusRange& real, const Ellipsoid& shape) {
   assert(real.min_m >= 0.0 && real.min_m <= real.max_m);
+  if (!shape.isSphere()) {
+    tightenOnEllipsoid(real, shape);
+    return;
+  }
   radius = real;
   const glm::dvec3& n = centreDirection;
   std::array<double, 4> cosines;
@@ -88,8 +95,72 @@ void NodeBounds::tighten(const RadiusRange& real) {
   sphereRadius = std::sqrt(lateral2 + halfHeight * halfHeight) * (1.0 + kSpherePad) + 4e-15 * real.max_m;
 }
 
+// The point on the three planes dot(n_i, x) = d_i (Cramer's rule; the planes are never parallel here).
+namespace {
+
+glm::dvec3 intersectPlanes(const glm::dvec4& p1, const glm::dvec4& p2, const glm::dvec4& p3) {
+  const glm::dvec3 n1(p1), n2(p2), n3(p3);
+  const glm::dvec3 c23 = glm::cross(n2, n3);
+  const glm::dvec3 c31 = glm::cross(n3, n1);
+  const glm::dvec3 c12 = glm::cross(n1, n2);
+  return (-p1.w * c23 + -p2.w * c31 + -p3.w * c12) / glm::dot(n1, c23);
+}
+
+}  // namespace
+
+// Every point of the node is P = p(n) + h n with n in the node's patch of geodetic normals (the
+// spherical quadrilateral of the corner rays, inside the cap of half-angle theta around the centre
+// direction c, cos theta = min cos) and |P| in [S_min, S_max]. With N = supportDistance(nz),
+// e = axisOffset(nz) and g = sideOffset(nz) (Ellipsoid):
+//   side plane k (dot(k, n) <= 0 on the patch): dot(k, P) = (a^2 / N + h) dot(k, n) - k.z g(nz) <= max(-k.z g)
+//     over the patch's nz range (g increases with nz, so at an end), as a^2 / N + h >= N + h = dot(P, n) > 0;
+//   P = dot(P, n) n + p_perp with |p_perp| = e and dot(P, n) = sqrt(|P|^2 - e^2), so
+//   top:    dot(c, P) <= sqrt(S_max^2 - e_min^2) + e_max sin(theta)
+//   bottom: dot(c, P) >= sqrt(S_min^2 - e_max^2) cos(theta) - e_max sin(theta).
+// The side offsets are loose by about 2 f times the node width, top and bottom by e_max sin(theta).
+void NodeBounds::tightenOnEllipsoid(const RadiusRange& real, const Ellipsoid& shape) {
+  radius = real;
+  const glm::dvec3& c = centreDirection;
+  double minCos = 1.0;
+  for (const glm::dvec3& d : cornerDirections) minCos = std::min(minCos, glm::dot(c, d));
+  assert(minCos > 0.0);
+  const double sinTheta = std::sqrt(std::max(0.0, (1.0 - minCos) * (1.0 + minCos)));
+  // nz range of the cap: sin(latitude of c -/+ theta), or a pole inside it. Padded against rounding.
+  const double horizontal = std::sqrt(std::max(0.0, (1.0 - c.z) * (1.0 + c.z)));
+  constexpr double kZPad = 1e-12;
+  const double zHigh = c.z >= minCos ? 1.0 : std::min(1.0, c.z * minCos + horizontal * sinTheta + kZPad);
+  const double zLow = -c.z >= minCos ? -1.0 : std::max(-1.0, c.z * minCos - horizontal * sinTheta - kZPad);
+  double eMin = 0.0, eMax = 0.0;
+  shape.axisOffsetRange_m(zLow, zHigh, eMin, eMax);
+  assert(real.min_m > eMax);  // LodSelector::create checks b + minElevation against it
+  const double gLow = shape.sideOffset_m(zLow);
+  const double gHigh = shape.sideOffset_m(zHigh);
+  for (size_t e = 0; e < 4; ++e) {
+    const double kz = planes[e].z;
+    planes[e].w = -std::max(-kz * gLow, -kz * gHigh);
+  }
+  const double top = std::sqrt(std::max(0.0, (real.max_m - eMin) * (real.max_m + eMin))) + eMax * sinTheta;
+  const double bottom = std::sqrt(std::max(0.0, (real.min_m - eMax) * (real.min_m + eMax))) * minCos - eMax * sinTheta;
+  planes[4] = {c, -top};
+  planes[5] = {-c, bottom};
+  for (size_t i = 0; i < 4; ++i) {
+    const glm::dvec4& before = planes[(i + 3) % 4];  // corner i ends edge i - 1 and starts edge i
+    corners[i] = intersectPlanes(before, planes[i], planes[4]);
+    corners[4 + i] = intersectPlanes(before, planes[i], planes[5]);
+  }
+  // Centred on the corners, not on the axis: the geodetic normals' line through the centre passes up to
+  // e_max (21 km on WGS84) beside the node.
+  sphereCentre = glm::dvec3(0.0);
+  for (const glm::dvec3& corner : corners) sphereCentre += corner;
+  sphereCentre *= 0.125;
+  double radius2 = 0.0;
+  for (const glm::dvec3& corner : corners)
+    radius2 = std::max(radius2, glm::dot(corner - sphereCentre, corner - sphereCentre));
+  sphereRadius = std::sqrt(radius2) * (1.0 + kSpherePad) + 4e-15 * real.max_m;
+}
+
 std::array<NodeBounds, 4> childBounds(const FaceMapping& m, const NodeId& id, const NodeBounds& b,
-                                      const std::array<RadiusRange, 4>& childRadius) {
+                                      const std::array<RadiusRange, 4>& childRadius, const Ellipsoid& shape) {
   const double u0 = id.uMin();
   const double v0 = id.vMin();
   const double half = inversePowerOfTwo(id.level + 1);
@@ -119,7 +190,7 @@ std::array<NodeBounds, 4> childBounds(const FaceMapping& m, const NodeId& id, co
   for (size_t q = 0; q < 4; ++q) {
     const std::array<glm::dvec3, 4>& r = out[q].cornerDirections;
     out[q].centreDirection = glm::normalize((r[0] + r[1]) + (r[2] + r[3]));
-    out[q].tighten(childRadius[q]);
+    out[q].tighten(childRadius[q], shape);
   }
   return out;
 }

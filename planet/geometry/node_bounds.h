@@ -4,11 +4,19 @@
 // direction, a bottom plane parallel to it through the lowest corner ray on S_min — with the 8 corners
 // of that volume and a bounding sphere. The volume holds every surface point of the node whose radius
 // lies in [S_min, S_max]; it is the convex hull of its 8 corners (a truncated pyramid from the centre).
+//
+// On an ellipsoid (Ellipsoid, flattening > 0) the corner rays are geodetic normals, not directions
+// from the centre, and surface points p(n) + h n leave the spherical cone: every plane is moved out by
+// a closed-form bound (docs/lod.md, "Bounds on an ellipsoid"): the side planes by the largest
+// h-independent offset (a^2 - b^2) nz / N over the node's nz range, top and bottom by the offset of
+// p(n) from the normal line through the centre. Corners are then the planes' intersections. On a
+// sphere every number is the same as without a shape, bit for bit.
 #include <array>
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "planet/geometry/ellipsoid.h"
 #include "planet/geometry/face_mapping.h"
 #include "planet/geometry/node_id.h"
 
@@ -33,24 +41,30 @@ struct NodeBounds {
   RadiusRange radius;
 
   // From the node id alone (four corners, centre and side planes evaluated through `mapping`).
-  static NodeBounds forNode(const FaceMapping& mapping, const NodeId& node, const RadiusRange& radius);
+  // `shape`: the planet's ellipsoid; the default (a sphere) gives the spherical bounds, which depend on
+  // no radius. RadiusRange is always the distance from the centre (|p|), on an ellipsoid too.
+  static NodeBounds forNode(const FaceMapping& mapping, const NodeId& node, const RadiusRange& radius,
+                            const Ellipsoid& shape = Ellipsoid());
   // From already known corner rays, side planes and centre direction (the selection builds children
   // from their parent's data this way; see LodSelector).
   static NodeBounds fromRays(const std::array<glm::dvec3, 4>& cornerDirections,
                              const std::array<glm::dvec4, 4>& sidePlanes, const glm::dvec3& centreDirection,
-                             const RadiusRange& radius);
+                             const RadiusRange& radius, const Ellipsoid& shape = Ellipsoid());
   // Outward side plane through the centre and the edge from unit direction a to unit direction b
   // (counter-clockwise seen from outside).
   static glm::dvec4 sidePlane(const glm::dvec3& a, const glm::dvec3& b);
 
   // Re-derive top, bottom, corners and sphere for the node's real radius range (called once its
   // payload is known). Side planes do not change.
-  void tighten(const RadiusRange& real);
+  void tighten(const RadiusRange& real, const Ellipsoid& shape = Ellipsoid());
 
   // Six dot products. `tolerance_m` widens every plane outwards.
   bool contains(const glm::dvec3& point, double tolerance_m = 0.0) const;
   // Largest extent of the volume (metres): the bounding sphere's diameter, >= every corner distance.
   double diagonal() const { return 2.0 * sphereRadius; }
+
+ private:
+  void tightenOnEllipsoid(const RadiusRange& real, const Ellipsoid& shape);
 };
 
 // The four children's bounds (quadrant order, see NodeId::quadrant) built from the parent's: the edge
@@ -58,7 +72,8 @@ struct NodeBounds {
 // children's exact corners); outer half edges keep the parent's side planes, the two mid-lines give
 // the new ones. Cheaper than four forNode() calls; same planes up to rounding.
 std::array<NodeBounds, 4> childBounds(const FaceMapping& mapping, const NodeId& parent, const NodeBounds& bounds,
-                                      const std::array<RadiusRange, 4>& childRadius);
+                                      const std::array<RadiusRange, 4>& childRadius,
+                                      const Ellipsoid& shape = Ellipsoid());
 
 // Euclidean distance (metres) from `point` to the bounds volume; 0 inside.
 double distanceToBounds(const NodeBounds& bounds, const glm::dvec3& point);

@@ -1,5 +1,6 @@
 #include "planet/lod/horizon_cone.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -11,19 +12,37 @@ constexpr double kOccluderShrink = 1.0 - 1e-9;  // relative; keeps the test cons
 
 }  // namespace
 
-HorizonCone::HorizonCone(const glm::dvec3& camera_m, double occluderRadius_m) : camera_(camera_m) {
-  const double r = (occluderRadius_m > 0.0 ? occluderRadius_m : 0.0) * kOccluderShrink;
-  const double d = glm::length(camera_m);
+HorizonCone::HorizonCone(const glm::dvec3& camera_m, double occluderRadius_m) { init(camera_m, occluderRadius_m); }
+
+HorizonCone::HorizonCone(const glm::dvec3& camera_m, const Ellipsoid& shape, double minElevation_m) {
+  if (shape.isSphere()) {
+    init(camera_m, shape.equatorialRadius_m() + minElevation_m);
+    return;
+  }
+  const double s = 1.0 + std::min(0.0, minElevation_m) / shape.polarRadius_m();
+  const double sb = s * shape.polarRadius_m();
+  const double sa = s * shape.equatorialRadius_m();
+  if (!(s > 0.0)) return;  // terrain down to the centre: nothing occludes (disabled)
+  inverseScale_ = {1.0 / sa, 1.0 / sa, 1.0 / sb};
+  boundsScale_ = 1.0 / sb;
+  init(camera_m * inverseScale_, 1.0);
+}
+
+void HorizonCone::init(const glm::dvec3& camera, double occluderRadius) {
+  camera_ = camera;
+  const double r = (occluderRadius > 0.0 ? occluderRadius : 0.0) * kOccluderShrink;
+  const double d = glm::length(camera);
   enabled_ = r > 0.0 && d > r && std::isfinite(d);
   if (!enabled_) return;
-  cameraDirection_ = camera_m / d;
+  cameraDirection_ = camera / d;
   planeDistance_ = (r / d) * r;
   // (d - r)(d + r) keeps precision when the camera is millimetres above the occluder.
   cosSquared_ = ((d - r) / d) * ((d + r) / d);
 }
 
-bool HorizonCone::isHidden(const glm::dvec3& p) const {
+bool HorizonCone::isHidden(const glm::dvec3& point) const {
   if (!enabled_) return false;
+  const glm::dvec3 p = point * inverseScale_;
   if (glm::dot(p, cameraDirection_) >= planeDistance_) return false;  // in front of the horizon plane
   const glm::dvec3 v = p - camera_;
   const double along = -glm::dot(v, cameraDirection_);  // along the cone axis (towards the centre)
@@ -32,12 +51,13 @@ bool HorizonCone::isHidden(const glm::dvec3& p) const {
 
 HorizonVisibility HorizonCone::classify(const NodeBounds& b) const {
   if (!enabled_) return HorizonVisibility::kFullyVisible;
-  if (glm::dot(b.sphereCentre, cameraDirection_) - b.sphereRadius >= planeDistance_) {
+  if (glm::dot(b.sphereCentre * inverseScale_, cameraDirection_) - b.sphereRadius * boundsScale_ >= planeDistance_) {
     return HorizonVisibility::kFullyVisible;
   }
   int hidden = 0;
   int inFront = 0;
-  for (const glm::dvec3& c : b.corners) {
+  for (const glm::dvec3& corner : b.corners) {
+    const glm::dvec3 c = corner * inverseScale_;
     if (glm::dot(c, cameraDirection_) >= planeDistance_) {
       ++inFront;
       continue;

@@ -41,24 +41,46 @@ Result<LodSelector> LodSelector::create(const LodConfig& c, const FaceMapping& m
   if (!(c.prefetch.ringRangeFactor >= 0.0 && c.prefetch.ringRangeFactor <= 1.0)) {
     return bad("prefetch.ringRangeFactor", "must be in [0, 1]");
   }
+  Result<Ellipsoid> shape = Ellipsoid::create(c.radius_m, c.flattening, "shape");
+  if (!shape) return shape.error();
+  // The ellipsoidal bounds need every surface point farther from the centre than p(n) is from the
+  // normal line through it (NodeBounds::tighten); only an extreme shape with deep terrain fails this.
+  double axisMin = 0.0, axisMax = 0.0;
+  shape->axisOffsetRange_m(0.0, 1.0, axisMin, axisMax);
+  if (!shape->isSphere() && !(shape->polarRadius_m() + c.minElevation_m > axisMax * (1.0 + 1e-9))) {
+    return bad("minElevation", "reaches too deep for the ellipsoid (below its largest normal offset)");
+  }
   Result<LodRanges> ranges = LodRanges::create(c.ranges, c.radius_m);
   if (!ranges) return ranges.error();
-  return LodSelector(c, mapping, std::move(ranges.value()));
+  return LodSelector(c, mapping, std::move(ranges.value()), *shape);
 }
 
-LodSelector::LodSelector(const LodConfig& config, const FaceMapping& mapping, LodRanges ranges)
+namespace {
+
+// Distances from the centre (|p|) of every terrain point with ellipsoidal height in [min, max]:
+// |p| >= dot(p, n) = N + h >= b + min, and |p| <= a + max(max, 0).
+RadiusRange planetRadiusRange(const Ellipsoid& shape, double minElevation_m, double maxElevation_m) {
+  const double a = shape.equatorialRadius_m();
+  if (shape.isSphere()) return {a + minElevation_m, a + maxElevation_m};
+  return {shape.polarRadius_m() + minElevation_m, a + std::max(0.0, maxElevation_m)};
+}
+
+}  // namespace
+
+LodSelector::LodSelector(const LodConfig& config, const FaceMapping& mapping, LodRanges ranges, const Ellipsoid& shape)
     : config_(config),
       mapping_(&mapping),
       ranges_(std::move(ranges)),
-      defaultRange_{config.radius_m + config.minElevation_m, config.radius_m + config.maxElevation_m} {
+      shape_(shape),
+      defaultRange_(planetRadiusRange(shape, config.minElevation_m, config.maxElevation_m)) {
   for (int f = 0; f < kFaceCount; ++f) {
     rootBounds_[static_cast<size_t>(f)] =
-        NodeBounds::forNode(mapping, {static_cast<uint8_t>(f), 0, 0, 0}, defaultRange_);
+        NodeBounds::forNode(mapping, {static_cast<uint8_t>(f), 0, 0, 0}, defaultRange_, shape_);
   }
 }
 
 NodeBounds LodSelector::boundsFor(const NodeId& node, const NodeResidency& residency) const {
-  return NodeBounds::forNode(*mapping_, node, residency.knownRadiusRange(node).value_or(defaultRange_));
+  return NodeBounds::forNode(*mapping_, node, residency.knownRadiusRange(node).value_or(defaultRange_), shape_);
 }
 
 Status LodSelector::select(const SelectionCamera& camera, NodeResidency& residency, Selection& out) {
@@ -67,7 +89,8 @@ Status LodSelector::select(const SelectionCamera& camera, NodeResidency& residen
   if (!isFinite(camera.position_m)) return Error::inField("camera", "position is not finite");
   Context ctx{camera.position_m,
               camera.frustum,
-              HorizonCone(camera.position_m, config_.horizonCulling ? defaultRange_.min_m : 0.0),
+              config_.horizonCulling ? HorizonCone(camera.position_m, shape_, config_.minElevation_m)
+                                     : HorizonCone(camera.position_m, 0.0),
               &residency,
               &out,
               false,
@@ -93,7 +116,7 @@ void LodSelector::selectOnce(Context& ctx) {
     const NodeId root{static_cast<uint8_t>(f), 0, 0, 0};
     const std::optional<RadiusRange> known = ctx.residency->knownRadiusRange(root);
     NodeBounds b = rootBounds_[static_cast<size_t>(f)];
-    if (known) b.tighten(*known);
+    if (known) b.tighten(*known, shape_);
     visit(root, b, {known.has_value(), false, ctx.frustum == nullptr, false}, ctx);
   }
 }
@@ -154,7 +177,7 @@ void LodSelector::visitChildren(const NodeId& id, const NodeBounds& b, const std
     known[q] = ctx.residency->knownRadiusRange(children[q]);
     childRadius[q] = known[q].value_or(defaultRange_);
   }
-  const std::array<NodeBounds, 4> bounds = childBounds(*mapping_, id, b, childRadius);
+  const std::array<NodeBounds, 4> bounds = childBounds(*mapping_, id, b, childRadius, shape_);
   for (size_t q = 0; q < 4; ++q) {
     const bool inRange = intersectsSphere(bounds[q], ctx.camera, range_m);
     visit(children[q], bounds[q], {known[q].has_value(), !inRange, state.insideFrustum, state.fullyVisible}, ctx);
@@ -241,7 +264,7 @@ void LodSelector::prefetchVisit(const NodeId& id, const NodeBounds& b, bool full
   for (size_t q = 0; q < 4; ++q) {
     childRadius[q] = ctx.residency->knownRadiusRange(id.child(static_cast<int>(q))).value_or(defaultRange_);
   }
-  const std::array<NodeBounds, 4> bounds = childBounds(*mapping_, id, b, childRadius);
+  const std::array<NodeBounds, 4> bounds = childBounds(*mapping_, id, b, childRadius, shape_);
   for (size_t q = 0; q < 4; ++q) prefetchVisit(id.child(static_cast<int>(q)), bounds[q], fullyVisible, ctx);
 }
 

@@ -47,7 +47,8 @@ struct PrefetchConfig {
 };
 
 struct LodConfig {
-  double radius_m = 6371000.0;       // planet radius (metres)
+  double radius_m = 6371000.0;       // planet radius (metres); the equatorial radius a of an ellipsoid
+  double flattening = 0.0;           // (a - b) / a in [0, 0.5]; 0 = a sphere (Ellipsoid)
   double minElevation_m = -11000.0;  // default node bounds until a payload's real range is known;
   double maxElevation_m = 9000.0;    // minElevation also sets the horizon occluder (R + min)
   LodRangeConfig ranges;
@@ -107,11 +108,12 @@ class LodSelector {
   const LodRanges& ranges() const { return ranges_; }
   LodRanges& ranges() { return ranges_; }
   RadiusRange defaultRadiusRange() const { return defaultRange_; }
+  const Ellipsoid& shape() const { return shape_; }
   // Bounds the selection uses for `node` (its known range, else the default).
   NodeBounds boundsFor(const NodeId& node, const NodeResidency& residency) const;
 
  private:
-  LodSelector(const LodConfig& config, const FaceMapping& mapping, LodRanges ranges);
+  LodSelector(const LodConfig& config, const FaceMapping& mapping, LodRanges ranges, const Ellipsoid& shape);
   struct Context;
   // What is known about a node when it is visited; the two visibility facts are inherited from the
   // parent, so a subtree wholly inside stops testing.
@@ -138,6 +140,7 @@ class LodSelector {
   LodConfig config_;
   const FaceMapping* mapping_;
   LodRanges ranges_;
+  Ellipsoid shape_;
   RadiusRange defaultRange_;
   std::array<NodeBounds, 30> rootBounds_;  // the 30 roots at the default range (corners, side planes)
 };

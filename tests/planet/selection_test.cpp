@@ -20,8 +20,12 @@ using testing::PartlyResident;
 using testing::SyntheticTerrain;
 
 // tolerance_px > 0: tolerance-driven ranges (from SyntheticTerrain::errorOf), else distance ranges.
-LodSelector makeSelector(int maxDepth = 20, bool horizon = true, double tolerance_px = 0.0) {
+LodSelector makeSelector(int maxDepth = 20, bool horizon = true, double tolerance_px = 0.0, double flattening = 0.0) {
   LodConfig c;
+  if (flattening > 0.0) {
+    c.radius_m = 6378137.0;
+    c.flattening = flattening;
+  }
   c.ranges.maxDepth = maxDepth;
   c.ranges.tolerance_px = tolerance_px;
   c.minElevation_m = -8000.0;
@@ -79,6 +83,31 @@ std::vector<glm::dvec3> specialDirections() {
   return d;
 }
 
+// Seeded cameras over the special directions, then random ones up to `count`: altitude log-uniform
+// 1 mm .. 1e8 m, placed by `placeEye(up, altitude)`, looking at a random direction below the horizon.
+struct SeededCamera {
+  glm::dvec3 eye;
+  Frustum frustum;
+  double altitude_m;
+};
+template <class PlaceEye>
+std::vector<SeededCamera> seededCameras(uint64_t seed, size_t count, PlaceEye placeEye) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<glm::dvec3> directions = specialDirections();
+  while (directions.size() < count) directions.push_back(testing::randomDirection(rng));
+  std::vector<SeededCamera> cameras;
+  for (const glm::dvec3& up : directions) {
+    const double altitude = std::pow(10.0, -3.0 + 11.0 * unit(rng));
+    const glm::dvec3 eye = placeEye(up, altitude);
+    const auto frustum =
+        Frustum::fromViewProjection(lookingAt(eye, glm::normalize(testing::randomDirection(rng) - up)));
+    EXPECT_TRUE(frustum.ok());
+    cameras.push_back({eye, frustum.value(), altitude});
+  }
+  return cameras;
+}
+
 // The restriction and tiling tests run with distance ranges (0) and tolerance-driven ranges (px).
 class SelectionLod : public ::testing::TestWithParam<double> {};
 INSTANTIATE_TEST_SUITE_P(Ranges, SelectionLod, ::testing::Values(0.0, 1.0, 8.0),
@@ -91,21 +120,15 @@ TEST_P(SelectionLod, RestrictedQuadtreeOverRandomCameras) {
   LodSelector selector = makeSelector(20, true, GetParam());
   AllResident residency{SyntheticTerrain{}};
   Selection out;
-  std::mt19937_64 rng(99);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<glm::dvec3> directions = specialDirections();
-  while (directions.size() < 160) directions.push_back(testing::randomDirection(rng));
+  const std::vector<SeededCamera> cameras =
+      seededCameras(99, 160, [](const glm::dvec3& up, double altitude) { return up * (kEarthRadius_m + altitude); });
   size_t total = 0;
-  for (size_t i = 0; i < directions.size(); ++i) {
-    const double altitude = std::pow(10.0, -3.0 + 11.0 * unit(rng));  // 1 mm .. 1e8 m
-    const glm::dvec3 eye = directions[i] * (kEarthRadius_m + altitude);
-    const auto frustum =
-        Frustum::fromViewProjection(lookingAt(eye, glm::normalize(testing::randomDirection(rng) - directions[i])));
-    ASSERT_TRUE(frustum.ok());
+  for (size_t i = 0; i < cameras.size(); ++i) {
+    const SeededCamera& c = cameras[i];
     for (bool culling : {false, true}) {
-      SelectionCamera camera{eye, culling ? &frustum.value() : nullptr};
+      SelectionCamera camera{c.eye, culling ? &c.frustum : nullptr};
       ASSERT_TRUE(selector.select(camera, residency, out).ok());
-      EXPECT_EQ(countRestrictionViolations(out), 0) << "camera " << i << " altitude " << altitude;
+      EXPECT_EQ(countRestrictionViolations(out), 0) << "camera " << i << " altitude " << c.altitude_m;
       EXPECT_EQ(out.stats.selected, out.nodes.size());
       total += out.nodes.size();
     }
@@ -124,6 +147,47 @@ TEST_P(SelectionLod, TilesTheSphereWithoutCulling) {
       EXPECT_EQ(countRestrictionViolations(out), 0);
     }
   }
+}
+
+// The same restriction and tiling checks on ellipsoids (WGS84 and an extreme flattening of 0.1), with
+// distance ranges and a 2 px tolerance, cameras placed at ellipsoidal heights 1 mm .. 1e8 m.
+struct EllipsoidCase {
+  const char* name;
+  double flattening;
+  double tolerance_px;
+};
+class EllipsoidSelectionLod : public ::testing::TestWithParam<EllipsoidCase> {};
+INSTANTIATE_TEST_SUITE_P(Shapes, EllipsoidSelectionLod,
+                         ::testing::Values(EllipsoidCase{"WGS84", 1.0 / 298.257223563, 0.0},
+                                           EllipsoidCase{"WGS84Tolerance2px", 1.0 / 298.257223563, 2.0},
+                                           EllipsoidCase{"Flattening0p1", 0.1, 0.0},
+                                           EllipsoidCase{"Flattening0p1Tolerance2px", 0.1, 2.0}),
+                         [](const ::testing::TestParamInfo<EllipsoidCase>& p) { return std::string(p.param.name); });
+
+TEST_P(EllipsoidSelectionLod, RestrictedAndTilingOverCameras) {
+  const EllipsoidCase& param = GetParam();
+  const Ellipsoid shape = Ellipsoid::create(6378137.0, param.flattening).value();
+  LodSelector culled = makeSelector(20, true, param.tolerance_px, param.flattening);
+  LodSelector unculled = makeSelector(20, false, param.tolerance_px, param.flattening);
+  SyntheticTerrain terrain;
+  terrain.radius_m = 6378137.0;
+  terrain.flattening = param.flattening;
+  AllResident residency{terrain};
+  Selection out;
+  const std::vector<SeededCamera> cameras =
+      seededCameras(98, 60, [&shape](const glm::dvec3& up, double altitude) { return shape.position(up, altitude); });
+  size_t total = 0;
+  for (size_t i = 0; i < cameras.size(); ++i) {
+    const SeededCamera& c = cameras[i];
+    ASSERT_TRUE(culled.select({c.eye, &c.frustum}, residency, out).ok());
+    EXPECT_EQ(countRestrictionViolations(out), 0) << "camera " << i << " altitude " << c.altitude_m;
+    total += out.nodes.size();
+    ASSERT_TRUE(unculled.select({c.eye, nullptr}, residency, out).ok());
+    EXPECT_EQ(countRestrictionViolations(out), 0) << "camera " << i << " altitude " << c.altitude_m;
+    expectTiling(out);
+    total += out.nodes.size();
+  }
+  EXPECT_GT(total, 3000u);
 }
 
 TEST(Selection, SmoothSphereReachesMaxDepthNearTheGround) {

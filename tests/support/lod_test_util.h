@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "planet/geometry/ellipsoid.h"
 #include "planet/geometry/face_mapping.h"
 #include "planet/geometry/node_id.h"
 #include "planet/geometry/triacontahedron.h"
@@ -80,14 +81,30 @@ inline glm::dvec3 randomDirection(std::mt19937_64& rng) {
 
 // A terrain whose real radius range over a node shrinks with the node: |elevation| up to
 // min(amplitude, relief * width), with a per-node wobble so diagonals differ between nodes.
+// With a flattening, the terrain lies on the ellipsoid of equatorial radius radius_m: the range is the
+// distance from the centre of its heights +-a over the node's 3 x 3 grid of geodetic normals.
 struct SyntheticTerrain {
   double radius_m = kEarthRadius_m;
   double amplitude_m = 8000.0;
   double relief = 0.05;
+  double flattening = 0.0;
   RadiusRange rangeOf(const NodeId& id) const {
     const double wobble = 0.5 + 0.5 * static_cast<double>(NodeIdHash{}(id) % 1024) / 1023.0;
     const double a = std::min(amplitude_m, relief * nominalNodeWidth(id.level, radius_m)) * wobble;
-    return {radius_m - a, radius_m + a};
+    if (flattening == 0.0) return {radius_m - a, radius_m + a};
+    const Ellipsoid shape = Ellipsoid::create(radius_m, flattening).value();
+    RadiusRange r{radius_m, 0.0};
+    for (int j = 0; j <= 2; ++j) {
+      for (int i = 0; i <= 2; ++i) {
+        const glm::dvec3 n = RhombusFaceMapping::get().unitPoint(id.face, id.uMin() + id.size() * 0.5 * i,
+                                                                 id.vMin() + id.size() * 0.5 * j);
+        for (double h : {-a, a}) {
+          r.min_m = std::min(r.min_m, glm::length(shape.position(n, h)));
+          r.max_m = std::max(r.max_m, glm::length(shape.position(n, h)));
+        }
+      }
+    }
+    return r;
   }
   // Geometric error of a node's payload (its parent's mesh vs its own): a fraction of its relief,
   // rough in the northern hemisphere's western half and flat (1 %) elsewhere, so tolerance-driven
