@@ -52,6 +52,7 @@ void BM_PhysicsStep(benchmark::State& state) {
   for (int warm = 0; warm < 2000 && (sim.pool().stats().queued > 0 || warm < 8); ++warm) sim.step();
   const size_t first = sim.stats().step_ms.size();
   const double processStart_ms = processCpu_ms();
+  const CollisionPoolStats before = sim.pool().stats();
   for (auto _ : state) sim.step();
   // Every thread's CPU time (the physics threads and the selection worker) per step: the work, as
   // opposed to the wall time a step takes, which on a shared machine includes waiting for a core.
@@ -76,6 +77,9 @@ void BM_PhysicsStep(benchmark::State& state) {
   state.counters["sync"] = double(sim.pool().stats().generatedSync);
   state.counters["async"] = double(sim.pool().stats().generatedAsync);
   state.counters["evicted"] = double(sim.pool().stats().evicted);
+  // Meshes that arrived during the timed steps (each a BVH build).
+  state.counters["timed_arrivals"] = double(sim.pool().stats().generatedAsync + sim.pool().stats().generatedSync -
+                                            before.generatedAsync - before.generatedSync);
   uint32_t asleep = 0;  // Bullet deactivated them: below the sleep thresholds for 2 s
   for (uint32_t id = 0; id < sim.world().bodyCount(); ++id) asleep += sim.world().state(id).sleeping ? 1u : 0u;
   state.counters["asleep"] = double(asleep);

@@ -2,6 +2,7 @@
 
 #include "planet/core/parallel_for.h"
 #include "planet/physics/body_groups.h"
+#include "planet/physics/grid_mesh_shape.h"
 
 #include <btBulletCollisionCommon.h>
 #include <btBulletDynamicsCommon.h>
@@ -32,17 +33,13 @@ btScalar combinedRollingFriction(const btCollisionObject* a, const btCollisionOb
 }
 
 // A static terrain mesh: its vertices turned into the node's tangent frame (z up at the node
-// centre), the shared index grid, its BVH and its object at the node centre. In the tangent frame
-// the BVH's boxes are flat slabs around the terrain, so a body above the ground misses the root box
-// at once; in planet-aligned axes a tilted patch's boxes are cubes full of empty air and every query
-// walked deep into the tree (a third of a step with 1 000 bodies).
+// centre), indexed by its grid (planet/physics/grid_mesh_shape.h), and its object at the node
+// centre, one per world. In the tangent frame the mesh's box is a flat slab around the terrain, so
+// a body above the ground misses it at once (meshNearCallback); in planet-aligned axes a tilted
+// patch's box is a cube full of empty air.
 struct StaticMesh {
   NodeId node;
-  std::vector<double> local_m;   // xyz per vertex in the tangent frame
-  btVector3 localMin, localMax;  // bounds of local_m
-  btIndexedMesh part;
-  std::unique_ptr<btTriangleIndexVertexArray> array;
-  std::unique_ptr<btBvhTriangleMeshShape> shape;
+  std::unique_ptr<GridMeshShape> shape;
   std::vector<std::unique_ptr<btCollisionObject>> objects;  // one per world, sharing the shape
 };
 
@@ -77,7 +74,8 @@ void meshNearCallback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher,
     const btVector3 local = object->getWorldTransform().invXform(centre);
     bool apart = false;
     for (int axis = 0; axis < 3; ++axis)
-      apart |= local[axis] + radius < mesh->localMin[axis] || local[axis] - radius > mesh->localMax[axis];
+      apart |=
+          local[axis] + radius < mesh->shape->localMin()[axis] || local[axis] - radius > mesh->shape->localMax()[axis];
     if (apart) {
       if (pair.m_algorithm) {
         btManifoldArray manifolds;
@@ -121,7 +119,6 @@ struct PhysicsWorld::Impl {
   std::vector<std::unique_ptr<Shard>> shards;
   std::vector<Body> bodies;
   std::unordered_map<uint64_t, std::unique_ptr<StaticMesh>> meshes;
-  std::unordered_map<uint32_t, std::vector<int>> indices;  // per cells
   uint64_t steps = 0;
 
   void regroup(double step_s);
@@ -336,34 +333,15 @@ std::optional<double> PhysicsWorld::rayCastMeshes(const glm::dvec3& origin_m, co
 }
 
 void PhysicsWorld::meshResident(const CollisionMesh& mesh) {
-  auto& indices = impl_->indices[mesh.cells];
-  if (indices.empty()) indices = collisionGridIndices(mesh.cells);
   auto s = std::make_unique<StaticMesh>();
   s->node = mesh.node;
   const btMatrix3x3 frame = tangentFrame(mesh.centre_m);
-  s->local_m.resize(mesh.vertices_m.size());
-  s->localMin = btVector3(BT_LARGE_FLOAT, BT_LARGE_FLOAT, BT_LARGE_FLOAT);
-  s->localMax = -s->localMin;
+  std::vector<double> local_m(mesh.vertices_m.size());
   for (size_t k = 0; k + 2 < mesh.vertices_m.size(); k += 3) {
     const btVector3 local = btVector3(mesh.vertices_m[k], mesh.vertices_m[k + 1], mesh.vertices_m[k + 2]) * frame;
-    s->local_m[k] = local.x(), s->local_m[k + 1] = local.y(), s->local_m[k + 2] = local.z();
-    s->localMin.setMin(local);
-    s->localMax.setMax(local);
+    local_m[k] = local.x(), local_m[k + 1] = local.y(), local_m[k + 2] = local.z();
   }
-  s->part.m_numTriangles = int(indices.size() / 3);
-  s->part.m_triangleIndexBase = reinterpret_cast<const unsigned char*>(indices.data());
-  s->part.m_triangleIndexStride = 3 * sizeof(int);
-  s->part.m_numVertices = int(mesh.vertexCount());
-  s->part.m_vertexBase = reinterpret_cast<const unsigned char*>(s->local_m.data());
-  s->part.m_vertexStride = 3 * sizeof(double);
-  s->part.m_indexType = PHY_INTEGER;
-  s->part.m_vertexType = PHY_DOUBLE;
-  s->array = std::make_unique<btTriangleIndexVertexArray>();
-  s->array->addIndexedMesh(s->part, PHY_INTEGER);
-  // Bullet would find the bounds with six support queries over every triangle (a third of a
-  // BVH build); they are known.
-  s->array->setPremadeAabb(s->localMin, s->localMax);
-  s->shape = std::make_unique<btBvhTriangleMeshShape>(s->array.get(), /*useQuantizedAabbCompression=*/true);
+  s->shape = std::make_unique<GridMeshShape>(mesh.cells, std::move(local_m));
   s->shape->setMargin(settings_.meshMargin_m);
   for (auto& shard : impl_->shards) {
     auto object = std::make_unique<btCollisionObject>();
