@@ -63,6 +63,19 @@ class PhysicsSimulation {
   double surfaceMaxRadius(const glm::dvec3& position_m, double arc_m) const;
 
  private:
+  // Around a body's swept sphere: a larger sphere whose every node was resident when it was made,
+  // and the highest those meshes reach. While the body's later swept spheres stay inside it and no
+  // mesh was evicted, no node can be missing and the predicted-contact test is one comparison.
+  struct ContactCover {
+    glm::dvec3 centre_m{0.0};
+    double radius_m = -1.0;     // < 0: none
+    uint64_t evictions = 0;     // the pool's eviction count when it was made
+    uint64_t retryStep = 0;     // a node was missing: no new attempt before this step
+    double surfaceMax_m = 0.0;  // highest vertex radius of its meshes, metres from the planet centre
+  };
+  bool covered(const ContactCover& cover, const CollisionQuery& swept) const;
+  void makeCover(ContactCover& cover, const CollisionQuery& swept, double speed_m_s,
+                 std::vector<SelectedCollisionNode>& scratch) const;
   void applyRound(const CollisionSelectionRound& round);
   void predictContacts();
   void submitSelection();
@@ -84,6 +97,7 @@ class PhysicsSimulation {
     std::vector<SelectedCollisionNode> missing;  // nodes under the swept sphere not resident
   };
   std::vector<ContactPrediction> predictions_;  // per body, this step
+  std::vector<ContactCover> covers_;            // per body
   SimulationStats stats_;
 };
 

@@ -91,7 +91,6 @@ void meshNearCallback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher,
 struct Body {
   BodySpec spec;
   std::unique_ptr<btCollisionShape> shape;
-  std::unique_ptr<btDefaultMotionState> motion;
   std::unique_ptr<btRigidBody> rigid;
   std::vector<NodeId> contacts;
   double boundingRadius_m = 0.0;
@@ -183,8 +182,10 @@ uint32_t PhysicsWorld::addBody(const BodySpec& spec) {
   const double mass = spec.density_kg_m3 * volume_m3;
   btVector3 inertia(0, 0, 0);
   body.shape->calculateLocalInertia(mass, inertia);
-  body.motion = std::make_unique<btDefaultMotionState>(btTransform(toBt(spec.orientation), toBt(spec.position_m)));
-  btRigidBody::btRigidBodyConstructionInfo info(mass, body.motion.get(), body.shape.get(), inertia);
+  // No motion state: state() reads the body's transform, and Bullet then skips interpolating and
+  // copying every active body's transform after each step.
+  btRigidBody::btRigidBodyConstructionInfo info(mass, nullptr, body.shape.get(), inertia);
+  info.m_startWorldTransform = btTransform(toBt(spec.orientation), toBt(spec.position_m));
   info.m_friction = settings_.friction;
   info.m_restitution = settings_.restitution;
   info.m_linearSleepingThreshold = settings_.sleepLinear_m_s;
