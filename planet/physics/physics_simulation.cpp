@@ -32,6 +32,8 @@ constexpr double kContactSlack_m = 0.1;
 // steps before a cover that found a node missing is tried again.
 constexpr double kCoverPad_m = 0.5;
 constexpr uint64_t kCoverRetrySteps = 4;
+// Room a body's collision selection leaves for its motion (metres, plus three rounds of travel).
+constexpr double kSelectionReuse_m = 1.0;
 
 }  // namespace
 
@@ -151,13 +153,18 @@ void PhysicsSimulation::predictContacts() {
 }
 
 void PhysicsSimulation::submitSelection() {
-  std::vector<CollisionQuery> queries;
+  std::vector<ObjectQuery> queries;
   queries.reserve(world_->bodyCount());
-  // Sleeping bodies need nothing new: the nodes they rest on are pinned by their contacts.
+  // Sleeping bodies need nothing new: the nodes they rest on are pinned by their contacts. A body's
+  // selection is reused while it stays within about three rounds of travel (and 1 m) of where it
+  // was made.
+  const double roundTravel_s = double(3 * kRoundSteps) * settings_.physics.step_s;
   for (uint32_t id = 0; id < world_->bodyCount(); ++id) {
     const BodyState state = world_->state(id);
     if (state.sleeping) continue;
-    queries.push_back({state.position_m, world_->boundingRadius(id) + settings_.interestRadius_m});
+    queries.push_back({id,
+                       {state.position_m, world_->boundingRadius(id) + settings_.interestRadius_m},
+                       kSelectionReuse_m + glm::length(state.velocity_m_s) * roundTravel_s});
   }
   pendingRound_ = worker_->submit(std::move(queries));
   roundSubmitStep_ = stats_.steps;
