@@ -1,7 +1,6 @@
 #include "planet/physics/physics_simulation.h"
 
 #include "planet/analysis/surface_ray.h"
-#include "planet/core/parallel_for.h"
 #include "planet/geometry/angles.h"
 #include "planet/geometry/face_mapping.h"
 #include "planet/lod/lod_ranges.h"
@@ -117,7 +116,7 @@ void PhysicsSimulation::predictContacts() {
   const double dt = settings_.physics.step_s;
   predictions_.resize(world_->bodyCount());
   covers_.resize(world_->bodyCount());
-  parallelFor(predictions_.size(), 128, settings_.physics.threads, [&](size_t begin, size_t end) {
+  world_->threads().run(predictions_.size(), 128, [&](size_t begin, size_t end) {
     std::vector<SelectedCollisionNode> nodes;
     for (size_t id = begin; id < end; ++id) {
       ContactPrediction& p = predictions_[id];

@@ -1,6 +1,5 @@
 #include "planet/physics/physics_world.h"
 
-#include "planet/core/parallel_for.h"
 #include "planet/physics/body_groups.h"
 #include "planet/physics/grid_mesh_shape.h"
 
@@ -115,6 +114,8 @@ constexpr double kReachSlack_m = 1.0;
 }  // namespace
 
 struct PhysicsWorld::Impl {
+  explicit Impl(unsigned threads) : team(threads) {}
+  ThreadTeam team;
   std::vector<std::unique_ptr<Shard>> shards;
   std::vector<Body> bodies;
   std::unordered_map<uint64_t, std::unique_ptr<StaticMesh>> meshes;
@@ -136,7 +137,8 @@ std::string_view bodyShapeName(BodyShape shape) {
   return "sphere";
 }
 
-PhysicsWorld::PhysicsWorld(const PhysicsSettings& settings) : settings_(settings), impl_(std::make_unique<Impl>()) {
+PhysicsWorld::PhysicsWorld(const PhysicsSettings& settings)
+    : settings_(settings), impl_(std::make_unique<Impl>(settings.threads)) {
   for (uint32_t w = 0; w < std::max(settings_.worlds, 1u); ++w) {
     auto shard = std::make_unique<Shard>();
     shard->world.setGravity(btVector3(0, 0, 0));  // radial, per body (step())
@@ -315,7 +317,7 @@ void PhysicsWorld::Impl::stepShard(Shard& shard, const PhysicsSettings& settings
 void PhysicsWorld::step() {
   if (impl_->shards.size() > 1 && impl_->steps % kRegroupSteps == 0) impl_->regroup(settings_.step_s);
   // Shards share no mutable state: each writes only its own bodies' contacts.
-  parallelFor(impl_->shards.size(), 1, settings_.threads, [&](size_t begin, size_t end) {
+  impl_->team.run(impl_->shards.size(), 1, [&](size_t begin, size_t end) {
     for (size_t w = begin; w < end; ++w) impl_->stepShard(*impl_->shards[w], settings_);
   });
   ++impl_->steps;
@@ -370,5 +372,7 @@ void PhysicsWorld::meshEvicted(const NodeId& node) {
 }
 
 size_t PhysicsWorld::meshCount() const { return impl_->meshes.size(); }
+
+ThreadTeam& PhysicsWorld::threads() const { return impl_->team; }
 
 }  // namespace globe

@@ -8,6 +8,7 @@
 // Gravity is radial: g(r) = surfaceGravity · (radius / r)^2 towards the centre, set per body before
 // every step. Steps are fixed (PhysicsSettings::step_s, one Bullet substep each), so a run is
 // deterministic for the same bodies and the same meshes arriving at the same steps.
+#include "planet/core/parallel_for.h"
 #include "planet/physics/collision_mesh_pool.h"
 
 #include <glm/gtc/quaternion.hpp>
@@ -94,6 +95,9 @@ class PhysicsWorld final : public CollisionMeshListener {
   void meshEvicted(const NodeId& node) override;
   size_t meshCount() const;
   const PhysicsSettings& settings() const { return settings_; }
+  // The physics threads (settings().threads, persistent): the worlds step on them, and the
+  // simulation runs its per-body loops on them.
+  ThreadTeam& threads() const;
 
  private:
   struct Impl;
