@@ -61,6 +61,8 @@ class CollisionMeshSource {
   virtual CollisionMesh generateNow(const NodeId& node) = 0;
   // Generations started and not yet collected.
   virtual uint32_t inFlight() const = 0;
+  // Blocks until every generation started so far is collectable (a loading phase, not a step).
+  virtual void finishAll() = 0;
 };
 
 // The payload kernel's CPU reference (fillPayloadReference). "Asynchronous" jobs are computed in
@@ -74,6 +76,7 @@ class CpuCollisionMeshSource final : public CollisionMeshSource {
   void collect(std::vector<CollisionMesh>& finished) override;
   CollisionMesh generateNow(const NodeId& node) override;
   uint32_t inFlight() const override { return uint32_t(ready_.size()); }
+  void finishAll() override {}
 
  private:
   const ElevationModel& model_;

@@ -176,6 +176,11 @@ void PhysicsSimulation::settleSelection() {
   pendingRound_ = 0;
 }
 
+void PhysicsSimulation::prepare() {
+  settleSelection();
+  pool_->generateQueued();
+}
+
 void PhysicsSimulation::step() {
   const auto start = std::chrono::steady_clock::now();
   const double startCpu = threadCpu_ms();
