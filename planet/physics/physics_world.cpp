@@ -146,6 +146,9 @@ PhysicsWorld::PhysicsWorld(const PhysicsSettings& settings)
     // recomputes every object's, ~10 % of a step with 1 600 meshes resident).
     shard->world.setForceUpdateAllAabbs(false);
     shard->dispatcher.setNearCallback(&meshNearCallback);
+    // Bodies rest on static ground, one contact manifold each and rarely a stack: half of Bullet's
+    // default 10 solver iterations hold them (the rest and fall-through tests).
+    shard->world.getSolverInfo().m_numIterations = 5;
     // A moving body's broadphase box is widened ahead of it by twice its size, so a falling body's
     // box is moved in the tree (and its new pairs searched) every few steps instead of every step.
     shard->broadphase.setVelocityPrediction(4.0);
