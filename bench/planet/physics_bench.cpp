@@ -7,6 +7,7 @@
 #include "planet/analysis/percentile.h"
 #include "planet/camera/camera.h"
 #include "planet/elevation/planet_file.h"
+#include "planet/physics/body_groups.h"
 #include "planet/physics/physics_scenario.h"
 
 #include <benchmark/benchmark.h>
@@ -85,6 +86,19 @@ void BM_PhysicsStep(benchmark::State& state) {
   state.counters["asleep"] = double(asleep);
 }
 BENCHMARK(BM_PhysicsStep)->ArgsProduct({{1, 10, 100, 1000}, {0, 1}})->Iterations(600)->Unit(benchmark::kMillisecond);
+
+// Grouping the bodies into worlds (every 4 steps, on the stepping thread): range(0) bodies,
+// range(1) 1 = clustered, with the reach of a body falling at 20 m/s.
+void BM_GroupBodies(benchmark::State& state) {
+  ScenarioSettings scenario;
+  scenario.bodies = uint32_t(state.range(0));
+  scenario.clustered = state.range(1) != 0;
+  scenario.clusterCentre = directionFromLatLon(10.0, 20.0);
+  std::vector<BodyReach> reach;
+  for (const PlacedBody& b : placeBodies(model(), scenario)) reach.push_back({b.spec.position_m, 1.0 + 20.0 * 8.0 / 120.0});
+  for (auto _ : state) benchmark::DoNotOptimize(groupBodies(reach));
+}
+BENCHMARK(BM_GroupBodies)->ArgsProduct({{1000}, {0, 1}})->Unit(benchmark::kMicrosecond);
 
 void BM_CollisionMeshCpu(benchmark::State& state) {
   CpuCollisionMeshSource source(model(), uint32_t(state.range(0)));
