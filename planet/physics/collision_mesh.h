@@ -37,8 +37,8 @@ struct CollisionMesh {
 };
 
 // Memory one resident mesh of `cells` costs: vertices (double, twice: the pool's and the physics
-// world's copy in the node's tangent frame) and a quantised BVH of its 2 cells^2 triangles (Bullet: 16 bytes a node, 2
-// nodes a triangle), plus a fixed overhead.
+// world's copy in the node's tangent frame), the grid shape's block heights and a fixed overhead
+// (the shape and one collision object per world).
 size_t collisionMeshBytes(uint32_t cells);
 
 // Triangle indices of the (cells + 1)^2 vertex grid, counter-clockwise seen from outside, in the
