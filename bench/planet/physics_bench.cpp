@@ -95,7 +95,8 @@ void BM_GroupBodies(benchmark::State& state) {
   scenario.clustered = state.range(1) != 0;
   scenario.clusterCentre = directionFromLatLon(10.0, 20.0);
   std::vector<BodyReach> reach;
-  for (const PlacedBody& b : placeBodies(model(), scenario)) reach.push_back({b.spec.position_m, 1.0 + 20.0 * 8.0 / 120.0});
+  for (const PlacedBody& b : placeBodies(model(), scenario))
+    reach.push_back({b.spec.position_m, 1.0 + 20.0 * 8.0 / 120.0});
   for (auto _ : state) benchmark::DoNotOptimize(groupBodies(reach));
 }
 BENCHMARK(BM_GroupBodies)->ArgsProduct({{1000}, {0, 1}})->Unit(benchmark::kMicrosecond);
