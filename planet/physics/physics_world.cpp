@@ -101,17 +101,6 @@ struct Body {
   uint32_t world = 0;  // which Shard holds it
 };
 
-// Bullet sweeps a fast body twice a step: once for speculative contacts, once to clamp its motion
-// at the first hit (integrateTransforms). The clamp alone keeps it from tunnelling (the 50 m/s
-// tests), so the speculative sweep is skipped: 5 % of a step while 1 000 bodies fall.
-class ClampingWorld final : public btDiscreteDynamicsWorld {
- public:
-  using btDiscreteDynamicsWorld::btDiscreteDynamicsWorld;
-
- protected:
-  void createPredictiveContacts(btScalar /*timeStep*/) override { releasePredictiveContacts(); }
-};
-
 // One independent Bullet world: its own pools (in the configuration), broadphase and solver, so
 // shards step on different threads without sharing anything but the read-only mesh shapes.
 struct Shard {
@@ -119,7 +108,7 @@ struct Shard {
   btCollisionDispatcher dispatcher{&configuration};
   btDbvtBroadphase broadphase;
   btSequentialImpulseConstraintSolver solver;
-  ClampingWorld world{&dispatcher, &broadphase, &solver, &configuration};
+  btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
   std::vector<uint32_t> bodies;  // ids, ascending
 };
 
@@ -165,9 +154,6 @@ PhysicsWorld::PhysicsWorld(const PhysicsSettings& settings)
     // Bodies rest on static ground, one contact manifold each and rarely a stack: half of Bullet's
     // default 10 solver iterations hold them (the rest and fall-through tests).
     shard->world.getSolverInfo().m_numIterations = 5;
-    // A moving body's broadphase box is widened ahead of it by twice its size, so a falling body's
-    // box is moved in the tree (and its new pairs searched) every few steps instead of every step.
-    shard->broadphase.setVelocityPrediction(4.0);
     impl_->shards.push_back(std::move(shard));
   }
   gCalculateCombinedRollingFrictionCallback = &combinedRollingFriction;
