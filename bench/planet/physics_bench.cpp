@@ -7,6 +7,7 @@
 #include "planet/analysis/percentile.h"
 #include "planet/camera/camera.h"
 #include "planet/elevation/planet_file.h"
+#include "planet/physics/body_groups.h"
 #include "planet/physics/physics_scenario.h"
 
 #include <benchmark/benchmark.h>
@@ -52,6 +53,7 @@ void BM_PhysicsStep(benchmark::State& state) {
   for (int warm = 0; warm < 2000 && (sim.pool().stats().queued > 0 || warm < 8); ++warm) sim.step();
   const size_t first = sim.stats().step_ms.size();
   const double processStart_ms = processCpu_ms();
+  const CollisionPoolStats before = sim.pool().stats();
   for (auto _ : state) sim.step();
   // Every thread's CPU time (the physics threads and the selection worker) per step: the work, as
   // opposed to the wall time a step takes, which on a shared machine includes waiting for a core.
@@ -76,11 +78,28 @@ void BM_PhysicsStep(benchmark::State& state) {
   state.counters["sync"] = double(sim.pool().stats().generatedSync);
   state.counters["async"] = double(sim.pool().stats().generatedAsync);
   state.counters["evicted"] = double(sim.pool().stats().evicted);
+  // Meshes that arrived during the timed steps (each a BVH build).
+  state.counters["timed_arrivals"] = double(sim.pool().stats().generatedAsync + sim.pool().stats().generatedSync -
+                                            before.generatedAsync - before.generatedSync);
   uint32_t asleep = 0;  // Bullet deactivated them: below the sleep thresholds for 2 s
   for (uint32_t id = 0; id < sim.world().bodyCount(); ++id) asleep += sim.world().state(id).sleeping ? 1u : 0u;
   state.counters["asleep"] = double(asleep);
 }
 BENCHMARK(BM_PhysicsStep)->ArgsProduct({{1, 10, 100, 1000}, {0, 1}})->Iterations(600)->Unit(benchmark::kMillisecond);
+
+// Grouping the bodies into worlds (every 4 steps, on the stepping thread): range(0) bodies,
+// range(1) 1 = clustered, with the reach of a body falling at 20 m/s.
+void BM_GroupBodies(benchmark::State& state) {
+  ScenarioSettings scenario;
+  scenario.bodies = uint32_t(state.range(0));
+  scenario.clustered = state.range(1) != 0;
+  scenario.clusterCentre = directionFromLatLon(10.0, 20.0);
+  std::vector<BodyReach> reach;
+  for (const PlacedBody& b : placeBodies(model(), scenario))
+    reach.push_back({b.spec.position_m, 1.0 + 20.0 * 8.0 / 120.0});
+  for (auto _ : state) benchmark::DoNotOptimize(groupBodies(reach));
+}
+BENCHMARK(BM_GroupBodies)->ArgsProduct({{1000}, {0, 1}})->Unit(benchmark::kMicrosecond);
 
 void BM_CollisionMeshCpu(benchmark::State& state) {
   CpuCollisionMeshSource source(model(), uint32_t(state.range(0)));

@@ -26,6 +26,10 @@ GpuCollisionMeshSource::GpuCollisionMeshSource(vk::Device& device, const Elevati
       readback_(device, VkDeviceSize(maxInFlight + 1) * positionBlockBytes(cells), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                 vk::MemoryUse::HostVisible, "collision mesh readback") {
   generator_.reserveSlots(maxInFlight + 1);
+  // Each batch copies its positions to readback_ itself: a finished fence means the mesh is on the
+  // host, so collecting never submits or waits (a copy of its own would wait behind every batch
+  // queued after the finished ones).
+  generator_.copyToHost(readback_, positionBlockBytes(cells));
   for (uint32_t s = maxInFlight; s-- > 0;) freeSlots_.push_back(s);
 }
 
@@ -53,21 +57,9 @@ void GpuCollisionMeshSource::poll() {
   }
 }
 
-void GpuCollisionMeshSource::readBack(std::span<const uint32_t> slots) {
-  const VkDeviceSize block = positionBlockBytes(cells());
-  const PayloadPages& pages = generator_.pages();
-  device_.submitAndWait([&](VkCommandBuffer cmd) {
-    std::vector<VkBufferCopy> regions;
-    for (size_t k = 0; k < slots.size(); ++k)
-      regions.push_back({VkDeviceSize(slots[k]) * generator_.slotBytes(), VkDeviceSize(k) * block, block});
-    vkCmdCopyBuffer(cmd, pages.buffer, readback_.handle(), uint32_t(regions.size()), regions.data());
-    vk::hostReadBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
-  });
-}
-
-CollisionMesh GpuCollisionMeshSource::meshFromReadback(const NodeId& node, uint32_t slot, size_t index) const {
+CollisionMesh GpuCollisionMeshSource::meshFromReadback(const NodeId& node, uint32_t slot) const {
   const size_t samples = GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells());
-  const auto* block = static_cast<const glm::vec4*>(readback_.mapped()) + index * samples * samples;
+  const auto* block = static_cast<const glm::vec4*>(readback_.mapped()) + size_t(slot) * samples * samples;
   return collisionMeshFromPayload(node, generator_.slotCentre(slot), cells(),
                                   std::span<const glm::vec4>(block, samples * samples));
 }
@@ -82,30 +74,26 @@ void GpuCollisionMeshSource::collect(std::vector<CollisionMesh>& finished) {
     generator_.waitIdle();
     poll();
   }
-  std::vector<Job> ready;
-  while (!jobs_.empty() && jobs_.front().collectBy <= collects_ && (jobs_.front().done || !deterministic)) {
-    if (!jobs_.front().done) break;
-    ready.push_back(jobs_.front());
+  while (!jobs_.empty() && jobs_.front().collectBy <= collects_ && jobs_.front().done) {
+    finished.push_back(meshFromReadback(jobs_.front().node, jobs_.front().slot));
+    freeSlots_.push_back(jobs_.front().slot);
     jobs_.pop_front();
   }
-  if (ready.empty()) return;
-  copySlots_.clear();
-  for (const Job& job : ready) copySlots_.push_back(job.slot);
-  readBack(copySlots_);
-  for (size_t k = 0; k < ready.size(); ++k) {
-    finished.push_back(meshFromReadback(ready[k].node, ready[k].slot, k));
-    freeSlots_.push_back(ready[k].slot);
-  }
+}
+
+void GpuCollisionMeshSource::finishAll() {
+  generator_.waitIdle();
+  // Due at once: the next collect() hands them out whatever latencySteps says.
+  for (Job& job : jobs_) job.collectBy = std::min(job.collectBy, collects_ + 1);
 }
 
 CollisionMesh GpuCollisionMeshSource::generateNow(const NodeId& node) {
   const GenerationJob job{node, syncSlot_};
   generator_.generate(std::span<const GenerationJob>(&job, 1));
+  // On one in-order queue (lavapipe) the job runs after every batch queued before it anyway.
   generator_.waitIdle();
   poll();
-  const uint32_t slot = syncSlot_;
-  readBack(std::span<const uint32_t>(&slot, 1));
-  return meshFromReadback(node, syncSlot_, 0);
+  return meshFromReadback(node, syncSlot_);
 }
 
 }  // namespace globe

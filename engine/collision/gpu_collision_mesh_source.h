@@ -1,8 +1,9 @@
 #pragma once
 // Collision meshes from the GPU payload kernel (shaders/payload_generate.comp, fp64): the same
-// dispatch that fills render payloads, into a small slot buffer of its own, then only the position
-// block of each finished slot (GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells)^2 vec4s, no normals) is copied
-// into a host-visible buffer and widened into a CollisionMesh. The meshes are therefore bit-
+// dispatch that fills render payloads, into a small slot buffer of its own; each batch then copies
+// only the position block of its slots (GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells)^2 vec4s, no normals)
+// into a host-visible buffer in its own command buffer, and a finished one is widened into a
+// CollisionMesh without another submission. The meshes are therefore bit-
 // identical to what the renderer draws at that level, seams included.
 //
 // collect() hands out finished generations in submission order without waiting (`latencySteps` 0,
@@ -32,6 +33,7 @@ class GpuCollisionMeshSource final : public CollisionMeshSource {
   void collect(std::vector<CollisionMesh>& finished) override;
   CollisionMesh generateNow(const NodeId& node) override;
   uint32_t inFlight() const override { return uint32_t(jobs_.size()); }
+  void finishAll() override;
   // Device time of every generation so far (ms), and nodes generated.
   double gpuTime_ms() const { return generator_.gpuTime_ms(); }
   uint64_t nodesGenerated() const { return generator_.nodesGenerated(); }
@@ -45,9 +47,8 @@ class GpuCollisionMeshSource final : public CollisionMeshSource {
   };
   // Collects finished generations into jobs_ (done flags); non-blocking.
   void poll();
-  // Copies the position blocks of `slots` into the readback buffer (one submit, waited for).
-  void readBack(std::span<const uint32_t> slots);
-  CollisionMesh meshFromReadback(const NodeId& node, uint32_t slot, size_t index) const;
+  // The mesh from the slot's position block, which its batch copied into readback_.
+  CollisionMesh meshFromReadback(const NodeId& node, uint32_t slot) const;
 
   vk::Device& device_;
   GpuPayloadGenerator generator_;
@@ -57,7 +58,6 @@ class GpuCollisionMeshSource final : public CollisionMeshSource {
   std::vector<uint32_t> freeSlots_;
   std::deque<Job> jobs_;
   std::vector<GenerationResult> results_;
-  std::vector<uint32_t> copySlots_;
   uint64_t collects_ = 0;
 };
 

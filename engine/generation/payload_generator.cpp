@@ -1,6 +1,7 @@
 #include "engine/generation/payload_generator.h"
 
 #include "engine/vk/fault_injection.h"
+#include "engine/vk/resources.h"
 #include "engine/vk/vk_check.h"
 #include "engine/vk/vk_create.h"
 #include "planet/geometry/face_mapping.h"
@@ -186,8 +187,22 @@ void GpuPayloadGenerator::record(Batch& batch, std::span<PreparedRequest> reques
   }
   vk::computeWriteBarrier(batch.cmd);
   vkCmdWriteTimestamp2(batch.cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, queries_, 2 * batch.index + 1);
+  if (hostCopy_) {
+    std::vector<VkBufferCopy> regions;
+    for (const GenerationJob& job : batch.submitted)
+      regions.push_back(
+          {VkDeviceSize(job.slot) * slotBytes(), VkDeviceSize(job.slot) * hostCopyBytes_, hostCopyBytes_});
+    vkCmdCopyBuffer(batch.cmd, pages_.buffer, hostCopy_->handle(), uint32_t(regions.size()), regions.data());
+    vk::hostReadBarrier(batch.cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  }
   GLOBE_VK_CHECK(vkEndCommandBuffer(batch.cmd));
   submit(batch);
+}
+
+void GpuPayloadGenerator::copyToHost(const vk::Buffer& destination, VkDeviceSize bytes) {
+  assert(bytes <= slotBytes() && destination.size() >= VkDeviceSize(slotCentres_.size()) * bytes);
+  hostCopy_ = &destination;
+  hostCopyBytes_ = bytes;
 }
 
 void GpuPayloadGenerator::submit(Batch& batch) {

@@ -51,6 +51,12 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   // Blocks until every submitted batch has finished (converged mode, shutdown, tests).
   void waitIdle();
 
+  // From now on, every batch also copies the first `bytes` of each job's slot into `destination`
+  // at slot x bytes, in its own command buffer: once collect() reports a job, its copy is on the
+  // host, with no further submission or wait (collision meshes read their positions back this
+  // way). `destination` must be host-visible, hold every slot, and outlive the generator.
+  void copyToHost(const vk::Buffer& destination, VkDeviceSize bytes);
+
   uint32_t cells() const { return cells_; }
   // Node centre (metres) the payload in `slot` is relative to (the job's snapped centre).
   const glm::dvec3& slotCentre(uint32_t slot) const { return slotCentres_[slot]; }
@@ -112,6 +118,8 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   std::unique_ptr<SourceRequestPreparer> preparer_;
   std::vector<PreparedRequest> prepared_;  // taken from the I/O thread, waiting for an idle batch
   std::vector<double> sourceLatencies_s_;
+  const vk::Buffer* hostCopy_ = nullptr;
+  VkDeviceSize hostCopyBytes_ = 0;
 };
 
 }  // namespace globe

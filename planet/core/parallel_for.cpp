@@ -5,6 +5,7 @@
 #include <exception>
 #include <mutex>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace globe {
@@ -39,6 +40,78 @@ void parallelFor(std::size_t count, std::size_t chunk, unsigned threads,
   for (std::thread& t : helpers) t.join();
   if (failure) std::rethrow_exception(failure);
   if (progress) progress(1.0);
+}
+
+}  // namespace globe
+
+namespace globe {
+
+ThreadTeam::ThreadTeam(unsigned threads) {
+  for (unsigned t = 1; t < std::max(threads, 1U); ++t) helpers_.emplace_back([this] { helperLoop(); });
+}
+
+ThreadTeam::~ThreadTeam() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stop_ = true;
+  }
+  wake_.notify_all();
+  for (std::thread& t : helpers_) t.join();
+}
+
+// Takes chunks until none is left. Chunks are a few per run, so one lock per chunk costs nothing.
+void ThreadTeam::work() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  while (next_ < chunks_) {
+    const std::size_t c = next_++;
+    lock.unlock();
+    try {
+      (*body_)(c * chunk_, std::min(count_, (c + 1) * chunk_));
+    } catch (...) {
+      lock.lock();
+      next_ = chunks_;  // no new chunks; running ones finish
+      if (!failure_) failure_ = std::current_exception();
+      continue;
+    }
+    lock.lock();
+  }
+}
+
+void ThreadTeam::helperLoop() {
+  uint64_t seen = 0;
+  std::unique_lock<std::mutex> lock(mutex_);
+  for (;;) {
+    wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
+    if (stop_) return;
+    seen = generation_;
+    ++busy_;
+    lock.unlock();
+    work();
+    lock.lock();
+    if (--busy_ == 0) idle_.notify_all();
+  }
+}
+
+void ThreadTeam::run(std::size_t count, std::size_t chunk, const std::function<void(std::size_t, std::size_t)>& body) {
+  chunk = std::max<std::size_t>(chunk, 1);
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    body_ = &body;
+    count_ = count;
+    chunk_ = chunk;
+    chunks_ = (count + chunk - 1) / chunk;
+    next_ = 0;
+    failure_ = nullptr;
+    ++generation_;
+  }
+  if (chunks_ > 1) wake_.notify_all();
+  work();
+  std::unique_lock<std::mutex> lock(mutex_);
+  // A helper that wakes after the run is over finds no chunk left and goes back to sleep; the body
+  // it would call stays valid until every helper that took a chunk is done.
+  idle_.wait(lock, [&] { return busy_ == 0; });
+  body_ = nullptr;
+  if (failure_) std::rethrow_exception(std::exchange(failure_, nullptr));
 }
 
 }  // namespace globe

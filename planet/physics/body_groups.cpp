@@ -3,9 +3,8 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <unordered_map>
+#include <limits>
 
 namespace globe {
 
@@ -16,46 +15,34 @@ uint32_t findRoot(std::vector<uint32_t>& parent, uint32_t i) {
   return i;
 }
 
-// Cells of at least 8 m: a cell index fits 21 signed bits per axis for anything within 8 000 km
-// of the planet centre, so three pack into one 64-bit key.
-constexpr double kMinCell_m = 8.0;
-constexpr int64_t kCellBias = int64_t(1) << 20;
-
-uint64_t cellKey(int64_t x, int64_t y, int64_t z) {
-  auto part = [](int64_t v) { return uint64_t(std::clamp<int64_t>(v + kCellBias, 0, 2 * kCellBias - 1)); };
-  return (part(x) << 42) | (part(y) << 21) | part(z);
-}
-
 }  // namespace
 
 std::vector<uint32_t> groupBodies(std::span<const BodyReach> bodies) {
   std::vector<uint32_t> parent(bodies.size());
   for (uint32_t i = 0; i < parent.size(); ++i) parent[i] = i;
-  double maxReach_m = 0.0;
-  for (const BodyReach& b : bodies) maxReach_m = std::max(maxReach_m, b.reach_m);
-  // Two reach spheres that overlap have centres closer than 2 maxReach: adjacent cells or the same.
-  const double cell_m = std::max(kMinCell_m, 2.0 * maxReach_m);
-  std::unordered_map<uint64_t, std::vector<uint32_t>> cells;
-  cells.reserve(bodies.size());
-  std::vector<std::array<int64_t, 3>> cellOf(bodies.size());
-  for (uint32_t i = 0; i < bodies.size(); ++i) {
-    for (int axis = 0; axis < 3; ++axis) cellOf[i][axis] = int64_t(std::floor(bodies[i].position_m[axis] / cell_m));
-    cells[cellKey(cellOf[i][0], cellOf[i][1], cellOf[i][2])].push_back(i);
+  // Sweep and prune along the axis the bodies spread most on: two reach spheres overlap only if
+  // their intervals on it do, so in order of the intervals' low ends each body is compared with
+  // the bodies whose interval starts before its own ends (for bodies scattered over a planet,
+  // about one; in a crowd, its neighbours along that axis).
+  glm::dvec3 low(std::numeric_limits<double>::infinity()), high(-std::numeric_limits<double>::infinity());
+  for (const BodyReach& b : bodies) {
+    low = glm::min(low, b.position_m);
+    high = glm::max(high, b.position_m);
   }
-  for (uint32_t i = 0; i < bodies.size(); ++i) {
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dz = -1; dz <= 1; ++dz) {
-          auto it = cells.find(cellKey(cellOf[i][0] + dx, cellOf[i][1] + dy, cellOf[i][2] + dz));
-          if (it == cells.end()) continue;
-          for (uint32_t j : it->second) {
-            if (j >= i) continue;
-            const double reach_m = bodies[i].reach_m + bodies[j].reach_m;
-            if (glm::length(bodies[i].position_m - bodies[j].position_m) > reach_m) continue;
-            const uint32_t a = findRoot(parent, i), b = findRoot(parent, j);
-            parent[std::max(a, b)] = std::min(a, b);  // the root is the group's smallest id
-          }
-        }
+  const glm::dvec3 spread = high - low;
+  const int axis = spread.x >= spread.y && spread.x >= spread.z ? 0 : (spread.y >= spread.z ? 1 : 2);
+  std::vector<std::pair<double, uint32_t>> order(bodies.size());  // (interval's low end, id)
+  for (uint32_t i = 0; i < bodies.size(); ++i) order[i] = {bodies[i].position_m[axis] - bodies[i].reach_m, i};
+  std::sort(order.begin(), order.end());
+  for (size_t a = 0; a < order.size(); ++a) {
+    const uint32_t i = order[a].second;
+    const double end_m = bodies[i].position_m[axis] + bodies[i].reach_m;
+    for (size_t b = a + 1; b < order.size() && order[b].first <= end_m; ++b) {
+      const uint32_t j = order[b].second;
+      if (glm::length(bodies[i].position_m - bodies[j].position_m) > bodies[i].reach_m + bodies[j].reach_m) continue;
+      const uint32_t ri = findRoot(parent, i), rj = findRoot(parent, j);
+      parent[std::max(ri, rj)] = std::min(ri, rj);  // the root is the group's smallest id
+    }
   }
   for (uint32_t i = 0; i < parent.size(); ++i) parent[i] = findRoot(parent, i);
   return parent;

@@ -10,9 +10,10 @@ namespace globe {
 
 size_t collisionMeshBytes(uint32_t cells) {
   const size_t vertices = size_t(cells + 1) * size_t(cells + 1);
-  const size_t triangles = 2 * size_t(cells) * size_t(cells);
-  // The pool's vertices, the physics world's copy in the node's tangent frame, the BVH.
-  return 2 * vertices * 3 * sizeof(double) + triangles * 2 * 16 + 1024;
+  const size_t blocks = size_t((cells + 3) / 4) * size_t((cells + 3) / 4);
+  // The pool's vertices, the physics world's copy in the node's tangent frame, the grid shape's
+  // block heights (planet/physics/grid_mesh_shape.h; no BVH), objects and bookkeeping.
+  return 2 * vertices * 3 * sizeof(double) + blocks * 2 * sizeof(double) + 2048;
 }
 
 size_t CollisionMesh::bytes() const { return collisionMeshBytes(cells); }

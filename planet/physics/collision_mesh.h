@@ -37,8 +37,8 @@ struct CollisionMesh {
 };
 
 // Memory one resident mesh of `cells` costs: vertices (double, twice: the pool's and the physics
-// world's copy in the node's tangent frame) and a quantised BVH of its 2 cells^2 triangles (Bullet: 16 bytes a node, 2
-// nodes a triangle), plus a fixed overhead.
+// world's copy in the node's tangent frame), the grid shape's block heights and a fixed overhead
+// (the shape and one collision object per world).
 size_t collisionMeshBytes(uint32_t cells);
 
 // Triangle indices of the (cells + 1)^2 vertex grid, counter-clockwise seen from outside, in the
@@ -61,6 +61,8 @@ class CollisionMeshSource {
   virtual CollisionMesh generateNow(const NodeId& node) = 0;
   // Generations started and not yet collected.
   virtual uint32_t inFlight() const = 0;
+  // Blocks until every generation started so far is collectable (a loading phase, not a step).
+  virtual void finishAll() = 0;
 };
 
 // The payload kernel's CPU reference (fillPayloadReference). "Asynchronous" jobs are computed in
@@ -74,6 +76,7 @@ class CpuCollisionMeshSource final : public CollisionMeshSource {
   void collect(std::vector<CollisionMesh>& finished) override;
   CollisionMesh generateNow(const NodeId& node) override;
   uint32_t inFlight() const override { return uint32_t(ready_.size()); }
+  void finishAll() override {}
 
  private:
   const ElevationModel& model_;

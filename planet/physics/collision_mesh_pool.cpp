@@ -30,6 +30,10 @@ CollisionMeshPool::~CollisionMeshPool() {
 void CollisionMeshPool::beginStep(uint64_t step) {
   assert(step > step_ || step_ == 0);
   step_ = step;
+  collectFinished();
+}
+
+void CollisionMeshPool::collectFinished() {
   finished_.clear();
   source_.collect(finished_);
   for (CollisionMesh& mesh : finished_) {
@@ -137,11 +141,22 @@ bool CollisionMeshPool::makeRoom(size_t bytes) {
   return meshBytes_ + bytes <= budgetBytes_;
 }
 
-void CollisionMeshPool::dispatch() {
+void CollisionMeshPool::dispatch() { dispatchUpTo(config_.dispatchBudget); }
+
+void CollisionMeshPool::generateQueued() {
+  for (;;) {
+    dispatchUpTo(config_.maxInFlight);
+    if (source_.inFlight() == 0) return;  // nothing left to start (or no room for it)
+    source_.finishAll();
+    collectFinished();
+  }
+}
+
+void CollisionMeshPool::dispatchUpTo(uint32_t budget) {
   if (nextPending_ == 0) std::stable_sort(pending_.begin(), pending_.end());
   jobs_.clear();
   const uint32_t room = config_.maxInFlight > source_.inFlight() ? config_.maxInFlight - source_.inFlight() : 0;
-  const uint32_t want = std::min(config_.dispatchBudget, room);
+  const uint32_t want = std::min(budget, room);
   while (nextPending_ < pending_.size() && jobs_.size() < want) {
     const uint64_t key = pending_[nextPending_++].second;
     if (entries_.count(key)) continue;  // generated meanwhile

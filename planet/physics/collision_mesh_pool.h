@@ -74,6 +74,9 @@ class CollisionMeshPool {
   void pin(const NodeId& node);
   // Evicts as needed and starts at most dispatchBudget asynchronous generations, nearest first.
   void dispatch();
+  // A loading phase (before the first step): starts every queued request and waits for them all,
+  // so they are resident when it returns.
+  void generateQueued();
 
   const CollisionPoolStats& stats() const { return stats_; }
   size_t budgetBytes() const { return budgetBytes_; }
@@ -90,6 +93,8 @@ class CollisionMeshPool {
     bool pinnedEver = false;
     double distance_m = 0.0;
   };
+  void collectFinished();
+  void dispatchUpTo(uint32_t budget);
   void insertResident(CollisionMesh mesh);
   // Frees room for `bytes` more; false when only pinned or wanted nodes are left.
   bool makeRoom(size_t bytes);

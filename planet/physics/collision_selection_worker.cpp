@@ -1,5 +1,7 @@
 #include "planet/physics/collision_selection_worker.h"
 
+#include "planet/geometry/angles.h"
+
 #include <algorithm>
 #include <chrono>
 #include <unordered_map>
@@ -18,7 +20,7 @@ CollisionSelectionWorker::~CollisionSelectionWorker() {
   thread_.join();
 }
 
-uint64_t CollisionSelectionWorker::submit(std::vector<CollisionQuery> queries) {
+uint64_t CollisionSelectionWorker::submit(std::vector<ObjectQuery> queries) {
   uint64_t round;
   {
     std::lock_guard lock(mutex_);
@@ -43,16 +45,32 @@ void CollisionSelectionWorker::waitFor(uint64_t round) {
   done_.wait(lock, [&] { return finished_ >= round; });
 }
 
-CollisionSelectionRound CollisionSelectionWorker::selectRound(const std::vector<CollisionQuery>& queries,
-                                                              uint64_t round) const {
+void CollisionSelectionWorker::selectObject(const ObjectQuery& q, std::vector<SelectedCollisionNode>& out) {
+  if (q.object >= selections_.size()) selections_.resize(size_t(q.object) + 1);
+  Selection& last = selections_[q.object];
+  // Inside the last selection's cap (arcs on the lowest surface sphere, as selectCollisionNodes
+  // measures them): every node within the query's radius is among its nodes.
+  double moved_m =
+      last.radius_m < 0.0 ? 0.0 : minSurfaceRadius_m_ * angleBetween_rad(last.position_m, q.query.position_m);
+  if (last.radius_m < 0.0 || moved_m + q.query.radius_m > last.radius_m) {
+    last.position_m = q.query.position_m;
+    last.radius_m = q.query.radius_m + q.reuse_m;
+    last.nodes.clear();
+    selectCollisionNodes(mapping_, minSurfaceRadius_m_, {last.position_m, last.radius_m}, level_, last.nodes);
+    moved_m = 0.0;
+  }
+  for (const SelectedCollisionNode& s : last.nodes) out.push_back({s.node, std::max(0.0, s.distance_m - moved_m)});
+}
+
+CollisionSelectionRound CollisionSelectionWorker::selectRound(const std::vector<ObjectQuery>& queries, uint64_t round) {
   const auto start = std::chrono::steady_clock::now();
   CollisionSelectionRound result;
   result.round = round;
   std::vector<SelectedCollisionNode> scratch;
   std::unordered_map<uint64_t, size_t> index;
-  for (const CollisionQuery& query : queries) {
+  for (const ObjectQuery& query : queries) {
     scratch.clear();
-    selectCollisionNodes(mapping_, minSurfaceRadius_m_, query, level_, scratch);
+    selectObject(query, scratch);
     for (const SelectedCollisionNode& s : scratch) {
       auto [it, inserted] = index.try_emplace(s.node.key(), result.nodes.size());
       if (inserted) {
@@ -74,7 +92,7 @@ void CollisionSelectionWorker::run() {
   for (;;) {
     wake_.wait(lock, [&] { return stop_ || haveInput_; });
     if (stop_) return;
-    std::vector<CollisionQuery> queries = std::move(input_);
+    std::vector<ObjectQuery> queries = std::move(input_);
     const uint64_t round = submitted_;
     haveInput_ = false;
     lock.unlock();

@@ -1,7 +1,7 @@
 #include "planet/physics/physics_simulation.h"
 
 #include "planet/analysis/surface_ray.h"
-#include "planet/core/parallel_for.h"
+#include "planet/geometry/angles.h"
 #include "planet/geometry/face_mapping.h"
 #include "planet/lod/lod_ranges.h"
 
@@ -27,6 +27,12 @@ double threadCpu_ms() {
 
 // Slack above the predicted-contact surface (metres): Bullet's contact margin and rounding.
 constexpr double kContactSlack_m = 0.1;
+// A contact cover's room beyond the swept sphere (metres, plus eight steps of travel), and the
+// steps before a cover that found a node missing is tried again.
+constexpr double kCoverPad_m = 0.5;
+constexpr uint64_t kCoverRetrySteps = 4;
+// Room a body's collision selection leaves for its motion (metres, plus three rounds of travel).
+constexpr double kSelectionReuse_m = 1.0;
 
 }  // namespace
 
@@ -75,12 +81,42 @@ void PhysicsSimulation::applyRound(const CollisionSelectionRound& round) {
   for (const SelectedCollisionNode& s : round.nodes) pool_->request(s.node, s.distance_m);
 }
 
+bool PhysicsSimulation::covered(const ContactCover& cover, const CollisionQuery& swept) const {
+  if (cover.radius_m < 0.0 || cover.evictions != pool_->stats().evicted) return false;
+  // The selection measures arcs on the lowest surface sphere around a query's direction (see
+  // selectCollisionNodes), so the swept cap must lie inside the cover's cap.
+  return minSurfaceRadius_m_ * angleBetween_rad(cover.centre_m, swept.position_m) + swept.radius_m <= cover.radius_m;
+}
+
+void PhysicsSimulation::makeCover(ContactCover& cover, const CollisionQuery& swept, double speed_m_s,
+                                  std::vector<SelectedCollisionNode>& scratch) const {
+  // Room for about eight steps of travel, so a falling or rolling body makes a cover every few steps.
+  const double pad_m = kCoverPad_m + 8.0 * speed_m_s * settings_.physics.step_s;
+  const CollisionQuery query{swept.position_m, swept.radius_m + pad_m};
+  scratch.clear();
+  selectCollisionNodes(RhombusFaceMapping::get(), minSurfaceRadius_m_, query, settings_.level, scratch);
+  cover.radius_m = -1.0;
+  double highest_m = 0.0;
+  for (const SelectedCollisionNode& s : scratch) {
+    const CollisionMesh* mesh = pool_->mesh(s.node);
+    if (!mesh) {
+      cover.retryStep = stats_.steps + kCoverRetrySteps;
+      return;
+    }
+    highest_m = std::max(highest_m, mesh->radius.max_m);
+  }
+  cover = {query.position_m, query.radius_m, pool_->stats().evicted, 0, highest_m};
+}
+
 void PhysicsSimulation::predictContacts() {
-  // The test per body reads only the world and the pool, so it runs on the physics threads; the
-  // synchronous generations then happen in id order, as if the loop were serial.
+  // The test per body reads only the world and the pool (and writes its own cover), so it runs on
+  // the physics threads; the synchronous generations then happen in id order, as if the loop were
+  // serial. A body inside its cover needs nothing; otherwise the exact test: its swept sphere
+  // against the surface bound, then which nodes under it are missing.
   const double dt = settings_.physics.step_s;
   predictions_.resize(world_->bodyCount());
-  parallelFor(predictions_.size(), 128, settings_.physics.threads, [&](size_t begin, size_t end) {
+  covers_.resize(world_->bodyCount());
+  world_->threads().run(predictions_.size(), 128, [&](size_t begin, size_t end) {
     std::vector<SelectedCollisionNode> nodes;
     for (size_t id = begin; id < end; ++id) {
       ContactPrediction& p = predictions_[id];
@@ -90,6 +126,13 @@ void PhysicsSimulation::predictContacts() {
       if (state.sleeping) continue;
       const BodyMotion motion{state.position_m, state.velocity_m_s, world_->boundingRadius(uint32_t(id))};
       const CollisionQuery swept = sweptContactQuery(motion, dt, kContactSlack_m);
+      ContactCover& cover = covers_[id];
+      if (!covered(cover, swept) && stats_.steps >= cover.retryStep)
+        makeCover(cover, swept, glm::length(state.velocity_m_s), nodes);
+      if (covered(cover, swept)) {
+        p.contact = predictsContact(motion, dt, cover.surfaceMax_m + kContactSlack_m);
+        continue;
+      }
       if (!predictsContact(motion, dt, surfaceMaxRadius(swept.position_m, swept.radius_m) + kContactSlack_m)) continue;
       p.contact = true;
       nodes.clear();
@@ -109,13 +152,18 @@ void PhysicsSimulation::predictContacts() {
 }
 
 void PhysicsSimulation::submitSelection() {
-  std::vector<CollisionQuery> queries;
+  std::vector<ObjectQuery> queries;
   queries.reserve(world_->bodyCount());
-  // Sleeping bodies need nothing new: the nodes they rest on are pinned by their contacts.
+  // Sleeping bodies need nothing new: the nodes they rest on are pinned by their contacts. A body's
+  // selection is reused while it stays within about three rounds of travel (and 1 m) of where it
+  // was made.
+  const double roundTravel_s = double(3 * kRoundSteps) * settings_.physics.step_s;
   for (uint32_t id = 0; id < world_->bodyCount(); ++id) {
     const BodyState state = world_->state(id);
     if (state.sleeping) continue;
-    queries.push_back({state.position_m, world_->boundingRadius(id) + settings_.interestRadius_m});
+    queries.push_back({id,
+                       {state.position_m, world_->boundingRadius(id) + settings_.interestRadius_m},
+                       kSelectionReuse_m + glm::length(state.velocity_m_s) * roundTravel_s});
   }
   pendingRound_ = worker_->submit(std::move(queries));
   roundSubmitStep_ = stats_.steps;
@@ -126,6 +174,11 @@ void PhysicsSimulation::settleSelection() {
   worker_->waitFor(pendingRound_);
   if (worker_->take(round_)) applyRound(round_);
   pendingRound_ = 0;
+}
+
+void PhysicsSimulation::prepare() {
+  settleSelection();
+  pool_->generateQueued();
 }
 
 void PhysicsSimulation::step() {

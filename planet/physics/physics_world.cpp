@@ -1,7 +1,7 @@
 #include "planet/physics/physics_world.h"
 
-#include "planet/core/parallel_for.h"
 #include "planet/physics/body_groups.h"
+#include "planet/physics/grid_mesh_shape.h"
 
 #include <btBulletCollisionCommon.h>
 #include <btBulletDynamicsCommon.h>
@@ -32,18 +32,20 @@ btScalar combinedRollingFriction(const btCollisionObject* a, const btCollisionOb
 }
 
 // A static terrain mesh: its vertices turned into the node's tangent frame (z up at the node
-// centre), the shared index grid, its BVH and its object at the node centre. In the tangent frame
-// the BVH's boxes are flat slabs around the terrain, so a body above the ground misses the root box
-// at once; in planet-aligned axes a tilted patch's boxes are cubes full of empty air and every query
-// walked deep into the tree (a third of a step with 1 000 bodies).
-struct StaticMesh {
+// centre), indexed by its grid (planet/physics/grid_mesh_shape.h), and its object at the node
+// centre, one per world. In the tangent frame the mesh's box is a flat slab around the terrain, so
+// a body above the ground misses it at once (meshNearCallback); in planet-aligned axes a tilted
+// patch's box is a cube full of empty air.
+// A mesh's object in one world: the node and the mesh's box in its tangent frame sit beside the
+// transform, so the near callback's test reads one object (it runs for every body-mesh pair).
+struct MeshObject final : btCollisionObject {
   NodeId node;
-  std::vector<double> local_m;   // xyz per vertex in the tangent frame
-  btVector3 localMin, localMax;  // bounds of local_m
-  btIndexedMesh part;
-  std::unique_ptr<btTriangleIndexVertexArray> array;
-  std::unique_ptr<btBvhTriangleMeshShape> shape;
-  std::vector<std::unique_ptr<btCollisionObject>> objects;  // one per world, sharing the shape
+  btVector3 localMin, localMax;
+};
+
+struct StaticMesh {
+  std::unique_ptr<GridMeshShape> shape;
+  std::vector<std::unique_ptr<MeshObject>> objects;  // one per world, sharing the shape
 };
 
 // Columns east, north, up of the tangent frame at `centre_m` (any east where the up is a pole).
@@ -57,27 +59,27 @@ btMatrix3x3 tangentFrame(const glm::dvec3& centre_m) {
 
 // Bullet's broadphase pairs a body with every mesh whose planet-aligned box holds it, and a tilted
 // 250 m patch's box holds the air above it and its neighbours' ground: ~1.5 pairs a body, each a
-// BVH walk. This skips the narrowphase of a pair whose body (a sphere around its broadphase box,
+// narrowphase. This skips the narrowphase of a pair whose body (a sphere around its broadphase box,
 // which covers its motion in the step and the contact threshold) misses the mesh's box in the
 // mesh's tangent frame, where that box is a thin slab; its contacts were all beyond breaking
 // distance, so they are dropped as Bullet's refresh would have dropped them.
 void meshNearCallback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher, const btDispatcherInfo& info) {
   btBroadphaseProxy* meshProxy = pair.m_pProxy0;
   btBroadphaseProxy* bodyProxy = pair.m_pProxy1;
+  // Meshes are the static filter group (meshResident), read from the proxy without the object.
   auto isMesh = [](const btBroadphaseProxy* p) {
-    return static_cast<const btCollisionObject*>(p->m_clientObject)->getUserIndex() < 0;
+    return (p->m_collisionFilterGroup & btBroadphaseProxy::StaticFilter) != 0;
   };
   if (!isMesh(meshProxy)) std::swap(meshProxy, bodyProxy);
   if (isMesh(meshProxy) && !isMesh(bodyProxy)) {
-    const auto* object = static_cast<const btCollisionObject*>(meshProxy->m_clientObject);
-    const auto* mesh = static_cast<const StaticMesh*>(object->getUserPointer());
+    const auto* object = static_cast<const MeshObject*>(meshProxy->m_clientObject);
     constexpr double kSlack_m = 0.1;
     const btVector3 centre = 0.5 * (bodyProxy->m_aabbMin + bodyProxy->m_aabbMax);
     const double radius = 0.5 * (bodyProxy->m_aabbMax - bodyProxy->m_aabbMin).length() + kSlack_m;
     const btVector3 local = object->getWorldTransform().invXform(centre);
     bool apart = false;
     for (int axis = 0; axis < 3; ++axis)
-      apart |= local[axis] + radius < mesh->localMin[axis] || local[axis] - radius > mesh->localMax[axis];
+      apart |= local[axis] + radius < object->localMin[axis] || local[axis] - radius > object->localMax[axis];
     if (apart) {
       if (pair.m_algorithm) {
         btManifoldArray manifolds;
@@ -93,7 +95,6 @@ void meshNearCallback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher,
 struct Body {
   BodySpec spec;
   std::unique_ptr<btCollisionShape> shape;
-  std::unique_ptr<btDefaultMotionState> motion;
   std::unique_ptr<btRigidBody> rigid;
   std::vector<NodeId> contacts;
   double boundingRadius_m = 0.0;
@@ -118,10 +119,11 @@ constexpr double kReachSlack_m = 1.0;
 }  // namespace
 
 struct PhysicsWorld::Impl {
+  explicit Impl(unsigned threads) : team(threads) {}
+  ThreadTeam team;
   std::vector<std::unique_ptr<Shard>> shards;
   std::vector<Body> bodies;
   std::unordered_map<uint64_t, std::unique_ptr<StaticMesh>> meshes;
-  std::unordered_map<uint32_t, std::vector<int>> indices;  // per cells
   uint64_t steps = 0;
 
   void regroup(double step_s);
@@ -140,7 +142,8 @@ std::string_view bodyShapeName(BodyShape shape) {
   return "sphere";
 }
 
-PhysicsWorld::PhysicsWorld(const PhysicsSettings& settings) : settings_(settings), impl_(std::make_unique<Impl>()) {
+PhysicsWorld::PhysicsWorld(const PhysicsSettings& settings)
+    : settings_(settings), impl_(std::make_unique<Impl>(settings.threads)) {
   for (uint32_t w = 0; w < std::max(settings_.worlds, 1u); ++w) {
     auto shard = std::make_unique<Shard>();
     shard->world.setGravity(btVector3(0, 0, 0));  // radial, per body (step())
@@ -148,6 +151,9 @@ PhysicsWorld::PhysicsWorld(const PhysicsSettings& settings) : settings_(settings
     // recomputes every object's, ~10 % of a step with 1 600 meshes resident).
     shard->world.setForceUpdateAllAabbs(false);
     shard->dispatcher.setNearCallback(&meshNearCallback);
+    // Bodies rest on static ground, one contact manifold each and rarely a stack: half of Bullet's
+    // default 10 solver iterations hold them (the rest and fall-through tests).
+    shard->world.getSolverInfo().m_numIterations = 5;
     impl_->shards.push_back(std::move(shard));
   }
   gCalculateCombinedRollingFrictionCallback = &combinedRollingFriction;
@@ -186,8 +192,10 @@ uint32_t PhysicsWorld::addBody(const BodySpec& spec) {
   const double mass = spec.density_kg_m3 * volume_m3;
   btVector3 inertia(0, 0, 0);
   body.shape->calculateLocalInertia(mass, inertia);
-  body.motion = std::make_unique<btDefaultMotionState>(btTransform(toBt(spec.orientation), toBt(spec.position_m)));
-  btRigidBody::btRigidBodyConstructionInfo info(mass, body.motion.get(), body.shape.get(), inertia);
+  // No motion state: state() reads the body's transform, and Bullet then skips interpolating and
+  // copying every active body's transform after each step.
+  btRigidBody::btRigidBodyConstructionInfo info(mass, nullptr, body.shape.get(), inertia);
+  info.m_startWorldTransform = btTransform(toBt(spec.orientation), toBt(spec.position_m));
   info.m_friction = settings_.friction;
   info.m_restitution = settings_.restitution;
   info.m_linearSleepingThreshold = settings_.sleepLinear_m_s;
@@ -202,6 +210,9 @@ uint32_t PhysicsWorld::addBody(const BodySpec& spec) {
   }
   body.rigid = std::make_unique<btRigidBody>(info);
   body.rigid->setLinearVelocity(toBt(spec.velocity_m_s));
+  // A sphere's and a cube's inertia is isotropic: no gyroscopic torque to integrate.
+  if (spec.shape != BodyShape::kCapsule)
+    body.rigid->setFlags(body.rigid->getFlags() & ~BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY);
   // Continuous collision: a body moving more than a quarter of its size in a step is swept, so a
   // 50 m/s impact cannot tunnel through a one-sided terrain triangle.
   body.rigid->setCcdMotionThreshold(0.25 * spec.size_m);
@@ -310,14 +321,14 @@ void PhysicsWorld::Impl::stepShard(Shard& shard, const PhysicsSettings& settings
     const btCollisionObject* b = manifold->getBody1();
     if (a->getUserIndex() < 0) std::swap(a, b);
     if (a->getUserIndex() < 0 || b->getUserIndex() >= 0) continue;  // body-body or mesh-mesh
-    bodies[size_t(a->getUserIndex())].contacts.push_back(static_cast<const StaticMesh*>(b->getUserPointer())->node);
+    bodies[size_t(a->getUserIndex())].contacts.push_back(static_cast<const MeshObject*>(b)->node);
   }
 }
 
 void PhysicsWorld::step() {
   if (impl_->shards.size() > 1 && impl_->steps % kRegroupSteps == 0) impl_->regroup(settings_.step_s);
   // Shards share no mutable state: each writes only its own bodies' contacts.
-  parallelFor(impl_->shards.size(), 1, settings_.threads, [&](size_t begin, size_t end) {
+  impl_->team.run(impl_->shards.size(), 1, [&](size_t begin, size_t end) {
     for (size_t w = begin; w < end; ++w) impl_->stepShard(*impl_->shards[w], settings_);
   });
   ++impl_->steps;
@@ -336,37 +347,20 @@ std::optional<double> PhysicsWorld::rayCastMeshes(const glm::dvec3& origin_m, co
 }
 
 void PhysicsWorld::meshResident(const CollisionMesh& mesh) {
-  auto& indices = impl_->indices[mesh.cells];
-  if (indices.empty()) indices = collisionGridIndices(mesh.cells);
   auto s = std::make_unique<StaticMesh>();
-  s->node = mesh.node;
   const btMatrix3x3 frame = tangentFrame(mesh.centre_m);
-  s->local_m.resize(mesh.vertices_m.size());
-  s->localMin = btVector3(BT_LARGE_FLOAT, BT_LARGE_FLOAT, BT_LARGE_FLOAT);
-  s->localMax = -s->localMin;
+  std::vector<double> local_m(mesh.vertices_m.size());
   for (size_t k = 0; k + 2 < mesh.vertices_m.size(); k += 3) {
     const btVector3 local = btVector3(mesh.vertices_m[k], mesh.vertices_m[k + 1], mesh.vertices_m[k + 2]) * frame;
-    s->local_m[k] = local.x(), s->local_m[k + 1] = local.y(), s->local_m[k + 2] = local.z();
-    s->localMin.setMin(local);
-    s->localMax.setMax(local);
+    local_m[k] = local.x(), local_m[k + 1] = local.y(), local_m[k + 2] = local.z();
   }
-  s->part.m_numTriangles = int(indices.size() / 3);
-  s->part.m_triangleIndexBase = reinterpret_cast<const unsigned char*>(indices.data());
-  s->part.m_triangleIndexStride = 3 * sizeof(int);
-  s->part.m_numVertices = int(mesh.vertexCount());
-  s->part.m_vertexBase = reinterpret_cast<const unsigned char*>(s->local_m.data());
-  s->part.m_vertexStride = 3 * sizeof(double);
-  s->part.m_indexType = PHY_INTEGER;
-  s->part.m_vertexType = PHY_DOUBLE;
-  s->array = std::make_unique<btTriangleIndexVertexArray>();
-  s->array->addIndexedMesh(s->part, PHY_INTEGER);
-  // Bullet would find the bounds with six support queries over every triangle (a third of a
-  // BVH build); they are known.
-  s->array->setPremadeAabb(s->localMin, s->localMax);
-  s->shape = std::make_unique<btBvhTriangleMeshShape>(s->array.get(), /*useQuantizedAabbCompression=*/true);
+  s->shape = std::make_unique<GridMeshShape>(mesh.cells, std::move(local_m));
   s->shape->setMargin(settings_.meshMargin_m);
   for (auto& shard : impl_->shards) {
-    auto object = std::make_unique<btCollisionObject>();
+    auto object = std::make_unique<MeshObject>();
+    object->node = mesh.node;
+    object->localMin = s->shape->localMin();
+    object->localMax = s->shape->localMax();
     object->setCollisionShape(s->shape.get());
     object->setWorldTransform(btTransform(frame, toBt(mesh.centre_m)));
     object->setCollisionFlags(btCollisionObject::CF_STATIC_OBJECT);
@@ -374,7 +368,6 @@ void PhysicsWorld::meshResident(const CollisionMesh& mesh) {
     object->setRollingFriction(0.0);  // the pair's rolling friction is the body's (see addBody)
     object->setRestitution(1.0);
     object->setUserIndex(-1);
-    object->setUserPointer(s.get());
     shard->world.addCollisionObject(object.get(), btBroadphaseProxy::StaticFilter,
                                     btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
     s->objects.push_back(std::move(object));
@@ -391,5 +384,7 @@ void PhysicsWorld::meshEvicted(const NodeId& node) {
 }
 
 size_t PhysicsWorld::meshCount() const { return impl_->meshes.size(); }
+
+ThreadTeam& PhysicsWorld::threads() const { return impl_->team; }
 
 }  // namespace globe

@@ -2,12 +2,14 @@
 // Rigid bodies on the collision meshes, through Bullet's double-precision build
 // (BT_USE_DOUBLE_PRECISION; Bullet stays behind this interface, so no other file depends on how it
 // was compiled). Everything is in planet-centred, planet-fixed metres: doubles carry 6e6 m with
-// nanometre steps, so no floating origin is needed. Each collision mesh is one static
-// btBvhTriangleMeshShape whose transform is the payload's node centre [Frasson 2018, §3.4].
+// nanometre steps, so no floating origin is needed. Each collision mesh is one static concave
+// shape indexed by its vertex grid (grid_mesh_shape.h) whose transform is the payload's node centre
+// in the node's tangent frame [Frasson 2018, §3.4].
 //
 // Gravity is radial: g(r) = surfaceGravity · (radius / r)^2 towards the centre, set per body before
 // every step. Steps are fixed (PhysicsSettings::step_s, one Bullet substep each), so a run is
 // deterministic for the same bodies and the same meshes arriving at the same steps.
+#include "planet/core/parallel_for.h"
 #include "planet/physics/collision_mesh_pool.h"
 
 #include <glm/gtc/quaternion.hpp>
@@ -94,6 +96,9 @@ class PhysicsWorld final : public CollisionMeshListener {
   void meshEvicted(const NodeId& node) override;
   size_t meshCount() const;
   const PhysicsSettings& settings() const { return settings_; }
+  // The physics threads (settings().threads, persistent): the worlds step on them, and the
+  // simulation runs its per-body loops on them.
+  ThreadTeam& threads() const;
 
  private:
   struct Impl;

@@ -3,6 +3,9 @@
 #include "planet/physics/body_groups.h"
 
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include <random>
 
 namespace globe {
 namespace {
@@ -18,6 +21,30 @@ TEST(BodyGroups, BodiesWithinReachJoinTransitivelyFarOnesStayApart) {
       {-base, 1.0},                           // 5: the other side of the planet
   };
   EXPECT_EQ(groupBodies(bodies), (std::vector<uint32_t>{0, 1, 0, 0, 0, 5}));
+}
+
+// The sweep along one axis finds every overlapping pair: the same groups as comparing every pair, for
+// a crowd with short and long reaches.
+TEST(BodyGroups, SameGroupsAsComparingEveryPair) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> spread(-60.0, 60.0), reach(0.5, 3.0);
+  std::vector<BodyReach> bodies;
+  for (int i = 0; i < 400; ++i)
+    bodies.push_back({glm::dvec3(6371000.0 + spread(rng), spread(rng), spread(rng)), i % 50 == 0 ? 15.0 : reach(rng)});
+  std::vector<uint32_t> parent(bodies.size());
+  for (uint32_t i = 0; i < parent.size(); ++i) parent[i] = i;
+  auto root = [&](uint32_t i) {
+    while (parent[i] != i) i = parent[i];
+    return i;
+  };
+  for (uint32_t i = 0; i < bodies.size(); ++i)
+    for (uint32_t j = 0; j < i; ++j)
+      if (glm::length(bodies[i].position_m - bodies[j].position_m) <= bodies[i].reach_m + bodies[j].reach_m) {
+        const uint32_t a = root(i), b = root(j);
+        parent[std::max(a, b)] = std::min(a, b);
+      }
+  for (uint32_t i = 0; i < parent.size(); ++i) parent[i] = root(i);
+  EXPECT_EQ(groupBodies(bodies), parent);
 }
 
 TEST(BodyGroups, GroupsKeepTheirWorldAndMeetingGroupsMoveToTheSmallestId) {

@@ -54,17 +54,18 @@ TEST(CollisionSelection, CoversTheRadiusAcrossSeamsAndVertices) {
 TEST(CollisionSelection, WorkerMatchesTheDirectSelection) {
   const auto& mapping = RhombusFaceMapping::get();
   CollisionSelectionWorker worker(mapping, kRadius_m, 13);
-  std::vector<CollisionQuery> queries;
-  for (const DropSite& s : specialDropSites()) queries.push_back({s.direction * (kRadius_m + 50.0), 40.0});
+  std::vector<ObjectQuery> queries;
+  for (const DropSite& s : specialDropSites())
+    queries.push_back({uint32_t(queries.size()), {s.direction * (kRadius_m + 50.0), 40.0}, 0.0});
   const uint64_t round = worker.submit(queries);
   worker.waitFor(round);
   CollisionSelectionRound result;
   ASSERT_TRUE(worker.take(result));
   EXPECT_EQ(result.round, round);
   std::set<uint64_t> direct;
-  for (const CollisionQuery& q : queries) {
+  for (const ObjectQuery& q : queries) {
     std::vector<SelectedCollisionNode> nodes;
-    selectCollisionNodes(mapping, kRadius_m, q, 13, nodes);
+    selectCollisionNodes(mapping, kRadius_m, q.query, 13, nodes);
     for (const auto& n : nodes) direct.insert(n.node.key());
   }
   EXPECT_EQ(keysOf(result.nodes), direct);
