@@ -29,8 +29,10 @@ for key in '"driver"' '"shader_cache"' '"load_average_start"' '"load_average_end
   '"generation_latency_frames"' '"phases"'; do
   grep -q "$key" "$WORK/a/summary.json" || fail "summary.json lacks $key"
 done
-# The commit is the one the binary was built from (cmake/GlobeCommit.cmake runs at every build).
-if command -v git >/dev/null && [[ -e "$SRC/.git" ]]; then
+# The commit is the one the binary was built from (cmake/GlobeCommit.cmake runs at every build):
+# HEAD, when the binary is newer than HEAD's commit (a commit made after building is not in it).
+if command -v git >/dev/null && [[ -e "$SRC/.git" ]] &&
+  (($(stat -c %Y "$GLOBE") >= $(git -C "$SRC" log -1 --format=%ct 2>/dev/null || echo 0))); then
   head=$(git -C "$SRC" rev-parse --short=12 HEAD 2>/dev/null)
   grep -Eq "\"commit\": \"$head(-dirty)?\"" "$WORK/a/summary.json" ||
     fail "summary.json names another commit than HEAD $head (binary not rebuilt since?)"
