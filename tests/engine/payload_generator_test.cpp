@@ -6,6 +6,7 @@
 #include "planet/lod/selection.h"
 #include "planet/streaming/payload_pool.h"
 #include "planet/streaming/payload_reference.h"
+#include "tests/support/payload_surface_check.h"
 #include "tests/support/gpu_test.h"
 
 #include <algorithm>
@@ -73,6 +74,7 @@ TEST_F(PayloadGeneratorTest, MatchesCpuReferenceAtEveryDepth) {
   const size_t samples = perSlot / 2;
   std::vector<glm::vec4> cpu(perSlot);
   double worstRadius = 0, worstElevation = 0, worstNormal = 0, worstError = 0;
+  int worstAlbedo = 0;
   for (size_t k = 0; k < nodes.size(); ++k) {
     SCOPED_TRACE(::testing::Message() << "node face " << int(nodes[k].face) << " level " << int(nodes[k].level));
     gpu::PayloadJob job = makePayloadJob(nodes[k], 0, *model_);
@@ -100,12 +102,15 @@ TEST_F(PayloadGeneratorTest, MatchesCpuReferenceAtEveryDepth) {
       worstNormal = std::max(worstNormal, double(glm::length(gn - cn)));
       ASSERT_LT(glm::length(gn - cn), 1e-5f) << i;
       ASSERT_NEAR(glm::length(gn), 1.0f, 1e-5f);
+      worstAlbedo = std::max(worstAlbedo, albedoByteDistance(g[samples + i].w, cpu[samples + i].w));
+      ASSERT_LE(albedoByteDistance(g[samples + i].w, cpu[samples + i].w), 1) << i;
+      ASSERT_EQ(holeByte(g[samples + i].w), 0) << i;
     }
   }
   std::printf(
       "[ info ] %zu nodes, depths 0-24: worst |radius| diff %.3g m, elevation %.3g m, normal %.3g, geometric error "
-      "%.3g quanta\n",
-      nodes.size(), worstRadius, worstElevation, worstNormal, worstError);
+      "%.3g quanta, albedo %d steps of 1/255\n",
+      nodes.size(), worstRadius, worstElevation, worstNormal, worstError, worstAlbedo);
 }
 
 // The float variant (GenerationPrecision::kFloat, measured by globe trade) is the float model: its
