@@ -195,7 +195,7 @@ int runBench(const BenchOptions& o) {
   TerrainSettings settings = in->settings;
   // One sun for the whole flight, lighting the region of the path's first keyframe.
   settings.style.sunDirection = defaultSunDirection(in->path.positionAt(
-      in->path.startTime_s(), [&](const glm::dvec3& d) { return model.radius_m() + model.elevation_m(d); }));
+      in->path.startTime_s(), [&](const glm::dvec3& d) { return model.radius_m() + model.visibleElevation_m(d); }));
   vk::Device device(deviceOptions(o.device));
   if (auto s = vk::checkImageExtent(device, {in->size.width, in->size.height}, "--size"); !s)
     return usageError(s.error());

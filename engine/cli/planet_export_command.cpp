@@ -70,8 +70,7 @@ Status writePreview(const ElevationModel& model, const PlanetDescription& planet
     ProgressBar bar("preview");
     sampleEquirectRows(model, w, h, 0, elevation, o.threads, [&bar](double f) { bar.update(f); });
   }
-  const std::vector<glm::vec3> rgb =
-      shadeEquirect(elevation, w, h, planet.radius_m, packColourRamp(planet.colour_ramp));
+  const std::vector<glm::vec3> rgb = shadeEquirect(elevation, w, h, planet);
   ImageRgba image;
   image.width = w;
   image.height = h;

@@ -227,7 +227,7 @@ Status keepNamedCameras(const std::string& names, std::vector<TradeCamera>& came
 Result<std::vector<TradeCamera>> tradeCameras(const TradeOptions& o, const TradeInputs& in,
                                               const ElevationModel& model) {
   const double aspect = double(in.size.width) / double(in.size.height);
-  auto ground = [&](const glm::dvec3& d) { return model.radius_m() + model.elevation_m(d); };
+  auto ground = [&](const glm::dvec3& d) { return model.radius_m() + model.visibleElevation_m(d); };
   std::vector<TradeCamera> cameras;
   for (int i : o.quick ? std::vector<int>{2, 3} : std::vector<int>{0, 1, 2, 3, 4}) {
     GeodeticPose pose = standardCameraPose(i);

@@ -8,6 +8,7 @@
 #include "planet/streaming/payload_reference.h"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <chrono>
 #include <cmath>
@@ -16,27 +17,42 @@
 #include <stdexcept>
 
 namespace globe {
+namespace {
+
+// The elevation kernel's constants, then the water-surface switch (GLOBE_PAYLOAD_SPEC_WATER_SURFACE).
+std::array<uint32_t, GLOBE_PAYLOAD_SPEC_WATER_SURFACE + 1> payloadSpecialization(const ElevationModel& model,
+                                                                                 bool waterSurface) {
+  static_assert(GLOBE_PAYLOAD_SPEC_WATER_SURFACE == GLOBE_ELEVATION_SPEC_COUNT);
+  std::array<uint32_t, GLOBE_PAYLOAD_SPEC_WATER_SURFACE + 1> values{};
+  const ElevationSpecialization elevation = elevationSpecialization(model.params());
+  std::copy(elevation.begin(), elevation.end(), values.begin());
+  values[GLOBE_PAYLOAD_SPEC_WATER_SURFACE] = waterSurface && model.drawsWater() ? 1u : 0u;
+  return values;
+}
+
+}  // namespace
 
 GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationModel& model, uint32_t cells,
                                          uint32_t maxJobsPerSubmit, uint32_t maxSubmitsInFlight,
-                                         GenerationPrecision precision)
+                                         GenerationPrecision precision, bool waterSurface)
     : device_(device),
       model_(model),
       cells_(cells),
       maxJobs_(std::min<uint32_t>(maxJobsPerSubmit, GLOBE_PAYLOAD_MAX_BATCH)),
-      pipeline_(device,
-                precision == GenerationPrecision::kFloat ? "payload_generate_float.comp" : "payload_generate.comp", 8,
-                2 * sizeof(uint32_t), /*uniformMask=*/(1u << 0) | (1u << 7), elevationSpecialization(model.params())),
+      pipeline_(
+          device, precision == GenerationPrecision::kFloat ? "payload_generate_float.comp" : "payload_generate.comp", 8,
+          2 * sizeof(uint32_t), /*uniformMask=*/(1u << 0) | (1u << 7), payloadSpecialization(model, waterSurface)),
       elevation_(device, sizeof(gpu::ElevationParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::HostVisible,
                  "elevation params"),
-      colourRamp_(device, sizeof(gpu::ColourRampParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                  vk::MemoryUse::HostVisible, "colour ramp"),
+      colourRamp_(device, sizeof(gpu::ColourRampParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::HostVisible,
+                  "colour ramp"),
       faces_(device, 30 * sizeof(FaceCornersGpu), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::HostVisible,
              "face corners") {
   if (cells < 16 || cells > 256 || (cells & (cells - 1)) != 0)
     throw std::runtime_error("grid cells must be a power of two in [16, 256], got " + std::to_string(cells));
   std::memcpy(elevation_.mapped(), &model.params(), sizeof(gpu::ElevationParams));
   std::memcpy(colourRamp_.mapped(), &model.colourRamp(), sizeof(gpu::ColourRampParams));
+  waterSurface_ = waterSurface && model.drawsWater();
   auto* faces = static_cast<FaceCornersGpu*>(faces_.mapped());
   for (int f = 0; f < 30; ++f) faces[f] = RhombusFaceMapping::get().gpuCorners(f);
 
@@ -67,7 +83,7 @@ GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationMode
                                    "payload source terms");
     batch.submitted.reserve(maxJobs_);
   }
-  if (model.sources() != nullptr) preparer_ = std::make_unique<SourceRequestPreparer>(model, cells);
+  if (model.sources() != nullptr) preparer_ = std::make_unique<SourceRequestPreparer>(model, cells, waterSurface_);
 }
 
 GpuPayloadGenerator::~GpuPayloadGenerator() {
@@ -94,6 +110,7 @@ void GpuPayloadGenerator::reserveSlots(uint32_t slots, uint32_t maxSlotsPerPage)
                              " slots break the storage-buffer offset alignment");
   pages_ = {payloads_.handle(), payloads_.size(), VkDeviceSize(perPage) * slotBytes(), perPage};
   slotCentres_.assign(slots, glm::dvec3(0.0));
+  slotWater_.assign(slots, 0);
 }
 
 GpuPayloadGenerator::Batch& GpuPayloadGenerator::freeBatch() {
@@ -124,7 +141,8 @@ void GpuPayloadGenerator::generate(std::span<const GenerationJob> jobs) {
   }
   std::vector<PreparedRequest> requests;
   requests.reserve(jobs.size());
-  for (const GenerationJob& job : jobs) requests.push_back({job, makePayloadJob(job.node, job.slot, model_), {}, {}});
+  for (const GenerationJob& job : jobs)
+    requests.push_back({job, makePayloadJob(job.node, job.slot, model_, waterSurface_), {}, {}});
   submitBatches(requests, true);
 }
 
@@ -250,6 +268,7 @@ void GpuPayloadGenerator::finish(Batch& batch, std::vector<GenerationResult>& fi
     RadiusRange padded = paddedRadiusRange(model_.params(), payload, job.node.level, cells_);
     padded.min_m = std::max(0.0, padded.min_m - batch.sourcePad_m[k]);
     padded.max_m += batch.sourcePad_m[k];
+    slotWater_[job.slot] = waterSurface_ && results[k].lowestElevation_m < model_.seaLevel_m() ? 1 : 0;
     finished.push_back({job.node, job.slot, padded, false, error_m});
   }
   uint64_t stamps[2] = {0, 0};

@@ -33,8 +33,12 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   // one generate() call takes (the pool's dispatch budget); `maxSubmitsInFlight`: batches that may
   // run at once (the pool's in-flight cap / budget, rounded up).
   // `model` must outlive the generator (job centres are surface points of the CPU reference).
+  // `waterSurface`: samples below sea level are placed on the sea surface (the renderer's payloads on
+  // a planet with water, ElevationModel::drawsWater); otherwise the ground everywhere (collision
+  // meshes, bakes).
   GpuPayloadGenerator(vk::Device& device, const ElevationModel& model, uint32_t cells, uint32_t maxJobsPerSubmit,
-                      uint32_t maxSubmitsInFlight, GenerationPrecision precision = GenerationPrecision::kDouble);
+                      uint32_t maxSubmitsInFlight, GenerationPrecision precision = GenerationPrecision::kDouble,
+                      bool waterSurface = false);
   ~GpuPayloadGenerator() override;
 
   // Allocates the payload buffer for `slots` slots (once, before the first generate()), bound in
@@ -60,6 +64,9 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   uint32_t cells() const { return cells_; }
   // Node centre (metres) the payload in `slot` is relative to (the job's snapped centre).
   const glm::dvec3& slotCentre(uint32_t slot) const { return slotCentres_[slot]; }
+  // The payload in `slot` has ground below sea level, i.e. water to draw (always false without
+  // waterSurface).
+  bool slotHasWater(uint32_t slot) const { return slotWater_[slot] != 0; }
   // The whole payload buffer (copies, tests) and its binding windows (shaders).
   const vk::Buffer& payloads() const { return payloads_; }
   const PayloadPages& pages() const { return pages_; }
@@ -111,6 +118,8 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   double timestampPeriod_ns_ = 1.0;
   std::vector<Batch> batches_;
   std::vector<glm::dvec3> slotCentres_;
+  std::vector<uint8_t> slotWater_;  // per slot: slotHasWater
+  bool waterSurface_ = false;
   std::deque<uint32_t> order_;                   // busy batches, oldest first
   std::vector<GenerationResult> waitedResults_;  // of batches freeBatch() waited for, until collect()
   double gpuTime_ms_ = 0.0;

@@ -83,7 +83,7 @@ Result<std::unique_ptr<FrameSource>> makeFrameSource(vk::Device& device, const P
   ElevationModel& model = source->model;
   // One sun for the whole movie, lighting the region of the path's first keyframe (as globe bench).
   s.terrain.style.sunDirection = defaultSunDirection(path.positionAt(
-      path.startTime_s(), [&](const glm::dvec3& d) { return model.radius_m() + model.elevation_m(d); },
+      path.startTime_s(), [&](const glm::dvec3& d) { return model.radius_m() + model.visibleElevation_m(d); },
       model.radius_m()));
   auto terrain = Terrain::create(device, model, s.terrain);
   if (!terrain) return terrain.error();

@@ -66,7 +66,8 @@ Terrain::Terrain(vk::Device& device, const ElevationModel& model, const TerrainS
   // as jobs can be running at once.
   uint32_t batches = settings.streaming.maxInFlight;
   generator_ =
-      std::make_unique<GpuPayloadGenerator>(device, model, settings.gridCells, budget, batches, settings.generation);
+      std::make_unique<GpuPayloadGenerator>(device, model, settings.gridCells, budget, batches, settings.generation,
+                                            /*waterSurface=*/true);
 }
 
 void Terrain::attachPool(std::unique_ptr<PayloadPool> pool) {
@@ -75,6 +76,8 @@ void Terrain::attachPool(std::unique_ptr<PayloadPool> pool) {
   TerrainStyle style = settings_.style;
   style.radius_m = model_.radius_m();
   style.holes = model_.sources() != nullptr && model_.sources()->hasHoles();
+  style.water = model_.water();
+  style.seaLevel_m = model_.seaLevel_m();
   renderer_ = std::make_unique<TerrainRenderer>(device_, settings_.gridCells, style, settings_.vertexPositions);
   drawNodes_.reserve(4096);
 }
@@ -153,7 +156,8 @@ void Terrain::updateAt(uint64_t poolFrame, const Camera& camera, uint64_t poolCo
   for (const SelectedNode& n : selection_.nodes) {
     auto slot = pool_->slotOf(n.id);
     if (!slot) continue;  // the selection only draws resident nodes; guard anyway
-    drawNodes_.push_back({n.id, *slot, n.morph, n.partial, generator_->slotCentre(*slot)});
+    drawNodes_.push_back(
+        {n.id, *slot, n.morph, n.partial, generator_->slotCentre(*slot), generator_->slotHasWater(*slot)});
   }
 }
 

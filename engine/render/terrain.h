@@ -70,9 +70,10 @@ class Terrain {
   const ElevationModel& model() const { return model_; }
   glm::dvec3 origin() const { return origin_.origin_m(); }
   TerrainRenderer& renderer() { return *renderer_; }
-  // Ground radius (metres from the centre) below a unit direction, from the CPU reference.
+  // Radius (metres from the centre) of the visible surface below a unit direction, from the CPU
+  // reference: the ground, or the sea surface over lower ground (ElevationModel::visibleElevation_m).
   double groundRadius(const glm::dvec3& unitDirection) const {
-    return model_.radius_m() + model_.elevation_m(unitDirection);
+    return model_.radius_m() + model_.visibleElevation_m(unitDirection);
   }
   // The radius a camera's height is measured from: the higher of the true ground and the mesh drawn
   // there at the deepest level (drawnSurfaceRadius). The drawn mesh misses the relief finer than its

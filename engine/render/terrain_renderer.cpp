@@ -34,12 +34,22 @@ static_assert(sizeof(SkyPush) == 96);
 constexpr VkDeviceSize kFrameHeaderBytes = 512;
 static_assert(sizeof(gpu::TerrainFrame) <= kFrameHeaderBytes);
 
+// Draw groups: the index buffer's four ranges (full grid, half grid, full skirt strip, half skirt
+// strip), then the two grids again for nodes with sea, drawn with the water shader.
+constexpr uint32_t kIndexRanges = 4;
+constexpr uint32_t kDrawGroups = 6;
+constexpr uint32_t kWaterGroups = 4;  // groups 4, 5: full and half grids of nodes with sea
+// Grids before skirts, so that the pass marks split them.
+constexpr std::array<uint32_t, kDrawGroups> kGroupOrder{0, 1, 4, 5, 2, 3};
+
+uint32_t gridGroup(const DrawNode& n) { return (n.partial ? 1u : 0u) + (n.water ? kWaterGroups : 0u); }
+
 vk::GraphicsPipelineDesc terrainDesc(VkFormat colourFormat, bool wireframe, VkCullModeFlags cull,
-                                     VertexPositions positions, bool holes) {
+                                     VertexPositions positions, const char* fragmentShader) {
   vk::GraphicsPipelineDesc d;
   const bool reprojected = positions == VertexPositions::kReprojected;
   d.vertexShader = reprojected ? "terrain_reprojected.vert" : "terrain.vert";
-  d.fragmentShader = holes ? "terrain_holes.frag" : "terrain.frag";
+  d.fragmentShader = fragmentShader;
   // 0: instances, 1: payloads, 2: frame constants (uniform); reprojected: 3 nodes' (u, v), 4 faces.
   d.storageBuffers = reprojected ? 5 : 3;
   d.uniformMask = 1u << 2;
@@ -97,8 +107,9 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
       // fill gaps seen from either side. A planet with kept holes draws both faces, so that the
       // surface and the hole's rim are seen from below through the hole too.
       solid_(device, terrainDesc(colourFormat, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT,
-                                 positions, style.holes)),
-      skirts_(device, terrainDesc(colourFormat, false, VK_CULL_MODE_NONE, positions, style.holes)),
+                                 positions, style.holes ? "terrain_holes.frag" : "terrain.frag")),
+      skirts_(device, terrainDesc(colourFormat, false, VK_CULL_MODE_NONE, positions,
+                                  style.holes ? "terrain_holes.frag" : "terrain.frag")),
       sky_(device, [&] {
         vk::GraphicsPipelineDesc d;
         d.vertexShader = "terrain_sky.vert";
@@ -114,7 +125,12 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
   vkGetPhysicalDeviceFeatures(device.physical(), &features);
   if (features.fillModeNonSolid) {
     wireframe_ = std::make_unique<vk::GraphicsPipeline>(
-        device, terrainDesc(colourFormat, true, VK_CULL_MODE_NONE, positions, false));
+        device, terrainDesc(colourFormat, true, VK_CULL_MODE_NONE, positions, "terrain.frag"));
+  }
+  if (style.water.enabled) {
+    water_ = std::make_unique<vk::GraphicsPipeline>(
+        device, terrainDesc(colourFormat, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT, positions,
+                            style.holes ? "terrain_water_holes.frag" : "terrain_water.frag"));
   }
 
   // Ranges: full grid, half grid, full skirt strip, half skirt strip.
@@ -236,8 +252,7 @@ DrawStats TerrainRenderer::recordTerrain(VkCommandBuffer cmd, const Camera& came
   groupInstances(nodes, payloads, pageCount, skirts);
   orderNearFirst(nodes, camera.position_m);
   const uint32_t partial = writeInstances(bytes, origin_m, nodes, payloads, pageCount, skirts, reprojection);
-  DrawStats stats = recordDraws(cmd, payloads, pageCount, frameIndex, view == TerrainDebugView::kWireframe,
-                                reprojection != nullptr, nextMark);
+  DrawStats stats = recordDraws(cmd, payloads, pageCount, frameIndex, view, reprojection != nullptr, nextMark);
   stats.nodes = uint32_t(nodes.size());
   stats.partialNodes = partial;
   stats.skirtEdges = skirtEdges[0] + skirtEdges[1];
@@ -288,6 +303,13 @@ TerrainDebugView TerrainRenderer::writeFrameConstants(unsigned char* bytes, cons
                                                            : GLOBE_TERRAIN_WIREFRAME,
                    skirts ? 1u : 0u, 0u};
   frame.skirt = {style_.skirtOutward, style_.skirtDrop, 0.0f, 0.0f};
+  const Water& w = style_.water;
+  // Without water the sea level is -FLT_MAX: nothing is below it (terrain_vertex.glsl).
+  const float seaLevel_m = w.enabled ? float(style_.seaLevel_m) : -std::numeric_limits<float>::max();
+  frame.waterShallow = toGpu(w.shallow_colour, seaLevel_m);
+  frame.waterDeep = toGpu(w.deep_colour, float(1.0 / w.depth_scale_m));
+  frame.skyZenith = toGpu(style_.zenithColour, 0.0f);
+  frame.skyHorizon = toGpu(style_.horizonColour, 0.0f);
   std::memcpy(bytes, &frame, sizeof(frame));
   return view;
 }
@@ -297,11 +319,11 @@ void TerrainRenderer::groupInstances(std::span<const DrawNode> nodes, const Payl
   // Instances grouped by draw: index range (full grid, half grid, full skirts, half skirts), then
   // payload page (one page unless the pool outgrows one storage-buffer binding), so each draw is one
   // contiguous instance range with its page's window bound.
-  instancesOf_.assign(size_t(4) * pageCount, 0);
+  instancesOf_.assign(size_t(kDrawGroups) * pageCount, 0);
   for (size_t k = 0; k < nodes.size(); ++k) {
     const uint32_t range = nodes[k].partial ? 1u : 0u;
     const uint32_t page = payloads.page(nodes[k].slot);
-    ++instancesOf_[size_t(range) * pageCount + page];
+    ++instancesOf_[size_t(gridGroup(nodes[k])) * pageCount + page];
     if (skirts) instancesOf_[size_t(range + 2) * pageCount + page] += uint32_t(std::popcount(skirtMask_[k]));
   }
   firstInstance_.assign(instancesOf_.size(), 0);
@@ -340,7 +362,7 @@ uint32_t TerrainRenderer::writeInstances(unsigned char* bytes, const glm::dvec3&
     const uint32_t range = n.partial ? 1u : 0u;
     partial += range;
     const uint32_t page = payloads.page(n.slot);
-    const size_t grid = size_t(range) * pageCount + page, skirt = size_t(range + 2) * pageCount + page;
+    const size_t grid = size_t(gridGroup(n)) * pageCount + page, skirt = size_t(range + 2) * pageCount + page;
     if (reprojection) reprojection[next[grid]] = mapping;
     instances[next[grid]++] = inst;
     for (uint32_t e = 0; skirts && e < 4; ++e) {
@@ -354,17 +376,23 @@ uint32_t TerrainRenderer::writeInstances(unsigned char* bytes, const glm::dvec3&
 }
 
 DrawStats TerrainRenderer::recordDraws(VkCommandBuffer cmd, const PayloadPages& payloads, uint32_t pageCount,
-                                       uint32_t frameIndex, bool wireframe, bool reprojected,
+                                       uint32_t frameIndex, TerrainDebugView view, bool reprojected,
                                        uint32_t& nextMark) const {
   DrawStats stats;
+  const bool wireframe = view == TerrainDebugView::kWireframe, debugView = view != TerrainDebugView::kShaded;
   vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
-  for (uint32_t r = 0; r < 4; ++r) {
-    if (r == 2) writeMarks(cmd, nextMark, kMarkSkirtsBegin);  // ranges 0, 1 are grids; 2, 3 skirts
+  for (const uint32_t group : kGroupOrder) {
+    const uint32_t r = group % kIndexRanges;                      // the group's index range
+    if (group == 2) writeMarks(cmd, nextMark, kMarkSkirtsBegin);  // groups 0, 1, 4, 5 are grids; 2, 3 skirts
     for (uint32_t page = 0; page < pageCount; ++page) {
-      const size_t g = size_t(r) * pageCount + page;
+      const size_t g = size_t(group) * pageCount + page;
       if (instancesOf_[g] == 0) continue;
-      // Grids are drawn with back faces culled, skirts from both sides; the wireframe view shows both.
-      const vk::GraphicsPipeline& pipeline = wireframe ? *wireframe_ : r < 2 ? solid_ : skirts_;
+      // Grids are drawn with back faces culled, skirts from both sides; the wireframe view shows
+      // both. Nodes with sea use the water shader unless a debug view colours them by level.
+      const vk::GraphicsPipeline& pipeline = wireframe                                       ? *wireframe_
+                                             : group >= kWaterGroups && water_ && !debugView ? *water_
+                                             : r < 2                                         ? solid_
+                                                                                             : skirts_;
       const gpu::TerrainDrawPush push{r % 2 == 0 ? cells_ : cells_ / 2, 0};
       if (reprojected) {
         pipeline.bind(cmd,

@@ -15,6 +15,7 @@
 #include "engine/vk/frame_ring.h"
 #include "engine/vk/graphics_pipeline.h"
 #include "planet/camera/camera.h"
+#include "planet/elevation/colour_ramp.h"
 #include "planet/geometry/node_id.h"
 #include "planet/lod/lod_ranges.h"
 
@@ -58,6 +59,10 @@ struct TerrainStyle {
   // The planet has kept no-data holes (nodata = "hole"): fragments inside them are discarded
   // (terrain_holes.frag); off, the shader has no discard and keeps the early depth test.
   bool holes = false;
+  // The planet's sea (ElevationModel::water): nodes with water are drawn with the water shader
+  // (terrain_water.frag), which colours fragments below sea level per fragment.
+  Water water;
+  double seaLevel_m = 0.0;
 };
 
 // One node to draw; the caller builds these from the selection and the payload pool.
@@ -67,6 +72,7 @@ struct DrawNode {
   MorphRange morph;          // metres from the camera (SelectedNode::morph)
   bool partial = false;      // drawn at half resolution (the parent's LOD) over its own quadrant
   glm::dvec3 centre_m{0.0};  // node centre the payload was generated with (PayloadJob::centre)
+  bool water = false;        // the payload has sea to draw (GpuPayloadGenerator::slotHasWater)
 };
 
 // Timestamps written between the renderer's passes, at `firstQuery` + TerrainPassMark in `pool`
@@ -147,7 +153,7 @@ class TerrainRenderer {
                           const PayloadPages& payloads, uint32_t pageCount, bool skirts,
                           gpu::TerrainReprojectionNode* reprojection);
   DrawStats recordDraws(VkCommandBuffer cmd, const PayloadPages& payloads, uint32_t pageCount, uint32_t frameIndex,
-                        bool wireframe, bool reprojected, uint32_t& nextMark) const;
+                        TerrainDebugView view, bool reprojected, uint32_t& nextMark) const;
 
   vk::Device& device_;
   uint32_t cells_;
@@ -155,8 +161,9 @@ class TerrainRenderer {
   PassTimestamps timestamps_;
   // Writes the pass marks from `next` up to and including `mark` (none without a query pool).
   void writeMarks(VkCommandBuffer cmd, uint32_t& next, uint32_t mark) const;
-  vk::GraphicsPipeline solid_;   // grids, back faces culled
-  vk::GraphicsPipeline skirts_;  // skirt strips, both sides
+  vk::GraphicsPipeline solid_;                   // grids, back faces culled
+  vk::GraphicsPipeline skirts_;                  // skirt strips, both sides
+  std::unique_ptr<vk::GraphicsPipeline> water_;  // grids of nodes with sea (planets with water only)
   std::unique_ptr<vk::GraphicsPipeline> wireframe_;
   vk::GraphicsPipeline sky_;
   vk::Buffer indices_;

@@ -44,8 +44,9 @@ double elevationSlopeBound(const gpu::ElevationParams& params) {
   return total;
 }
 
-SurfaceRayCaster::SurfaceRayCaster(const ElevationModel& model)
+SurfaceRayCaster::SurfaceRayCaster(const ElevationModel& model, RaySurface surface)
     : model_(model),
+      surface_(surface),
       slope_(elevationSlopeBound(model.params())),
       minRadius_m_(std::max(model.radius_m() + model.bounds().min_m, 1e-3 * model.radius_m())),
       maxRadius_m_(model.radius_m() + std::max(model.bounds().max_m, 0.0)) {}
@@ -53,7 +54,9 @@ SurfaceRayCaster::SurfaceRayCaster(const ElevationModel& model)
 double SurfaceRayCaster::heightAbove(const glm::dvec3& p) const {
   double r = glm::length(p);
   if (!(r > 0)) return -model_.radius_m();
-  return r - model_.radius_m() - model_.elevation_m(p / r);
+  const glm::dvec3 d = p / r;
+  return r - model_.radius_m() -
+         (surface_ == RaySurface::kVisible ? model_.visibleElevation_m(d) : model_.elevation_m(d));
 }
 
 glm::dvec3 SurfaceRayCaster::normalAt(const glm::dvec3& p, double scale_m) const {
@@ -142,7 +145,7 @@ SurfaceTruth castSurfaceTruth(const ElevationModel& model, const Camera& camera,
   truth.columns = (width + truth.stride - 1) / truth.stride;
   truth.rows = (height + truth.stride - 1) / truth.stride;
   truth.hits.resize(size_t(truth.columns) * truth.rows);
-  SurfaceRayCaster caster(model);
+  SurfaceRayCaster caster(model, RaySurface::kVisible);  // what the renderer draws is the referee's subject
   SurfaceRayOptions options;
   options.pixelAngle_rad = camera.verticalFov_rad / double(height);
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());

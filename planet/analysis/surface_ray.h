@@ -43,9 +43,13 @@ struct SurfaceRayHit {
   uint32_t evaluations = 0;  // elevation evaluations spent
 };
 
+// What a ray stops at: the ground (collision meshes, placing bodies), or what a viewer sees (the sea's
+// surface over lower ground on a planet with water: ElevationModel::visibleElevation_m).
+enum class RaySurface { kGround, kVisible };
+
 class SurfaceRayCaster {
  public:
-  explicit SurfaceRayCaster(const ElevationModel& model);
+  explicit SurfaceRayCaster(const ElevationModel& model, RaySurface surface = RaySurface::kGround);
 
   // `direction` must be unit length.
   SurfaceRayHit cast(const glm::dvec3& origin_m, const glm::dvec3& direction, const SurfaceRayOptions& options) const;
@@ -58,6 +62,7 @@ class SurfaceRayCaster {
   glm::dvec3 normalAt(const glm::dvec3& p, double scale_m) const;
 
   const ElevationModel& model_;
+  RaySurface surface_;
   double slope_ = 0;
   double minRadius_m_ = 0;
   double maxRadius_m_ = 0;
@@ -82,6 +87,7 @@ struct SurfaceTruth {
   const SurfaceRayHit& at(uint32_t column, uint32_t row) const { return hits[size_t(row) * columns + column]; }
 };
 
+// Rays stop at the visible surface (RaySurface::kVisible): the truth of what the renderer draws.
 SurfaceTruth castSurfaceTruth(const ElevationModel& model, const Camera& camera, uint32_t width, uint32_t height,
                               uint32_t stride, unsigned threads = 0);
 

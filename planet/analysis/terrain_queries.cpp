@@ -19,7 +19,7 @@ double TerrainQueries::drawnHeight_m(const glm::dvec3& unitDirection, int level,
 }
 
 double TerrainQueries::cameraFloorRadius(const glm::dvec3& unitDirection, int level, uint32_t cells) const {
-  return std::max(model_.radius_m() + exactHeight_m(unitDirection),
+  return std::max(model_.radius_m() + model_.visibleElevation_m(unitDirection),
                   drawnSurfaceRadius(model_, unitDirection, level, cells));
 }
 

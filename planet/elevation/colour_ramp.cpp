@@ -75,6 +75,14 @@ void appendColourRampErrors(const ColourRamp& ramp, std::vector<Error>& errors) 
   checkColour(ramp.snow_colour, "snow.colour", errors);
 }
 
+void appendWaterErrors(const Water& water, std::vector<Error>& errors) {
+  if (!water.enabled) return;
+  checkColour(water.shallow_colour, "water.shallow_colour", errors);
+  checkColour(water.deep_colour, "water.deep_colour", errors);
+  if (!(inRange(water.depth_scale_m, 0.0, 1e5) && water.depth_scale_m > 0.0))
+    errors.push_back(Error::inField("water.depth_scale_m", "must be within (0, 1e5] m"));
+}
+
 gpu::ColourRampParams packColourRamp(const ColourRamp& ramp) {
   gpu::ColourRampParams p{};
   const std::size_t n = std::min(ramp.stops.size(), static_cast<std::size_t>(kMaxColourStops));

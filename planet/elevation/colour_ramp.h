@@ -44,8 +44,23 @@ struct ColourRamp {
   bool operator==(const ColourRamp&) const = default;
 };
 
+// The sea: a water surface drawn at sea_level_m over everything below it (the `[water]` table).
+// Its colour is tinted by the depth of the ground beneath, shallow_colour at the shore to
+// deep_colour far down (1 - exp(-depth / depth_scale_m) of the way), lit by the sun, with the sky's
+// Fresnel reflection and a sun glint.
+struct Water {
+  bool enabled = false;                                          // true when the file has a [water] table
+  glm::vec3 shallow_colour = glm::vec3(0.020f, 0.110f, 0.130f);  // linear RGB
+  glm::vec3 deep_colour = glm::vec3(0.004f, 0.016f, 0.045f);     // linear RGB
+  double depth_scale_m = 25.0;                                   // metres, (0, 1e5]
+
+  bool operator==(const Water&) const = default;
+};
+
 // Every problem with the ramp, each an Error with `field` set (e.g. "colour_ramp[2].elevation_m").
 void appendColourRampErrors(const ColourRamp& ramp, std::vector<Error>& errors);
+// Every problem with the water ("water.depth_scale_m", ...); nothing when it is not enabled.
+void appendWaterErrors(const Water& water, std::vector<Error>& errors);
 
 // Packs a valid ramp (appendColourRampErrors adds nothing) into the shaders' struct.
 gpu::ColourRampParams packColourRamp(const ColourRamp& ramp);

@@ -131,6 +131,7 @@ Real evaluateElevation(const gpu::ElevationParams& p, Real dx, Real dy, Real dz)
 ElevationModel::ElevationModel(const PlanetDescription& planet)
     : params_(packElevationParams(planet)),
       colourRamp_(packColourRamp(planet.colour_ramp)),
+      water_(planet.water),
       bounds_(elevationBounds(planet)) {
   if (planet.sources.empty()) return;
   sources_ = std::make_shared<const SourceMosaic>(planet.sources, planet.radius_m, planet.seed);
@@ -138,6 +139,11 @@ ElevationModel::ElevationModel(const PlanetDescription& planet)
   // The mosaic mixes the two: the union of both ranges holds every blend.
   bounds_.min_m = std::min(bounds_.min_m, sources_->minElevation_m());
   bounds_.max_m = std::max(bounds_.max_m, sources_->maxElevation_m());
+}
+
+double ElevationModel::visibleElevation_m(const glm::dvec3& unit_direction) const {
+  const double ground_m = elevation_m(unit_direction);
+  return water_.enabled ? std::max(ground_m, params_.sea_level_m) : ground_m;
 }
 
 double ElevationModel::proceduralElevation_m(const glm::dvec3& unit_direction) const {

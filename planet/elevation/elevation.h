@@ -61,6 +61,12 @@ class ElevationModel {
 
   double radius_m() const { return params_.radius_m; }
   double seaLevel_m() const { return params_.sea_level_m; }
+  // The planet has a sea ([water]): the renderer draws a water surface at sea level over lower ground.
+  bool drawsWater() const { return water_.enabled; }
+  const Water& water() const { return water_; }
+  // Elevation of the surface a viewer sees (metres): the ground, or the sea surface above lower ground
+  // on a planet with water. Cameras placed "above the terrain" stand above this one.
+  double visibleElevation_m(const glm::dvec3& unit_direction) const;
   const gpu::ElevationParams& params() const { return params_; }
   // The surface colour by elevation and slope (the planet's colour ramp), as the payload kernel
   // reads it: each payload sample carries its albedo (shaders/include/payload_layout.h).
@@ -71,6 +77,7 @@ class ElevationModel {
  private:
   gpu::ElevationParams params_{};
   gpu::ColourRampParams colourRamp_{};
+  Water water_;
   ElevationRange bounds_{};
   std::shared_ptr<const SourceMosaic> sources_;  // shared by copies
 };

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "planet/elevation/colour_ramp.h"
@@ -12,8 +13,11 @@
 namespace globe {
 
 std::vector<glm::vec3> shadeEquirect(std::span<const float> elevation_m, std::uint32_t width, std::uint32_t height,
-                                     double radius_m, const gpu::ColourRampParams& ramp) {
+                                     const PlanetDescription& planet) {
   assert(elevation_m.size() == static_cast<std::size_t>(width) * height);
+  const double radius_m = planet.radius_m;
+  const gpu::ColourRampParams ramp = packColourRamp(planet.colour_ramp);
+  const Water& water = planet.water;
   std::vector<glm::vec3> rgb(elevation_m.size());
   const double dy_m = std::numbers::pi * radius_m / static_cast<double>(height);  // north-south pixel size
   const double dx_equator_m = 2.0 * std::numbers::pi * radius_m / static_cast<double>(width);
@@ -30,6 +34,12 @@ std::vector<glm::vec3> shadeEquirect(std::span<const float> elevation_m, std::ui
     for (std::uint32_t x = 0; x < width; ++x) {
       const auto xi = static_cast<std::int64_t>(x);
       const auto yi = static_cast<std::int64_t>(y);
+      const double depth_m = planet.sea_level_m - at(xi, yi);
+      if (water.enabled && depth_m > 0.0) {
+        const float murk = static_cast<float>(1.0 - std::exp(-depth_m / water.depth_scale_m));
+        rgb[static_cast<std::size_t>(y) * width + x] = glm::mix(water.shallow_colour, water.deep_colour, murk);
+        continue;
+      }
       const double gx = (at(xi + 1, yi) - at(xi - 1, yi)) / (2.0 * dx_m);  // rise per metre eastwards
       const double gy = (at(xi, yi - 1) - at(xi, yi + 1)) / (2.0 * dy_m);  // rise per metre northwards
       const double cos_slope = 1.0 / std::sqrt(1.0 + gx * gx + gy * gy);

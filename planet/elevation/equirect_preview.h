@@ -6,15 +6,16 @@
 
 #include <glm/vec3.hpp>
 
-#include "shaders/include/colour_ramp.h"
+#include "planet/elevation/planet_description.h"
 
 namespace globe {
 
 // Linear RGB per pixel (row-major, row 0 north) of the width x height map `elevation_m` (metres) of
 // a planet of radius_m: the colour ramp at each pixel's elevation and true slope, times a hillshade
 // lit from the north-west. The hillshade's relief is exaggerated by max(1, pixel size / 2 km) so
-// that it stays visible at coarse widths; the ramp's rock and snow use the true slope.
+// that it stays visible at coarse widths; the ramp's rock and snow use the true slope. On a planet with
+// water, ground below sea level is the sea: its colour tinted by depth, flat (as the renderer draws it).
 std::vector<glm::vec3> shadeEquirect(std::span<const float> elevation_m, std::uint32_t width, std::uint32_t height,
-                                     double radius_m, const gpu::ColourRampParams& ramp);
+                                     const PlanetDescription& planet);
 
 }  // namespace globe

@@ -170,6 +170,7 @@ std::vector<Error> validatePlanetAll(const PlanetDescription& planet) {
     }
   }
   appendColourRampErrors(planet.colour_ramp, errors);
+  appendWaterErrors(planet.water, errors);
   return errors;
 }
 

@@ -70,11 +70,12 @@ struct PlanetDescription {
   std::string name = "unnamed";
   double radius_m = 6371000.0;         // sphere radius (elevation 0), metres, (0, kMaxRadius_m]
   std::uint64_t seed = 0;              // noise seed; every layer derives its own from it
-  double sea_level_m = 0.0;            // elevation of the sea surface, metres (for rendering and stats)
+  double sea_level_m = 0.0;            // elevation of the sea surface, metres (stats; drawn with [water])
   std::vector<ElevationLayer> layers;  // 1 .. kMaxElevationLayers, evaluated in order
   double surface_gravity_m_s2 = 9.81;  // gravity at radius_m (physics, falling as 1/r^2), (0, 1e4]
   QualityPreset default_quality = QualityPreset::kBalanced;
   ColourRamp colour_ramp;  // surface colour by elevation and slope
+  Water water;             // the sea drawn at sea_level_m ([water]); disabled = a dry planet
   // Real elevation rasters mosaicked over the layers ([[sources]], planet/sources/); empty = procedural only.
   std::vector<ElevationSource> sources;
 

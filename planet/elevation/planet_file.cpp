@@ -19,11 +19,12 @@ namespace globe {
 namespace {
 
 constexpr std::string_view kTopKeys[] = {
-    "name",        "radius_m", "seed", "sea_level_m", "surface_gravity_m_s2", "default_quality", "layers",
-    "colour_ramp", "rock",     "snow", "sources"};
+    "name", "radius_m", "seed",  "sea_level_m", "surface_gravity_m_s2", "default_quality", "layers", "colour_ramp",
+    "rock", "snow",     "water", "sources"};
 constexpr std::string_view kStopKeys[] = {"elevation_m", "colour"};
 constexpr std::string_view kRockKeys[] = {"slope_deg", "blend_deg", "colour"};
 constexpr std::string_view kSnowKeys[] = {"elevation_m", "blend_m", "max_slope_deg", "colour"};
+constexpr std::string_view kWaterKeys[] = {"shallow_colour", "deep_colour", "depth_scale_m"};
 
 // What reading one [[layers]] table has seen: the layer and the nodes the cross-key checks need.
 struct LayerRead {
@@ -254,6 +255,23 @@ void readSnow(PlanetTomlReader& r, const toml::table& t, ColourRamp& ramp) {
   if (!have_elevation) r.fail(t.source(), "snow.elevation_m", "missing (required in [snow])");
 }
 
+void readWater(PlanetTomlReader& r, const toml::table& t, Water& water) {
+  water.enabled = true;
+  for (auto&& [key, node] : t) {
+    const std::string k(key.str());
+    const std::string field = "water." + k;
+    if (!isKnownKey(k, kWaterKeys)) {
+      r.fail(key.source(), field, unknownKeyMessage(k, kWaterKeys));
+    } else if (k == "shallow_colour") {
+      if (auto v = r.colour(node, field)) water.shallow_colour = *v;
+    } else if (k == "deep_colour") {
+      if (auto v = r.colour(node, field)) water.deep_colour = *v;
+    } else if (k == "depth_scale_m") {
+      if (auto v = r.number(node, field)) water.depth_scale_m = *v;
+    }
+  }
+}
+
 void readTopLevel(PlanetTomlReader& r, const std::string& k, const toml::node& node, PlanetDescription& planet) {
   if (k == "name") {
     if (auto v = r.string(node, k)) planet.name = *v;
@@ -295,6 +313,8 @@ void readTopLevel(PlanetTomlReader& r, const std::string& k, const toml::node& n
     if (const toml::table* t = r.table(node, k, "[rock]")) readRock(r, *t, planet.colour_ramp);
   } else if (k == "snow") {
     if (const toml::table* t = r.table(node, k, "[snow]")) readSnow(r, *t, planet.colour_ramp);
+  } else if (k == "water") {
+    if (const toml::table* t = r.table(node, k, "[water]")) readWater(r, *t, planet.water);
   }
 }
 

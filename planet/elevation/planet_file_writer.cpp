@@ -69,6 +69,11 @@ std::string formatPlanetToml(const PlanetDescription& planet) {
                    number(ramp.snow_elevation_m), number(ramp.snow_blend_m), number(ramp.snow_max_slope_deg),
                    colour(ramp.snow_colour));
   }
+  if (planet.water.enabled) {
+    fmt::format_to(line, "\n[water]\nshallow_colour = {}\ndeep_colour = {}\ndepth_scale_m = {}\n",
+                   colour(planet.water.shallow_colour), colour(planet.water.deep_colour),
+                   number(planet.water.depth_scale_m));
+  }
   return out;
 }
 

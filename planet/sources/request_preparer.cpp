@@ -46,8 +46,8 @@ double sourceDetailPad_m(const std::vector<glm::dvec4>& terms) {
   return pad;
 }
 
-SourceRequestPreparer::SourceRequestPreparer(const ElevationModel& model, uint32_t cells)
-    : model_(model), cells_(cells), thread_([this] { run(); }) {}
+SourceRequestPreparer::SourceRequestPreparer(const ElevationModel& model, uint32_t cells, bool waterSurface)
+    : model_(model), cells_(cells), waterSurface_(waterSurface), thread_([this] { run(); }) {}
 
 SourceRequestPreparer::~SourceRequestPreparer() {
   {
@@ -107,7 +107,7 @@ void SourceRequestPreparer::run() {
     ++working_;
     lock.unlock();
     // The tile reads happen in here, on this thread.
-    r.job = makePayloadJob(r.request.node, r.request.slot, model_);
+    r.job = makePayloadJob(r.request.node, r.request.slot, model_, waterSurface_);
     r.terms = sourceTermsForJob(model_, r.job, cells_);
     lock.lock();
     --working_;

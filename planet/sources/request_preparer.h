@@ -51,7 +51,8 @@ double sourceDetailPad_m(const std::vector<glm::dvec4>& terms);
 class SourceRequestPreparer {
  public:
   // `model` (with sources) must outlive the preparer.
-  SourceRequestPreparer(const ElevationModel& model, uint32_t cells);
+  // `waterSurface`: the jobs are for payloads with the sea surface (makePayloadJob).
+  SourceRequestPreparer(const ElevationModel& model, uint32_t cells, bool waterSurface = false);
   ~SourceRequestPreparer();
   SourceRequestPreparer(const SourceRequestPreparer&) = delete;
   SourceRequestPreparer& operator=(const SourceRequestPreparer&) = delete;
@@ -74,6 +75,7 @@ class SourceRequestPreparer {
 
   const ElevationModel& model_;
   uint32_t cells_;
+  bool waterSurface_ = false;
   mutable std::mutex mutex_;
   std::condition_variable wake_;  // new requests or stop
   std::condition_variable idle_;  // queue drained

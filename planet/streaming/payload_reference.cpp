@@ -22,15 +22,17 @@ double payloadQuantum_m(int level, double radius_m) {
   return std::ldexp(1.0, int(std::ceil(std::log2(width))) - 18);
 }
 
-glm::dvec3 payloadCentre(const NodeId& node, const ElevationModel& model) {
+glm::dvec3 payloadCentre(const NodeId& node, const ElevationModel& model, bool waterSurface) {
   double q = payloadQuantum_m(node.level, model.radius_m());
-  glm::dvec3 c = model.surfacePosition(nodeCentreDirection(RhombusFaceMapping::get(), node));
+  const glm::dvec3 direction = nodeCentreDirection(RhombusFaceMapping::get(), node);
+  glm::dvec3 c = waterSurface ? direction * (model.radius_m() + model.visibleElevation_m(direction))
+                              : model.surfacePosition(direction);
   return {std::floor(c.x / q + 0.5) * q, std::floor(c.y / q + 0.5) * q, std::floor(c.z / q + 0.5) * q};
 }
 
-gpu::PayloadJob makePayloadJob(const NodeId& node, uint32_t slot, const ElevationModel& model) {
+gpu::PayloadJob makePayloadJob(const NodeId& node, uint32_t slot, const ElevationModel& model, bool waterSurface) {
   gpu::PayloadJob job{};
-  glm::dvec3 c = payloadCentre(node, model);
+  glm::dvec3 c = payloadCentre(node, model, waterSurface);
   job.centre = {c.x, c.y, c.z, payloadQuantum_m(node.level, model.radius_m())};
   job.uv = {node.uMin(), node.vMin(), node.size(), 0.0};
   job.face = node.face;
@@ -163,7 +165,8 @@ PayloadSurface unpackPayloadSurface(float word) {
 }
 
 RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
-                                 std::span<glm::vec4> slot) {
+                                 std::span<glm::vec4> slot, bool waterSurface) {
+  const bool sea = waterSurface && model.drawsWater();
   const int n = int(cells);
   const int s = n + 3;
   assert(slot.size() >= size_t(GLOBE_PAYLOAD_VEC4_PER_SLOT(cells)));
@@ -182,10 +185,11 @@ RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::Payload
       // for the hole mask.
       const SourceTerm term = model.sourceTerm(dir, spacing_m);
       double h = combineSourceTerm(model.proceduralElevation_m(dir), term);
-      glm::dvec3 p = dir * (model.radius_m() + h);
+      const double drawn = sea ? std::max(h, model.seaLevel_m()) : h;
+      glm::dvec3 p = dir * (model.radius_m() + drawn);
       positions[index] = p;
       holes[index] = term.hole;
-      elevations[index] = h;
+      elevations[index] = drawn;
       glm::dvec3 rel = p - centre;
       glm::dvec3 quantised{std::floor(rel.x / q + 0.5) * q, std::floor(rel.y / q + 0.5) * q,
                            std::floor(rel.z / q + 0.5) * q};

@@ -21,10 +21,14 @@ double payloadQuantum_m(int level, double radius_m);
 // The node centre payloads are relative to: the surface point (CPU reference) at the node's centre
 // direction, snapped to the level's quantum. On the surface, not the sphere, so that relief never
 // pushes relative positions out of float's exact range.
-glm::dvec3 payloadCentre(const NodeId& node, const ElevationModel& model);
+glm::dvec3 payloadCentre(const NodeId& node, const ElevationModel& model, bool waterSurface = false);
 
 // The generation job for `node` into `slot`: snapped centre, (u, v) square, neighbour faces.
-gpu::PayloadJob makePayloadJob(const NodeId& node, uint32_t slot, const ElevationModel& model);
+// `waterSurface`: the job is for a payload with the sea surface (fillPayloadReference's switch): its
+// centre is then on the visible surface, so that the sea samples are near it (a centre on a sea floor
+// kilometres below would leave positions relative to it inexact in float at the finest levels).
+gpu::PayloadJob makePayloadJob(const NodeId& node, uint32_t slot, const ElevationModel& model,
+                               bool waterSurface = false);
 
 // The sample spacing (metres) of a job's node: which pyramid level its source terms are read at
 // (planet/sources/raster_pyramid.h), on the CPU reference and the source I/O thread alike.
@@ -40,9 +44,10 @@ glm::dvec3 payloadSampleDirection(const gpu::PayloadJob& job, uint32_t cells, in
 double unresolvedRelief_m(const gpu::ElevationParams& params, double sampleSpacing_m);
 
 // Fills one slot (GLOBE_PAYLOAD_VEC4_PER_SLOT(cells) entries) like the shader does and returns the
-// node's radius range (vertices only, unpadded).
+// node's radius range (vertices only, unpadded). `waterSurface`: as the kernel's switch
+// (GLOBE_PAYLOAD_SPEC_WATER_SURFACE; only on a planet that draws water).
 RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
-                                 std::span<glm::vec4> slot);
+                                 std::span<glm::vec4> slot, bool waterSurface = false);
 
 // A payload sample's surface word (normal.w, shaders/include/payload_surface.glsl): the square root
 // of the linear albedo in bytes 0-2 and the hole mask in byte 3, as the bits of a float.

@@ -56,7 +56,8 @@ struct ElevationLayerParams {
 // The whole elevation function (32 + 8 * 80 = 672 bytes).
 struct ElevationParams {
   double radius_m;     //  0: sphere radius, metres (elevation 0)
-  double sea_level_m;  //  8: elevation of the sea surface, metres (informative: not applied)
+  double sea_level_m;  //  8: elevation of the sea surface, metres (the payload kernel places lower samples on it with
+                       //  GLOBE_PAYLOAD_SPEC_WATER_SURFACE)
   uint layer_count;    // 16: layers in use, 1 .. GLOBE_MAX_ELEVATION_LAYERS
   uint pad0;           // 20
   uint pad1;           // 24

@@ -41,6 +41,10 @@ push;
 shared double sharedMin[GLOBE_PAYLOAD_WORKGROUP];
 shared double sharedMax[GLOBE_PAYLOAD_WORKGROUP];
 shared double sharedError[GLOBE_PAYLOAD_WORKGROUP];
+shared double sharedLowest[GLOBE_PAYLOAD_WORKGROUP];
+
+// 1: samples below sea level lie on the sea surface (their w keeps the ground's elevation).
+layout(constant_id = GLOBE_PAYLOAD_SPEC_WATER_SURFACE) const uint kWaterSurface = 0u;
 
 // How far the vertex at scratch index `at` moves when the node morphs to its parent's mesh: the
 // distance to the midpoint of the even neighbours the vertex shader slides it to (row, column, or
@@ -131,6 +135,7 @@ void main() {
 
   double localMin = 1.0e300lf;
   double localMax = 0.0lf;
+  double localLowest = 1.0e300lf;
   for (uint index = gl_LocalInvocationID.x; index < samples; index += GLOBE_PAYLOAD_WORKGROUP) {
     int i = int(index % uint(s)) - 1;
     int j = int(index / uint(s)) - 1;
@@ -140,15 +145,20 @@ void main() {
     // planet-centred position in float (a 0.5 m grid at Earth radius), then made relative.
     vec3 dirFloat = vec3(dir);
     float hFloat = globeApplySourcesFloat(globeElevationFloat(dirFloat), job.sourceBase, index);
-    vec3 pFloat = dirFloat * (float(GLOBE_ELEVATION_PARAMS.radius_m) + hFloat);
+    float drawnFloat = kWaterSurface != 0u ? max(hFloat, float(GLOBE_ELEVATION_PARAMS.sea_level_m)) : hFloat;
+    vec3 pFloat = dirFloat * (float(GLOBE_ELEVATION_PARAMS.radius_m) + drawnFloat);
     double h = double(hFloat);
+    double drawn = double(drawnFloat);
     dvec3 p = dvec3(pFloat);
 #else
     double h = globeApplySources(globeElevation(dir), job.sourceBase, index);
-    precise double r = GLOBE_ELEVATION_PARAMS.radius_m + h;
+    double drawn = kWaterSurface != 0u ? max(h, GLOBE_ELEVATION_PARAMS.sea_level_m) : h;
+    precise double r = GLOBE_ELEVATION_PARAMS.radius_m + drawn;
     precise dvec3 p = dir * r;
 #endif
-    scratch[scratchBase + index] = dvec4(p, h);
+    // w: the drawn elevation, which the sample's colour is taken at (a sea floor is coloured as the
+    // shore above it: the water's own colour is drawn over it).
+    scratch[scratchBase + index] = dvec4(p, drawn);
     precise dvec3 rel = p - centre;
     precise dvec3 quantised = floor(rel / q + 0.5lf) * q;
     payloads[slotBase + index] = vec4(vec3(quantised), float(h));
@@ -156,10 +166,12 @@ void main() {
       precise double radius = sqrt((p.x * p.x + p.y * p.y) + p.z * p.z);
       localMin = min(localMin, radius);
       localMax = max(localMax, radius);
+      localLowest = min(localLowest, h);
     }
   }
   sharedMin[gl_LocalInvocationID.x] = localMin;
   sharedMax[gl_LocalInvocationID.x] = localMax;
+  sharedLowest[gl_LocalInvocationID.x] = localLowest;
   memoryBarrierBuffer();
   barrier();
 
@@ -190,8 +202,10 @@ void main() {
           max(sharedMax[gl_LocalInvocationID.x], sharedMax[gl_LocalInvocationID.x + stride]);
       sharedError[gl_LocalInvocationID.x] =
           max(sharedError[gl_LocalInvocationID.x], sharedError[gl_LocalInvocationID.x + stride]);
+      sharedLowest[gl_LocalInvocationID.x] =
+          min(sharedLowest[gl_LocalInvocationID.x], sharedLowest[gl_LocalInvocationID.x + stride]);
     }
   }
   if (gl_LocalInvocationID.x == 0u)
-    results[jobIndex] = PayloadResult(sharedMin[0], sharedMax[0], sharedError[0], 0.0lf);
+    results[jobIndex] = PayloadResult(sharedMin[0], sharedMax[0], sharedError[0], sharedLowest[0]);
 }

@@ -12,8 +12,10 @@
 //   (j + 1) * S + (i + 1).
 // One payload slot is an array of vec4 (16 bytes each) in the payload buffer:
 //   [0, S*S)              position: xyz = sample position minus the node centre, metres, float,
-//                         quantised to multiples of the level's quantum (see below); w = elevation
-//                         above the planet radius, metres
+//                         quantised to multiples of the level's quantum (see below): the ground, or
+//                         the sea surface above lower ground (GLOBE_PAYLOAD_SPEC_WATER_SURFACE);
+//                         w = ground elevation above the planet radius, metres (below the sea: its
+//                         floor, whose depth tints the water)
 //   [S*S, S*S + S*S)      normal: xyz = unit surface normal, planet-fixed, from double-precision
 //                         positions (central differences); w = the sample's surface word, 32 bits
 //                         stored as they are in the float (payload_surface.glsl): bytes 0-2 the
@@ -56,6 +58,10 @@ struct uvec4_ {
 #define GLOBE_NO_SOURCE_TERMS 0xffffffffu
 // Threads per generation workgroup (one workgroup per node).
 #define GLOBE_PAYLOAD_WORKGROUP 128u
+// Specialization constant of the payload kernel (after the elevation ones, elevation_params.h):
+// 1 = place samples below sea level on the sea surface (the renderer's payloads on a planet with
+// water); 0 = the ground everywhere (collision meshes, bakes, dry planets).
+#define GLOBE_PAYLOAD_SPEC_WATER_SURFACE 25
 
 // One node to generate (std430, 96 bytes).
 struct PayloadJob {
@@ -77,7 +83,9 @@ struct PayloadResult {
   // Geometric error (metres): the largest distance a vertex of the node's mesh moves when it morphs
   // to its parent's mesh (half the largest second difference); feeds tolerance-driven LOD ranges.
   double geometricError_m;
-  double unused;  // keeps the std430 array stride a multiple of 16 bytes
+  // The lowest ground elevation among the node's vertices (metres, before any sea surface): the
+  // node has water to draw when it is below sea level.
+  double lowestElevation_m;
 };
 
 #ifdef __cplusplus

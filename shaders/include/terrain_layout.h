@@ -41,7 +41,7 @@ struct TerrainDvec4 {
 #define GLOBE_TERRAIN_LOD_COLOURS 1u
 #define GLOBE_TERRAIN_WIREFRAME 2u
 
-// Constants of one frame (std430, 160 bytes).
+// Constants of one frame (std430, 224 bytes).
 struct TerrainFrame {
   GLOBE_MAT4 clipFromCamera;  //   0: projection * view rotation: camera-centred planet-fixed axes -> clip
   GLOBE_VEC4 cameraHigh;      //  64: xyz = float(camera - origin), metres
@@ -50,6 +50,10 @@ struct TerrainFrame {
   GLOBE_VEC4 sun;             // 112: xyz = unit direction towards the sun (planet-fixed); w = ambient light
   GLOBE_UVEC4 options;        // 128: x = payload grid cells N, y = debug view, z = 1 when skirts are drawn
   GLOBE_VEC4 skirt;           // 144: x = outward offset, y = drop, both in drawn cells
+  GLOBE_VEC4 waterShallow;    // 160: rgb = the sea's colour at the shore (linear); w = sea level (m), -FLT_MAX: no sea
+  GLOBE_VEC4 waterDeep;       // 176: rgb = the sea's colour over deep ground (linear); w = 1 / depth scale (per m)
+  GLOBE_VEC4 skyZenith;       // 192: rgb = the sky overhead (linear), reflected by the sea
+  GLOBE_VEC4 skyHorizon;      // 208: rgb = the sky at the horizon (linear)
 };
 
 // One drawn node (std430, 48 bytes).
@@ -79,7 +83,7 @@ struct TerrainDrawPush {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(TerrainFrame) == 160);
+static_assert(sizeof(TerrainFrame) == 224);
 static_assert(sizeof(TerrainInstance) == 48);
 static_assert(sizeof(TerrainReprojectionFrame) == 32 && sizeof(TerrainReprojectionNode) == 32);
 }  // namespace globe::gpu

@@ -66,7 +66,7 @@ struct TerrainVertex {
   vec3 relative;    // position minus camera, metres (planet-fixed axes)
   vec3 normal;      // planet-fixed unit normal (morphed, renormalised by the fragment shader)
   vec3 albedo;      // linear surface colour from the payload (morphed)
-  float elevation;  // metres above the planet radius (morphed)
+  float elevation;  // ground metres above the planet radius (morphed; below the sea: its floor)
   float hole;       // hole mask of elevation sources (payload surface word, morphed; >= 0.5 is discarded)
   float morph;      // k in [0, 1]
   uint level;       // level the node is drawn at (TerrainInstance.info.z)
@@ -108,7 +108,9 @@ TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCell
   vec4 sample0 = payload[terrainSample(base, cells, si, sj)];
 #ifdef GLOBE_TERRAIN_REPROJECT
   dvec4 uv = reprojectionNodes[instanceIndex].uv;
-  vec3 world = terrainReprojected(uv, cells, si, sj, sample0.w);
+  // Heights are the ground's: the drawn surface is the sea above lower ground (-FLT_MAX: no sea).
+  float sea = frame.waterShallow.w;
+  vec3 world = terrainReprojected(uv, cells, si, sj, max(sample0.w, sea));
   vec3 rel0 = world;
 #else
   precise vec3 world = inst.offset.xyz + sample0.xyz;
@@ -131,8 +133,8 @@ TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCell
     uint ib = terrainSample(base, cells, int(b.x * stride), int(b.y * stride));
     vec4 sa = payload[ia], sb = payload[ib];
 #ifdef GLOBE_TERRAIN_REPROJECT
-    vec3 wa = terrainReprojected(uv, cells, int(a.x * stride), int(a.y * stride), sa.w);
-    vec3 wb = terrainReprojected(uv, cells, int(b.x * stride), int(b.y * stride), sb.w);
+    vec3 wa = terrainReprojected(uv, cells, int(a.x * stride), int(a.y * stride), max(sa.w, sea));
+    vec3 wb = terrainReprojected(uv, cells, int(b.x * stride), int(b.y * stride), max(sb.w, sea));
 #else
     precise vec3 wa = inst.offset.xyz + sa.xyz;
     precise vec3 wb = inst.offset.xyz + sb.xyz;

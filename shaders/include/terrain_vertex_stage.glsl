@@ -17,6 +17,10 @@ layout(push_constant) uniform Push {
 
 layout(location = 0) out vec3 outColour;  // lit, display-encoded (display_encoding.h)
 layout(location = 1) out float outHole;
+// For the water shader (terrain_water.frag; other fragment shaders do not read them, and linking
+// drops them): depth of the sea above the ground (m, < 0 on land) and the camera-relative position.
+layout(location = 2) out float outSeaDepth;
+layout(location = 3) out vec3 outRelative;
 
 void main() {
   TerrainVertex v = terrainVertex(uint(gl_VertexIndex), uint(gl_InstanceIndex), push.draw.drawnCells);
@@ -31,4 +35,6 @@ void main() {
   float light = sun.w + (1.0 - sun.w) * max(dot(n, sun.xyz), 0.0);
   outColour = encodeDisplay(albedo * light, 1.0).rgb;
   outHole = v.hole;
+  outSeaDepth = frame.waterShallow.w - v.elevation;
+  outRelative = v.relative;
 }

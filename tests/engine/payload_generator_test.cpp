@@ -6,12 +6,13 @@
 #include "planet/lod/selection.h"
 #include "planet/streaming/payload_pool.h"
 #include "planet/streaming/payload_reference.h"
-#include "tests/support/payload_surface_check.h"
 #include "tests/support/gpu_test.h"
+#include "tests/support/payload_surface_check.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <random>
 
 namespace globe::testing {
@@ -111,6 +112,50 @@ TEST_F(PayloadGeneratorTest, MatchesCpuReferenceAtEveryDepth) {
       "[ info ] %zu nodes, depths 0-24: worst |radius| diff %.3g m, elevation %.3g m, normal %.3g, geometric error "
       "%.3g quanta, albedo %d steps of 1/255\n",
       nodes.size(), worstRadius, worstElevation, worstNormal, worstError, worstAlbedo);
+}
+
+// With the sea surface (the renderer's payloads on a planet with [water]): samples below sea level
+// lie on the sea, keep the ground's elevation in w and the shore's colour, the job's centre is on
+// the visible surface, and the slots with ground below sea level are the ones marked as water.
+TEST_F(PayloadGeneratorTest, WaterSurfaceMatchesCpuReferenceAndMarksTheWetSlots) {
+  ASSERT_TRUE(model_->drawsWater());
+  auto nodes = testNodes();
+  GpuPayloadGenerator gen(device(), *model_, kCells, GLOBE_PAYLOAD_MAX_BATCH, 1, GenerationPrecision::kDouble,
+                          /*waterSurface=*/true);
+  gen.reserveSlots(uint32_t(nodes.size()));
+  std::vector<GenerationResult> results;
+  auto gpu = generate(gen, nodes, results);
+  ASSERT_EQ(results.size(), nodes.size());
+  const size_t perSlot = GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells), samples = perSlot / 2, side = kCells + 3;
+  const double sea_m = model_->seaLevel_m();
+  std::vector<glm::vec4> cpu(perSlot);
+  int wet = 0, dry = 0;
+  for (const GenerationResult& r : results) {
+    SCOPED_TRACE(::testing::Message() << "node face " << int(r.node.face) << " level " << int(r.node.level));
+    const gpu::PayloadJob job = makePayloadJob(r.node, 0, *model_, true);
+    fillPayloadReference(*model_, job, kCells, cpu, true);
+    const glm::dvec3 centre(job.centre.x, job.centre.y, job.centre.z);
+    const glm::vec4* g = &gpu[r.slot * perSlot];
+    float lowest = std::numeric_limits<float>::max();
+    for (size_t i = 0; i < samples; ++i) {
+      for (int c = 0; c < 3; ++c) ASSERT_LE(std::abs(double(g[i][c]) - double(cpu[i][c])), job.centre.w * 1.0001) << i;
+      ASSERT_LE(std::abs(g[i].w - cpu[i].w), std::max(1e-6f, std::abs(cpu[i].w) * 1.2e-7f)) << i;
+      ASSERT_LE(albedoByteDistance(g[samples + i].w, cpu[samples + i].w), 1) << i;
+      const double radius_m = glm::length(centre + glm::dvec3(glm::vec3(g[i])));
+      ASSERT_GE(radius_m, model_->radius_m() + sea_m - 2.0 * job.centre.w) << i;  // nothing below the sea
+      const size_t si = i % side, sj = i / side;
+      if (si >= 1 && si <= kCells + 1 && sj >= 1 && sj <= kCells + 1) lowest = std::min(lowest, g[i].w);
+    }
+    EXPECT_EQ(gen.slotHasWater(r.slot), double(lowest) < sea_m);
+    (gen.slotHasWater(r.slot) ? wet : dry) += 1;
+  }
+  EXPECT_GT(wet, 0);
+  EXPECT_GT(dry, 0);
+  // Without the switch nothing is marked, whatever the planet.
+  GpuPayloadGenerator ground(device(), *model_, kCells, GLOBE_PAYLOAD_MAX_BATCH, 1);
+  ground.reserveSlots(uint32_t(nodes.size()));
+  generate(ground, nodes, results);
+  for (const GenerationResult& r : results) EXPECT_FALSE(ground.slotHasWater(r.slot));
 }
 
 // The float variant (GenerationPrecision::kFloat, measured by globe trade) is the float model: its

@@ -20,7 +20,7 @@ class VertexPositionsTest : public GpuTest {
   // The camera at `pose` over the earthlike planet, for a kWidth x kHeight image.
   Camera cameraAt(const GeodeticPose& pose) const {
     const glm::dvec3 down = directionFromLatLon(pose.latitude_deg, pose.longitude_deg);
-    return cameraFromPose(pose, model_->radius_m() + model_->elevation_m(down), model_->radius_m(),
+    return cameraFromPose(pose, model_->radius_m() + model_->visibleElevation_m(down), model_->radius_m(),
                           double(kWidth) / kHeight);
   }
   const ElevationModel* model_ = &earthlikeModel();

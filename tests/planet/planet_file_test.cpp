@@ -159,6 +159,13 @@ const BadCase kBadCases[] = {
     {"snow without elevation", "radius_m = 5e6\n" LAYER "[snow]\nblend_m = 10\n", 7, 1, "snow.elevation_m", "missing"},
     {"snow negative blend", "radius_m = 5e6\n" LAYER "[snow]\nelevation_m = 1\nblend_m = -1\n", 9, 11, "snow.blend_m",
      "[0, 1e7]"},
+    {"unknown water key", "radius_m = 5e6\n" LAYER "[water]\ncolour = [0, 0, 1]\n", 8, 1, "water.colour",
+     "unknown key"},
+    {"water depth scale zero", "radius_m = 5e6\n" LAYER "[water]\ndepth_scale_m = 0\n", 8, 17, "water.depth_scale_m",
+     "(0, 1e5]"},
+    {"water colour out of range", "radius_m = 5e6\n" LAYER "[water]\nshallow_colour = [0, 2, 0]\n", 8, 18,
+     "water.shallow_colour", "within [0, 1]"},
+    {"water not a table", "radius_m = 5e6\nwater = true\n" LAYER, 2, 9, "water", "expected a table ([water])"},
 };
 
 TEST(PlanetFile, EveryErrorHasFileLineColumnAndKey) {
@@ -252,6 +259,26 @@ TEST(PlanetFile, ColourRampAndQualityDefaults) {
   EXPECT_EQ(r->colour_ramp.stops, defaultColourRampStops());
   EXPECT_FALSE(r->colour_ramp.snow);
   EXPECT_EQ(r->colour_ramp, ColourRamp{});
+}
+
+TEST(PlanetFile, WaterIsReadOnlyFromItsTable) {
+  const Result<PlanetDescription> dry = parsePlanetToml("radius_m = 5e6\n" LAYER, "dry.toml");
+  ASSERT_TRUE(dry.ok()) << dry.error().format();
+  EXPECT_FALSE(dry->water.enabled);  // sea_level_m alone is a datum, not a sea
+  const Result<PlanetDescription> r = parsePlanetToml(
+      "radius_m = 5e6\nsea_level_m = 12\n" LAYER "[water]\ndeep_colour = [0, 0, 0.5]\ndepth_scale_m = 7\n", "wet.toml");
+  ASSERT_TRUE(r.ok()) << r.error().format();
+  EXPECT_TRUE(r->water.enabled);
+  EXPECT_EQ(r->water.deep_colour, glm::vec3(0.0f, 0.0f, 0.5f));
+  EXPECT_EQ(r->water.shallow_colour, Water{}.shallow_colour);
+  EXPECT_EQ(r->water.depth_scale_m, 7.0);
+  const Result<PlanetDescription> again = parsePlanetToml(formatPlanetToml(*r), "again.toml");
+  ASSERT_TRUE(again.ok()) << again.error().format();
+  EXPECT_EQ(again->water, r->water);
+  const ElevationModel model(*r);
+  EXPECT_TRUE(model.drawsWater());
+  const glm::dvec3 up(0.0, 0.0, 1.0);
+  EXPECT_EQ(model.visibleElevation_m(up), std::max(model.elevation_m(up), 12.0));
 }
 
 TEST(PlanetFile, ColourRampIsRead) {

@@ -1,0 +1,36 @@
+// The sea's colour per fragment (terrain_water.frag): body colour tinted by the depth of the ground
+// below, lit by the sun on the flat sea surface, plus the sky reflected by Schlick's Fresnel term and
+// a sun glint. Per fragment because the view angle changes within the large flat triangles of a
+// sea near the camera (per vertex, a camera 10 cm above the water saw a sky-coloured sea at its
+// feet). Reads the frame constants; no branch or loop depends on them alone (docs/rendering.md,
+// "No shader compile per frame").
+#include "terrain_layout.h"
+
+layout(std140, set = 0, binding = 2) uniform TerrainFrameBlock { TerrainFrame frame; };
+
+// Reflectance of water at normal incidence ((1.33 - 1) / (1.33 + 1))^2.
+const float kWaterF0 = 0.02;
+// Sharpness of the glint (a Phong-like lobe standing in for a wavy surface) and its strength.
+const float kGlintExponent = 600.0;
+const float kGlintStrength = 6.0;
+
+vec3 waterColour(float depth_m, vec3 relative) {
+  // The camera-to-fragment ray and the sea's normal (the local vertical): directions only, so
+  // float is enough although the planet centre is far.
+  vec3 centre = frame.planetCentre.xyz - frame.cameraHigh.xyz - frame.cameraLow.xyz;
+  vec3 up = normalize(relative - centre);
+  vec3 view = normalize(relative);
+  vec3 sun = frame.sun.xyz;
+  float sunHeight = dot(up, sun);
+  float light = frame.sun.w + (1.0 - frame.sun.w) * max(sunHeight, 0.0);
+  float murk = 1.0 - exp(-depth_m * frame.waterDeep.w);
+  vec3 body = mix(frame.waterShallow.rgb, frame.waterDeep.rgb, murk) * light;
+  float cosView = clamp(-dot(view, up), 0.0, 1.0);
+  float fresnel = kWaterF0 + (1.0 - kWaterF0) * pow(1.0 - cosView, 5.0);
+  vec3 reflected = reflect(view, up);
+  float skyUp = clamp(dot(reflected, up), 0.0, 1.0);
+  // The sky pass's gradient, dimmed on the night side.
+  vec3 sky = mix(frame.skyHorizon.rgb, frame.skyZenith.rgb, sqrt(skyUp)) * clamp(sunHeight * 4.0 + 0.1, 0.0, 1.0);
+  float glint = pow(max(dot(reflected, sun), 0.0), kGlintExponent) * kGlintStrength * step(0.0, sunHeight);
+  return encodeDisplay(mix(body, sky, fresnel) + vec3(glint), 1.0).rgb;
+}
