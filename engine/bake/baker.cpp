@@ -98,7 +98,7 @@ std::vector<EncodedTile> encodeBatch(const PlanetDescription& planet, HeightSamp
       const auto first = h.begin() + std::ptrdiff_t(k * per);
       std::vector<double> tileHeights(first, first + std::ptrdiff_t(per));
       if (settings.format == BakeFormat::Cog) {
-        auto bytes = encodeCogTile(batch[k], tileHeights, planet.radius_m, planet.name);
+        auto bytes = encodeCogTile(batch[k], tileHeights, planet.radius_m, planet.name, planet.flattening);
         if (bytes)
           out[k].bytes = std::move(*bytes);
         else
@@ -118,6 +118,9 @@ std::vector<EncodedTile> encodeBatch(const PlanetDescription& planet, HeightSamp
 
 Result<BakeSummary> runBake(const PlanetDescription& planet, HeightSampler& heights, const BakeSettings& settings,
                             const TileWriter& write, const ProgressFn& progress) {
+  // Quantized-mesh positions, bounds and horizon points are built on a sphere (tile_mesh.cpp).
+  if (settings.format == BakeFormat::QuantizedMesh && planet.flattening != 0.0)
+    return Error::inField("--format", "quantized-mesh needs a spherical planet (this one has a shape); use cog");
   const BakePlan plan(settings.levels, settings.region);
   const ElevationModel model(planet);
   const BakeDescription description{settings.format, settings.levels,

@@ -159,7 +159,7 @@ Result<ImageRgba> renderBodies(vk::Device& device, const ElevationModel& model, 
   const GeodeticPose pose{latLon.x - 0.0002, latLon.y, 25.0, 0.0, -50.0, 0.0};
   const glm::dvec3 down = directionFromLatLon(pose.latitude_deg, pose.longitude_deg);
   const double ground = TerrainQueries(model).cameraFloorRadius(down, settings->ranges.maxDepth, cells);
-  const Camera camera = cameraFromPose(pose, ground, model.radius_m(), 16.0 / 9.0);
+  const Camera camera = cameraFromPose(pose, ground, model.shape(), 16.0 / 9.0);
   auto image = renderTerrain(device, camera, model, in.planet, *settings, 960, 540);
   if (!image) return image.error();
   std::printf("%u bodies in view\n", drawBodies(*image, camera, world));

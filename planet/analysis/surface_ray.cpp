@@ -47,17 +47,17 @@ double elevationSlopeBound(const gpu::ElevationParams& params) {
 SurfaceRayCaster::SurfaceRayCaster(const ElevationModel& model)
     : model_(model),
       slope_(elevationSlopeBound(model.params())),
-      minRadius_m_(std::max(model.radius_m() + model.bounds().min_m, 1e-3 * model.radius_m())),
+      // On an ellipsoid the normal below a point turns fastest over the tightest curvature, b^2 / a.
+      minRadius_m_(std::max(curvatureRadius_m(model.shape()) + model.bounds().min_m, 1e-3 * model.radius_m())),
       maxRadius_m_(model.radius_m() + std::max(model.bounds().max_m, 0.0)) {}
 
-double SurfaceRayCaster::heightAbove(const glm::dvec3& p) const {
-  double r = glm::length(p);
-  if (!(r > 0)) return -model_.radius_m();
-  return r - model_.radius_m() - model_.elevation_m(p / r);
+double SurfaceRayCaster::curvatureRadius_m(const Ellipsoid& shape) {
+  if (shape.isSphere()) return shape.equatorialRadius_m();
+  return shape.polarRadius_m() * shape.polarRadius_m() / shape.equatorialRadius_m();
 }
 
 glm::dvec3 SurfaceRayCaster::normalAt(const glm::dvec3& p, double scale_m) const {
-  glm::dvec3 d = glm::normalize(p);
+  glm::dvec3 d = model_.shape().isSphere() ? glm::normalize(p) : model_.shape().normalBelow(p);
   glm::dvec3 helper = std::abs(d.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
   glm::dvec3 e1 = glm::normalize(glm::cross(helper, d));
   glm::dvec3 e2 = glm::cross(d, e1);

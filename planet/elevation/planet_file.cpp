@@ -19,8 +19,9 @@ namespace globe {
 namespace {
 
 constexpr std::string_view kTopKeys[] = {
-    "name",        "radius_m", "seed", "sea_level_m", "surface_gravity_m_s2", "default_quality", "layers",
-    "colour_ramp", "rock",     "snow", "sources"};
+    "name",   "radius_m",    "shape", "seed", "sea_level_m", "surface_gravity_m_s2", "default_quality",
+    "layers", "colour_ramp", "rock",  "snow", "sources"};
+constexpr std::string_view kShapeKeys[] = {"equatorial_radius_m", "flattening"};
 constexpr std::string_view kStopKeys[] = {"elevation_m", "colour"};
 constexpr std::string_view kRockKeys[] = {"slope_deg", "blend_deg", "colour"};
 constexpr std::string_view kSnowKeys[] = {"elevation_m", "blend_m", "max_slope_deg", "colour"};
@@ -73,7 +74,7 @@ void readLayerFrequency(PlanetTomlReader& r, const toml::node& node, const std::
     r.fail(node.source(), field, "must be > 0");
   } else {
     read.layer.wavelength_m = 1.0 / *v;
-    r.rememberAs(read.prefix + "wavelength_m", field, node.source());
+    r.rememberAs(read.prefix + "wavelength_m", field, node.source(), /*inverse=*/true);
   }
 }
 
@@ -254,6 +255,30 @@ void readSnow(PlanetTomlReader& r, const toml::table& t, ColourRamp& ramp) {
   if (!have_elevation) r.fail(t.source(), "snow.elevation_m", "missing (required in [snow])");
 }
 
+// shape = { equatorial_radius_m = a, flattening = f }: the reference ellipsoid instead of radius_m's
+// sphere. Both keys are required; validation errors on radius_m / flattening name these keys.
+void readShape(PlanetTomlReader& r, const toml::table& t, PlanetDescription& planet) {
+  bool have_radius = false;
+  bool have_flattening = false;
+  for (auto&& [key, node] : t) {
+    const std::string k(key.str());
+    const std::string field = "shape." + k;
+    if (!isKnownKey(k, kShapeKeys)) {
+      r.fail(key.source(), field, unknownKeyMessage(k, kShapeKeys));
+    } else if (k == "equatorial_radius_m") {
+      have_radius = true;
+      if (auto v = r.number(node, field)) planet.radius_m = *v;
+      r.rememberAs("radius_m", field, node.source());
+    } else {
+      have_flattening = true;
+      if (auto v = r.number(node, field)) planet.flattening = *v;
+      r.rememberAs("flattening", field, node.source());
+    }
+  }
+  if (!have_radius) r.fail(t.source(), "shape.equatorial_radius_m", "missing (required in shape)");
+  if (!have_flattening) r.fail(t.source(), "shape.flattening", "missing (required in shape)");
+}
+
 void readTopLevel(PlanetTomlReader& r, const std::string& k, const toml::node& node, PlanetDescription& planet) {
   if (k == "name") {
     if (auto v = r.string(node, k)) planet.name = *v;
@@ -291,6 +316,8 @@ void readTopLevel(PlanetTomlReader& r, const std::string& k, const toml::node& n
       planet.colour_ramp.stops.clear();
       for (std::size_t i = 0; i < stops->size(); ++i) readStop(r, *(*stops)[i].as_table(), i, planet.colour_ramp);
     }
+  } else if (k == "shape") {
+    if (const toml::table* t = r.table(node, k, "shape = { ... }")) readShape(r, *t, planet);
   } else if (k == "rock") {
     if (const toml::table* t = r.table(node, k, "[rock]")) readRock(r, *t, planet.colour_ramp);
   } else if (k == "snow") {
@@ -303,7 +330,8 @@ PlanetFileCheck readPlanet(const toml::table& root, std::string_view source_name
   PlanetFileCheck check;
   PlanetDescription& planet = check.planet;
   planet.name = std::filesystem::path(source_name).stem().string();
-  bool have_radius = false;
+  const toml::node* radius = nullptr;
+  const toml::node* shape = nullptr;
   bool have_layers = false;
 
   for (auto&& [key, node] : root) {
@@ -312,7 +340,8 @@ PlanetFileCheck readPlanet(const toml::table& root, std::string_view source_name
       r.fail(key.source(), k, unknownKeyMessage(k, kTopKeys));
       continue;
     }
-    have_radius = have_radius || k == "radius_m";
+    if (k == "radius_m") radius = &node;
+    if (k == "shape") shape = &node;
     have_layers = have_layers || k == "layers";
     if (k == "sources") {
       readSources(r, node, std::filesystem::path(source_name).parent_path().string(), planet.sources);
@@ -320,7 +349,10 @@ PlanetFileCheck readPlanet(const toml::table& root, std::string_view source_name
       readTopLevel(r, k, node, planet);
     }
   }
-  if (!have_radius) r.fail(root.source(), "radius_m", "missing (required)");
+  if (radius == nullptr && shape == nullptr) r.fail(root.source(), "radius_m", "missing (required, or shape)");
+  if (radius != nullptr && shape != nullptr) {
+    r.fail(shape->source(), "shape", "give radius_m (a sphere) or shape (an ellipsoid), not both");
+  }
   if (!have_layers) r.fail(root.source(), "layers", "missing (required, at least one [[layers]])");
 
   // Ranges and cross-field rules live in one place; each error points at the value that was read.

@@ -130,7 +130,12 @@ double unresolvedRelief_m(const gpu::ElevationParams& params, double sampleSpaci
       amplitude *= std::abs(layer.gain);
     }
   }
-  double sag = sampleSpacing_m * sampleSpacing_m / (8.0 * params.radius_m);
+  // The sag grows with the curvature: on an ellipsoid the tightest radius is the meridian's at the
+  // equator, b^2 / a.
+  const double curvatureRadius_m = params.polar_radius_m == params.radius_m
+                                       ? params.radius_m
+                                       : params.polar_radius_m * params.polar_radius_m / params.radius_m;
+  double sag = sampleSpacing_m * sampleSpacing_m / (8.0 * curvatureRadius_m);
   return relief + sag;
 }
 
@@ -163,7 +168,7 @@ RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::Payload
       // for the hole mask.
       const SourceTerm term = model.sourceTerm(dir, spacing_m);
       double h = combineSourceTerm(model.proceduralElevation_m(dir), term);
-      glm::dvec3 p = dir * (model.radius_m() + h);
+      glm::dvec3 p = model.shape().position(dir, h);  // on a sphere dir * (radius + h)
       positions[index] = p;
       holes[index] = term.hole;
       glm::dvec3 rel = p - centre;
@@ -202,14 +207,16 @@ double drawnSurfaceRadius(const ElevationModel& model, const glm::dvec3& unitDir
   const int i = std::clamp(int(std::floor(fu)), 0, n - 1), j = std::clamp(int(std::floor(fv)), 0, n - 1);
   auto sample = [&](int a, int b) { return model.surfacePosition(payloadSampleDirection(job, cells, a, b)); };
   const glm::dvec3 p00 = sample(i, j), p10 = sample(i + 1, j), p11 = sample(i + 1, j + 1), p01 = sample(i, j + 1);
-  // Ray from the centre along the direction against the cell's two triangles (Moller-Trumbore); the
-  // (u, v) cell and the flat triangles can disagree by a hair at their edges, hence the fallback.
+  // Ray along the direction (the geodetic normal) from the point a below the surface on it — the centre
+  // on a sphere — against the cell's two triangles (Moller-Trumbore); the (u, v) cell and the flat
+  // triangles can disagree by a hair at their edges, hence the fallback.
+  const glm::dvec3 origin = model.shape().surfacePoint(unitDirection) - unitDirection * model.radius_m();
   double best = -1.0, fallback = 0.0;
   for (const auto& [a, b, c] : {std::array{p00, p10, p11}, std::array{p00, p11, p01}}) {
     const glm::dvec3 e1 = b - a, e2 = c - a, pv = glm::cross(unitDirection, e2);
     const double det = glm::dot(e1, pv);
     if (std::abs(det) < 1e-300) continue;
-    const glm::dvec3 tv = -a;
+    const glm::dvec3 tv = origin - a;
     const double bu = glm::dot(tv, pv) / det;
     const glm::dvec3 qv = glm::cross(tv, e1);
     const double bv = glm::dot(unitDirection, qv) / det;

@@ -135,12 +135,17 @@ void main() {
     vec3 dirFloat = vec3(dir);
     float hFloat = globeApplySourcesFloat(globeElevationFloat(dirFloat), job.sourceBase, index);
     vec3 pFloat = dirFloat * (float(GLOBE_ELEVATION_PARAMS.radius_m) + hFloat);
+    if (kGlobeEllipsoid != 0u) {  // a specialization constant: no branch is left
+      float a = float(GLOBE_ELEVATION_PARAMS.radius_m), b = float(GLOBE_ELEVATION_PARAMS.polar_radius_m);
+      vec3 scaled = dirFloat * vec3(a * a, a * a, b * b);
+      pFloat = scaled / sqrt(dot(scaled, dirFloat)) + dirFloat * hFloat;
+    }
     double h = double(hFloat);
     dvec3 p = dvec3(pFloat);
 #else
+    // The geodetic surface point plus the elevation along the normal (= globe::Ellipsoid::position).
     double h = globeApplySources(globeElevation(dir), job.sourceBase, index);
-    precise double r = GLOBE_ELEVATION_PARAMS.radius_m + h;
-    precise dvec3 p = dir * r;
+    precise dvec3 p = globePosition(dir, h);
 #endif
     scratch[scratchBase + index] = dvec4(p, 0.0lf);
     precise dvec3 rel = p - centre;

@@ -62,7 +62,15 @@ std::vector<NodeId> testNodes() {
   return nodes;
 }
 
-TEST_F(PayloadGeneratorTest, MatchesCpuReferenceAtEveryDepth) {
+// On the planet's sphere, on WGS84 and on flattening 0.1: the GPU places each sample at the geodetic
+// surface point plus the elevation along the normal exactly like the CPU (Ellipsoid::position).
+class PayloadGeneratorShapeTest : public PayloadGeneratorTest, public ::testing::WithParamInterface<PlanetShapeCase> {
+ protected:
+  PayloadGeneratorShapeTest() { model_ = &earthlikeModel(GetParam()); }
+};
+INSTANTIATE_TEST_SUITE_P(Shapes, PayloadGeneratorShapeTest, ::testing::ValuesIn(kPlanetShapes), planetShapeName);
+
+TEST_P(PayloadGeneratorShapeTest, MatchesCpuReferenceAtEveryDepth) {
   auto nodes = testNodes();
   GpuPayloadGenerator gen(device(), *model_, kCells, GLOBE_PAYLOAD_MAX_BATCH, 1);
   gen.reserveSlots(uint32_t(nodes.size()));
@@ -72,7 +80,7 @@ TEST_F(PayloadGeneratorTest, MatchesCpuReferenceAtEveryDepth) {
   const size_t perSlot = GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells);
   const size_t samples = perSlot / 2;
   std::vector<glm::vec4> cpu(perSlot);
-  double worstRadius = 0, worstElevation = 0, worstNormal = 0, worstError = 0;
+  double worstRadius = 0, worstElevation = 0, worstNormal = 0, worstError = 0, worstHeight = 0;
   for (size_t k = 0; k < nodes.size(); ++k) {
     SCOPED_TRACE(::testing::Message() << "node face " << int(nodes[k].face) << " level " << int(nodes[k].level));
     gpu::PayloadJob job = makePayloadJob(nodes[k], 0, *model_);
@@ -100,12 +108,22 @@ TEST_F(PayloadGeneratorTest, MatchesCpuReferenceAtEveryDepth) {
       worstNormal = std::max(worstNormal, double(glm::length(gn - cn)));
       ASSERT_LT(glm::length(gn - cn), 1e-5f) << i;
       ASSERT_NEAR(glm::length(gn), 1.0f, 1e-5f);
+      // Independently of the shared formula: GeographicLib finds the sample at its elevation above
+      // the ellipsoid, along the sample's own direction (geodetic normal).
+      const glm::dvec3 p = glm::dvec3(job.centre) + glm::dvec3(glm::vec3(g[i]));
+      const GeodeticPoint geodetic = model_->shape().geodeticFromGeocentric(p);
+      worstHeight = std::max(worstHeight, std::abs(geodetic.height_m - double(g[i].w)));
+      ASSERT_NEAR(geodetic.height_m, double(g[i].w), 2.0 * job.centre.w + 1e-3) << i;
+      const int row = int(i) / int(kCells + 3), column = int(i) % int(kCells + 3);
+      const glm::dvec3 direction = payloadSampleDirection(job, kCells, column - 1, row - 1);
+      ASSERT_LT(glm::length(Ellipsoid::normalAt(geodetic) - direction), 1e-9 + 4.0 * job.centre.w / model_->radius_m())
+          << i;
     }
   }
   std::printf(
       "[ info ] %zu nodes, depths 0-24: worst |radius| diff %.3g m, elevation %.3g m, normal %.3g, geometric error "
-      "%.3g quanta\n",
-      nodes.size(), worstRadius, worstElevation, worstNormal, worstError);
+      "%.3g quanta, |GeographicLib height - elevation| %.3g m (%s)\n",
+      nodes.size(), worstRadius, worstElevation, worstNormal, worstError, worstHeight, GetParam().name);
 }
 
 // The float variant (GenerationPrecision::kFloat, measured by globe trade) is the float model: its
