@@ -110,7 +110,7 @@ TEST_P(PayloadGeneratorShapeTest, MatchesCpuReferenceAtEveryDepth) {
       ASSERT_NEAR(glm::length(gn), 1.0f, 1e-5f);
       // Independently of the shared formula: GeographicLib finds the sample at its elevation above
       // the ellipsoid, along the sample's own direction (geodetic normal).
-      const glm::dvec3 p = glm::dvec3(job.centre) + glm::dvec3(glm::vec3(g[i]));
+      const glm::dvec3 p = glm::dvec3(job.centre.x, job.centre.y, job.centre.z) + glm::dvec3(glm::vec3(g[i]));
       const GeodeticPoint geodetic = model_->shape().geodeticFromGeocentric(p);
       worstHeight = std::max(worstHeight, std::abs(geodetic.height_m - double(g[i].w)));
       ASSERT_NEAR(geodetic.height_m, double(g[i].w), 2.0 * job.centre.w + 1e-3) << i;

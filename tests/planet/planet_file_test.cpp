@@ -361,7 +361,7 @@ TEST(PlanetFile, ShapeRoundTripsThroughTheWriter) {
   EXPECT_NE(written.find("shape = { equatorial_radius_m = 6378137, flattening = 0.0033528106647474805 }"),
             std::string::npos)
       << written;
-  EXPECT_EQ(written.find("radius_m ="), std::string::npos) << written;
+  EXPECT_EQ(written.find("\nradius_m ="), std::string::npos) << written;
   const Result<PlanetDescription> again = parsePlanetToml(written, "again.toml");
   ASSERT_TRUE(again.ok()) << again.error().format();
   EXPECT_EQ(*again, *p);
