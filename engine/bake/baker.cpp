@@ -106,7 +106,7 @@ std::vector<EncodedTile> encodeBatch(const PlanetDescription& planet, HeightSamp
       } else {
         const TileGrid grid{batch[k], kMeshCells, std::move(tileHeights)};
         const double error_m = levelGeometricError_m(planet.radius_m, batch[k].level);
-        out[k].bytes = encodeQuantizedMesh(buildTileMesh(grid, planet.radius_m, error_m, &out[k].stats));
+        out[k].bytes = encodeQuantizedMesh(buildTileMesh(grid, planetShape(planet), error_m, &out[k].stats));
       }
     }
   });
@@ -118,14 +118,15 @@ std::vector<EncodedTile> encodeBatch(const PlanetDescription& planet, HeightSamp
 
 Result<BakeSummary> runBake(const PlanetDescription& planet, HeightSampler& heights, const BakeSettings& settings,
                             const TileWriter& write, const ProgressFn& progress) {
-  // Quantized-mesh positions, bounds and horizon points are built on a sphere (tile_mesh.cpp).
-  if (settings.format == BakeFormat::QuantizedMesh && planet.flattening != 0.0)
-    return Error::inField("--format", "quantized-mesh needs a spherical planet (this one has a shape); use cog");
   const BakePlan plan(settings.levels, settings.region);
   const ElevationModel model(planet);
-  const BakeDescription description{settings.format, settings.levels,
-                                    settings.region, planet.name,
-                                    planet.radius_m, elevationModelHash(model.params(), planet.sources)};
+  const BakeDescription description{settings.format,
+                                    settings.levels,
+                                    settings.region,
+                                    planet.name,
+                                    planet.radius_m,
+                                    planet.flattening,
+                                    elevationModelHash(model.params(), planet.sources)};
   std::error_code ec;
   fs::create_directories(settings.out_dir, ec);
   if (ec) return Error::inField("--out", "cannot create '" + settings.out_dir + "': " + ec.message());

@@ -238,7 +238,8 @@ Result<std::vector<TradeCamera>> tradeCameras(const TradeOptions& o, const Trade
   if (in.path)
     for (double t : {7.0, 12.0})
       if (t >= in.path->startTime_s() && t <= in.path->endTime_s())
-        cameras.push_back({"path@" + formatFixed(t, 0) + "s", in.path->cameraAt(t, model.radius_m(), aspect, ground, model.shape())});
+        cameras.push_back(
+            {"path@" + formatFixed(t, 0) + "s", in.path->cameraAt(t, model.radius_m(), aspect, ground, model.shape())});
   if (auto s = keepNamedCameras(o.cameras, cameras); !s) return s.error();
   return cameras;
 }

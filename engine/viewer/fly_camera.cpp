@@ -97,7 +97,7 @@ void FlyCamera::update(const FlyControls& c, double dt_s) {
   position_m_ = guard_ ? guard_(position_m_, target) : target;
 
   liftAboveGround();  // never below the ground
-  clampPitch();  // the vertical turned with the motion
+  clampPitch();       // the vertical turned with the motion
 }
 
 Camera FlyCamera::camera(double aspect) const {

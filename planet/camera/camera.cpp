@@ -1,6 +1,5 @@
 #include "planet/camera/camera.h"
 
-
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -99,8 +98,7 @@ Camera cameraFromPose(const GeodeticPose& pose, double groundRadius_m, const Ell
   const glm::dvec3 east = enu[0], north = enu[1], upLocal = enu[2];
 
   const double horizonRadius_m = shape.equatorialRadius_m();
-  double pitch =
-      std::isnan(pose.pitch_deg) ? horizonPitch_deg(pose.height_m, horizonRadius_m) - 2.0 : pose.pitch_deg;
+  double pitch = std::isnan(pose.pitch_deg) ? horizonPitch_deg(pose.height_m, horizonRadius_m) - 2.0 : pose.pitch_deg;
   pitch = std::clamp(pitch, -90.0, 90.0);
   double h = pose.heading_deg * kDeg, p = pitch * kDeg, r = pose.roll_deg * kDeg;
   glm::dvec3 forward = std::cos(p) * (std::sin(h) * east + std::cos(h) * north) + std::sin(p) * upLocal;

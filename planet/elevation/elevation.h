@@ -4,7 +4,8 @@
 // packed gpu::ElevationParams (shaders/include/elevation_params.h).
 //
 // Evaluation, for a unit direction d (on an ellipsoid: the geodetic normal, so elevation is a
-// function of geodetic latitude/longitude; the noise point stays d * radius_m) (operation order is part of the contract, see elevation.cpp):
+// function of geodetic latitude/longitude; the noise point stays d * radius_m) (operation order is part of the
+// contract, see elevation.cpp):
 //   p = d * radius_m                                    (metres, the point on the sphere)
 //   for each layer l:  sum = sum_i amp_i * t(noise(p * freq_i, seed_i))
 //                      sum *= floor + (1 - floor) * smoothstep((value[mod] - low) / (high - low))

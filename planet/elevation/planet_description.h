@@ -71,7 +71,8 @@ inline constexpr double kMaxLatticeCoordinate = 1099511627776.0;  // 2^40
 
 struct PlanetDescription {
   std::string name = "unnamed";
-  double radius_m = 6371000.0;         // sphere radius, or the ellipsoid's equatorial radius a (elevation 0), metres, (0, kMaxRadius_m]
+  double radius_m =
+      6371000.0;  // sphere radius, or the ellipsoid's equatorial radius a (elevation 0), metres, (0, kMaxRadius_m]
   // (a - b) / a of the reference ellipsoid (planet/geometry/ellipsoid.h), [0, kMaxFlattening); 0 = a sphere
   // of radius_m. Elevation is the ellipsoidal height along the geodetic normal. In a file: `shape`.
   double flattening = 0.0;

@@ -85,8 +85,8 @@ glm::dvec3 Ellipsoid::geocentricFromGeodetic(const GeodeticPoint& g, glm::dvec3 
   return forward(geocentric(a_, f_), g.latitude_deg, g.longitude_deg, g.height_m, enu);
 }
 
-glm::dvec3 Ellipsoid::pointAbove(double latitude_deg, double longitude_deg, double referenceRadius_m,
-                                 double height_m, glm::dvec3 (*enu)[3]) const {
+glm::dvec3 Ellipsoid::pointAbove(double latitude_deg, double longitude_deg, double referenceRadius_m, double height_m,
+                                 glm::dvec3 (*enu)[3]) const {
   if (isSphere()) return forward(geocentric(referenceRadius_m, 0.0), latitude_deg, longitude_deg, height_m, enu);
   return forward(geocentric(a_, f_), latitude_deg, longitude_deg, (referenceRadius_m - a_) + height_m, enu);
 }

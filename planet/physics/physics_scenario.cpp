@@ -110,8 +110,8 @@ std::vector<BodyReport> reportBodies(const ElevationModel& model, const PhysicsW
   for (uint32_t id = 0; id < world.bodyCount(); ++id) {
     const BodyState state = world.state(id);
     const GeodeticPoint g = model.shape().geodeticFromGeocentric(state.position_m);
-    const glm::dvec2 latLon = model.shape().isSphere() ? latLonFromPosition(state.position_m)
-                                                       : glm::dvec2(g.latitude_deg, g.longitude_deg);
+    const glm::dvec2 latLon =
+        model.shape().isSphere() ? latLonFromPosition(state.position_m) : glm::dvec2(g.latitude_deg, g.longitude_deg);
     const std::vector<glm::dvec3> points = world.surfacePoints(id);
     BodyReport r;
     r.id = id;

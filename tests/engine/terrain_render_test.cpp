@@ -303,8 +303,8 @@ TEST_P(TerrainRenderShapeTest, NoCracksAtSeamsVerticesPolesAndAntimeridian) {
       std::printf(
           "[ info ] %s %-18s %4.1f px nodes %4u (partial %3u, morphing %3u) triangles %7llu, inside %5d px, holes %d "
           "(%.0f ms)\n",
-          GetParam().name, c.name, tolerance, f.stats.nodes, f.stats.partialNodes, f.morphing, (unsigned long long)f.stats.triangles,
-          inside, holes, ms);
+          GetParam().name, c.name, tolerance, f.stats.nodes, f.stats.partialNodes, f.morphing,
+          (unsigned long long)f.stats.triangles, inside, holes, ms);
       EXPECT_EQ(holes, 0) << c.name << " tolerance " << tolerance;
       EXPECT_GT(inside, int(kWidth * kHeight / 10))
           << c.name << " tolerance " << tolerance << ": the planet should fill part of the view";

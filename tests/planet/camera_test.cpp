@@ -97,8 +97,7 @@ TEST(Camera, AtRoundTripsOnWgs84) {
           const double tolerance_m = std::max(1e-6, 4e-16 * glm::length(c.position_m));
           EXPECT_NEAR(g.height_m, ground_m + height_m, tolerance_m);
           EXPECT_NEAR(g.latitude_deg, lat, 1e-9);
-          const glm::dvec3 expected =
-              wgs84.geocentricFromGeodetic({lat, lon, (a + ground_m - a) + height_m});
+          const glm::dvec3 expected = wgs84.geocentricFromGeodetic({lat, lon, (a + ground_m - a) + height_m});
           EXPECT_LE(glm::length(c.position_m - expected), 1e-9 * glm::length(expected));
           // Not where a sphere of radius a would put it (away from the equator and the poles).
           if (std::abs(lat) > 1.0 && std::abs(lat) < 89.0) {

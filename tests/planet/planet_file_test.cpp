@@ -350,8 +350,9 @@ TEST(PlanetPresets, EveryPresetLoadsAndRoundTrips) {
 // An ellipsoid's shape is read, validated and written back: WGS84's flattening survives the writer to
 // the last bit, and a sphere keeps writing radius_m.
 TEST(PlanetFile, ShapeRoundTripsThroughTheWriter) {
-  const std::string text = "name = \"wgs84\"\nshape = { equatorial_radius_m = 6378137.0, flattening = "
-                           "0.0033528106647474805 }\n" LAYER;
+  const std::string text =
+      "name = \"wgs84\"\nshape = { equatorial_radius_m = 6378137.0, flattening = "
+      "0.0033528106647474805 }\n" LAYER;
   const Result<PlanetDescription> p = parsePlanetToml(text, "wgs84.toml");
   ASSERT_TRUE(p.ok()) << p.error().format();
   EXPECT_EQ(p->radius_m, 6378137.0);

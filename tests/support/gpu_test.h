@@ -10,6 +10,7 @@
 
 #include <map>
 #include <memory>
+#include <ostream>
 #include <stdexcept>
 #include <string>
 
@@ -48,6 +49,7 @@ struct PlanetShapeCase {
 inline constexpr PlanetShapeCase kPlanetShapes[] = {
     {"Sphere", 0.0}, {"WGS84", 1.0 / 298.257223563}, {"Flattening0p1", 0.1}};
 inline std::string planetShapeName(const ::testing::TestParamInfo<PlanetShapeCase>& info) { return info.param.name; }
+inline void PrintTo(const PlanetShapeCase& shape, std::ostream* out) { *out << shape.name; }
 
 // `planet` on the shape: unchanged for a sphere case, else a = 6378137 m and the case's flattening.
 inline PlanetDescription onShape(PlanetDescription planet, const PlanetShapeCase& shape) {
