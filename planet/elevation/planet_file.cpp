@@ -258,25 +258,18 @@ void readSnow(PlanetTomlReader& r, const toml::table& t, ColourRamp& ramp) {
 // shape = { equatorial_radius_m = a, flattening = f }: the reference ellipsoid instead of radius_m's
 // sphere. Both keys are required; validation errors on radius_m / flattening name these keys.
 void readShape(PlanetTomlReader& r, const toml::table& t, PlanetDescription& planet) {
-  bool have_radius = false;
-  bool have_flattening = false;
   for (auto&& [key, node] : t) {
     const std::string k(key.str());
-    const std::string field = "shape." + k;
     if (!isKnownKey(k, kShapeKeys)) {
-      r.fail(key.source(), field, unknownKeyMessage(k, kShapeKeys));
-    } else if (k == "equatorial_radius_m") {
-      have_radius = true;
-      if (auto v = r.number(node, field)) planet.radius_m = *v;
-      r.rememberAs("radius_m", field, node.source());
-    } else {
-      have_flattening = true;
-      if (auto v = r.number(node, field)) planet.flattening = *v;
-      r.rememberAs("flattening", field, node.source());
+      r.fail(key.source(), "shape." + k, unknownKeyMessage(k, kShapeKeys));
+      continue;
     }
+    const bool radius = k == "equatorial_radius_m";
+    if (auto v = r.number(node, "shape." + k)) (radius ? planet.radius_m : planet.flattening) = *v;
+    r.rememberAs(radius ? "radius_m" : "flattening", "shape." + k, node.source());
   }
-  if (!have_radius) r.fail(t.source(), "shape.equatorial_radius_m", "missing (required in shape)");
-  if (!have_flattening) r.fail(t.source(), "shape.flattening", "missing (required in shape)");
+  for (std::string_view k : kShapeKeys)
+    if (!t.contains(k)) r.fail(t.source(), "shape." + std::string(k), "missing (required in shape)");
 }
 
 void readTopLevel(PlanetTomlReader& r, const std::string& k, const toml::node& node, PlanetDescription& planet) {
