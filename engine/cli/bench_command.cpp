@@ -199,7 +199,6 @@ int runBench(const BenchOptions& o) {
   // One sun for the whole flight, lighting the region of the path's first keyframe.
   settings.style.sunDirection = defaultSunDirection(in->path.positionAt(
       in->path.startTime_s(), [&](const glm::dvec3& d) { return model.radius_m() + model.elevation_m(d); }));
-  settings.style.ramp = in->planet.colour_ramp;
   vk::Device device(deviceOptions(o.device));
   if (auto s = vk::checkImageExtent(device, {in->size.width, in->size.height}, "--size"); !s)
     return usageError(s.error());

@@ -21,10 +21,8 @@ namespace globe::cli {
 
 // One converged terrain frame: waits until every node the view needs is resident before drawing.
 Result<ImageRgba> renderTerrain(vk::Device& device, const Camera& camera, const ElevationModel& model,
-                                const PlanetDescription& planet, TerrainSettings settings, uint32_t width,
-                                uint32_t height) {
+                                TerrainSettings settings, uint32_t width, uint32_t height) {
   settings.style.sunDirection = defaultSunDirection(camera.position_m);
-  settings.style.ramp = planet.colour_ramp;
   auto terrain = Terrain::create(device, model, settings);
   if (!terrain) return budgetOptionError(terrain.error());
   HeadlessRenderer renderer(device, {width, height});
@@ -95,7 +93,7 @@ int runRender(const RenderOptions& o) {
   if (o.mode == "sphere") {
     image = renderSphere(device, camera, model, *size);
   } else {
-    auto terrain = renderTerrain(device, camera, model, *planet, *settings, size->width, size->height);
+    auto terrain = renderTerrain(device, camera, model, *settings, size->width, size->height);
     if (!terrain) return usageError(terrain.error());
     image = std::move(*terrain);
   }

@@ -8,7 +8,6 @@
 namespace globe::cli {
 
 Result<ImageRgba> renderTerrain(vk::Device& device, const Camera& camera, const ElevationModel& model,
-                                const PlanetDescription& planet, TerrainSettings settings, uint32_t width,
-                                uint32_t height);
+                                TerrainSettings settings, uint32_t width, uint32_t height);
 
 }  // namespace globe::cli

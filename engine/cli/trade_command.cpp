@@ -298,7 +298,6 @@ Result<TradeRow> measure(TradeRig& rig, const TradeConfig& config, const TradeCa
                          const SurfaceTruth& truth) {
   TerrainSettings settings = config.settings;
   settings.style.sunDirection = defaultSunDirection(camera.camera.position_m);
-  settings.style.ramp = rig.in.planet.colour_ramp;
   settings.viewHeight_px = double(rig.in.size.height);
   // A fresh terrain per camera: resident memory and generation cost belong to this view alone.
   auto terrain = Terrain::create(rig.device, rig.model, settings);
@@ -323,7 +322,6 @@ Result<TradeRow> measure(TradeRig& rig, const TradeConfig& config, const TradeCa
 // converged frame of the first configuration takes them.
 Status warmUp(TradeRig& rig, const TradeConfig& config, const TradeCamera& camera) {
   TerrainSettings settings = config.settings;
-  settings.style.ramp = rig.in.planet.colour_ramp;
   settings.viewHeight_px = double(rig.in.size.height);
   auto terrain = Terrain::create(rig.device, rig.model, settings);
   if (!terrain) return terrain.error();

@@ -25,15 +25,18 @@ GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationMode
       cells_(cells),
       maxJobs_(std::min<uint32_t>(maxJobsPerSubmit, GLOBE_PAYLOAD_MAX_BATCH)),
       pipeline_(device,
-                precision == GenerationPrecision::kFloat ? "payload_generate_float.comp" : "payload_generate.comp", 7,
-                2 * sizeof(uint32_t), /*uniformMask=*/1u, elevationSpecialization(model.params())),
+                precision == GenerationPrecision::kFloat ? "payload_generate_float.comp" : "payload_generate.comp", 8,
+                2 * sizeof(uint32_t), /*uniformMask=*/(1u << 0) | (1u << 7), elevationSpecialization(model.params())),
       elevation_(device, sizeof(gpu::ElevationParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::HostVisible,
                  "elevation params"),
+      colourRamp_(device, sizeof(gpu::ColourRampParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                  vk::MemoryUse::HostVisible, "colour ramp"),
       faces_(device, 30 * sizeof(FaceCornersGpu), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::HostVisible,
              "face corners") {
   if (cells < 16 || cells > 256 || (cells & (cells - 1)) != 0)
     throw std::runtime_error("grid cells must be a power of two in [16, 256], got " + std::to_string(cells));
   std::memcpy(elevation_.mapped(), &model.params(), sizeof(gpu::ElevationParams));
+  std::memcpy(colourRamp_.mapped(), &model.colourRamp(), sizeof(gpu::ColourRampParams));
   auto* faces = static_cast<FaceCornersGpu*>(faces_.mapped());
   for (int f = 0; f < 30; ++f) faces[f] = RhombusFaceMapping::get().gpuCorners(f);
 
@@ -180,7 +183,8 @@ void GpuPayloadGenerator::record(Batch& batch, std::span<PreparedRequest> reques
     while (end < count && pages_.page(batch.submitted[end].slot) == page) ++end;
     pipeline_.bind(batch.cmd,
                    {elevation_.descriptor(), faces_.descriptor(), batch.jobs.descriptor(), pages_.window(page),
-                    batch.scratch.descriptor(), batch.results.descriptor(), batch.sourceTerms.descriptor()},
+                    batch.scratch.descriptor(), batch.results.descriptor(), batch.sourceTerms.descriptor(),
+                    colourRamp_.descriptor()},
                    push, sizeof(push));
     vkCmdDispatchBase(batch.cmd, uint32_t(run), 0, 0, uint32_t(end - run), 1, 1);
     run = end;

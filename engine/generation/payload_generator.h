@@ -102,6 +102,7 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   uint32_t maxJobs_;
   vk::ComputePipeline pipeline_;
   vk::Buffer elevation_;
+  vk::Buffer colourRamp_;
   vk::Buffer faces_;
   vk::Buffer payloads_;
   PayloadPages pages_;

@@ -85,7 +85,6 @@ Result<std::unique_ptr<FrameSource>> makeFrameSource(vk::Device& device, const P
   s.terrain.style.sunDirection = defaultSunDirection(path.positionAt(
       path.startTime_s(), [&](const glm::dvec3& d) { return model.radius_m() + model.elevation_m(d); },
       model.radius_m()));
-  s.terrain.style.ramp = planet.colour_ramp;
   auto terrain = Terrain::create(device, model, s.terrain);
   if (!terrain) return terrain.error();
   source->terrain = std::move(*terrain);

@@ -288,7 +288,6 @@ TerrainDebugView TerrainRenderer::writeFrameConstants(unsigned char* bytes, cons
                                                            : GLOBE_TERRAIN_WIREFRAME,
                    skirts ? 1u : 0u, 0u};
   frame.skirt = {style_.skirtOutward, style_.skirtDrop, 0.0f, 0.0f};
-  frame.ramp = packColourRamp(style_.ramp);
   std::memcpy(bytes, &frame, sizeof(frame));
   return view;
 }

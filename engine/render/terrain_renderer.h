@@ -15,7 +15,6 @@
 #include "engine/vk/frame_ring.h"
 #include "engine/vk/graphics_pipeline.h"
 #include "planet/camera/camera.h"
-#include "planet/elevation/colour_ramp.h"
 #include "planet/geometry/node_id.h"
 #include "planet/lod/lod_ranges.h"
 
@@ -45,7 +44,6 @@ enum class VertexPositions { kStored, kReprojected };
 
 struct TerrainStyle {
   double radius_m = 6371000.0;                   // planet radius (metres): local vertical, altitude for the sky
-  ColourRamp ramp;                               // colour by elevation and slope (a planet file's ramp)
   glm::dvec3 sunDirection{1.0, 0.4, 0.6};        // towards the sun, planet-fixed (normalised here)
   float ambient = 0.08f;                         // light on faces turned away from the sun, [0, 1]
   bool sky = true;                               // draw the sky gradient behind the terrain

@@ -42,7 +42,6 @@ ViewerScene::~ViewerScene() {
 
 Status ViewerScene::buildTerrain() {
   TerrainSettings settings = options_.terrain;
-  settings.style.ramp = planet_.colour_ramp;
   settings.style.sunDirection = options_.sunDirection;
   settings.style.debug = debug_;
   auto terrain = Terrain::create(device_, *model_, settings);

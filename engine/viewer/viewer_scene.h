@@ -28,7 +28,7 @@ struct ViewerSceneOptions {
   std::string planetPath;                  // watched for changes when `watch`; empty: nothing to watch
   PlanetDescription planet;                // already read from planetPath and valid
   bool watch = true;                       // live reload
-  TerrainSettings terrain;                 // grid, ranges, streaming; style.ramp and radius come from the planet
+  TerrainSettings terrain;                 // grid, ranges, streaming; the radius comes from the planet
   glm::dvec3 sunDirection{1.0, 0.6, 0.4};  // towards the sun, planet-fixed (normalised)
 };
 

@@ -131,7 +131,10 @@ Real evaluateElevation(const gpu::ElevationParams& p, Real dx, Real dy, Real dz)
 }  // namespace
 
 ElevationModel::ElevationModel(const PlanetDescription& planet)
-    : params_(packElevationParams(planet)), bounds_(elevationBounds(planet)), shape_(planetShape(planet)) {
+    : params_(packElevationParams(planet)),
+      colourRamp_(packColourRamp(planet.colour_ramp)),
+      bounds_(elevationBounds(planet)),
+      shape_(planetShape(planet)) {
   if (planet.sources.empty()) return;
   sources_ = std::make_shared<const SourceMosaic>(planet.sources, planet.radius_m, planet.seed);
   if (sources_->layers().empty()) return;

@@ -72,11 +72,15 @@ class ElevationModel {
   const Ellipsoid& shape() const { return shape_; }
   double seaLevel_m() const { return params_.sea_level_m; }
   const gpu::ElevationParams& params() const { return params_; }
+  // The surface colour by elevation and slope (the planet's colour ramp), as the payload kernel
+  // reads it: each payload sample carries its albedo (shaders/include/payload_layout.h).
+  const gpu::ColourRampParams& colourRamp() const { return colourRamp_; }
   // Conservative range of elevation_m (see elevationBounds).
   ElevationRange bounds() const { return bounds_; }
 
  private:
   gpu::ElevationParams params_{};
+  gpu::ColourRampParams colourRamp_{};
   ElevationRange bounds_{};
   Ellipsoid shape_;
   std::shared_ptr<const SourceMosaic> sources_;  // shared by copies

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cassert>
 #include <cmath>
 #include <limits>
@@ -149,6 +150,23 @@ RadiusRange paddedRadiusRange(const gpu::ElevationParams& params, const RadiusRa
   return {std::max(0.0, payload.min_m - pad), payload.max_m + pad};
 }
 
+namespace {
+uint32_t unorm8(float c) { return uint32_t(std::lround(std::clamp(c, 0.0f, 1.0f) * 255.0f)); }
+}  // namespace
+
+float packPayloadSurface(const glm::vec3& albedo, double hole) {
+  const uint32_t word = unorm8(std::sqrt(std::clamp(albedo.x, 0.0f, 1.0f))) |
+                        (unorm8(std::sqrt(std::clamp(albedo.y, 0.0f, 1.0f))) << 8) |
+                        (unorm8(std::sqrt(std::clamp(albedo.z, 0.0f, 1.0f))) << 16) | (unorm8(float(hole)) << 24);
+  return std::bit_cast<float>(word);
+}
+
+PayloadSurface unpackPayloadSurface(float word) {
+  const uint32_t bits = std::bit_cast<uint32_t>(word);
+  auto byte = [&](int k) { return float((bits >> (8 * k)) & 0xffu) / 255.0f; };
+  return {glm::vec3(byte(0) * byte(0), byte(1) * byte(1), byte(2) * byte(2)), byte(3)};
+}
+
 RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
                                  std::span<glm::vec4> slot) {
   const int n = int(cells);
@@ -158,6 +176,7 @@ RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::Payload
   const double q = job.centre.w;
   std::vector<glm::dvec3> positions(size_t(s) * size_t(s));
   std::vector<double> holes(size_t(s) * size_t(s));
+  std::vector<double> elevations(size_t(s) * size_t(s));
   RadiusRange range{std::numeric_limits<double>::infinity(), 0.0};
   const double spacing_m = payloadSampleSpacing_m(job, cells, model.radius_m());
   for (int j = -1; j <= n + 1; ++j) {
@@ -171,6 +190,7 @@ RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::Payload
       glm::dvec3 p = model.shape().position(dir, h);  // on a sphere dir * (radius + h)
       positions[index] = p;
       holes[index] = term.hole;
+      elevations[index] = h;
       glm::dvec3 rel = p - centre;
       glm::dvec3 quantised{std::floor(rel.x / q + 0.5) * q, std::floor(rel.y / q + 0.5) * q,
                            std::floor(rel.z / q + 0.5) * q};
@@ -191,8 +211,15 @@ RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::Payload
       glm::dvec3 dv = at(vi, vj + 1) - at(vi, vj - 1);
       glm::dvec3 c{du.y * dv.z - du.z * dv.y, du.z * dv.x - du.x * dv.z, du.x * dv.y - du.y * dv.x};
       glm::dvec3 nrm = normalised(c);
-      slot[normals + size_t(j + 1) * size_t(s) + size_t(i + 1)] =
-          glm::vec4(float(nrm.x), float(nrm.y), float(nrm.z), float(holes[size_t(j + 1) * size_t(s) + size_t(i + 1)]));
+      const size_t vertex = size_t(vj + 1) * size_t(s) + size_t(vi + 1);
+      // The vertical: radial on a sphere, the geodetic normal (the sample's direction) on an ellipsoid.
+      const glm::dvec3 up =
+          model.shape().isSphere() ? normalised(positions[vertex]) : payloadSampleDirection(job, cells, vi, vj);
+      const double cosSlope = std::clamp(glm::dot(nrm, up), 0.0, 1.0);
+      const glm::vec3 albedo = rampColour(model.colourRamp(), float(elevations[vertex]), float(cosSlope));
+      const size_t index = size_t(j + 1) * size_t(s) + size_t(i + 1);
+      slot[normals + index] =
+          glm::vec4(float(nrm.x), float(nrm.y), float(nrm.z), packPayloadSurface(albedo, holes[index]));
     }
   }
   return range;

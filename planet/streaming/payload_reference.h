@@ -44,6 +44,15 @@ double unresolvedRelief_m(const gpu::ElevationParams& params, double sampleSpaci
 RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
                                  std::span<glm::vec4> slot);
 
+// A payload sample's surface word (normal.w, shaders/include/payload_surface.glsl): the square root
+// of the linear albedo in bytes 0-2 and the hole mask in byte 3, as the bits of a float.
+float packPayloadSurface(const glm::vec3& albedo, double hole);
+struct PayloadSurface {
+  glm::vec3 albedo{0.0f};  // linear RGB, 0..1
+  float hole = 0.0f;       // hole mask, 0..1 in steps of 1/255
+};
+PayloadSurface unpackPayloadSurface(float word);
+
 // The node's geometric error (metres) from a filled slot's positions, as the shader computes it in
 // double (PayloadResult::geometricError_m): the largest distance a vertex moves when the mesh morphs
 // to its parent's (the midpoint of its even row, column or diagonal neighbours).

@@ -2,9 +2,11 @@
 // version, the extensions and the precision). Fills node payloads (shaders/include/payload_layout.h): one workgroup per
 // node. Pass 1 evaluates every sample (vertices and the extra ring) in double — face mapping, then elevation — and
 // stores positions relative to the node centre, quantised, as floats, plus the double positions in a scratch buffer;
-// pass 2 derives normals from those double positions by central differences; a shared-memory reduction gives the node's
+// pass 2 derives normals from those double positions by central differences, and each sample's albedo from the planet's
+// colour ramp at its elevation and slope (payload_surface.glsl); a shared-memory reduction gives the node's
 // min/max vertex radius and its geometric error (the largest distance a vertex moves when the node morphs to its
 // parent's mesh). Mirrors planet/streaming/payload_reference.cpp operation for operation (the double kernel).
+#include "colour_ramp.h"
 #include "elevation_params.h"
 #include "face_mapping.glsl"
 #include "payload_layout.h"
@@ -18,6 +20,7 @@ layout(std430, binding = 2) readonly buffer Jobs { PayloadJob jobs[]; };
 layout(std430, binding = 3) writeonly buffer Payloads { vec4 payloads[]; };
 layout(std430, binding = 4) buffer Scratch { dvec4 scratch[]; };
 layout(std430, binding = 5) writeonly buffer Results { PayloadResult results[]; };
+layout(std140, binding = 7) uniform ColourRamp { ColourRampParams colourRamp; };
 
 layout(push_constant) uniform Push {
   uint cells;     // grid cells per side (power of two)
@@ -31,6 +34,9 @@ push;
 #endif
 #include "elevation.glsl"
 #include "elevation_sources.glsl"
+#include "payload_surface.glsl"
+#define GLOBE_RAMP colourRamp
+#include "colour_ramp.glsl"
 
 shared double sharedMin[GLOBE_PAYLOAD_WORKGROUP];
 shared double sharedMax[GLOBE_PAYLOAD_WORKGROUP];
@@ -147,7 +153,7 @@ void main() {
     double h = globeApplySources(globeElevation(dir), job.sourceBase, index);
     precise dvec3 p = globePosition(dir, h);
 #endif
-    scratch[scratchBase + index] = dvec4(p, 0.0lf);
+    scratch[scratchBase + index] = dvec4(p, h);
     precise dvec3 rel = p - centre;
     precise dvec3 quantised = floor(rel / q + 0.5lf) * q;
     payloads[slotBase + index] = vec4(vec3(quantised), float(h));
@@ -172,7 +178,13 @@ void main() {
     precise dvec3 du = scratch[at + 1u].xyz - scratch[at - 1u].xyz;
     precise dvec3 dv = scratch[at + uint(s)].xyz - scratch[at - uint(s)].xyz;
     precise dvec3 c = dvec3(du.y * dv.z - du.z * dv.y, du.z * dv.x - du.x * dv.z, du.x * dv.y - du.y * dv.x);
-    payloads[normalBase + index] = vec4(vec3(normalised(c)), globeSourceHole(job.sourceBase, index));
+    dvec3 normal = normalised(c);
+    // Slope against the vertical, as the ramp defines it (colour_ramp.h): radial on a sphere, the
+    // geodetic normal (the sample's direction) on an ellipsoid (a specialization constant).
+    dvec3 up = kGlobeEllipsoid != 0u ? sampleDirection(job, i, j) : normalised(scratch[at].xyz);
+    double cosSlope = clamp(dot(normal, up), 0.0lf, 1.0lf);
+    vec3 albedo = terrainRampColour(float(scratch[at].w), float(cosSlope));
+    payloads[normalBase + index] = vec4(vec3(normal), packPayloadSurface(albedo, globeSourceHole(job.sourceBase, index)));
   }
   sharedError[gl_LocalInvocationID.x] = localError;
 

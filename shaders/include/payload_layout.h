@@ -15,10 +15,13 @@
 //                         quantised to multiples of the level's quantum (see below); w = elevation
 //                         above the planet radius, metres
 //   [S*S, S*S + S*S)      normal: xyz = unit surface normal, planet-fixed, from double-precision
-//                         positions (central differences); w = the hole mask of the sample (0 without
-//                         elevation sources; >= 0.5 inside a kept no-data hole, elevation_sources.glsl).
-//                         Ring samples hold the normal of the nearest vertex (there are no samples
-//                         beyond the ring).
+//                         positions (central differences); w = the sample's surface word, 32 bits
+//                         stored as they are in the float (payload_surface.glsl): bytes 0-2 the
+//                         square root of the linear albedo (the planet's colour ramp at the sample's
+//                         elevation and slope, so the vertex stage evaluates no ramp), byte 3 the hole
+//                         mask (0 without elevation sources; >= 0.5 inside a kept no-data hole,
+//                         elevation_sources.glsl). Ring samples hold the normal and surface word of
+//                         the nearest vertex (there are no samples beyond the ring).
 // Quantum: positions and node centres are multiples of q(level) = 2^(ceil(log2(node width)) - 18)
 // metres, so that centre + position is the same double from every node of a level that holds the
 // sample, and stays exact in float relative to a floating origin snapped to the coarsest quantum.

@@ -9,8 +9,6 @@
 #ifndef GLOBE_TERRAIN_LAYOUT_H
 #define GLOBE_TERRAIN_LAYOUT_H
 
-#include "colour_ramp.h"
-
 #ifdef __cplusplus
 #include <cstdint>
 namespace globe::gpu {
@@ -43,7 +41,7 @@ struct TerrainDvec4 {
 #define GLOBE_TERRAIN_LOD_COLOURS 1u
 #define GLOBE_TERRAIN_WIREFRAME 2u
 
-// Constants of one frame (std430, 480 bytes).
+// Constants of one frame (std430, 160 bytes).
 struct TerrainFrame {
   GLOBE_MAT4 clipFromCamera;  //   0: projection * view rotation: camera-centred planet-fixed axes -> clip
   GLOBE_VEC4 cameraHigh;      //  64: xyz = float(camera - origin), metres
@@ -52,7 +50,6 @@ struct TerrainFrame {
   GLOBE_VEC4 sun;             // 112: xyz = unit direction towards the sun (planet-fixed); w = ambient light
   GLOBE_UVEC4 options;        // 128: x = payload grid cells N, y = debug view, z = 1 when skirts are drawn
   GLOBE_VEC4 skirt;           // 144: x = outward offset, y = drop, both in drawn cells
-  ColourRampParams ramp;      // 160: colours by elevation and slope (320 bytes)
 };
 
 // One drawn node (std430, 48 bytes).
@@ -82,7 +79,7 @@ struct TerrainDrawPush {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(TerrainFrame) == 480);
+static_assert(sizeof(TerrainFrame) == 160);
 static_assert(sizeof(TerrainInstance) == 48);
 static_assert(sizeof(TerrainReprojectionFrame) == 32 && sizeof(TerrainReprojectionNode) == 32);
 }  // namespace globe::gpu

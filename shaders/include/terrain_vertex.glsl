@@ -22,6 +22,7 @@
 #define GLOBE_TERRAIN_VERTEX_GLSL
 
 #include "payload_layout.h"
+#include "payload_surface.glsl"
 #include "terrain_layout.h"
 #ifdef GLOBE_TERRAIN_REPROJECT
 #include "face_mapping.glsl"
@@ -64,9 +65,9 @@ struct TerrainVertex {
   vec4 clip;        // clip-space position
   vec3 relative;    // position minus camera, metres (planet-fixed axes)
   vec3 normal;      // planet-fixed unit normal (morphed, renormalised by the fragment shader)
-  vec3 up;          // planet-fixed radial unit vector at the vertex
+  vec3 albedo;      // linear surface colour from the payload (morphed)
   float elevation;  // metres above the planet radius (morphed)
-  float hole;       // hole mask of elevation sources (payload normal.w, morphed; >= 0.5 is discarded)
+  float hole;       // hole mask of elevation sources (payload surface word, morphed; >= 0.5 is discarded)
   float morph;      // k in [0, 1]
   uint level;       // level the node is drawn at (TerrainInstance.info.z)
 };
@@ -119,7 +120,7 @@ TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCell
   vec4 normal0 = payload[terrainSample(base, cells, si, sj) + normals];
   vec3 normal = normal0.xyz;
   float elevation = sample0.w;
-  float hole = normal0.w;
+  vec4 surface = unpackPayloadSurface(normal0.w);
   bool oddI = (gi & 1u) != 0u, oddJ = (gj & 1u) != 0u;
   if (k > 0.0 && (oddI || oddJ)) {
     // Even neighbours whose midpoint the vertex slides to (never outside the drawn grid: the
@@ -142,15 +143,17 @@ TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCell
     vec4 na = payload[ia + normals], nb = payload[ib + normals];
     normal = mix(normal, na.xyz + nb.xyz, k);
     elevation = mix(elevation, 0.5 * (sa.w + sb.w), k);
-    hole = mix(hole, 0.5 * (na.w + nb.w), k);
+    // Colour and hole mask slide like the position: at k = 1 the vertex has the colour the
+    // parent's triangle interpolates there.
+    surface = mix(surface, 0.5 * (unpackPayloadSurface(na.w) + unpackPayloadSurface(nb.w)), k);
   }
 
-#ifdef GLOBE_TERRAIN_REPROJECT
-  vec3 up = vec3(normalize(dvec3(world) + reprojection.camera.xyz));
-#else
-  vec3 up = normalize(world - frame.planetCentre.xyz);
-#endif
   if (skirt) {
+#ifdef GLOBE_TERRAIN_REPROJECT
+    vec3 up = vec3(normalize(dvec3(world) + reprojection.camera.xyz));
+#else
+    vec3 up = normalize(world - frame.planetCentre.xyz);
+#endif
     // Flared skirt: a little beyond the edge (towards the neighbour, along the ring sample) and
     // below it. Hidden under the neighbour's surface; it only shows through sub-pixel gaps
     // between nodes (float rounding, quantum differences between levels, T-junctions at morphed
@@ -170,9 +173,9 @@ TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCell
   v.relative = rel;
   v.clip = frame.clipFromCamera * vec4(rel, 1.0);
   v.normal = normal;
-  v.up = up;
+  v.albedo = surface.rgb;
   v.elevation = elevation;
-  v.hole = hole;
+  v.hole = surface.a;
   v.morph = k;
   v.level = inst.info.z;
   return v;

@@ -1,15 +1,15 @@
 // Body of the terrain vertex stage (terrain.vert; terrain_reprojected.vert defines
 // GLOBE_TERRAIN_REPROJECT first). One instance per selected node, vertices pulled from the node's
 // payload slot (include/terrain_vertex.glsl does the work, shared with the readback test kernel).
-// The surface colour (ramp by elevation and slope, or the debug colour per level) and its Lambert
-// light from the sun are computed here, per vertex, already in the scene target's display encoding:
-// the fragment shader only writes the interpolated value. lavapipe's cost is per fragment (half
-// of its rasteriser time is the JIT-compiled fragment code); evaluating the ramp per fragment cost
-// ~5x the whole frame, and per-fragment light ~10 % (docs/rendering.md, "Per-vertex light").
+// The surface colour (the payload's albedo, or the debug colour per level) and its Lambert light
+// from the sun are computed here, per vertex, already in the scene target's display encoding: the
+// fragment shader only writes the interpolated value. lavapipe's cost is per fragment (half of its
+// rasteriser time is the JIT-compiled fragment code), and its vertex stage runs on one thread
+// before the rasterisers start: the colour ramp is evaluated once per payload sample by the
+// generation kernel, not here (docs/rendering.md, "Per-vertex light", "Albedo in the payload").
 #include "terrain_vertex.glsl"
 #include "display_encoding.glsl"
-#define GLOBE_RAMP frame.ramp
-#include "terrain_shading.glsl"
+#include "terrain_level_colour.glsl"
 
 layout(push_constant) uniform Push {
   TerrainDrawPush draw;
@@ -25,9 +25,8 @@ void main() {
   // Both colours, then a select (mix with a bool): an if on the debug view (a uniform value) would
   // make lavapipe compile the shader again at draw time (docs/rendering.md).
   bool debug = frame.options.y != GLOBE_TERRAIN_SHADED;
-  vec3 ramp = terrainRampColour(v.elevation, clamp(dot(n, v.up), 0.0, 1.0));
   vec3 level = terrainLevelColour(v.level);
-  vec3 albedo = mix(ramp, level, bvec3(debug));
+  vec3 albedo = mix(v.albedo, level, bvec3(debug));
   vec4 sun = mix(frame.sun, vec4(0.0, 0.0, 0.0, 1.0), bvec4(debug));  // debug colours are unlit
   float light = sun.w + (1.0 - sun.w) * max(dot(n, sun.xyz), 0.0);
   outColour = encodeDisplay(albedo * light, 1.0).rgb;

@@ -109,7 +109,6 @@ class ExtremesTest : public GpuTest {
       TerrainSettings settings;
       settings.gridCells = kCells;
       settings.style.sky = false;  // the background must stay the clear colour: holes show as alpha 0
-      settings.style.ramp = description.colour_ramp;
       auto t = Terrain::create(device, model, settings);
       if (!t) throw std::runtime_error(t.error().format());
       terrain = std::move(*t);

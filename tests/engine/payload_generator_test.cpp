@@ -6,6 +6,7 @@
 #include "planet/lod/selection.h"
 #include "planet/streaming/payload_pool.h"
 #include "planet/streaming/payload_reference.h"
+#include "tests/support/payload_surface_check.h"
 #include "tests/support/gpu_test.h"
 
 #include <algorithm>
@@ -81,6 +82,7 @@ TEST_P(PayloadGeneratorShapeTest, MatchesCpuReferenceAtEveryDepth) {
   const size_t samples = perSlot / 2;
   std::vector<glm::vec4> cpu(perSlot);
   double worstRadius = 0, worstElevation = 0, worstNormal = 0, worstError = 0, worstHeight = 0;
+  int worstAlbedo = 0;
   for (size_t k = 0; k < nodes.size(); ++k) {
     SCOPED_TRACE(::testing::Message() << "node face " << int(nodes[k].face) << " level " << int(nodes[k].level));
     gpu::PayloadJob job = makePayloadJob(nodes[k], 0, *model_);
@@ -108,6 +110,9 @@ TEST_P(PayloadGeneratorShapeTest, MatchesCpuReferenceAtEveryDepth) {
       worstNormal = std::max(worstNormal, double(glm::length(gn - cn)));
       ASSERT_LT(glm::length(gn - cn), 1e-5f) << i;
       ASSERT_NEAR(glm::length(gn), 1.0f, 1e-5f);
+      worstAlbedo = std::max(worstAlbedo, albedoByteDistance(g[samples + i].w, cpu[samples + i].w));
+      ASSERT_LE(albedoByteDistance(g[samples + i].w, cpu[samples + i].w), 1) << i;
+      ASSERT_EQ(holeByte(g[samples + i].w), 0) << i;
       // Independently of the shared formula: GeographicLib finds the sample at its elevation above
       // the ellipsoid, along the sample's own direction (geodetic normal).
       const glm::dvec3 p = glm::dvec3(job.centre.x, job.centre.y, job.centre.z) + glm::dvec3(glm::vec3(g[i]));
@@ -122,8 +127,8 @@ TEST_P(PayloadGeneratorShapeTest, MatchesCpuReferenceAtEveryDepth) {
   }
   std::printf(
       "[ info ] %zu nodes, depths 0-24: worst |radius| diff %.3g m, elevation %.3g m, normal %.3g, geometric error "
-      "%.3g quanta, |GeographicLib height - elevation| %.3g quanta (%s)\n",
-      nodes.size(), worstRadius, worstElevation, worstNormal, worstError, worstHeight, GetParam().name);
+      "%.3g quanta, albedo %d steps of 1/255, |GeographicLib height - elevation| %.3g quanta (%s)\n",
+      nodes.size(), worstRadius, worstElevation, worstNormal, worstError, worstAlbedo, worstHeight, GetParam().name);
 }
 
 // The float variant (GenerationPrecision::kFloat, measured by globe trade) is the float model: its

@@ -1,7 +1,8 @@
-// Terrain colours: the planet's colour ramp (a mirror of globe::rampColour, planet/elevation/colour_ramp.cpp,
-// see shaders/include/colour_ramp.h for the formula) and the debug colours per level.
-#ifndef GLOBE_TERRAIN_SHADING_GLSL
-#define GLOBE_TERRAIN_SHADING_GLSL
+// Terrain colour: the planet's colour ramp (a mirror of globe::rampColour, planet/elevation/colour_ramp.cpp,
+// see shaders/include/colour_ramp.h for the formula), evaluated per payload sample by the generation
+// kernel (payload_generate.glsl).
+#ifndef GLOBE_COLOUR_RAMP_GLSL
+#define GLOBE_COLOUR_RAMP_GLSL
 
 #extension GL_EXT_control_flow_attributes : require
 
@@ -15,7 +16,7 @@
 // always breaks by stop n - 1: elevations increase and the last stop is handled first) and the
 // snow selected with mix(bool), not an if.
 #ifndef GLOBE_RAMP
-#error "define GLOBE_RAMP (a ColourRampParams l-value) before including terrain_shading.glsl"
+#error "define GLOBE_RAMP (a ColourRampParams l-value) before including colour_ramp.glsl"
 #endif
 vec3 terrainRampColour(float elevation_m, float cosSlope) {
   uint n = clamp(GLOBE_RAMP.stop_count, 1u, uint(GLOBE_MAX_COLOUR_STOPS));
@@ -43,11 +44,4 @@ vec3 terrainRampColour(float elevation_m, float cosSlope) {
   return colour;
 }
 
-// A distinct, saturated colour per drawn level (golden-ratio hue steps).
-vec3 terrainLevelColour(uint level) {
-  float hue = fract(float(level) * 0.618034);
-  vec3 k = clamp(abs(fract(hue + vec3(0.0, 2.0 / 3.0, 1.0 / 3.0)) * 6.0 - 3.0) - 1.0, 0.0, 1.0);
-  return mix(vec3(0.15), k, 0.85);
-}
-
-#endif  // GLOBE_TERRAIN_SHADING_GLSL
+#endif  // GLOBE_COLOUR_RAMP_GLSL
