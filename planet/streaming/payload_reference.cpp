@@ -167,6 +167,16 @@ PayloadSurface unpackPayloadSurface(float word) {
   return {glm::vec3(byte(0) * byte(0), byte(1) * byte(1), byte(2) * byte(2)), byte(3)};
 }
 
+namespace {
+
+// The shader's globeEllipsoidGradient: the unit vector (x / a^2, y / a^2, z / b^2) at p.
+glm::dvec3 ellipsoidGradientOf(const gpu::ElevationParams& e, const glm::dvec3& p) {
+  const double a2 = e.radius_m * e.radius_m, b2 = e.polar_radius_m * e.polar_radius_m;
+  return normalised({p.x / a2, p.y / a2, p.z / b2});
+}
+
+}  // namespace
+
 RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
                                  std::span<glm::vec4> slot) {
   const int n = int(cells);
@@ -212,9 +222,9 @@ RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::Payload
       glm::dvec3 c{du.y * dv.z - du.z * dv.y, du.z * dv.x - du.x * dv.z, du.x * dv.y - du.y * dv.x};
       glm::dvec3 nrm = normalised(c);
       const size_t vertex = size_t(vj + 1) * size_t(s) + size_t(vi + 1);
-      // The vertical: radial on a sphere, the geodetic normal (the sample's direction) on an ellipsoid.
-      const glm::dvec3 up =
-          model.shape().isSphere() ? normalised(positions[vertex]) : payloadSampleDirection(job, cells, vi, vj);
+      // The vertical: radial on a sphere; on an ellipsoid its gradient at the point (= the geodetic
+      // normal to ~h f / a; the shader's globeEllipsoidGradient).
+      const glm::dvec3 up = model.shape().isSphere() ? normalised(positions[vertex]) : ellipsoidGradientOf(model.params(), positions[vertex]);
       const double cosSlope = std::clamp(glm::dot(nrm, up), 0.0, 1.0);
       const glm::vec3 albedo = rampColour(model.colourRamp(), float(elevations[vertex]), float(cosSlope));
       const size_t index = size_t(j + 1) * size_t(s) + size_t(i + 1);

@@ -117,6 +117,13 @@ dvec3 sampleDirection(PayloadJob job, int i, int j) {
   return normalised(p);
 }
 
+// = ellipsoidGradientOf (payload_reference.cpp): the unit gradient (x / a^2, y / a^2, z / b^2) of the ellipsoid at p.
+dvec3 globeEllipsoidGradient(dvec3 p) {
+  precise double a2 = GLOBE_ELEVATION_PARAMS.radius_m * GLOBE_ELEVATION_PARAMS.radius_m;
+  precise double b2 = GLOBE_ELEVATION_PARAMS.polar_radius_m * GLOBE_ELEVATION_PARAMS.polar_radius_m;
+  return normalised(dvec3(p.x / a2, p.y / a2, p.z / b2));
+}
+
 void main() {
   uint jobIndex = gl_WorkGroupID.x;
   if (jobIndex >= push.jobCount) return;
@@ -179,9 +186,9 @@ void main() {
     precise dvec3 dv = scratch[at + uint(s)].xyz - scratch[at - uint(s)].xyz;
     precise dvec3 c = dvec3(du.y * dv.z - du.z * dv.y, du.z * dv.x - du.x * dv.z, du.x * dv.y - du.y * dv.x);
     dvec3 normal = normalised(c);
-    // Slope against the vertical, as the ramp defines it (colour_ramp.h): radial on a sphere, the
-    // geodetic normal (the sample's direction) on an ellipsoid (a specialization constant).
-    dvec3 up = kGlobeEllipsoid != 0u ? sampleDirection(job, i, j) : normalised(scratch[at].xyz);
+    // Slope against the vertical, as the ramp defines it (colour_ramp.h): radial on a sphere; on an
+    // ellipsoid (a specialization constant) its gradient at the point, the geodetic normal to ~h f / a.
+    dvec3 up = kGlobeEllipsoid != 0u ? globeEllipsoidGradient(scratch[at].xyz) : normalised(scratch[at].xyz);
     double cosSlope = clamp(dot(normal, up), 0.0lf, 1.0lf);
     vec3 albedo = terrainRampColour(float(scratch[at].w), float(cosSlope));
     payloads[normalBase + index] = vec4(vec3(normal), packPayloadSurface(albedo, globeSourceHole(job.sourceBase, index)));
