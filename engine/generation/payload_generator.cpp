@@ -29,8 +29,8 @@ GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationMode
                 2 * sizeof(uint32_t), /*uniformMask=*/(1u << 0) | (1u << 7), elevationSpecialization(model.params())),
       elevation_(device, sizeof(gpu::ElevationParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::HostVisible,
                  "elevation params"),
-      colourRamp_(device, sizeof(gpu::ColourRampParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                  vk::MemoryUse::HostVisible, "colour ramp"),
+      colourRamp_(device, sizeof(gpu::ColourRampParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::HostVisible,
+                  "colour ramp"),
       faces_(device, 30 * sizeof(FaceCornersGpu), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::HostVisible,
              "face corners") {
   if (cells < 16 || cells > 256 || (cells & (cells - 1)) != 0)

@@ -224,7 +224,8 @@ RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::Payload
       const size_t vertex = size_t(vj + 1) * size_t(s) + size_t(vi + 1);
       // The vertical: radial on a sphere; on an ellipsoid its gradient at the point (= the geodetic
       // normal to ~h f / a; the shader's globeEllipsoidGradient).
-      const glm::dvec3 up = model.shape().isSphere() ? normalised(positions[vertex]) : ellipsoidGradientOf(model.params(), positions[vertex]);
+      const glm::dvec3 up = model.shape().isSphere() ? normalised(positions[vertex])
+                                                     : ellipsoidGradientOf(model.params(), positions[vertex]);
       const double cosSlope = std::clamp(glm::dot(nrm, up), 0.0, 1.0);
       const glm::vec3 albedo = rampColour(model.colourRamp(), float(elevations[vertex]), float(cosSlope));
       const size_t index = size_t(j + 1) * size_t(s) + size_t(i + 1);

@@ -6,8 +6,8 @@
 #include "planet/lod/selection.h"
 #include "planet/streaming/payload_pool.h"
 #include "planet/streaming/payload_reference.h"
-#include "tests/support/payload_surface_check.h"
 #include "tests/support/gpu_test.h"
+#include "tests/support/payload_surface_check.h"
 
 #include <algorithm>
 #include <cmath>

@@ -46,11 +46,13 @@ TEST(PayloadSurface, ReferenceSamplesCarryTheRampAtTheirElevationAndSlope) {
   for (size_t j = 1; j + 1 < side; ++j) {
     for (size_t i = 1; i + 1 < side; ++i) {
       const size_t at = j * side + i;
-      const glm::dvec3 position = glm::dvec3(job.centre.x, job.centre.y, job.centre.z) + glm::dvec3(glm::vec3(slot[at]));
+      const glm::dvec3 position =
+          glm::dvec3(job.centre.x, job.centre.y, job.centre.z) + glm::dvec3(glm::vec3(slot[at]));
       const double cosSlope = glm::dot(glm::dvec3(glm::vec3(slot[samples + at])), glm::normalize(position));
       const glm::vec3 expected = rampColour(model.colourRamp(), slot[at].w, cosSlope);
       const PayloadSurface s = unpackPayloadSurface(slot[samples + at].w);
-      for (int c = 0; c < 3; ++c) EXPECT_NEAR(std::sqrt(s.albedo[c]), std::sqrt(expected[c]), 1.5 / 255.0) << i << ' ' << j;
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(std::sqrt(s.albedo[c]), std::sqrt(expected[c]), 1.5 / 255.0) << i << ' ' << j;
       EXPECT_EQ(s.hole, 0.0f);
     }
   }

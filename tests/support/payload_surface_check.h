@@ -13,7 +13,8 @@ namespace globe::testing {
 inline int albedoByteDistance(float gpu, float cpu) {
   const auto a = std::bit_cast<std::uint32_t>(gpu), b = std::bit_cast<std::uint32_t>(cpu);
   int worst = 0;
-  for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(int((a >> (8 * k)) & 0xffu) - int((b >> (8 * k)) & 0xffu)));
+  for (int k = 0; k < 3; ++k)
+    worst = std::max(worst, std::abs(int((a >> (8 * k)) & 0xffu) - int((b >> (8 * k)) & 0xffu)));
   return worst;
 }
 
