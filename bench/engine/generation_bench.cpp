@@ -22,6 +22,17 @@ namespace {
 using bench::device;
 const ElevationModel& model() { return bench::earthlikeModel(); }
 
+// Earthlike's layers on WGS84 (a = 6378137 m, f = 1 / 298.257223563): the payload's ellipsoid placement.
+const ElevationModel& wgs84Model() {
+  static const ElevationModel m = [] {
+    PlanetDescription p = bench::earthlike();
+    p.radius_m = 6378137.0;
+    p.flattening = 1.0 / 298.257223563;
+    return ElevationModel(p);
+  }();
+  return m;
+}
+
 // The same 4096 directions as bench/planet/elevation_bench.cpp, repeated to fill a dispatch.
 std::vector<glm::dvec3> directions(size_t count) {
   std::mt19937_64 rng(42);
@@ -61,11 +72,12 @@ std::vector<NodeId> benchNodes(size_t count) {
   return nodes;
 }
 
-// Warm: ms per node payload, `batch` nodes per submit (the pool's budget is 8 per frame).
+// Warm: ms per node payload, `batch` nodes per submit (the pool's budget is 8 per frame); third
+// argument 0 on earthlike's sphere, 1 on WGS84.
 void BM_GpuPayload(benchmark::State& state) {
   const uint32_t cells = uint32_t(state.range(0));
   const uint32_t batch = uint32_t(state.range(1));
-  GpuPayloadGenerator gen(device(), model(), cells, batch, 1);
+  GpuPayloadGenerator gen(device(), state.range(2) == 0 ? model() : wgs84Model(), cells, batch, 1);
   gen.reserveSlots(batch);
   auto nodes = benchNodes(batch);
   std::vector<GenerationJob> jobs;
@@ -89,7 +101,12 @@ void BM_GpuPayload(benchmark::State& state) {
   state.counters["gpu_samples_per_s"] = double((cells + 3) * (cells + 3)) / (perNode * 1e-3);
   state.SetItemsProcessed(int64_t(state.iterations()) * batch);
 }
-BENCHMARK(BM_GpuPayload)->ArgsProduct({{16, 32, 64, 128}, {8, 32}})->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GpuPayload)
+    ->ArgsProduct({{16, 32, 64, 128}, {8, 32}, {0}})
+    ->Args({64, 32, 1})
+    ->Args({128, 32, 1})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
 
 // Cold: pipeline creation plus the first dispatch (JIT compilation; Mesa's disk cache may help —
 // set MESA_SHADER_CACHE_DISABLE=true for a truly cold figure).

@@ -39,7 +39,7 @@ void BM_TerrainFrame(benchmark::State& state) {
   if (const char* r = std::getenv("GLOBE_BENCH_RANGE")) settings.ranges.distanceMultiplier = std::atof(r);
   GeodeticPose pose = standardCameraPose(index);
   glm::dvec3 down = directionFromLatLon(pose.latitude_deg, pose.longitude_deg);
-  Camera camera = cameraFromPose(pose, model.radius_m() + model.elevation_m(down), model.radius_m(), 1280.0 / 720.0);
+  Camera camera = cameraFromPose(pose, model.radius_m() + model.elevation_m(down), model.shape(), 1280.0 / 720.0);
   settings.style.sunDirection = defaultSunDirection(camera.position_m);
   auto terrain = Terrain::create(device(), model, settings);
   if (!terrain) {

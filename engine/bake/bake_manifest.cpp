@@ -66,8 +66,9 @@ std::string layerJson(const BakeDescription& b, const BakePlan& plan) {
       "  \"version\": \"1.0.0\",\n  \"format\": \"quantized-mesh-1.0\",\n  \"scheme\": \"tms\",\n"
       "  \"tiles\": [\"{{z}}/{{x}}/{{y}}.terrain\"],\n  \"projection\": \"EPSG:4326\",\n"
       "  \"bounds\": [-180.0, -90.0, 180.0, 90.0],\n  \"minzoom\": 0,\n  \"maxzoom\": {},\n"
-      "  \"extensions\": [\"octvertexnormals\"],\n  \"globe_radius_m\": {:.17g},\n  \"available\": [{}\n  ]\n}}\n",
-      jsonString(b.planet_name), b.levels.last, b.radius_m, available);
+      "  \"extensions\": [\"octvertexnormals\"],\n  \"globe_radius_m\": {:.17g},\n{}  \"available\": [{}\n  ]\n}}\n",
+      jsonString(b.planet_name), b.levels.last, b.radius_m,
+      b.flattening == 0.0 ? std::string() : fmt::format("  \"globe_flattening\": {:.17g},\n", b.flattening), available);
 }
 
 }  // namespace globe

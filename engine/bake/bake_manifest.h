@@ -16,7 +16,8 @@ struct BakeDescription {
   LevelRange levels;
   GeoRect region;
   std::string planet_name;
-  double radius_m = 0.0;
+  double radius_m = 0.0;         // the sphere's radius, or the ellipsoid's equatorial radius
+  double flattening = 0.0;       // 0: a sphere; else layer.json says "globe_flattening" too
   std::uint64_t model_hash = 0;  // of the packed elevation parameters and the sources: the model, not its file
 };
 

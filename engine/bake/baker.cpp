@@ -98,7 +98,7 @@ std::vector<EncodedTile> encodeBatch(const PlanetDescription& planet, HeightSamp
       const auto first = h.begin() + std::ptrdiff_t(k * per);
       std::vector<double> tileHeights(first, first + std::ptrdiff_t(per));
       if (settings.format == BakeFormat::Cog) {
-        auto bytes = encodeCogTile(batch[k], tileHeights, planet.radius_m, planet.name);
+        auto bytes = encodeCogTile(batch[k], tileHeights, planet.radius_m, planet.name, planet.flattening);
         if (bytes)
           out[k].bytes = std::move(*bytes);
         else
@@ -106,7 +106,7 @@ std::vector<EncodedTile> encodeBatch(const PlanetDescription& planet, HeightSamp
       } else {
         const TileGrid grid{batch[k], kMeshCells, std::move(tileHeights)};
         const double error_m = levelGeometricError_m(planet.radius_m, batch[k].level);
-        out[k].bytes = encodeQuantizedMesh(buildTileMesh(grid, planet.radius_m, error_m, &out[k].stats));
+        out[k].bytes = encodeQuantizedMesh(buildTileMesh(grid, planetShape(planet), error_m, &out[k].stats));
       }
     }
   });
@@ -120,9 +120,13 @@ Result<BakeSummary> runBake(const PlanetDescription& planet, HeightSampler& heig
                             const TileWriter& write, const ProgressFn& progress) {
   const BakePlan plan(settings.levels, settings.region);
   const ElevationModel model(planet);
-  const BakeDescription description{settings.format, settings.levels,
-                                    settings.region, planet.name,
-                                    planet.radius_m, elevationModelHash(model.params(), planet.sources)};
+  const BakeDescription description{settings.format,
+                                    settings.levels,
+                                    settings.region,
+                                    planet.name,
+                                    planet.radius_m,
+                                    planet.flattening,
+                                    elevationModelHash(model.params(), planet.sources)};
   std::error_code ec;
   fs::create_directories(settings.out_dir, ec);
   if (ec) return Error::inField("--out", "cannot create '" + settings.out_dir + "': " + ec.message());

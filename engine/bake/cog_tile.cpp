@@ -53,13 +53,13 @@ Dataset memoryRaster(const TileId& tile, const std::vector<double>& heights_m, c
 }  // namespace
 
 Result<std::string> encodeCogTile(const TileId& tile, const std::vector<double>& heights_m, double radius_m,
-                                  const std::string& planet_name) {
+                                  const std::string& planet_name, double flattening) {
   static std::once_flag registered;
   std::call_once(registered, [] { GDALAllRegister(); });
   static std::atomic<unsigned> serial{0};
   const std::string name = tilePath(tile, ".tif");
   const std::string path = "/vsimem/globe_bake_" + std::to_string(serial++) + ".tif";
-  Dataset mem = memoryRaster(tile, heights_m, sphereCrsWkt(radius_m, planet_name));
+  Dataset mem = memoryRaster(tile, heights_m, planetCrsWkt(radius_m, planet_name, flattening));
   if (!mem) return Error::inFile(name, std::string("GDAL: ") + CPLGetLastErrorMsg());
   char** options = nullptr;
   options = CSLSetNameValue(options, "COMPRESS", "DEFLATE");

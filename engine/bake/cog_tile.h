@@ -21,7 +21,8 @@ void appendCogDirections(const TileId& tile, std::vector<glm::dvec3>& out);
 
 // The GeoTIFF's bytes from kCogPixels^2 heights in appendCogDirections order. Safe to call from
 // several threads at once.
+// Heights are above the planet's sphere or ellipsoid (`flattening`), at geodetic latitude/longitude.
 Result<std::string> encodeCogTile(const TileId& tile, const std::vector<double>& heights_m, double radius_m,
-                                  const std::string& planet_name);
+                                  const std::string& planet_name, double flattening = 0.0);
 
 }  // namespace globe

@@ -16,10 +16,10 @@ namespace globe {
 namespace {
 
 // Planet-fixed positions (metres) of every grid sample, apron included, in heights_m order.
-std::vector<glm::dvec3> gridPositions(const TileGrid& grid, double radius_m) {
+std::vector<glm::dvec3> gridPositions(const TileGrid& grid, const Ellipsoid& shape) {
   std::vector<glm::dvec3> directions;
   appendGridDirections(grid.tile, grid.cells, directions);
-  for (std::size_t k = 0; k < directions.size(); ++k) directions[k] *= radius_m + grid.heights_m[k];
+  for (std::size_t k = 0; k < directions.size(); ++k) directions[k] = shape.position(directions[k], grid.heights_m[k]);
   return directions;
 }
 
@@ -111,7 +111,7 @@ void collectEdges(QuantizedMeshTile& tile) {
 
 // Where a client puts the vertices: u/v over the tile's rectangle, dequantized heights. The bounds
 // are computed from these, so they hold for what is drawn.
-std::vector<glm::dvec3> decodedPositions(const QuantizedMeshTile& tile, double radius_m, const TileId& id) {
+std::vector<glm::dvec3> decodedPositions(const QuantizedMeshTile& tile, const Ellipsoid& shape, const TileId& id) {
   const GeoRect r = tileRect(id);
   const double range_m = double(tile.header.max_height_m) - double(tile.header.min_height_m);
   std::vector<glm::dvec3> out;
@@ -119,12 +119,12 @@ std::vector<glm::dvec3> decodedPositions(const QuantizedMeshTile& tile, double r
     const double lon = r.west_deg + tile.u[k] / double(kQuantizedMax) * (r.east_deg - r.west_deg);
     const double lat = r.south_deg + tile.v[k] / double(kQuantizedMax) * (r.north_deg - r.south_deg);
     const double h = double(tile.header.min_height_m) + tile.height[k] / double(kQuantizedMax) * range_m;
-    out.push_back(directionFromLatLon(lat, lon) * (radius_m + h));
+    out.push_back(shape.position(directionFromLatLon(lat, lon), h));
   }
   return out;
 }
 
-void setBounds(const std::vector<glm::dvec3>& positions_m, double radius_m, QuantizedMeshTile& tile) {
+void setBounds(const std::vector<glm::dvec3>& positions_m, const Ellipsoid& shape, QuantizedMeshTile& tile) {
   glm::dvec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
   for (const glm::dvec3& q : positions_m) {
     lo = glm::min(lo, q);
@@ -136,17 +136,19 @@ void setBounds(const std::vector<glm::dvec3>& positions_m, double radius_m, Quan
   tile.header.center_m = centre;
   tile.header.sphere_center_m = centre;
   tile.header.sphere_radius_m = r;
-  const glm::dvec3 axis = glm::normalize(centre);
+  // In scaled space (positions / (a, a, b)), where the horizon test is the sphere's.
+  const glm::dvec3 radii(shape.equatorialRadius_m(), shape.equatorialRadius_m(), shape.polarRadius_m());
+  const glm::dvec3 axis = shape.isSphere() ? glm::normalize(centre) : glm::normalize(centre / radii);
   // The hemisphere-wide root tiles admit no point: a distant one on the axis is hidden only from
   // viewers right behind the planet, who see none of the tile either (docs/bake.md).
-  tile.header.horizon_occlusion_point = horizonOcclusionPoint(positions_m, radius_m, axis).value_or(axis * 1.0e3);
+  tile.header.horizon_occlusion_point = horizonOcclusionPoint(positions_m, radii, axis).value_or(axis * 1.0e3);
 }
 
 }  // namespace
 
-QuantizedMeshTile buildTileMesh(const TileGrid& grid, double radius_m, double error_m, TileMeshStats* stats) {
+QuantizedMeshTile buildTileMesh(const TileGrid& grid, const Ellipsoid& shape, double error_m, TileMeshStats* stats) {
   const int n = grid.cells;
-  const std::vector<glm::dvec3> p = gridPositions(grid, radius_m);
+  const std::vector<glm::dvec3> p = gridPositions(grid, shape);
   glm::dvec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
   for (int j = 0; j <= n; ++j) {
     for (int i = 0; i <= n; ++i) {
@@ -175,7 +177,7 @@ QuantizedMeshTile buildTileMesh(const TileGrid& grid, double radius_m, double er
   }
   quantizeHeights(grid, kept, tile);
   collectEdges(tile);
-  setBounds(decodedPositions(tile, radius_m, grid.tile), radius_m, tile);
+  setBounds(decodedPositions(tile, shape, grid.tile), shape, tile);
   if (stats != nullptr) *stats = {std::size_t(row) * row, kept.size(), triangles.size() / 3, achieved_m};
   return tile;
 }

@@ -5,6 +5,7 @@
 // heights from the same double samples); normals from the surface by central differences.
 #include "engine/bake/quantized_mesh.h"
 #include "engine/bake/tile_grid.h"
+#include "planet/geometry/ellipsoid.h"
 
 namespace globe {
 
@@ -15,7 +16,9 @@ struct TileMeshStats {
   double simplification_error_m = 0.0;  // meshoptimizer's estimate, metres
 };
 
-// `error_m`: the largest deviation the simplification may introduce; `radius_m`: the planet's.
-QuantizedMeshTile buildTileMesh(const TileGrid& grid, double radius_m, double error_m, TileMeshStats* stats = nullptr);
+// `error_m`: the largest deviation the simplification may introduce; `shape`: the planet's sphere or
+// ellipsoid (heights are along its normals at geodetic latitude/longitude, as Cesium reads them).
+QuantizedMeshTile buildTileMesh(const TileGrid& grid, const Ellipsoid& shape, double error_m,
+                                TileMeshStats* stats = nullptr);
 
 }  // namespace globe

@@ -12,6 +12,7 @@
 #include "engine/vk/device.h"
 #include "globe_commit.h"
 #include "options.h"
+#include "planet/camera/camera_orientation.h"
 #include "planet/camera/camera_path_file.h"
 #include "planet/elevation/planet_file.h"
 #include "planet/sources/source_mosaic.h"
@@ -158,10 +159,12 @@ Result<BenchFlight> flyPath(const BenchOptions& o, const BenchInputs& in, const 
   TerrainWarnings warnings;
   for (uint64_t k = 0; k < in.frames; ++k) {
     double t = in.path.startTime_s() + double(k) / o.rate_hz;
-    Camera camera = in.path.cameraAt(t, model.radius_m(), aspect, ground);
+    Camera camera = in.path.cameraAt(t, model.radius_m(), aspect, ground, model.shape());
     FrameStats stats = renderer.renderFrame(terrain, camera, converge);
     printNewWarnings(warnings, terrain);
-    double altitude = glm::length(camera.position_m) - ground(glm::normalize(camera.position_m));
+    const glm::dvec3 below =
+        model.shape().isSphere() ? glm::normalize(camera.position_m) : model.shape().normalBelow(camera.position_m);
+    const double altitude = poseFromCamera(camera, ground(below), model.shape()).height_m;
     const double speed = k > 0 ? groundSpeed_mps(previousPosition_m, camera.position_m, 1.0 / o.rate_hz) : 0.0;
     previousPosition_m = camera.position_m;
     if (auto s = rows.append({k, t, altitude, speed, stats}); !s) return s.error();

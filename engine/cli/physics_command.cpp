@@ -155,11 +155,12 @@ Result<ImageRgba> renderBodies(vk::Device& device, const ElevationModel& model, 
                                const PhysicsWorld& world, uint32_t cells) {
   auto settings = terrainSettingsFromOptions({"", cells, 0}, in.planet, 720);
   if (!settings) return settings.error();
-  const glm::dvec2 latLon = latLonFromPosition(world.state(0).position_m);
+  const GeodeticPoint first = model.shape().geodeticFromGeocentric(world.state(0).position_m);
+  const glm::dvec2 latLon(first.latitude_deg, first.longitude_deg);
   const GeodeticPose pose{latLon.x - 0.0002, latLon.y, 25.0, 0.0, -50.0, 0.0};
   const glm::dvec3 down = directionFromLatLon(pose.latitude_deg, pose.longitude_deg);
   const double ground = TerrainQueries(model).cameraFloorRadius(down, settings->ranges.maxDepth, cells);
-  const Camera camera = cameraFromPose(pose, ground, model.radius_m(), 16.0 / 9.0);
+  const Camera camera = cameraFromPose(pose, ground, model.shape(), 16.0 / 9.0);
   auto image = renderTerrain(device, camera, model, *settings, 960, 540);
   if (!image) return image.error();
   std::printf("%u bodies in view\n", drawBodies(*image, camera, world));

@@ -85,7 +85,7 @@ int runRender(const RenderOptions& o) {
   const double ground = o.mode == "terrain"
                             ? queries.cameraFloorRadius(down, settings->ranges.maxDepth, settings->gridCells)
                             : model.radius_m() + queries.exactHeight_m(down);
-  Camera camera = cameraFromPose(*pose, ground, model.radius_m(), aspect);
+  Camera camera = cameraFromPose(*pose, ground, model.shape(), aspect);
 
   vk::Device device(deviceOptions(o.device));
   if (auto s = vk::checkImageExtent(device, {size->width, size->height}, "--size"); !s) return usageError(s.error());

@@ -233,12 +233,13 @@ Result<std::vector<TradeCamera>> tradeCameras(const TradeOptions& o, const Trade
     GeodeticPose pose = standardCameraPose(i);
     cameras.push_back(
         {standardCameraName(i), cameraFromPose(pose, ground(directionFromLatLon(pose.latitude_deg, pose.longitude_deg)),
-                                               model.radius_m(), aspect)});
+                                               model.shape(), aspect)});
   }
   if (in.path)
     for (double t : {7.0, 12.0})
       if (t >= in.path->startTime_s() && t <= in.path->endTime_s())
-        cameras.push_back({"path@" + formatFixed(t, 0) + "s", in.path->cameraAt(t, model.radius_m(), aspect, ground)});
+        cameras.push_back(
+            {"path@" + formatFixed(t, 0) + "s", in.path->cameraAt(t, model.radius_m(), aspect, ground, model.shape())});
   if (auto s = keepNamedCameras(o.cameras, cameras); !s) return s.error();
   return cameras;
 }

@@ -43,6 +43,8 @@ Status writeElevationExr(const ElevationModel& model, const ElevationExportOptio
     header.channels().insert("Y", Imf::Channel(Imf::FLOAT));
     header.insert("globe.planet", Imf::StringAttribute(options.planet_name));
     header.insert("globe.radius_m", Imf::DoubleAttribute(model.radius_m()));
+    // Rows and columns are geodetic latitude/longitude; an ellipsoid says its flattening too.
+    if (!model.shape().isSphere()) header.insert("globe.flattening", Imf::DoubleAttribute(model.shape().flattening()));
     header.insert("globe.sea_level_m", Imf::DoubleAttribute(model.seaLevel_m()));
     header.insert("globe.units", Imf::StringAttribute("metres"));
     CheckedExrStream stream(file.tempPath(), file.targetPath());

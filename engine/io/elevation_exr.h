@@ -3,7 +3,8 @@
 // planet's radius in metres (the exported value is the CPU reference, float-rounded), row 0 the north
 // edge, column 0 starting at longitude -180 degrees, pixel centres at half-pixel offsets (see
 // equirectPixelDirection). `Y` so that any EXR viewer shows it as grey levels. Header attributes:
-// globe.planet (string), globe.radius_m, globe.sea_level_m (double), globe.units = "metres".
+// globe.planet (string), globe.radius_m, globe.sea_level_m (double), globe.units = "metres"; on an
+// ellipsoidal planet also globe.flattening (double), radius_m being its equatorial radius.
 // Written in blocks of rows as they are computed, so memory stays O(width) at any size.
 #include <cstdint>
 #include <string>

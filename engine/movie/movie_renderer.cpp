@@ -71,7 +71,7 @@ struct FrameSource {
   GroundRadiusFn ground;
 
   ImageRgba render(const CameraPath& path, double t_s, double aspect) {
-    Camera camera = path.cameraAt(t_s, model.radius_m(), aspect, ground);
+    Camera camera = path.cameraAt(t_s, model.radius_m(), aspect, ground, model.shape());
     renderer->renderFrame(*terrain, camera, true);
     return toImage(renderer->readback(), camera);
   }

@@ -39,6 +39,7 @@ Result<std::unique_ptr<Terrain>> Terrain::create(vk::Device& device, const Eleva
   if (auto s = validateTerrainSettings(settings); !s) return s.error();
   LodConfig lod;
   lod.radius_m = model.radius_m();
+  lod.flattening = model.shape().flattening();
   lod.minElevation_m = model.bounds().min_m;
   lod.maxElevation_m = model.bounds().max_m;
   lod.ranges = settings.ranges;

@@ -12,10 +12,12 @@ constexpr double kReferenceRadius_m = 6371000.0;
 
 double groundRadiusBelow(const glm::dvec3& /*direction*/) { return kReferenceRadius_m; }
 
-FlyCamera::FlyCamera(const GeodeticPose& pose, double sphereRadius_m, GroundQuery ground, MoveGuard guard)
-    : ground_(std::move(ground)), guard_(std::move(guard)) {
+FlyCamera::FlyCamera(const GeodeticPose& pose, double sphereRadius_m, GroundQuery ground, MoveGuard guard,
+                     const Ellipsoid& shape)
+    : shape_(shape), ground_(std::move(ground)), guard_(std::move(guard)) {
   glm::dvec3 dir = directionFromLatLon(pose.latitude_deg, pose.longitude_deg);
-  Camera start = cameraFromPose(pose, ground_(dir), sphereRadius_m, 1.0);
+  Camera start = shape_.isSphere() ? cameraFromPose(pose, ground_(dir), sphereRadius_m, 1.0)
+                                   : cameraFromPose(pose, ground_(dir), shape_, 1.0);
   position_m_ = start.position_m;
   forward_ = start.forward;
   verticalFov_rad_ = start.verticalFov_rad;
@@ -23,8 +25,36 @@ FlyCamera::FlyCamera(const GeodeticPose& pose, double sphereRadius_m, GroundQuer
 }
 
 double FlyCamera::altitude_m() const {
+  if (!shape_.isSphere()) {
+    const GeodeticPoint g = shape_.geodeticFromGeocentric(position_m_);
+    return (g.height_m + shape_.equatorialRadius_m()) - ground_(Ellipsoid::normalAt(g));
+  }
   double r = glm::length(position_m_);
   return r - ground_(position_m_ / r);
+}
+
+glm::dvec2 FlyCamera::latLon_deg() const {
+  if (shape_.isSphere()) return latLonFromPosition(position_m_);
+  const GeodeticPoint g = shape_.geodeticFromGeocentric(position_m_);
+  return {g.latitude_deg, g.longitude_deg};
+}
+
+glm::dvec3 FlyCamera::upAt(const glm::dvec3& p) const {
+  return shape_.isSphere() ? glm::normalize(p) : shape_.normalBelow(p);
+}
+
+void FlyCamera::liftAboveGround() {
+  if (!shape_.isSphere()) {
+    const GeodeticPoint g = shape_.geodeticFromGeocentric(position_m_);
+    const double floor = ground_(Ellipsoid::normalAt(g)) + kMinClearance_m;
+    if (g.height_m + shape_.equatorialRadius_m() < floor)
+      position_m_ = shape_.pointAbove(g.latitude_deg, g.longitude_deg, floor, 0.0);
+    return;
+  }
+  double r = glm::length(position_m_);
+  glm::dvec3 dir = position_m_ / r;
+  double floor = ground_(dir) + kMinClearance_m;
+  if (r < floor) position_m_ = dir * floor;
 }
 
 double FlyCamera::speed_mps() const {
@@ -32,7 +62,7 @@ double FlyCamera::speed_mps() const {
 }
 
 void FlyCamera::clampPitch() {
-  glm::dvec3 up = glm::normalize(position_m_);
+  glm::dvec3 up = upAt(position_m_);
   double sinPitch = std::clamp(glm::dot(forward_, up), -1.0, 1.0);
   glm::dvec3 horizontal = forward_ - sinPitch * up;
   if (glm::length(horizontal) < 1e-9) {
@@ -47,7 +77,7 @@ void FlyCamera::clampPitch() {
 
 void FlyCamera::update(const FlyControls& c, double dt_s) {
   // Turn: heading about the local vertical, pitch towards it.
-  glm::dvec3 up = glm::normalize(position_m_);
+  glm::dvec3 up = upAt(position_m_);
   double pitch = std::asin(std::clamp(glm::dot(forward_, up), -1.0, 1.0));
   glm::dvec3 horizontal = glm::normalize(forward_ - std::sin(pitch) * up);
   glm::dvec3 right = glm::cross(horizontal, up);
@@ -66,17 +96,13 @@ void FlyCamera::update(const FlyControls& c, double dt_s) {
   // However fast: a move that would cross the terrain stops short of it.
   position_m_ = guard_ ? guard_(position_m_, target) : target;
 
-  // Never below the ground.
-  double r = glm::length(position_m_);
-  glm::dvec3 dir = position_m_ / r;
-  double floor = ground_(dir) + kMinClearance_m;
-  if (r < floor) position_m_ = dir * floor;
-  clampPitch();  // the vertical turned with the motion
+  liftAboveGround();  // never below the ground
+  clampPitch();       // the vertical turned with the motion
 }
 
 Camera FlyCamera::camera(double aspect) const {
   Camera cam;
-  glm::dvec3 up = glm::normalize(position_m_);
+  glm::dvec3 up = upAt(position_m_);
   cam.position_m = position_m_;
   cam.forward = forward_;
   cam.right = glm::normalize(glm::cross(forward_, up));

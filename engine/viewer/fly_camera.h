@@ -38,8 +38,10 @@ class FlyCamera {
   static constexpr double kTurn_rad_per_px = 0.0035;
   static constexpr double kMaxPitch_deg = 89.0;  // keeps forward off the vertical (stable right)
 
+  // `shape`, when not a sphere, is the planet's ellipsoid: "up" is then the geodetic normal below the
+  // camera and ground radii are a + the ground's ellipsoidal height (Ellipsoid::pointAbove).
   FlyCamera(const GeodeticPose& pose, double sphereRadius_m, GroundQuery ground = groundRadiusBelow,
-            MoveGuard guard = {});
+            MoveGuard guard = {}, const Ellipsoid& shape = Ellipsoid());
 
   // Advances by `dt_s` seconds of input.
   void update(const FlyControls& controls, double dt_s);
@@ -50,11 +52,15 @@ class FlyCamera {
   const glm::dvec3& forward() const { return forward_; }
   double altitude_m() const;  // above the ground below the camera
   double speed_mps() const;   // unboosted speed at the current altitude
-  glm::dvec2 latLon_deg() const { return latLonFromPosition(position_m_); }
+  glm::dvec2 latLon_deg() const;
 
  private:
   void clampPitch();
+  glm::dvec3 upAt(const glm::dvec3& position_m) const;
+  // Keeps the camera kMinClearance_m above the ground below it.
+  void liftAboveGround();
 
+  Ellipsoid shape_;
   GroundQuery ground_;
   MoveGuard guard_;
   glm::dvec3 position_m_;

@@ -83,7 +83,8 @@ struct Viewer::State {
             options.pose, scene->radius_m(), [this](const glm::dvec3& dir) { return scene->groundRadius(dir); },
             [this](const glm::dvec3& from, const glm::dvec3& to) {
               return scene->guardedCameraMove(from, to, FlyCamera::kMinClearance_m);
-            }) {}
+            },
+            scene->shape()) {}
 
   void handle(const InputEvent& e);
   bool recreateSwapchain();
@@ -153,8 +154,9 @@ Camera Viewer::State::frameCamera(double step_s, Clock::time_point now) {
     }
     pathEnded = pathTime_s >= path.endTime_s();
     pathTime_s = std::min(pathTime_s, path.endTime_s());
-    return path.cameraAt(pathTime_s, scene->radius_m(), aspect,
-                         [this](const glm::dvec3& dir) { return scene->groundRadius(dir); });
+    return path.cameraAt(
+        pathTime_s, scene->radius_m(), aspect, [this](const glm::dvec3& dir) { return scene->groundRadius(dir); },
+        scene->shape());
   }
   // Keys move, left-drag turns.
   FlyControls controls;
@@ -170,11 +172,10 @@ Camera Viewer::State::frameCamera(double step_s, Clock::time_point now) {
 }
 
 void Viewer::State::describeCamera(OverlayView& view, const Camera& cam) const {
-  const glm::dvec3 up = glm::normalize(cam.position_m);
-  view.altitude_m = options.path ? glm::length(cam.position_m) - scene->groundRadius(up) : camera.altitude_m();
-  const glm::dvec2 latLon = latLonFromPosition(cam.position_m);
-  view.latitude_deg = latLon.x;
-  view.longitude_deg = latLon.y;
+  const GeodeticPose pose = currentPose(cam);
+  view.altitude_m = options.path ? pose.height_m : camera.altitude_m();
+  view.latitude_deg = pose.latitude_deg;
+  view.longitude_deg = pose.longitude_deg;
   view.speed_mps = camera.speed_mps();
 }
 
@@ -336,7 +337,7 @@ void Viewer::State::reportReload(const ReloadOutcome& outcome) {
 }
 
 GeodeticPose Viewer::State::currentPose(const Camera& cam) const {
-  return poseFromCamera(cam, scene->groundRadius(glm::normalize(cam.position_m)));
+  return poseFromCamera(cam, scene->groundRadius(scene->normalBelow(cam.position_m)), scene->shape());
 }
 
 void Viewer::State::toggleRecording(const Camera& cam) {

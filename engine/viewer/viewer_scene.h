@@ -67,6 +67,11 @@ class ViewerScene {
   // ray cast, then above the drawn mesh too; TerrainQueries::guardedMove). Sphere mode: `to_m`.
   glm::dvec3 guardedCameraMove(const glm::dvec3& from_m, const glm::dvec3& to_m, double clearance_m) const;
   double radius_m() const { return model_->radius_m(); }
+  const Ellipsoid& shape() const { return model_->shape(); }
+  // The geodetic normal below a planet-fixed point (the direction from the centre on a sphere).
+  glm::dvec3 normalBelow(const glm::dvec3& position_m) const {
+    return shape().isSphere() ? glm::normalize(position_m) : shape().normalBelow(position_m);
+  }
   const PlanetDescription& planet() const { return planet_; }
   const std::string& planetPath() const { return options_.planetPath; }
   ViewerMode mode() const { return options_.mode; }

@@ -48,19 +48,17 @@ SurfaceRayCaster::SurfaceRayCaster(const ElevationModel& model, RaySurface surfa
     : model_(model),
       surface_(surface),
       slope_(elevationSlopeBound(model.params())),
-      minRadius_m_(std::max(model.radius_m() + model.bounds().min_m, 1e-3 * model.radius_m())),
+      // On an ellipsoid the normal below a point turns fastest over the tightest curvature, b^2 / a.
+      minRadius_m_(std::max(curvatureRadius_m(model.shape()) + model.bounds().min_m, 1e-3 * model.radius_m())),
       maxRadius_m_(model.radius_m() + std::max(model.bounds().max_m, 0.0)) {}
 
-double SurfaceRayCaster::heightAbove(const glm::dvec3& p) const {
-  double r = glm::length(p);
-  if (!(r > 0)) return -model_.radius_m();
-  const glm::dvec3 d = p / r;
-  return r - model_.radius_m() -
-         (surface_ == RaySurface::kVisible ? model_.visibleElevation_m(d) : model_.elevation_m(d));
+double SurfaceRayCaster::curvatureRadius_m(const Ellipsoid& shape) {
+  if (shape.isSphere()) return shape.equatorialRadius_m();
+  return shape.polarRadius_m() * shape.polarRadius_m() / shape.equatorialRadius_m();
 }
 
 glm::dvec3 SurfaceRayCaster::normalAt(const glm::dvec3& p, double scale_m) const {
-  glm::dvec3 d = glm::normalize(p);
+  glm::dvec3 d = model_.shape().isSphere() ? glm::normalize(p) : model_.shape().normalBelow(p);
   glm::dvec3 helper = std::abs(d.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
   glm::dvec3 e1 = glm::normalize(glm::cross(helper, d));
   glm::dvec3 e2 = glm::cross(d, e1);

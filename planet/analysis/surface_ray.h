@@ -3,7 +3,8 @@
 // (ElevationModel, double) by ray marching and bisection. This is the ground truth the screen-space
 // error of a rendered frame is measured against (engine/render/screen_error.h, docs/tradeoffs.md).
 //
-// Marching: the ray enters the bounding sphere R + max elevation, then steps by the ray's height
+// Marching (on an ellipsoid the height is the ellipsoidal one, along the normal below the point):
+// the ray enters the bounding sphere R + max elevation, then steps by the ray's height
 // above the surface divided by a slope bound of that height along the ray (1 + L·R/r, with L a
 // bound of the elevation's slope), so it cannot step through the surface; near the surface the step
 // never drops below `minStepFraction` of the pixel footprint (t · pixel angle), the only place a
@@ -58,7 +59,11 @@ class SurfaceRayCaster {
 
  private:
   // Height of p above the surface below it (metres; negative inside the terrain).
-  double heightAbove(const glm::dvec3& p) const;
+  double heightAbove(const glm::dvec3& p) const {
+    return model_.heightAboveTerrain_m(p, surface_ == RaySurface::kVisible);
+  }
+  // The reference surface's smallest radius of curvature (metres): a, or b^2 / a on an ellipsoid.
+  static double curvatureRadius_m(const Ellipsoid& shape);
   glm::dvec3 normalAt(const glm::dvec3& p, double scale_m) const;
 
   const ElevationModel& model_;

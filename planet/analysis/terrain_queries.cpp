@@ -44,6 +44,13 @@ glm::dvec3 TerrainQueries::guardedMove(const glm::dvec3& from_m, const glm::dvec
     if (auto hit = rayExact(from_m, direction, length + clearance_m))
       to = from_m + direction * std::max(0.0, std::min(length, *hit - clearance_m));
   }
+  const Ellipsoid& shape = model_.shape();
+  if (!shape.isSphere()) {  // the floor along the normal below, through GeographicLib
+    const GeodeticPoint g = shape.geodeticFromGeocentric(to);
+    const double floor = cameraFloorRadius(Ellipsoid::normalAt(g), level, cells) + clearance_m;
+    const double height = g.height_m + shape.equatorialRadius_m();  // as a reference radius
+    return height < floor ? shape.pointAbove(g.latitude_deg, g.longitude_deg, floor, 0.0) : to;
+  }
   const double r = glm::length(to);
   const glm::dvec3 up = to / r;
   const double floor = cameraFloorRadius(up, level, cells) + clearance_m;

@@ -1,7 +1,6 @@
 #include "planet/camera/camera.h"
 
-#include <GeographicLib/Geocentric.hpp>
-
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -87,18 +86,19 @@ glm::dvec2 latLonFromPosition(const glm::dvec3& p) {
 }
 
 Camera cameraFromPose(const GeodeticPose& pose, double groundRadius_m, double sphereRadius_m, double aspect) {
+  return cameraFromPose(pose, groundRadius_m, Ellipsoid::sphere(sphereRadius_m), aspect);
+}
+
+Camera cameraFromPose(const GeodeticPose& pose, double groundRadius_m, const Ellipsoid& shape, double aspect) {
   Camera cam;
   cam.aspect = aspect;
-  // GeographicLib on the planet's sphere (flattening 0): position and the local east/north/up frame.
-  GeographicLib::Geocentric sphere(groundRadius_m, 0.0);
-  std::vector<double> m(9);
-  double x, y, z;
-  sphere.Forward(pose.latitude_deg, pose.longitude_deg, pose.height_m, x, y, z, m);
-  cam.position_m = {x, y, z};
-  // Columns of M are east, north, up in planet-fixed coordinates (row-major storage).
-  glm::dvec3 east{m[0], m[3], m[6]}, north{m[1], m[4], m[7]}, upLocal{m[2], m[5], m[8]};
+  // GeographicLib (Ellipsoid::pointAbove): position and the local east/north/up frame.
+  glm::dvec3 enu[3];
+  cam.position_m = shape.pointAbove(pose.latitude_deg, pose.longitude_deg, groundRadius_m, pose.height_m, &enu);
+  const glm::dvec3 east = enu[0], north = enu[1], upLocal = enu[2];
 
-  double pitch = std::isnan(pose.pitch_deg) ? horizonPitch_deg(pose.height_m, sphereRadius_m) - 2.0 : pose.pitch_deg;
+  const double horizonRadius_m = shape.equatorialRadius_m();
+  double pitch = std::isnan(pose.pitch_deg) ? horizonPitch_deg(pose.height_m, horizonRadius_m) - 2.0 : pose.pitch_deg;
   pitch = std::clamp(pitch, -90.0, 90.0);
   double h = pose.heading_deg * kDeg, p = pitch * kDeg, r = pose.roll_deg * kDeg;
   glm::dvec3 forward = std::cos(p) * (std::sin(h) * east + std::cos(h) * north) + std::sin(p) * upLocal;

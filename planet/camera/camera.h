@@ -1,8 +1,9 @@
 #pragma once
-// Cameras in the planet-fixed frame (metres, double): geodetic placement on the planet's sphere
-// (through GeographicLib), orientation from heading/pitch/roll, and a reversed-Z projection with
+// Cameras in the planet-fixed frame (metres, double): geodetic placement on the planet's sphere or
+// ellipsoid (through GeographicLib), orientation from heading/pitch/roll, and a reversed-Z projection with
 // an infinite far plane.
 #include "planet/core/error.h"
+#include "planet/geometry/ellipsoid.h"
 
 #include <glm/glm.hpp>
 
@@ -57,6 +58,10 @@ struct Camera {
 // from the centre below the camera); `sphereRadius_m` is the planet's reference radius used for
 // the default horizon-looking pitch.
 Camera cameraFromPose(const GeodeticPose& pose, double groundRadius_m, double sphereRadius_m, double aspect);
+// The same on the planet's reference surface `shape`: latitude is geodetic, and the "ground radius" is
+// a + the ground's ellipsoidal height (Ellipsoid::pointAbove; on a sphere the ground's distance from the
+// centre, and this is the function above with sphereRadius_m = a).
+Camera cameraFromPose(const GeodeticPose& pose, double groundRadius_m, const Ellipsoid& shape, double aspect);
 
 // Latitude/longitude (degrees) of a planet-fixed direction or position.
 glm::dvec2 latLonFromPosition(const glm::dvec3& position_m);

@@ -67,12 +67,19 @@ glm::dvec3 headingPitchRoll_deg(const CameraBasis& b, double latitude_deg, doubl
   return {wrapAngle_deg(heading / kDeg), pitch / kDeg, wrapAngle_deg(roll / kDeg)};
 }
 
-GeodeticPose poseFromCamera(const Camera& camera, double groundRadius_m) {
-  glm::dvec2 latLon = latLonFromPosition(camera.position_m);
+GeodeticPose poseFromCamera(const Camera& camera, double groundRadius_m, const Ellipsoid& shape) {
   GeodeticPose pose;
-  pose.latitude_deg = latLon.x;
-  pose.longitude_deg = wrapAngle_deg(latLon.y);
-  pose.height_m = glm::length(camera.position_m) - groundRadius_m;
+  if (shape.isSphere()) {
+    glm::dvec2 latLon = latLonFromPosition(camera.position_m);
+    pose.latitude_deg = latLon.x;
+    pose.longitude_deg = wrapAngle_deg(latLon.y);
+    pose.height_m = glm::length(camera.position_m) - groundRadius_m;
+  } else {  // geodetic, through GeographicLib
+    const GeodeticPoint g = shape.geodeticAbove(camera.position_m, groundRadius_m);
+    pose.latitude_deg = g.latitude_deg;
+    pose.longitude_deg = wrapAngle_deg(g.longitude_deg);
+    pose.height_m = g.height_m;
+  }
   glm::dvec3 hpr =
       headingPitchRoll_deg({camera.forward, camera.right, camera.up}, pose.latitude_deg, pose.longitude_deg);
   pose.heading_deg = hpr.x;

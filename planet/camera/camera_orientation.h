@@ -42,7 +42,8 @@ glm::dvec3 headingPitchRoll_deg(const CameraBasis& basis, double latitude_deg, d
 
 // The pose of a camera standing `position_m - groundRadius_m` above the ground (the inverse of
 // cameraFromPose; the viewer records paths with it). Height is not clamped: a camera below the
-// ground gives height <= 0, which validatePose rejects.
-GeodeticPose poseFromCamera(const Camera& camera, double groundRadius_m);
+// ground gives height <= 0, which validatePose rejects. On an ellipsoid `shape` the latitude is
+// geodetic and groundRadius_m is a + the ground's ellipsoidal height (Ellipsoid::geodeticAbove).
+GeodeticPose poseFromCamera(const Camera& camera, double groundRadius_m, const Ellipsoid& shape = Ellipsoid());
 
 }  // namespace globe

@@ -277,18 +277,32 @@ double CameraPath::referenceRadiusAt(double t_s, const GroundRadiusFn& groundRad
   return w == 0.0 ? ground : ground + w * (sphereRadius_m - ground);
 }
 
-glm::dvec3 CameraPath::positionAt(double t_s, const GroundRadiusFn& groundRadius, double sphereRadius_m) const {
-  return directionAt(t_s) * (referenceRadiusAt(t_s, groundRadius, sphereRadius_m) + heightAt(t_s));
+namespace {
+
+// direction * (reference + height) on a sphere; on an ellipsoid the same through GeographicLib.
+glm::dvec3 pointAbove(const glm::dvec3& direction, double referenceRadius_m, double height_m, const Ellipsoid& shape) {
+  if (shape.isSphere()) return direction * (referenceRadius_m + height_m);
+  const glm::dvec2 latLon = latLonFromPosition(direction);  // geodetic: the direction is the normal
+  return shape.pointAbove(latLon.x, latLon.y, referenceRadius_m, height_m);
 }
 
-glm::dvec3 CameraPath::positionAt(double t_s, const GroundRadiusFn& groundRadius) const {
+}  // namespace
+
+glm::dvec3 CameraPath::positionAt(double t_s, const GroundRadiusFn& groundRadius, double sphereRadius_m,
+                                  const Ellipsoid& shape) const {
+  return pointAbove(directionAt(t_s), referenceRadiusAt(t_s, groundRadius, sphereRadius_m), heightAt(t_s), shape);
+}
+
+glm::dvec3 CameraPath::positionAt(double t_s, const GroundRadiusFn& groundRadius, const Ellipsoid& shape) const {
   glm::dvec3 d = directionAt(t_s);
-  return d * (groundRadius(d) + heightAt(t_s));
+  return pointAbove(d, groundRadius(d), heightAt(t_s), shape);
 }
 
-Camera CameraPath::cameraAt(double t_s, double sphereRadius_m, double aspect,
-                            const GroundRadiusFn& groundRadius) const {
-  return cameraFromPose(poseAt(t_s), referenceRadiusAt(t_s, groundRadius, sphereRadius_m), sphereRadius_m, aspect);
+Camera CameraPath::cameraAt(double t_s, double sphereRadius_m, double aspect, const GroundRadiusFn& groundRadius,
+                            const Ellipsoid& shape) const {
+  const double reference = referenceRadiusAt(t_s, groundRadius, sphereRadius_m);
+  if (shape.isSphere()) return cameraFromPose(poseAt(t_s), reference, sphereRadius_m, aspect);
+  return cameraFromPose(poseAt(t_s), reference, shape, aspect);
 }
 
 }  // namespace globe

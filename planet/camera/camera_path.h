@@ -85,13 +85,18 @@ class CameraPath {
   double sphereWeightAt(double t_s) const;
   // The radius heights are measured from (metres from the centre) at time t.
   double referenceRadiusAt(double t_s, const GroundRadiusFn& groundRadius, double sphereRadius_m) const;
-  // direction * (referenceRadius + height), metres, planet-centred.
-  glm::dvec3 positionAt(double t_s, const GroundRadiusFn& groundRadius, double sphereRadius_m) const;
+  // direction * (referenceRadius + height), metres, planet-centred. `shape`, when not a sphere, is the
+  // planet's ellipsoid: the direction is then the geodetic normal, ground "radii" are a + ellipsoidal
+  // height, sphereRadius_m is a, and the point is Ellipsoid::pointAbove.
+  glm::dvec3 positionAt(double t_s, const GroundRadiusFn& groundRadius, double sphereRadius_m,
+                        const Ellipsoid& shape = Ellipsoid()) const;
   // Same, measuring sphere-referenced heights from the ground too: exact for ground-only paths, and
   // its direction is always exact (what `globe bench` lights the scene from).
-  glm::dvec3 positionAt(double t_s, const GroundRadiusFn& groundRadius) const;
-  // The camera at time t: cameraFromPose(poseAt(t), referenceRadiusAt(t, ...), sphereRadius_m, aspect).
-  Camera cameraAt(double t_s, double sphereRadius_m, double aspect, const GroundRadiusFn& groundRadius) const;
+  glm::dvec3 positionAt(double t_s, const GroundRadiusFn& groundRadius, const Ellipsoid& shape = Ellipsoid()) const;
+  // The camera at time t: cameraFromPose(poseAt(t), referenceRadiusAt(t, ...), sphereRadius_m, aspect)
+  // (with `shape` when it is not a sphere).
+  Camera cameraAt(double t_s, double sphereRadius_m, double aspect, const GroundRadiusFn& groundRadius,
+                  const Ellipsoid& shape = Ellipsoid()) const;
 
  private:
   struct Key {

@@ -22,6 +22,7 @@ gpu::ElevationParams packElevationParams(const PlanetDescription& planet) {
   assert(validatePlanet(planet).ok());
   gpu::ElevationParams p{};
   p.radius_m = planet.radius_m;
+  p.polar_radius_m = planetShape(planet).polarRadius_m();  // = radius_m on a sphere (a * (1 - 0))
   p.sea_level_m = planet.sea_level_m;
   p.layer_count = static_cast<gpu::uint>(planet.layers.size());
   for (std::size_t i = 0; i < planet.layers.size() && i < GLOBE_MAX_ELEVATION_LAYERS; ++i) {
@@ -56,6 +57,7 @@ ElevationSpecialization elevationSpecialization(const gpu::ElevationParams& para
     s[GLOBE_ELEVATION_SPEC_KIND + l] = layer.kind;
     s[GLOBE_ELEVATION_SPEC_MODULATOR + l] = static_cast<std::uint32_t>(layer.modulator);
   }
+  s[GLOBE_ELEVATION_SPEC_ELLIPSOID] = params.polar_radius_m != params.radius_m ? 1U : 0U;
   return s;
 }
 
@@ -132,7 +134,8 @@ ElevationModel::ElevationModel(const PlanetDescription& planet)
     : params_(packElevationParams(planet)),
       colourRamp_(packColourRamp(planet.colour_ramp)),
       water_(planet.water),
-      bounds_(elevationBounds(planet)) {
+      bounds_(elevationBounds(planet)),
+      shape_(planetShape(planet)) {
   if (planet.sources.empty()) return;
   sources_ = std::make_shared<const SourceMosaic>(planet.sources, planet.radius_m, planet.seed);
   if (sources_->layers().empty()) return;
@@ -162,7 +165,18 @@ double ElevationModel::elevation_m(const glm::dvec3& unit_direction) const {
 }
 
 glm::dvec3 ElevationModel::surfacePosition(const glm::dvec3& unit_direction) const {
-  return unit_direction * (params_.radius_m + elevation_m(unit_direction));
+  return shape_.position(unit_direction, elevation_m(unit_direction));
+}
+
+double ElevationModel::heightAboveTerrain_m(const glm::dvec3& p, bool aboveWater) const {
+  auto below = [&](const glm::dvec3& d) { return aboveWater ? visibleElevation_m(d) : elevation_m(d); };
+  if (!shape_.isSphere()) {
+    const GeodeticPoint g = shape_.geodeticFromGeocentric(p);
+    return g.height_m - below(Ellipsoid::normalAt(g));
+  }
+  const double r = std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
+  if (!(r > 0)) return -params_.radius_m;
+  return r - params_.radius_m - below(p / r);
 }
 
 float ElevationModel::elevationFloat_m(const glm::vec3& unit_direction) const {

@@ -3,7 +3,9 @@
 // mirror (shaders/include/elevation.glsl) must reproduce it to <= 1e-6 m; both evaluate from the same
 // packed gpu::ElevationParams (shaders/include/elevation_params.h).
 //
-// Evaluation, for a unit direction d (operation order is part of the contract, see elevation.cpp):
+// Evaluation, for a unit direction d (on an ellipsoid: the geodetic normal, so elevation is a
+// function of geodetic latitude/longitude; the noise point stays d * radius_m) (operation order is part of the
+// contract, see elevation.cpp):
 //   p = d * radius_m                                    (metres, the point on the sphere)
 //   for each layer l:  sum = sum_i amp_i * t(noise(p * freq_i, seed_i))
 //                      sum *= floor + (1 - floor) * smoothstep((value[mod] - low) / (high - low))
@@ -53,13 +55,22 @@ class ElevationModel {
   SourceTerm sourceTerm(const glm::dvec3& unit_direction, double sample_spacing_m = 0.0) const;
   // The mosaic of the planet's [[sources]], or nullptr for a procedural planet.
   const SourceMosaic* sources() const { return sources_.get(); }
-  // unit_direction * (radius_m + elevation_m), metres, planet-centred.
+  // The terrain point over a unit geodetic normal: shape().position(unit_direction, elevation_m), metres,
+  // planet-centred; on a sphere unit_direction * (radius_m + elevation_m).
   glm::dvec3 surfacePosition(const glm::dvec3& unit_direction) const;
+  // Height of a planet-fixed point above the terrain below it (metres, negative inside): on a sphere
+  // |p| - radius_m - elevation_m(p / |p|); on an ellipsoid the ellipsoidal height minus the elevation
+  // at the geodetic normal below p (GeographicLib).
+  // `aboveWater`: above the visible surface (visibleElevation_m) instead of the ground.
+  double heightAboveTerrain_m(const glm::dvec3& position_m, bool aboveWater = false) const;
   // The same evaluation carried out entirely in float (radius, point, frequencies, noise): only to
   // measure what double buys (docs/elevation.md); never use it for geometry.
   float elevationFloat_m(const glm::vec3& unit_direction) const;
 
+  // The sphere's radius, or the ellipsoid's equatorial radius (metres).
   double radius_m() const { return params_.radius_m; }
+  // The reference surface elevations are heights above (along its geodetic normals).
+  const Ellipsoid& shape() const { return shape_; }
   double seaLevel_m() const { return params_.sea_level_m; }
   // The planet has a sea ([water]): the renderer draws a water surface at sea level over lower ground.
   bool drawsWater() const { return water_.enabled; }
@@ -79,6 +90,7 @@ class ElevationModel {
   gpu::ColourRampParams colourRamp_{};
   Water water_;
   ElevationRange bounds_{};
+  Ellipsoid shape_;
   std::shared_ptr<const SourceMosaic> sources_;  // shared by copies
 };
 

@@ -117,6 +117,9 @@ std::vector<Error> validatePlanetAll(const PlanetDescription& planet) {
   };
   const bool radius_ok = std::isfinite(planet.radius_m) && planet.radius_m > 0.0 && planet.radius_m <= kMaxRadius_m;
   if (!radius_ok) fail("radius_m", fmt::format("must be > 0 and <= {:g} m", kMaxRadius_m));
+  if (!(std::isfinite(planet.flattening) && planet.flattening >= 0.0 && planet.flattening < kMaxFlattening)) {
+    fail("flattening", fmt::format("must be in [0, {:g})", kMaxFlattening));
+  }
   if (!inRange(planet.sea_level_m, -1e6, 1e6)) fail("sea_level_m", "must be finite and within [-1e6, 1e6] m");
   if (!(std::isfinite(planet.surface_gravity_m_s2) && planet.surface_gravity_m_s2 > 0.0 &&
         planet.surface_gravity_m_s2 <= 1e4)) {
@@ -180,12 +183,29 @@ Status validatePlanet(const PlanetDescription& planet) {
   return Ok{};
 }
 
+Ellipsoid planetShape(const PlanetDescription& planet) {
+  return Ellipsoid::create(planet.radius_m, planet.flattening).value();
+}
+
 std::optional<Error> terrainReachesCentre(const PlanetDescription& planet) {
   const ElevationRange range = elevationBounds(planet);
-  if (range.min_m > -planet.radius_m) return std::nullopt;
-  return fieldError("layers", fmt::format("the layers can reach {:g} m, deeper than radius_m = {:g} m: lower the "
-                                          "amplitudes or offsets",
-                                          range.min_m, planet.radius_m));
+  if (planet.flattening == 0.0) {
+    if (range.min_m > -planet.radius_m) return std::nullopt;
+    return fieldError("layers", fmt::format("the layers can reach {:g} m, deeper than radius_m = {:g} m: lower the "
+                                            "amplitudes or offsets",
+                                            range.min_m, planet.radius_m));
+  }
+  // On an ellipsoid the node bounds need every surface point farther from the centre than the largest
+  // offset of p(n) from its normal line (LodSelector::create checks the same).
+  const Ellipsoid shape = planetShape(planet);
+  double axisMin = 0.0, axisMax = 0.0;
+  shape.axisOffsetRange_m(0.0, 1.0, axisMin, axisMax);
+  const double deepest_m = axisMax * (1.0 + 1e-9) - shape.polarRadius_m();
+  if (range.min_m > deepest_m) return std::nullopt;
+  return fieldError("layers", fmt::format("the layers can reach {:g} m, deeper than {:g} m, the limit of this "
+                                          "ellipsoid (polar radius minus its largest normal offset): lower the "
+                                          "amplitudes or offsets, or the flattening",
+                                          range.min_m, deepest_m));
 }
 
 int maxOctavesForPrecision(double radius_m, const ElevationLayer& layer) {

@@ -15,6 +15,7 @@
 
 #include "planet/core/error.h"
 #include "planet/elevation/colour_ramp.h"
+#include "planet/geometry/ellipsoid.h"
 #include "planet/sources/source_description.h"
 
 namespace globe {
@@ -62,13 +63,19 @@ struct ElevationLayer {
 inline constexpr int kMaxElevationLayers = 8;  // = GLOBE_MAX_ELEVATION_LAYERS (GPU struct size)
 inline constexpr int kMaxOctavesPerLayer = 24;
 inline constexpr double kMaxRadius_m = 1.0e9;  // 7e7 m (a gas giant) is the largest preset
+// Flattening must stay below this (b > a / 2); WGS84's is 1 / 298.257223563.
+inline constexpr double kMaxFlattening = 0.5;
 // Largest lattice coordinate (radius * finest frequency) allowed: keeps the noise's cell offset
 // exact to 2^-12 cells in double and the 64-bit lattice index far from overflow.
 inline constexpr double kMaxLatticeCoordinate = 1099511627776.0;  // 2^40
 
 struct PlanetDescription {
   std::string name = "unnamed";
-  double radius_m = 6371000.0;         // sphere radius (elevation 0), metres, (0, kMaxRadius_m]
+  double radius_m =
+      6371000.0;  // sphere radius, or the ellipsoid's equatorial radius a (elevation 0), metres, (0, kMaxRadius_m]
+  // (a - b) / a of the reference ellipsoid (planet/geometry/ellipsoid.h), [0, kMaxFlattening); 0 = a sphere
+  // of radius_m. Elevation is the ellipsoidal height along the geodetic normal. In a file: `shape`.
+  double flattening = 0.0;
   std::uint64_t seed = 0;              // noise seed; every layer derives its own from it
   double sea_level_m = 0.0;            // elevation of the sea surface, metres (stats; drawn with [water])
   std::vector<ElevationLayer> layers;  // 1 .. kMaxElevationLayers, evaluated in order
@@ -89,6 +96,9 @@ struct ElevationRange {
   double max_m = 0.0;
 };
 ElevationRange elevationBounds(const PlanetDescription& planet);
+
+// The planet's reference surface: Ellipsoid::create(radius_m, flattening); `planet` must be valid.
+Ellipsoid planetShape(const PlanetDescription& planet);
 
 // Wavelength of a layer's last (finest) octave, metres.
 double finestWavelength_m(const ElevationLayer& layer);

@@ -19,8 +19,9 @@ namespace globe {
 namespace {
 
 constexpr std::string_view kTopKeys[] = {
-    "name", "radius_m", "seed",  "sea_level_m", "surface_gravity_m_s2", "default_quality", "layers", "colour_ramp",
-    "rock", "snow",     "water", "sources"};
+    "name",        "radius_m", "shape", "seed",  "sea_level_m", "surface_gravity_m_s2", "default_quality", "layers",
+    "colour_ramp", "rock",     "snow",  "water", "sources"};
+constexpr std::string_view kShapeKeys[] = {"equatorial_radius_m", "flattening"};
 constexpr std::string_view kStopKeys[] = {"elevation_m", "colour"};
 constexpr std::string_view kRockKeys[] = {"slope_deg", "blend_deg", "colour"};
 constexpr std::string_view kSnowKeys[] = {"elevation_m", "blend_m", "max_slope_deg", "colour"};
@@ -74,7 +75,7 @@ void readLayerFrequency(PlanetTomlReader& r, const toml::node& node, const std::
     r.fail(node.source(), field, "must be > 0");
   } else {
     read.layer.wavelength_m = 1.0 / *v;
-    r.rememberAs(read.prefix + "wavelength_m", field, node.source());
+    r.rememberAs(read.prefix + "wavelength_m", field, node.source(), /*inverse=*/true);
   }
 }
 
@@ -272,6 +273,23 @@ void readWater(PlanetTomlReader& r, const toml::table& t, Water& water) {
   }
 }
 
+// shape = { equatorial_radius_m = a, flattening = f }: the reference ellipsoid instead of radius_m's
+// sphere. Both keys are required; validation errors on radius_m / flattening name these keys.
+void readShape(PlanetTomlReader& r, const toml::table& t, PlanetDescription& planet) {
+  for (auto&& [key, node] : t) {
+    const std::string k(key.str());
+    if (!isKnownKey(k, kShapeKeys)) {
+      r.fail(key.source(), "shape." + k, unknownKeyMessage(k, kShapeKeys));
+      continue;
+    }
+    const bool radius = k == "equatorial_radius_m";
+    if (auto v = r.number(node, "shape." + k)) (radius ? planet.radius_m : planet.flattening) = *v;
+    r.rememberAs(radius ? "radius_m" : "flattening", "shape." + k, node.source());
+  }
+  for (std::string_view k : kShapeKeys)
+    if (!t.contains(k)) r.fail(t.source(), "shape." + std::string(k), "missing (required in shape)");
+}
+
 void readTopLevel(PlanetTomlReader& r, const std::string& k, const toml::node& node, PlanetDescription& planet) {
   if (k == "name") {
     if (auto v = r.string(node, k)) planet.name = *v;
@@ -309,6 +327,8 @@ void readTopLevel(PlanetTomlReader& r, const std::string& k, const toml::node& n
       planet.colour_ramp.stops.clear();
       for (std::size_t i = 0; i < stops->size(); ++i) readStop(r, *(*stops)[i].as_table(), i, planet.colour_ramp);
     }
+  } else if (k == "shape") {
+    if (const toml::table* t = r.table(node, k, "shape = { ... }")) readShape(r, *t, planet);
   } else if (k == "rock") {
     if (const toml::table* t = r.table(node, k, "[rock]")) readRock(r, *t, planet.colour_ramp);
   } else if (k == "snow") {
@@ -323,7 +343,8 @@ PlanetFileCheck readPlanet(const toml::table& root, std::string_view source_name
   PlanetFileCheck check;
   PlanetDescription& planet = check.planet;
   planet.name = std::filesystem::path(source_name).stem().string();
-  bool have_radius = false;
+  const toml::node* radius = nullptr;
+  const toml::node* shape = nullptr;
   bool have_layers = false;
 
   for (auto&& [key, node] : root) {
@@ -332,7 +353,8 @@ PlanetFileCheck readPlanet(const toml::table& root, std::string_view source_name
       r.fail(key.source(), k, unknownKeyMessage(k, kTopKeys));
       continue;
     }
-    have_radius = have_radius || k == "radius_m";
+    if (k == "radius_m") radius = &node;
+    if (k == "shape") shape = &node;
     have_layers = have_layers || k == "layers";
     if (k == "sources") {
       readSources(r, node, std::filesystem::path(source_name).parent_path().string(), planet.sources);
@@ -340,7 +362,10 @@ PlanetFileCheck readPlanet(const toml::table& root, std::string_view source_name
       readTopLevel(r, k, node, planet);
     }
   }
-  if (!have_radius) r.fail(root.source(), "radius_m", "missing (required)");
+  if (radius == nullptr && shape == nullptr) r.fail(root.source(), "radius_m", "missing (required, or shape)");
+  if (radius != nullptr && shape != nullptr) {
+    r.fail(shape->source(), "shape", "give radius_m (a sphere) or shape (an ellipsoid), not both");
+  }
   if (!have_layers) r.fail(root.source(), "layers", "missing (required, at least one [[layers]])");
 
   // Ranges and cross-field rules live in one place; each error points at the value that was read.

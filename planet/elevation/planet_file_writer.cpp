@@ -33,10 +33,15 @@ std::string formatPlanetToml(const PlanetDescription& planet) {
   assert(validatePlanet(planet).ok());
   std::string out;
   auto line = std::back_inserter(out);
+  // A sphere keeps radius_m (files written before ellipsoids read the same); an ellipsoid is a shape.
+  const std::string shape = planet.flattening == 0.0
+                                ? fmt::format("radius_m = {}", number(planet.radius_m))
+                                : fmt::format("shape = {{ equatorial_radius_m = {}, flattening = {} }}",
+                                              number(planet.radius_m), number(planet.flattening));
   fmt::format_to(line,
-                 "name = {}\nradius_m = {}\nseed = {}\nsea_level_m = {}\nsurface_gravity_m_s2 = {}\n"
+                 "name = {}\n{}\nseed = {}\nsea_level_m = {}\nsurface_gravity_m_s2 = {}\n"
                  "default_quality = \"{}\"\n",
-                 quoted(planet.name), number(planet.radius_m), planet.seed, number(planet.sea_level_m),
+                 quoted(planet.name), shape, planet.seed, number(planet.sea_level_m),
                  number(planet.surface_gravity_m_s2), qualityPresetName(planet.default_quality));
   for (const ElevationLayer& l : planet.layers) {
     fmt::format_to(line,

@@ -87,10 +87,13 @@ void PlanetTomlReader::addValidationErrors(std::vector<Error> found) {
       e.column = static_cast<int>(it->second.begin.column);
     }
     if (auto spelled = spelledAs_.find(e.field); spelled != spelledAs_.end()) {
-      const std::string shortName = e.field.substr(e.field.rfind('.') + 1);
-      const std::string keyInFile = spelled->second.substr(spelled->second.rfind('.') + 1);
-      e.message = fmt::format("gives {} = 1 / {}, which {}", shortName, keyInFile, e.message);
-      e.field = spelled->second;
+      const std::string& inFile = spelled->second.keyInFile;
+      if (spelled->second.inverse) {
+        const std::string shortName = e.field.substr(e.field.rfind('.') + 1);
+        const std::string keyInFile = inFile.substr(inFile.rfind('.') + 1);
+        e.message = fmt::format("gives {} = 1 / {}, which {}", shortName, keyInFile, e.message);
+      }
+      e.field = inFile;
     }
     errors_.push_back(std::move(e));
   }

@@ -39,11 +39,13 @@ class PlanetTomlReader {
   void fail(const toml::source_region& where, std::string field, std::string message);
 
   void remember(const std::string& field, const toml::source_region& where) { where_[field] = where; }
-  // A value the file gives through another key (wavelength_m = 1 / frequency_per_m): its errors
-  // name the key that is in the file.
-  void rememberAs(const std::string& field, const std::string& keyInFile, const toml::source_region& where) {
+  // A value the file gives through another key (wavelength_m = 1 / frequency_per_m, radius_m =
+  // shape.equatorial_radius_m): its errors name the key that is in the file. `inverse`: the file
+  // gives the reciprocal, which the message says.
+  void rememberAs(const std::string& field, const std::string& keyInFile, const toml::source_region& where,
+                  bool inverse = false) {
     where_[field] = where;
-    spelledAs_[field] = keyInFile;
+    spelledAs_[field] = {keyInFile, inverse};
   }
 
   // Adds validatePlanetAll's findings at the positions of the values they name.
@@ -71,7 +73,11 @@ class PlanetTomlReader {
   std::vector<Error> errors_;
   std::set<std::string> failed_fields_;
   std::map<std::string, toml::source_region> where_;
-  std::map<std::string, std::string> spelledAs_;  // field -> the key in the file that gave it
+  struct Spelling {
+    std::string keyInFile;
+    bool inverse = false;
+  };
+  std::map<std::string, Spelling> spelledAs_;  // field -> the key in the file that gave it
 };
 
 }  // namespace globe

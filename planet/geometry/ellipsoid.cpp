@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <GeographicLib/Geocentric.hpp>
 #include <GeographicLib/Math.hpp>
@@ -20,7 +21,7 @@ Result<Ellipsoid> Ellipsoid::create(double a, double f, const char* field) {
   if (!(std::isfinite(a) && a > 0.0 && a <= 1e9)) {
     return Error::inField(prefix + ".equatorial_radius_m", "must be in (0, 1e9]");
   }
-  if (!(std::isfinite(f) && f >= 0.0 && f <= 0.5)) return Error::inField(prefix + ".flattening", "must be in [0, 0.5]");
+  if (!(std::isfinite(f) && f >= 0.0 && f < 0.5)) return Error::inField(prefix + ".flattening", "must be in [0, 0.5)");
   return Ellipsoid(a, f);
 }
 
@@ -62,10 +63,38 @@ void Ellipsoid::axisOffsetRange_m(double lowZ, double highZ, double& min_m, doub
   max_m = (lo <= peak && peak <= hi) ? std::max({atLo, atHi, axisOffset_m(peak)}) : std::max(atLo, atHi);
 }
 
-glm::dvec3 Ellipsoid::geocentricFromGeodetic(const GeodeticPoint& g) const {
+namespace {
+
+glm::dvec3 forward(const GeographicLib::Geocentric& g, double lat, double lon, double h, glm::dvec3 (*enu)[3]) {
   double x = 0.0, y = 0.0, z = 0.0;
-  geocentric(a_, f_).Forward(g.latitude_deg, g.longitude_deg, g.height_m, x, y, z);
+  if (enu == nullptr) {
+    g.Forward(lat, lon, h, x, y, z);
+    return {x, y, z};
+  }
+  std::vector<double> m(9);  // row-major; columns are east, north, up
+  g.Forward(lat, lon, h, x, y, z, m);
+  (*enu)[0] = {m[0], m[3], m[6]};
+  (*enu)[1] = {m[1], m[4], m[7]};
+  (*enu)[2] = {m[2], m[5], m[8]};
   return {x, y, z};
+}
+
+}  // namespace
+
+glm::dvec3 Ellipsoid::geocentricFromGeodetic(const GeodeticPoint& g, glm::dvec3 (*enu)[3]) const {
+  return forward(geocentric(a_, f_), g.latitude_deg, g.longitude_deg, g.height_m, enu);
+}
+
+glm::dvec3 Ellipsoid::pointAbove(double latitude_deg, double longitude_deg, double referenceRadius_m, double height_m,
+                                 glm::dvec3 (*enu)[3]) const {
+  if (isSphere()) return forward(geocentric(referenceRadius_m, 0.0), latitude_deg, longitude_deg, height_m, enu);
+  return forward(geocentric(a_, f_), latitude_deg, longitude_deg, (referenceRadius_m - a_) + height_m, enu);
+}
+
+GeodeticPoint Ellipsoid::geodeticAbove(const glm::dvec3& position_m, double referenceRadius_m) const {
+  GeodeticPoint g = geodeticFromGeocentric(position_m);
+  g.height_m -= referenceRadius_m - a_;
+  return g;
 }
 
 GeodeticPoint Ellipsoid::geodeticFromGeocentric(const glm::dvec3& p) const {
@@ -75,7 +104,10 @@ GeodeticPoint Ellipsoid::geodeticFromGeocentric(const glm::dvec3& p) const {
 }
 
 glm::dvec3 Ellipsoid::normalBelow(const glm::dvec3& position_m) const {
-  const GeodeticPoint g = geodeticFromGeocentric(position_m);
+  return normalAt(geodeticFromGeocentric(position_m));
+}
+
+glm::dvec3 Ellipsoid::normalAt(const GeodeticPoint& g) {
   double sinLat = 0.0, cosLat = 0.0, sinLon = 0.0, cosLon = 0.0;
   GeographicLib::Math::sincosd(g.latitude_deg, sinLat, cosLat);
   GeographicLib::Math::sincosd(g.longitude_deg, sinLon, cosLon);

@@ -26,7 +26,7 @@ class Ellipsoid {
   // The unit sphere. Node bounds on a sphere depend on neither radius nor anything else of it, so
   // this is also the default shape of NodeBounds.
   Ellipsoid() = default;
-  // equatorialRadius_m in (0, 1e9], flattening in [0, 0.5] (oblate only: the quadtree's bounds
+  // equatorialRadius_m in (0, 1e9], flattening in [0, 0.5) (oblate only: the quadtree's bounds
   // assume b <= a). Errors name `field`.
   static Result<Ellipsoid> create(double equatorialRadius_m, double flattening, const char* field = "shape");
   static Ellipsoid sphere(double radius_m);
@@ -56,13 +56,26 @@ class Ellipsoid {
   // even and unimodal on [0, 1]).
   void axisOffsetRange_m(double lowZ, double highZ, double& min_m, double& max_m) const;
 
-  // Geodetic <-> planet-fixed metres, through GeographicLib::Geocentric.
-  glm::dvec3 geocentricFromGeodetic(const GeodeticPoint& point) const;
+  // Geodetic <-> planet-fixed metres, through GeographicLib::Geocentric. `enu`, when given, receives
+  // the local east, north and up unit vectors (planet-fixed) at the point's latitude/longitude.
+  glm::dvec3 geocentricFromGeodetic(const GeodeticPoint& point, glm::dvec3 (*enu)[3] = nullptr) const;
+  // How cameras, paths and bodies stand on the ground: the point `height_m` above a reference whose
+  // "radius" is a + its ellipsoidal height (on a sphere: its distance from the centre, so
+  // model.radius_m() + elevation_m(n) is the ground), at geodetic latitude/longitude. On a sphere
+  // exactly the earlier Geocentric(referenceRadius, 0) placement; otherwise Geocentric(a, f) at
+  // ellipsoidal height (referenceRadius - a) + height_m.
+  glm::dvec3 pointAbove(double latitude_deg, double longitude_deg, double referenceRadius_m, double height_m,
+                        glm::dvec3 (*enu)[3] = nullptr) const;
+  // Height of a planet-fixed point above such a reference along the normal below it, and that normal's
+  // latitude/longitude (the inverse of pointAbove).
+  GeodeticPoint geodeticAbove(const glm::dvec3& position_m, double referenceRadius_m) const;
   GeodeticPoint geodeticFromGeocentric(const glm::dvec3& position_m) const;
   // Ellipsoidal height of a planet-fixed point (metres; negative inside).
   double heightAbove_m(const glm::dvec3& position_m) const { return geodeticFromGeocentric(position_m).height_m; }
   // Unit geodetic normal at the surface point nearest to (below) a planet-fixed point.
   glm::dvec3 normalBelow(const glm::dvec3& position_m) const;
+  // Unit geodetic normal at a latitude/longitude (the point's height is ignored).
+  static glm::dvec3 normalAt(const GeodeticPoint& point);
 
  private:
   Ellipsoid(double a, double f);

@@ -48,7 +48,7 @@ struct PrefetchConfig {
 
 struct LodConfig {
   double radius_m = 6371000.0;       // planet radius (metres); the equatorial radius a of an ellipsoid
-  double flattening = 0.0;           // (a - b) / a in [0, 0.5]; 0 = a sphere (Ellipsoid)
+  double flattening = 0.0;           // (a - b) / a in [0, 0.5); 0 = a sphere (Ellipsoid)
   double minElevation_m = -11000.0;  // default node bounds until a payload's real range is known;
   double maxElevation_m = 9000.0;    // minElevation also sets the horizon occluder (R + min)
   LodRangeConfig ranges;

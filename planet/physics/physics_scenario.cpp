@@ -81,7 +81,10 @@ std::vector<PlacedBody> placeBodies(const ElevationModel& model, const ScenarioS
         const glm::dvec3 d = glm::normalize(up * model.radius_m() + (double(a) * east + double(c) * north) * extent);
         ground = std::max(ground, model.radius_m() + model.elevation_m(d));
       }
-    b.spec.position_m = up * (ground + height + extent);
+    // On an ellipsoid `up` is the geodetic normal and `ground` is a + the highest ellipsoidal height.
+    b.spec.position_m = model.shape().isSphere()
+                            ? up * (ground + height + extent)
+                            : model.shape().position(up, ((ground - model.radius_m()) + height) + extent);
     b.spec.velocity_m_s = -up * settings.downwardSpeed_m_s;
     out.push_back(b);
   }
@@ -97,10 +100,7 @@ void addPlacedBodies(PhysicsSimulation& simulation, const ElevationModel& model,
 
 double clearanceAboveExact(const ElevationModel& model, std::span<const glm::dvec3> points) {
   double lowest = std::numeric_limits<double>::infinity();
-  for (const glm::dvec3& p : points) {
-    const double r = glm::length(p);
-    lowest = std::min(lowest, r - (model.radius_m() + model.elevation_m(p / r)));
-  }
+  for (const glm::dvec3& p : points) lowest = std::min(lowest, model.heightAboveTerrain_m(p));
   return lowest;
 }
 
@@ -109,7 +109,9 @@ std::vector<BodyReport> reportBodies(const ElevationModel& model, const PhysicsW
   std::vector<BodyReport> out;
   for (uint32_t id = 0; id < world.bodyCount(); ++id) {
     const BodyState state = world.state(id);
-    const glm::dvec2 latLon = latLonFromPosition(state.position_m);
+    const GeodeticPoint g = model.shape().geodeticFromGeocentric(state.position_m);
+    const glm::dvec2 latLon =
+        model.shape().isSphere() ? latLonFromPosition(state.position_m) : glm::dvec2(g.latitude_deg, g.longitude_deg);
     const std::vector<glm::dvec3> points = world.surfacePoints(id);
     BodyReport r;
     r.id = id;

@@ -51,7 +51,8 @@ PhysicsSimulation::PhysicsSimulation(const ElevationModel& model, CollisionMeshS
                                      const SimulationSettings& settings)
     : model_(model),
       settings_(settings),
-      minSurfaceRadius_m_(std::max(1.0, model.radius_m() + model.bounds().min_m)),
+      // |p| of the lowest terrain: b + min on an ellipsoid (b = a on a sphere).
+      minSurfaceRadius_m_(std::max(1.0, model.shape().polarRadius_m() + model.bounds().min_m)),
       slopeBound_(elevationSlopeBound(model.params())) {
   settings_.physics.planetRadius_m = model.radius_m();
   world_ = std::make_unique<PhysicsWorld>(settings_.physics);

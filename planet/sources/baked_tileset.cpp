@@ -148,9 +148,11 @@ Result<BakedTileset> inspectBakedTileset(const std::string& directory, std::opti
   return t;
 }
 
-std::string sphereCrsWkt(double radius_m, const std::string& planetName) {
+std::string planetCrsWkt(double radius_m, const std::string& planetName, double flattening) {
   OGRSpatialReference srs;
-  srs.SetGeogCS(("globe " + planetName).c_str(), "globe sphere", "sphere", radius_m, 0.0, "Reference meridian", 0.0,
+  const bool sphere = flattening == 0.0;
+  srs.SetGeogCS(("globe " + planetName).c_str(), sphere ? "globe sphere" : "globe ellipsoid",
+                sphere ? "sphere" : "ellipsoid", radius_m, sphere ? 0.0 : 1.0 / flattening, "Reference meridian", 0.0,
                 SRS_UA_DEGREE, CPLAtof(SRS_UA_DEGREE_CONV));
   char* wkt = nullptr;
   srs.exportToWkt(&wkt);

@@ -32,9 +32,11 @@ bool looksLikeBakedTileset(const std::string& directory);
 // the file at fault (a missing or malformed bake.json / layer.json, a foreign tiling).
 Result<BakedTileset> inspectBakedTileset(const std::string& directory, std::optional<BakeFormat> expected = {});
 
-// WKT of longitude/latitude on a sphere of `radius_m` (inverse flattening 0): the CRS of baked COG
-// tiles (engine/bake/cog_tile.cpp) and of the quantized-mesh raster read back.
-std::string sphereCrsWkt(double radius_m, const std::string& planetName);
+// WKT of (geodetic) longitude/latitude on the planet's sphere of `radius_m` (inverse flattening 0), or
+// on its ellipsoid of equatorial radius `radius_m` and `flattening`: the CRS of baked COG tiles
+// (engine/bake/cog_tile.cpp) and of the quantized-mesh raster read back (bake.json keeps no
+// flattening, so a tileset read back is labelled a sphere; its heights are the same either way).
+std::string planetCrsWkt(double radius_m, const std::string& planetName, double flattening = 0.0);
 
 // Registers the GDAL driver that opens a baked tileset directory as a raster (once; called by
 // registerGdalDrivers, gdal_raster.h).

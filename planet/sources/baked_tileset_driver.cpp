@@ -163,7 +163,7 @@ GDALDataset* QuantizedMeshDataset::open(const BakedTileset& tileset) {
                                west.north_deg + 0.5 * step_deg, 0.0,      -step_deg};
   std::copy(transform, transform + 6, ds->transform_);
   if (tileset.radius_m > 0.0) {
-    ds->srs_.importFromWkt(sphereCrsWkt(tileset.radius_m, tileset.name).c_str());
+    ds->srs_.importFromWkt(planetCrsWkt(tileset.radius_m, tileset.name).c_str());
   } else {
     ds->srs_.SetWellKnownGeogCS("WGS84");
   }

@@ -25,7 +25,7 @@ double payloadQuantum_m(int level, double radius_m) {
 glm::dvec3 payloadCentre(const NodeId& node, const ElevationModel& model, bool waterSurface) {
   double q = payloadQuantum_m(node.level, model.radius_m());
   const glm::dvec3 direction = nodeCentreDirection(RhombusFaceMapping::get(), node);
-  glm::dvec3 c = waterSurface ? direction * (model.radius_m() + model.visibleElevation_m(direction))
+  glm::dvec3 c = waterSurface ? model.shape().position(direction, model.visibleElevation_m(direction))
                               : model.surfacePosition(direction);
   return {std::floor(c.x / q + 0.5) * q, std::floor(c.y / q + 0.5) * q, std::floor(c.z / q + 0.5) * q};
 }
@@ -133,7 +133,12 @@ double unresolvedRelief_m(const gpu::ElevationParams& params, double sampleSpaci
       amplitude *= std::abs(layer.gain);
     }
   }
-  double sag = sampleSpacing_m * sampleSpacing_m / (8.0 * params.radius_m);
+  // The sag grows with the curvature: on an ellipsoid the tightest radius is the meridian's at the
+  // equator, b^2 / a.
+  const double curvatureRadius_m = params.polar_radius_m == params.radius_m
+                                       ? params.radius_m
+                                       : params.polar_radius_m * params.polar_radius_m / params.radius_m;
+  double sag = sampleSpacing_m * sampleSpacing_m / (8.0 * curvatureRadius_m);
   return relief + sag;
 }
 
@@ -164,6 +169,16 @@ PayloadSurface unpackPayloadSurface(float word) {
   return {glm::vec3(byte(0) * byte(0), byte(1) * byte(1), byte(2) * byte(2)), byte(3)};
 }
 
+namespace {
+
+// The shader's globeEllipsoidGradient: the unit vector (x / a^2, y / a^2, z / b^2) at p.
+glm::dvec3 ellipsoidGradientOf(const gpu::ElevationParams& e, const glm::dvec3& p) {
+  const double a2 = e.radius_m * e.radius_m, b2 = e.polar_radius_m * e.polar_radius_m;
+  return normalised({p.x / a2, p.y / a2, p.z / b2});
+}
+
+}  // namespace
+
 RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
                                  std::span<glm::vec4> slot, bool waterSurface) {
   const bool sea = waterSurface && model.drawsWater();
@@ -186,7 +201,7 @@ RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::Payload
       const SourceTerm term = model.sourceTerm(dir, spacing_m);
       double h = combineSourceTerm(model.proceduralElevation_m(dir), term);
       const double drawn = sea ? std::max(h, model.seaLevel_m()) : h;
-      glm::dvec3 p = dir * (model.radius_m() + drawn);
+      glm::dvec3 p = model.shape().position(dir, drawn);  // on a sphere dir * (radius + drawn)
       positions[index] = p;
       holes[index] = term.hole;
       elevations[index] = drawn;
@@ -211,7 +226,11 @@ RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::Payload
       glm::dvec3 c{du.y * dv.z - du.z * dv.y, du.z * dv.x - du.x * dv.z, du.x * dv.y - du.y * dv.x};
       glm::dvec3 nrm = normalised(c);
       const size_t vertex = size_t(vj + 1) * size_t(s) + size_t(vi + 1);
-      const double cosSlope = std::clamp(glm::dot(nrm, normalised(positions[vertex])), 0.0, 1.0);
+      // The vertical: radial on a sphere; on an ellipsoid its gradient at the point (= the geodetic
+      // normal to ~h f / a; the shader's globeEllipsoidGradient).
+      const glm::dvec3 up = model.shape().isSphere() ? normalised(positions[vertex])
+                                                     : ellipsoidGradientOf(model.params(), positions[vertex]);
+      const double cosSlope = std::clamp(glm::dot(nrm, up), 0.0, 1.0);
       const glm::vec3 albedo = rampColour(model.colourRamp(), float(elevations[vertex]), float(cosSlope));
       const size_t index = size_t(j + 1) * size_t(s) + size_t(i + 1);
       slot[normals + index] =
@@ -230,14 +249,16 @@ double drawnSurfaceRadius(const ElevationModel& model, const glm::dvec3& unitDir
   const int i = std::clamp(int(std::floor(fu)), 0, n - 1), j = std::clamp(int(std::floor(fv)), 0, n - 1);
   auto sample = [&](int a, int b) { return model.surfacePosition(payloadSampleDirection(job, cells, a, b)); };
   const glm::dvec3 p00 = sample(i, j), p10 = sample(i + 1, j), p11 = sample(i + 1, j + 1), p01 = sample(i, j + 1);
-  // Ray from the centre along the direction against the cell's two triangles (Moller-Trumbore); the
-  // (u, v) cell and the flat triangles can disagree by a hair at their edges, hence the fallback.
+  // Ray along the direction (the geodetic normal) from the point a below the surface on it — the centre
+  // on a sphere — against the cell's two triangles (Moller-Trumbore); the (u, v) cell and the flat
+  // triangles can disagree by a hair at their edges, hence the fallback.
+  const glm::dvec3 origin = model.shape().surfacePoint(unitDirection) - unitDirection * model.radius_m();
   double best = -1.0, fallback = 0.0;
   for (const auto& [a, b, c] : {std::array{p00, p10, p11}, std::array{p00, p11, p01}}) {
     const glm::dvec3 e1 = b - a, e2 = c - a, pv = glm::cross(unitDirection, e2);
     const double det = glm::dot(e1, pv);
     if (std::abs(det) < 1e-300) continue;
-    const glm::dvec3 tv = -a;
+    const glm::dvec3 tv = origin - a;
     const double bu = glm::dot(tv, pv) / det;
     const glm::dvec3 qv = glm::cross(tv, e1);
     const double bv = glm::dot(unitDirection, qv) / det;

@@ -67,7 +67,8 @@ double payloadGeometricError_m(std::span<const glm::vec4> slot, uint32_t cells);
 RadiusRange paddedRadiusRange(const gpu::ElevationParams& params, const RadiusRange& payload, int level,
                               uint32_t cells);
 
-// Radius (metres from the planet centre) of the surface the renderer draws along `unitDirection`
+// Radius (metres from the planet centre; on an ellipsoid a + the drawn surface's ellipsoidal height, the
+// "reference radius" of Ellipsoid::pointAbove) of the surface the renderer draws along `unitDirection`
 // where the nodes are at `level` with `cells` cells per side and unmorphed (the view around a ground
 // camera): the flat triangle of the payload grid the direction passes through, each cell split
 // along its (i, j)-(i+1, j+1) diagonal like the renderer. It differs from the true ground

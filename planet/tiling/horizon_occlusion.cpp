@@ -7,11 +7,11 @@
 
 namespace globe {
 
-std::optional<glm::dvec3> horizonOcclusionPoint(std::span<const glm::dvec3> positions_m, double radius_m,
+std::optional<glm::dvec3> horizonOcclusionPoint(std::span<const glm::dvec3> positions_m, const glm::dvec3& radii_m,
                                                 const glm::dvec3& direction) {
   double t = 1.0;
   for (const glm::dvec3& p_m : positions_m) {
-    const glm::dvec3 p = p_m / radius_m;
+    const glm::dvec3 p = p_m / radii_m;
     const double m = std::max(1.0, glm::length(p));
     const glm::dvec3 unit = glm::normalize(p);
     const double cos_alpha = glm::dot(direction, unit);

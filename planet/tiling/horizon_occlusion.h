@@ -1,6 +1,6 @@
 #pragma once
-// The horizon-occlusion point of quantized-mesh tiles, on a spherical planet. In "scaled space"
-// (positions divided by the radius, so the planet is the unit sphere) the point H = t * d lies on
+// The horizon-occlusion point of quantized-mesh tiles. In "scaled space" (positions divided by the
+// radii (a, a, b), so the planet's sphere or ellipsoid is the unit sphere [Ring 2013]) the point H = t * d lies on
 // the axis d of a tile; a client culls the tile when H is below its horizon. That is safe when every
 // vertex P lies inside the cone of lines from H tangent to the sphere: then any line of sight to P
 // that clears the sphere also clears it towards H. For P at angle alpha from d with |P| = m >= 1
@@ -16,7 +16,8 @@ namespace globe {
 
 // H in scaled space, or nothing when some vertex is 90 degrees or more (alpha + beta) from d, as for
 // the hemisphere-wide root tiles; `direction` must be a unit vector.
-std::optional<glm::dvec3> horizonOcclusionPoint(std::span<const glm::dvec3> positions_m, double radius_m,
+// `radii_m`: (a, a, b), or (R, R, R) on a sphere; `direction` is in scaled space.
+std::optional<glm::dvec3> horizonOcclusionPoint(std::span<const glm::dvec3> positions_m, const glm::dvec3& radii_m,
                                                 const glm::dvec3& direction);
 
 // True when P (scaled space) lies inside the tangent cone of H (scaled space), with `slack` radians

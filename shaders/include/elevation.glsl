@@ -52,6 +52,7 @@ layout(constant_id = GLOBE_ELEVATION_SPEC_MODULATOR + 4) const int kGlobeModulat
 layout(constant_id = GLOBE_ELEVATION_SPEC_MODULATOR + 5) const int kGlobeModulator5 = -1;
 layout(constant_id = GLOBE_ELEVATION_SPEC_MODULATOR + 6) const int kGlobeModulator6 = -1;
 layout(constant_id = GLOBE_ELEVATION_SPEC_MODULATOR + 7) const int kGlobeModulator7 = -1;
+layout(constant_id = GLOBE_ELEVATION_SPEC_ELLIPSOID) const uint kGlobeEllipsoid = 0u;
 // Per-layer lookups (a spec-constant array can't be a global const); constant-folded for a literal l.
 uint globeLayerOctaves(uint l) {
   return l == 0u ? kGlobeOctaves0 : l == 1u ? kGlobeOctaves1 : l == 2u ? kGlobeOctaves2 : l == 3u ? kGlobeOctaves3
@@ -113,11 +114,26 @@ uint globeLatticeCornerHash(uint wx, uint wy, uint wz, uint seed) {
 #undef GLOBE_FN
 #endif
 
-// = globe::ElevationModel::surfacePosition: unit_direction * (radius_m + elevation), metres.
-dvec3 globeSurfacePosition(dvec3 unit_direction) {
-  precise double r = GLOBE_ELEVATION_PARAMS.radius_m + globeElevation(unit_direction);
-  precise dvec3 p = unit_direction * r;
+// = globe::Ellipsoid::position: the point at ellipsoidal height h over the unit geodetic normal n,
+// p(n) + h n with p(n) = (a^2 nx, a^2 ny, b^2 nz) / sqrt(a^2 (nx^2 + ny^2) + b^2 nz^2); on a sphere
+// (the specialization constant, so no branch is left) n * (a + h), bit for bit as before.
+dvec3 globePosition(dvec3 n, double h) {
+  if (kGlobeEllipsoid == 0u) {
+    precise double r = GLOBE_ELEVATION_PARAMS.radius_m + h;
+    precise dvec3 p = n * r;
+    return p;
+  }
+  precise double a2 = GLOBE_ELEVATION_PARAMS.radius_m * GLOBE_ELEVATION_PARAMS.radius_m;
+  precise double b2 = GLOBE_ELEVATION_PARAMS.polar_radius_m * GLOBE_ELEVATION_PARAMS.polar_radius_m;
+  precise double inverseN = 1.0lf / sqrt(a2 * (n.x * n.x + n.y * n.y) + b2 * (n.z * n.z));
+  precise dvec3 surface = dvec3(a2 * n.x * inverseN, a2 * n.y * inverseN, b2 * n.z * inverseN);
+  precise dvec3 p = surface + n * h;
   return p;
+}
+
+// = globe::ElevationModel::surfacePosition: globePosition(unit_direction, elevation), metres.
+dvec3 globeSurfacePosition(dvec3 unit_direction) {
+  return globePosition(unit_direction, globeElevation(unit_direction));
 }
 
 #endif  // GLOBE_ELEVATION_GLSL

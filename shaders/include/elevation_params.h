@@ -51,17 +51,17 @@ struct ElevationLayerParams {
 #define GLOBE_ELEVATION_SPEC_OCTAVES 1      // layers[l].octaves, ids 1..8
 #define GLOBE_ELEVATION_SPEC_KIND 9         // layers[l].kind, ids 9..16
 #define GLOBE_ELEVATION_SPEC_MODULATOR 17   // layers[l].modulator (int), ids 17..24
-#define GLOBE_ELEVATION_SPEC_COUNT 25
+#define GLOBE_ELEVATION_SPEC_ELLIPSOID 25   // 1 when polar_radius_m != radius_m (surface on an ellipsoid), else 0
+#define GLOBE_ELEVATION_SPEC_COUNT 26
 
 // The whole elevation function (32 + 8 * 80 = 672 bytes).
 struct ElevationParams {
-  double radius_m;     //  0: sphere radius, metres (elevation 0)
-  double sea_level_m;  //  8: elevation of the sea surface, metres (the payload kernel places lower samples on it with
-                       //  GLOBE_PAYLOAD_SPEC_WATER_SURFACE)
-  uint layer_count;    // 16: layers in use, 1 .. GLOBE_MAX_ELEVATION_LAYERS
-  uint pad0;           // 20
-  uint pad1;           // 24
-  uint pad2;           // 28
+  double radius_m;        //  0: sphere radius or equatorial radius a, metres (elevation 0)
+  double sea_level_m;     //  8: elevation of the sea surface, metres (the payload kernel places lower samples on it
+                          //     with GLOBE_PAYLOAD_SPEC_WATER_SURFACE)
+  uint layer_count;       // 16: layers in use, 1 .. GLOBE_MAX_ELEVATION_LAYERS
+  uint pad0;              // 20
+  double polar_radius_m;  // 24: b = a (1 - flattening), metres; = radius_m on a sphere
   ElevationLayerParams layers[GLOBE_MAX_ELEVATION_LAYERS];  // 32
 };
 
@@ -69,6 +69,7 @@ struct ElevationParams {
 static_assert(sizeof(ElevationLayerParams) == 80);
 static_assert(offsetof(ElevationLayerParams, seed) == 64);
 static_assert(offsetof(ElevationLayerParams, modulator) == 76);
+static_assert(offsetof(ElevationParams, polar_radius_m) == 24);
 static_assert(offsetof(ElevationParams, layers) == 32);
 static_assert(sizeof(ElevationParams) == 672);
 }  // namespace globe::gpu

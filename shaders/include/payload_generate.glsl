@@ -121,6 +121,13 @@ dvec3 sampleDirection(PayloadJob job, int i, int j) {
   return normalised(p);
 }
 
+// = ellipsoidGradientOf (payload_reference.cpp): the unit gradient (x / a^2, y / a^2, z / b^2) of the ellipsoid at p.
+dvec3 globeEllipsoidGradient(dvec3 p) {
+  precise double a2 = GLOBE_ELEVATION_PARAMS.radius_m * GLOBE_ELEVATION_PARAMS.radius_m;
+  precise double b2 = GLOBE_ELEVATION_PARAMS.polar_radius_m * GLOBE_ELEVATION_PARAMS.polar_radius_m;
+  return normalised(dvec3(p.x / a2, p.y / a2, p.z / b2));
+}
+
 void main() {
   uint jobIndex = gl_WorkGroupID.x;
   if (jobIndex >= push.jobCount) return;
@@ -147,14 +154,19 @@ void main() {
     float hFloat = globeApplySourcesFloat(globeElevationFloat(dirFloat), job.sourceBase, index);
     float drawnFloat = kWaterSurface != 0u ? max(hFloat, float(GLOBE_ELEVATION_PARAMS.sea_level_m)) : hFloat;
     vec3 pFloat = dirFloat * (float(GLOBE_ELEVATION_PARAMS.radius_m) + drawnFloat);
+    if (kGlobeEllipsoid != 0u) {  // a specialization constant: no branch is left
+      float a = float(GLOBE_ELEVATION_PARAMS.radius_m), b = float(GLOBE_ELEVATION_PARAMS.polar_radius_m);
+      vec3 scaled = dirFloat * vec3(a * a, a * a, b * b);
+      pFloat = scaled / sqrt(dot(scaled, dirFloat)) + dirFloat * drawnFloat;
+    }
     double h = double(hFloat);
     double drawn = double(drawnFloat);
     dvec3 p = dvec3(pFloat);
 #else
+    // The geodetic surface point plus the elevation along the normal (= globe::Ellipsoid::position).
     double h = globeApplySources(globeElevation(dir), job.sourceBase, index);
     double drawn = kWaterSurface != 0u ? max(h, GLOBE_ELEVATION_PARAMS.sea_level_m) : h;
-    precise double r = GLOBE_ELEVATION_PARAMS.radius_m + drawn;
-    precise dvec3 p = dir * r;
+    precise dvec3 p = globePosition(dir, drawn);
 #endif
     // w: the drawn elevation, which the sample's colour is taken at (a sea floor is coloured as the
     // shore above it: the water's own colour is drawn over it).
@@ -186,8 +198,10 @@ void main() {
     precise dvec3 dv = scratch[at + uint(s)].xyz - scratch[at - uint(s)].xyz;
     precise dvec3 c = dvec3(du.y * dv.z - du.z * dv.y, du.z * dv.x - du.x * dv.z, du.x * dv.y - du.y * dv.x);
     dvec3 normal = normalised(c);
-    // Slope against the radial vertical, as the ramp defines it (colour_ramp.h).
-    double cosSlope = clamp(dot(normal, normalised(scratch[at].xyz)), 0.0lf, 1.0lf);
+    // Slope against the vertical, as the ramp defines it (colour_ramp.h): radial on a sphere; on an
+    // ellipsoid (a specialization constant) its gradient at the point, the geodetic normal to ~h f / a.
+    dvec3 up = kGlobeEllipsoid != 0u ? globeEllipsoidGradient(scratch[at].xyz) : normalised(scratch[at].xyz);
+    double cosSlope = clamp(dot(normal, up), 0.0lf, 1.0lf);
     vec3 albedo = terrainRampColour(float(scratch[at].w), float(cosSlope));
     payloads[normalBase + index] = vec4(vec3(normal), packPayloadSurface(albedo, globeSourceHole(job.sourceBase, index)));
   }

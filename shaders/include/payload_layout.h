@@ -61,7 +61,7 @@ struct uvec4_ {
 // Specialization constant of the payload kernel (after the elevation ones, elevation_params.h):
 // 1 = place samples below sea level on the sea surface (the renderer's payloads on a planet with
 // water); 0 = the ground everywhere (collision meshes, bakes, dry planets).
-#define GLOBE_PAYLOAD_SPEC_WATER_SURFACE 25
+#define GLOBE_PAYLOAD_SPEC_WATER_SURFACE 26
 
 // One node to generate (std430, 96 bytes).
 struct PayloadJob {

@@ -13,6 +13,7 @@
 #include "planet/elevation/planet_file.h"
 #include "planet/geometry/face_mapping.h"
 #include "planet/sources/source_mosaic.h"
+#include "planet/tiling/horizon_occlusion.h"
 #include "planet/tiling/quantized_mesh_decoder.h"
 #include "tests/engine/source_payload_check.h"
 #include "tests/support/gpu_test.h"
@@ -291,6 +292,15 @@ TEST_F(BakeWithSourcesTest, ARegionOfEarthDemBakesFromTheDem) {
       const double cpu = model.elevation_m(d);
       worstVertex = std::max(worstVertex, std::abs(mesh->height_m(k) - cpu));
       EXPECT_LE(std::abs(mesh->height_m(k) - cpu), 0.5 * mesh->heightStep_m() + 1e-6) << "vertex " << k;
+      // earth-dem is on WGS84: the horizon point is in its scaled space (x / a, y / a, z / b), as
+      // Cesium reads it, and every vertex (on the ellipsoid) lies in its cone.
+      const Ellipsoid& shape = model.shape();
+      const glm::dvec3 radii(shape.equatorialRadius_m(), shape.equatorialRadius_m(), shape.polarRadius_m());
+      const GeoRect r = tileRect(t);  // where a client puts the vertex
+      const glm::dvec3 drawn = directionFromLatLon(r.south_deg + mesh->v[k] / 32767.0 * (r.north_deg - r.south_deg),
+                                                   r.west_deg + mesh->u[k] / 32767.0 * (r.east_deg - r.west_deg));
+      EXPECT_TRUE(insideHorizonCone(shape.position(drawn, mesh->height_m(k)) / radii, mesh->horizon_point, 1e-7))
+          << "vertex " << k;
       leastDemWeight = std::min(leastDemWeight, model.sourceTerm(d).weight);
     }
   }

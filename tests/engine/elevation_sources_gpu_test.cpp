@@ -110,13 +110,13 @@ TEST_F(ElevationSourcesGpuTest, ALowFlightNeverMakesTheFrameLoopWait) {
   auto terrain = Terrain::create(device(), *model_, settings);
   ASSERT_TRUE(terrain.ok()) << terrain.error().format();
   HeadlessRenderer renderer(device(), {96, 64});
-  const double R = model_->radius_m();
   uint64_t idleWaitsAfterWarmUp = 0;
   uint32_t emptyFrames = 0;
   for (int frame = 0; frame < 60; ++frame) {
     const double t = frame / 60.0, lat = 36.5 + 0.15 * t, lon = -84.35 + 0.2 * t;
-    const Camera cam = cameraFromPose({lat, lon, 3e4 * std::pow(10.0, -2.0 * t), 45, -20, 0},
-                                      (*terrain)->cameraGroundRadius(directionFromLatLon(lat, lon)), R, 1.5);
+    const Camera cam =
+        cameraFromPose({lat, lon, 3e4 * std::pow(10.0, -2.0 * t), 45, -20, 0},
+                       (*terrain)->cameraGroundRadius(directionFromLatLon(lat, lon)), model_->shape(), 1.5);
     const FrameStats stats = renderer.renderFrame(**terrain, cam, false);
     emptyFrames += stats.nodes_selected == 0;
     if (frame == 0) idleWaitsAfterWarmUp = (*terrain)->generator().sourcePreparer()->idleWaits();
@@ -144,7 +144,7 @@ TEST_F(ElevationSourcesGpuTest, AKeptHoleIsDrawnAsAHole) {
   auto depthBelow = [&](double lat, double lon) {
     const Camera cam =
         cameraFromPose({lat, lon, 3000, 0, -90, 0}, (*terrain)->cameraGroundRadius(directionFromLatLon(lat, lon)),
-                       model_->radius_m(), 1.0);
+                       model_->shape(), 1.0);
     renderer.renderFrame(**terrain, cam, true);
     const ImageRgba image = toImage(renderer.readback(), cam);
     return image.z[32 * 64 + 32];

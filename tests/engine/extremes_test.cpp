@@ -230,7 +230,7 @@ class ExtremesTest : public GpuTest {
           EXPECT_LE(de, 1e-6 + std::abs(e) * 0x1p-24)
               << "node " << int(id.face) << "/" << int(id.level) << " sample " << i << "," << j;
           const glm::dvec3 world = glm::dvec3(job.centre.x, job.centre.y, job.centre.z) + glm::dvec3(glm::vec3(p));
-          const double dp = glm::length(world - dir * (s.model.radius_m() + s.model.visibleElevation_m(dir)));
+          const double dp = glm::length(world - s.model.shape().position(dir, s.model.visibleElevation_m(dir)));
           worst.position_m = std::max(worst.position_m, dp / job.centre.w);
           // Quantised to the level's quantum: at most half a quantum per axis (plus rounding).
           EXPECT_LE(dp, job.centre.w * 0.87 + std::abs(e) * 1e-6 + 1e-6);

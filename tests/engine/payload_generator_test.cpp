@@ -64,7 +64,15 @@ std::vector<NodeId> testNodes() {
   return nodes;
 }
 
-TEST_F(PayloadGeneratorTest, MatchesCpuReferenceAtEveryDepth) {
+// On the planet's sphere, on WGS84 and on flattening 0.1: the GPU places each sample at the geodetic
+// surface point plus the elevation along the normal exactly like the CPU (Ellipsoid::position).
+class PayloadGeneratorShapeTest : public PayloadGeneratorTest, public ::testing::WithParamInterface<PlanetShapeCase> {
+ protected:
+  PayloadGeneratorShapeTest() { model_ = &earthlikeModel(GetParam()); }
+};
+INSTANTIATE_TEST_SUITE_P(Shapes, PayloadGeneratorShapeTest, ::testing::ValuesIn(kPlanetShapes), planetShapeName);
+
+TEST_P(PayloadGeneratorShapeTest, MatchesCpuReferenceAtEveryDepth) {
   auto nodes = testNodes();
   GpuPayloadGenerator gen(device(), *model_, kCells, GLOBE_PAYLOAD_MAX_BATCH, 1);
   gen.reserveSlots(uint32_t(nodes.size()));
@@ -74,7 +82,7 @@ TEST_F(PayloadGeneratorTest, MatchesCpuReferenceAtEveryDepth) {
   const size_t perSlot = GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells);
   const size_t samples = perSlot / 2;
   std::vector<glm::vec4> cpu(perSlot);
-  double worstRadius = 0, worstElevation = 0, worstNormal = 0, worstError = 0;
+  double worstRadius = 0, worstElevation = 0, worstNormal = 0, worstError = 0, worstHeight = 0;
   int worstAlbedo = 0;
   for (size_t k = 0; k < nodes.size(); ++k) {
     SCOPED_TRACE(::testing::Message() << "node face " << int(nodes[k].face) << " level " << int(nodes[k].level));
@@ -106,12 +114,24 @@ TEST_F(PayloadGeneratorTest, MatchesCpuReferenceAtEveryDepth) {
       worstAlbedo = std::max(worstAlbedo, albedoByteDistance(g[samples + i].w, cpu[samples + i].w));
       ASSERT_LE(albedoByteDistance(g[samples + i].w, cpu[samples + i].w), 1) << i;
       ASSERT_EQ(holeByte(g[samples + i].w), 0) << i;
+      // Independently of the shared formula: GeographicLib finds the sample at its elevation above
+      // the ellipsoid, along the sample's own direction (geodetic normal).
+      const glm::dvec3 p = glm::dvec3(job.centre.x, job.centre.y, job.centre.z) + glm::dvec3(glm::vec3(g[i]));
+      const GeodeticPoint geodetic = model_->shape().geodeticFromGeocentric(p);
+      // Tolerance: the quantised position (2 quanta) and the float elevation (1 mm).
+      const double heightTolerance_m = 2.0 * job.centre.w + 1e-3;
+      worstHeight = std::max(worstHeight, std::abs(geodetic.height_m - double(g[i].w)) / heightTolerance_m);
+      ASSERT_NEAR(geodetic.height_m, double(g[i].w), heightTolerance_m) << i;
+      const int row = int(i) / int(kCells + 3), column = int(i) % int(kCells + 3);
+      const glm::dvec3 direction = payloadSampleDirection(job, kCells, column - 1, row - 1);
+      ASSERT_LT(glm::length(Ellipsoid::normalAt(geodetic) - direction), 1e-9 + 4.0 * job.centre.w / model_->radius_m())
+          << i;
     }
   }
   std::printf(
       "[ info ] %zu nodes, depths 0-24: worst |radius| diff %.3g m, elevation %.3g m, normal %.3g, geometric error "
-      "%.3g quanta, albedo %d steps of 1/255\n",
-      nodes.size(), worstRadius, worstElevation, worstNormal, worstError, worstAlbedo);
+      "%.3g quanta, albedo %d steps of 1/255, |GeographicLib height - elevation| %.3g of its tolerance (%s)\n",
+      nodes.size(), worstRadius, worstElevation, worstNormal, worstError, worstAlbedo, worstHeight, GetParam().name);
 }
 
 // With the sea surface (the renderer's payloads on a planet with [water]): samples below sea level

@@ -137,7 +137,7 @@ TerrainStyle terrainOnlyStyle(bool skirts) {
 
 class TerrainRenderTest : public GpuTest {
  protected:
-  TerrainRenderTest() : model_(testPlanet()) {}
+  explicit TerrainRenderTest(const PlanetShapeCase& shape = kPlanetShapes[0]) : model_(onShape(testPlanet(), shape)) {}
 
   struct Frame {
     vk::ReadbackImage image;
@@ -149,6 +149,10 @@ class TerrainRenderTest : public GpuTest {
 
   Camera cameraAt(double lat, double lon, double height_m, double heading, double pitch) const {
     GeodeticPose pose{lat, lon, height_m, heading, pitch, 0.0};
+    if (!model_.shape().isSphere()) {  // ground "radius" a + its ellipsoidal height (Ellipsoid::pointAbove)
+      const double ground = model_.radius_m() + model_.elevation_m(directionFromLatLon(lat, lon));
+      return cameraFromPose(pose, ground, model_.shape(), double(kWidth) / kHeight);
+    }
     const double ground = glm::length(model_.surfacePosition(directionFromLatLon(lat, lon)));
     return cameraFromPose(pose, ground, kRadius_m, double(kWidth) / kHeight);
   }
@@ -157,7 +161,8 @@ class TerrainRenderTest : public GpuTest {
   LodSelector makeSelector(double tolerance_px = 0.0) const {
     LodConfig config;
     config.ranges.tolerance_px = tolerance_px;
-    config.radius_m = kRadius_m;
+    config.radius_m = model_.radius_m();
+    config.flattening = model_.shape().flattening();
     ElevationRange range = model_.bounds();
     config.minElevation_m = range.min_m;
     config.maxElevation_m = range.max_m;
@@ -193,7 +198,7 @@ class TerrainRenderTest : public GpuTest {
       if (std::isfinite(band.start_m) && d - reach < band.end_m && d + reach > band.start_m) ++f.morphing;
     }
     f.innerRadius_m = inner;
-    FloatingOrigin origin(rebase_m, payloadQuantum_m(0, kRadius_m));
+    FloatingOrigin origin(rebase_m, payloadQuantum_m(0, model_.radius_m()));
     origin.update(camera.position_m);
     vk::OffscreenTarget target(device(), {kWidth, kHeight});
     device().submitAndWait([&](VkCommandBuffer cmd) {
@@ -236,6 +241,13 @@ class TerrainRenderTest : public GpuTest {
   ElevationModel model_;
 };
 
+// The crack and jitter tests on the planet's sphere, on WGS84 and on flattening 0.1 (issue #18).
+class TerrainRenderShapeTest : public TerrainRenderTest, public ::testing::WithParamInterface<PlanetShapeCase> {
+ protected:
+  TerrainRenderShapeTest() : TerrainRenderTest(GetParam()) {}
+};
+INSTANTIATE_TEST_SUITE_P(Shapes, TerrainRenderShapeTest, ::testing::ValuesIn(kPlanetShapes), planetShapeName);
+
 struct CrackCase {
   const char* name;
   glm::dvec3 direction;  // where the camera is (unit, planet-fixed)
@@ -270,10 +282,10 @@ std::vector<CrackCase> crackCases() {
   };
 }
 
-TEST_F(TerrainRenderTest, NoCracksAtSeamsVerticesPolesAndAntimeridian) {
+TEST_P(TerrainRenderShapeTest, NoCracksAtSeamsVerticesPolesAndAntimeridian) {
   TerrainStyle style;
   style.sky = false;
-  style.radius_m = kRadius_m;
+  style.radius_m = model_.radius_m();
   TerrainRenderer renderer(device(), kCells, style);
   CpuPayloads payloads(device(), model_, 6000);
   // Distance ranges, then tolerance-driven ranges (docs/lod.md): both must stay crack-free.
@@ -289,10 +301,10 @@ TEST_F(TerrainRenderTest, NoCracksAtSeamsVerticesPolesAndAntimeridian) {
       int inside = 0;
       int holes = countHoles(f, camera, &inside);
       std::printf(
-          "[ info ] %-18s %4.1f px nodes %4u (partial %3u, morphing %3u) triangles %7llu, inside %5d px, holes %d "
+          "[ info ] %s %-18s %4.1f px nodes %4u (partial %3u, morphing %3u) triangles %7llu, inside %5d px, holes %d "
           "(%.0f ms)\n",
-          c.name, tolerance, f.stats.nodes, f.stats.partialNodes, f.morphing, (unsigned long long)f.stats.triangles,
-          inside, holes, ms);
+          GetParam().name, c.name, tolerance, f.stats.nodes, f.stats.partialNodes, f.morphing,
+          (unsigned long long)f.stats.triangles, inside, holes, ms);
       EXPECT_EQ(holes, 0) << c.name << " tolerance " << tolerance;
       EXPECT_GT(inside, int(kWidth * kHeight / 10))
           << c.name << " tolerance " << tolerance << ": the planet should fill part of the view";
@@ -300,7 +312,7 @@ TEST_F(TerrainRenderTest, NoCracksAtSeamsVerticesPolesAndAntimeridian) {
       if (c.height_m < 1.0e6) {
         EXPECT_GT(f.morphing, 0u) << c.name << " tolerance " << tolerance << ": morphing should be active";
       }
-      if (holes) save(f, std::string("terrain_cracks_") + c.name);
+      if (holes) save(f, std::string("terrain_cracks_") + GetParam().name + "_" + c.name);
       // CDLOD's guarantee (LodRanges::morph), checked on the ranges this selection used: where a
       // depth-d node meets a finer neighbour (at most R(d) + D(d) away) its band has not started.
       const LodRanges& ranges = selector.ranges();
@@ -415,12 +427,12 @@ std::vector<glm::vec4> gpuClipPositions(vk::Device& device, TerrainRenderer& ren
   return {clip.begin(), clip.end()};
 }
 
-TEST_F(TerrainRenderTest, VerticesDoNotJitterOneCentimetreAboveEarth) {
+TEST_P(TerrainRenderShapeTest, VerticesDoNotJitterOneCentimetreAboveEarth) {
   TerrainStyle style;
   style.sky = false;
   TerrainRenderer renderer(device(), kCells, style);
   CpuPayloads payloads(device(), model_, 4);
-  auto ranges = LodRanges::create({}, kRadius_m);
+  auto ranges = LodRanges::create({}, model_.radius_m());
   ASSERT_TRUE(ranges.ok());
   const double lat = 46.5, lon = 7.5;
   const NodeId id = nodeAt(RhombusFaceMapping::get().locate(directionFromLatLon(lat, lon)), 20);
@@ -431,7 +443,7 @@ TEST_F(TerrainRenderTest, VerticesDoNotJitterOneCentimetreAboveEarth) {
   double worst_px = 0.0;
   int compared = 0;
   for (double rebase_m : {0.0, 100.0}) {
-    FloatingOrigin origin(rebase_m, payloadQuantum_m(0, kRadius_m));
+    FloatingOrigin origin(rebase_m, payloadQuantum_m(0, model_.radius_m()));
     const Camera start = cameraAt(lat, lon, 0.01, 20.0, -25.0);
     for (int step = 0; step < 8; ++step) {
       Camera camera = start;
@@ -460,7 +472,8 @@ TEST_F(TerrainRenderTest, VerticesDoNotJitterOneCentimetreAboveEarth) {
       }
     }
   }
-  std::printf("[ info ] jitter: %d projected vertices, worst %.2e px from the double projection\n", compared, worst_px);
+  std::printf("[ info ] jitter (%s): %d projected vertices, worst %.2e px from the double projection\n",
+              GetParam().name, compared, worst_px);
   EXPECT_GT(compared, 50);
 }
 

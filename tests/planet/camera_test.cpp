@@ -1,4 +1,5 @@
 #include "planet/camera/camera.h"
+#include "planet/camera/camera_orientation.h"
 
 #include <gtest/gtest.h>
 
@@ -74,6 +75,60 @@ TEST(Camera, PlacementAndFrameOnTheSphere) {
     EXPECT_NEAR(glm::dot(glm::cross(c.forward, c.up), c.right), 1, 1e-12);
     EXPECT_NEAR(glm::length(c.position_m), R + p.height_m, (R + p.height_m) * 1e-15 + 1e-9);
   }
+}
+
+// `--at LAT,LON,HEIGHT,...` on WGS84 (issue #18): geodetic latitude, the height along the normal above
+// a ground at ellipsoidal height g; the camera is GeographicLib's point at g + HEIGHT, and
+// poseFromCamera gives the pose back (poles, ±180°, signed zero, 1 cm .. 1e8 m).
+TEST(Camera, AtRoundTripsOnWgs84) {
+  const Ellipsoid wgs84 = Ellipsoid::wgs84();
+  const double a = wgs84.equatorialRadius_m();
+  const double kDeg = 3.14159265358979323846 / 180.0;
+  int cases = 0;
+  for (double lat : {-90.0, -89.999, -45.0, -0.0, 0.0, 22.1, 60.0, 89.999, 90.0})
+    for (double lon : {-180.0, -98.4, 0.0, 7.5, 179.999, 180.0})
+      for (double ground_m : {-400.0, 0.0, 8000.0})
+        for (double height_m : {0.01, 2.0, 1000.0, 1e5, 2e7, 1e8}) {
+          SCOPED_TRACE(::testing::Message() << lat << "," << lon << " ground " << ground_m << " height " << height_m);
+          const GeodeticPose pose{lat, lon, height_m, 30.0, -20.0, 5.0};
+          const Camera c = cameraFromPose(pose, a + ground_m, wgs84, 1.5);
+          // The ellipsoidal height of the camera is ground + height, and it stands over the given latitude.
+          const GeodeticPoint g = wgs84.geodeticFromGeocentric(c.position_m);
+          const double tolerance_m = std::max(1e-6, 4e-16 * glm::length(c.position_m));
+          EXPECT_NEAR(g.height_m, ground_m + height_m, tolerance_m);
+          EXPECT_NEAR(g.latitude_deg, lat, 1e-9);
+          const glm::dvec3 expected = wgs84.geocentricFromGeodetic({lat, lon, (a + ground_m - a) + height_m});
+          EXPECT_LE(glm::length(c.position_m - expected), 1e-9 * glm::length(expected));
+          // Not where a sphere of radius a would put it (away from the equator and the poles).
+          if (std::abs(lat) > 1.0 && std::abs(lat) < 89.0) {
+            const glm::dvec3 onSphere = directionFromLatLon(lat, lon) * (a + ground_m + height_m);
+            EXPECT_GT(glm::length(c.position_m - onSphere), 1000.0);
+          }
+          const GeodeticPose back = poseFromCamera(c, a + ground_m, wgs84);
+          EXPECT_NEAR(back.latitude_deg, lat, 1e-9);
+          EXPECT_NEAR(back.height_m, height_m, tolerance_m);
+          if (std::abs(lat) < 89.99) {  // at the poles longitude and heading turn together
+            const double dLon = std::remainder(back.longitude_deg - lon, 360.0);
+            EXPECT_NEAR(dLon * std::cos(lat * kDeg), 0.0, 1e-9);
+            EXPECT_NEAR(std::remainder(back.heading_deg - pose.heading_deg, 360.0), 0.0, 1e-6);
+            EXPECT_NEAR(back.roll_deg, pose.roll_deg, 1e-6);
+          }
+          EXPECT_NEAR(back.pitch_deg, pose.pitch_deg, 1e-6);
+          ++cases;
+        }
+  EXPECT_EQ(cases, 9 * 6 * 3 * 6);
+}
+
+// On a sphere the ellipsoid overload is the sphere placement, bit for bit.
+TEST(Camera, SphereShapeIsTheSpherePlacementBitForBit) {
+  const GeodeticPose pose{22.1, -98.4, 2.0, 60.0, -10.0, 0.0};
+  const double ground = 6371000.0 + 1234.5;
+  const Camera a = cameraFromPose(pose, ground, 6371000.0, 1.5);
+  const Camera b = cameraFromPose(pose, ground, Ellipsoid::sphere(6371000.0), 1.5);
+  EXPECT_EQ(a.position_m, b.position_m);
+  EXPECT_EQ(a.forward, b.forward);
+  EXPECT_EQ(a.up, b.up);
+  EXPECT_EQ(a.right, b.right);
 }
 
 TEST(Camera, ReversedZInfiniteProjection) {

@@ -157,6 +157,25 @@ const BadCase kBadCases[] = {
      "[0, 90]"},
     {"rock not a table", "radius_m = 5e6\nrock = 3\n" LAYER, 2, 8, "rock", "expected a table ([rock])"},
     {"snow without elevation", "radius_m = 5e6\n" LAYER "[snow]\nblend_m = 10\n", 7, 1, "snow.elevation_m", "missing"},
+    // shape = { equatorial_radius_m, flattening } (issue #18).
+    {"shape and radius_m", "radius_m = 5e6\nshape = { equatorial_radius_m = 5e6, flattening = 0.1 }\n" LAYER, 2, 9,
+     "shape", "not both"},
+    {"flattening 0.5", "shape = { equatorial_radius_m = 5e6, flattening = 0.5 }\n" LAYER, 1, 51, "shape.flattening",
+     "[0, 0.5)"},
+    {"negative flattening", "shape = { equatorial_radius_m = 5e6, flattening = -0.01 }\n" LAYER, 1, 51,
+     "shape.flattening", "[0, 0.5)"},
+    {"shape radius zero", "shape = { equatorial_radius_m = 0, flattening = 0.1 }\n" LAYER, 1, 33,
+     "shape.equatorial_radius_m", "must be > 0"},
+    {"shape radius negative", "shape = { equatorial_radius_m = -6e6, flattening = 0.1 }\n" LAYER, 1, 33,
+     "shape.equatorial_radius_m", "must be > 0"},
+    {"unknown shape key: the missing key comes first (the table's column)",
+     "shape = { equatorial_radius_m = 5e6, flatening = 0.1 }\n" LAYER, 1, 9, "shape.flattening", "missing"},
+    {"misspelt shape key suggested", "shape = { equatorial_radius_m = 5e6, flattening = 0.1, inverse = 3 }\n" LAYER, 1,
+     56, "shape.inverse", "unknown key"},
+    {"shape without flattening", "shape = { equatorial_radius_m = 5e6 }\n" LAYER, 1, 9, "shape.flattening", "missing"},
+    {"shape not a table", "shape = \"WGS84\"\n" LAYER, 1, 9, "shape", "expected a table"},
+    {"flattening not a number", "shape = { equatorial_radius_m = 5e6, flattening = \"1/298\" }\n" LAYER, 1, 51,
+     "shape.flattening", "expected a number"},
     {"snow negative blend", "radius_m = 5e6\n" LAYER "[snow]\nelevation_m = 1\nblend_m = -1\n", 9, 11, "snow.blend_m",
      "[0, 1e7]"},
     {"unknown water key", "radius_m = 5e6\n" LAYER "[water]\ncolour = [0, 0, 1]\n", 8, 1, "water.colour",
@@ -353,6 +372,46 @@ TEST(PlanetPresets, EveryPresetLoadsAndRoundTrips) {
     EXPECT_EQ(std::memcmp(&ca, &cb, sizeof ca), 0);
     EXPECT_EQ(formatPlanetToml(*again), text);
   }
+}
+
+// An ellipsoid's shape is read, validated and written back: WGS84's flattening survives the writer to
+// the last bit, and a sphere keeps writing radius_m.
+TEST(PlanetFile, ShapeRoundTripsThroughTheWriter) {
+  const std::string text =
+      "name = \"wgs84\"\nshape = { equatorial_radius_m = 6378137.0, flattening = "
+      "0.0033528106647474805 }\n" LAYER;
+  const Result<PlanetDescription> p = parsePlanetToml(text, "wgs84.toml");
+  ASSERT_TRUE(p.ok()) << p.error().format();
+  EXPECT_EQ(p->radius_m, 6378137.0);
+  EXPECT_EQ(p->flattening, 1.0 / 298.257223563);
+  EXPECT_EQ(planetShape(*p).polarRadius_m(), Ellipsoid::wgs84().polarRadius_m());
+  const std::string written = formatPlanetToml(*p);
+  EXPECT_NE(written.find("shape = { equatorial_radius_m = 6378137, flattening = 0.0033528106647474805 }"),
+            std::string::npos)
+      << written;
+  EXPECT_EQ(written.find("\nradius_m ="), std::string::npos) << written;
+  const Result<PlanetDescription> again = parsePlanetToml(written, "again.toml");
+  ASSERT_TRUE(again.ok()) << again.error().format();
+  EXPECT_EQ(*again, *p);
+  const gpu::ElevationParams a = packElevationParams(*p), b = packElevationParams(*again);
+  EXPECT_EQ(std::memcmp(&a, &b, sizeof a), 0);
+  EXPECT_EQ(a.polar_radius_m, 6378137.0 * (1.0 - 1.0 / 298.257223563));
+  EXPECT_EQ(elevationSpecialization(a)[GLOBE_ELEVATION_SPEC_ELLIPSOID], 1U);
+  // Flattening 0 in a shape is a sphere, written as radius_m.
+  const Result<PlanetDescription> sphere =
+      parsePlanetToml("shape = { equatorial_radius_m = 5e6, flattening = 0 }\n" LAYER, "sphere.toml");
+  ASSERT_TRUE(sphere.ok()) << sphere.error().format();
+  EXPECT_NE(formatPlanetToml(*sphere).find("radius_m = 5000000\n"), std::string::npos);
+  const gpu::ElevationParams s = packElevationParams(*sphere);
+  EXPECT_EQ(s.polar_radius_m, s.radius_m);
+  EXPECT_EQ(elevationSpecialization(s)[GLOBE_ELEVATION_SPEC_ELLIPSOID], 0U);
+}
+
+TEST(PlanetFile, EarthDemIsOnWgs84) {
+  const Result<PlanetDescription> p = loadPlanetFile(presetPath("earth-dem"));
+  ASSERT_TRUE(p.ok()) << p.error().format();
+  EXPECT_EQ(p->radius_m, 6378137.0);
+  EXPECT_EQ(p->flattening, 1.0 / 298.257223563);
 }
 
 TEST(PlanetPresets, RadiiAndPrecisionMargins) {

@@ -115,7 +115,7 @@ TEST(HorizonOcclusion, HiddenPointMeansHiddenVertices) {
     const glm::dvec3 d = glm::normalize(axis + 0.3 * glm::dvec3(u(rng), u(rng), u(rng)));
     vertices.push_back(d * radius * (1.0 + 0.025 * (u(rng) + 1.0)));
   }
-  const auto h = horizonOcclusionPoint(vertices, radius, axis);
+  const auto h = horizonOcclusionPoint(vertices, glm::dvec3(radius), axis);
   ASSERT_TRUE(h.has_value());
   for (const glm::dvec3& v : vertices) EXPECT_TRUE(insideHorizonCone(v / radius, *h, 1e-9));
   // Segment a-b passes through the unit sphere.
@@ -135,7 +135,7 @@ TEST(HorizonOcclusion, HiddenPointMeansHiddenVertices) {
   EXPECT_GT(hidden, 250);
   // A hemisphere admits no point.
   EXPECT_FALSE(horizonOcclusionPoint(std::vector<glm::dvec3>{glm::dvec3(0, 0, radius), glm::dvec3(radius, 0, 0)},
-                                     radius, glm::dvec3(0, 0, 1))
+                                     glm::dvec3(radius), glm::dvec3(0, 0, 1))
                    .has_value());
 }
 
