@@ -106,6 +106,23 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
       // always hidden behind front faces, and culling them halves the rasteriser's work. Skirts
       // fill gaps seen from either side. A planet with kept holes draws both faces, so that the
       // surface and the hole's rim are seen from below through the hole too.
+      pendingOptional_(std::async(
+          std::launch::async,
+          [&device, style, positions, colourFormat] {
+            OptionalPipelines made;
+            if (style.water.enabled) {
+              made.water = std::make_unique<vk::GraphicsPipeline>(
+                  device, terrainDesc(colourFormat, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT,
+                                      positions, style.holes ? "terrain_water_holes.frag" : "terrain_water.frag"));
+            }
+            VkPhysicalDeviceFeatures features{};
+            vkGetPhysicalDeviceFeatures(device.physical(), &features);
+            if (features.fillModeNonSolid) {
+              made.wireframe = std::make_unique<vk::GraphicsPipeline>(
+                  device, terrainDesc(colourFormat, true, VK_CULL_MODE_NONE, positions, "terrain.frag"));
+            }
+            return made;
+          })),
       solid_(device, terrainDesc(colourFormat, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT,
                                  positions, style.holes ? "terrain_holes.frag" : "terrain.frag")),
       skirts_(device, terrainDesc(colourFormat, false, VK_CULL_MODE_NONE, positions,
@@ -121,17 +138,9 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
         return d;
       }()) {
   assert(gridCells >= 16 && gridCells <= 256 && (gridCells & (gridCells - 1)) == 0);
-  VkPhysicalDeviceFeatures features{};
-  vkGetPhysicalDeviceFeatures(device.physical(), &features);
-  if (features.fillModeNonSolid) {
-    wireframe_ = std::make_unique<vk::GraphicsPipeline>(
-        device, terrainDesc(colourFormat, true, VK_CULL_MODE_NONE, positions, "terrain.frag"));
-  }
-  if (style.water.enabled) {
-    water_ = std::make_unique<vk::GraphicsPipeline>(
-        device, terrainDesc(colourFormat, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT, positions,
-                            style.holes ? "terrain_water_holes.frag" : "terrain_water.frag"));
-  }
+  OptionalPipelines optional = pendingOptional_.get();
+  water_ = std::move(optional.water);
+  wireframe_ = std::move(optional.wireframe);
 
   // Ranges: full grid, half grid, full skirt strip, half skirt strip.
   std::vector<uint32_t> indices;

@@ -20,6 +20,7 @@
 #include "planet/lod/lod_ranges.h"
 
 #include <array>
+#include <future>
 #include <memory>
 #include <optional>
 #include <span>
@@ -161,6 +162,12 @@ class TerrainRenderer {
   PassTimestamps timestamps_;
   // Writes the pass marks from `next` up to and including `mark` (none without a query pool).
   void writeMarks(VkCommandBuffer cmd, uint32_t& next, uint32_t mark) const;
+  // The water and wireframe pipelines, created on a second thread while the others are (pipeline
+  // creation is most of the renderer's set-up: docs/benchmark.md, "Cold start").
+  struct OptionalPipelines {
+    std::unique_ptr<vk::GraphicsPipeline> water, wireframe;
+  };
+  std::future<OptionalPipelines> pendingOptional_;
   vk::GraphicsPipeline solid_;                   // grids, back faces culled
   vk::GraphicsPipeline skirts_;                  // skirt strips, both sides
   std::unique_ptr<vk::GraphicsPipeline> water_;  // grids of nodes with sea (planets with water only)
