@@ -319,6 +319,7 @@ TerrainDebugView TerrainRenderer::writeFrameConstants(unsigned char* bytes, cons
   frame.waterDeep = toGpu(w.deep_colour, float(1.0 / w.depth_scale_m));
   frame.skyZenith = toGpu(style_.zenithColour, 0.0f);
   frame.skyHorizon = toGpu(style_.horizonColour, 0.0f);
+  frame.centreFromCamera = toGpu(glm::vec3(-camera.position_m), 0.0f);  // once per frame, in double
   std::memcpy(bytes, &frame, sizeof(frame));
   return view;
 }

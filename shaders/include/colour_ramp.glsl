@@ -8,8 +8,8 @@
 
 #include "colour_ramp.h"
 
-// GLOBE_RAMP names the ColourRampParams to read (e.g. a storage-buffer member). Not a parameter:
-// passing the 320-byte struct by value copies it per fragment, which made lavapipe ~5x slower.
+// GLOBE_RAMP names the ColourRampParams to read (the payload kernel's uniform block). Not a
+// parameter: passing the 320-byte struct by value copies it per call, which made lavapipe ~5x slower.
 // No branch or loop bound may depend on the ramp's values alone (stop_count, snow_enabled): from a
 // uniform buffer, lavapipe would inline them and compile the shader again at draw time
 // (docs/rendering.md, "No shader compile per frame"). Hence the constant loop bound (the loop

@@ -41,7 +41,7 @@ struct TerrainDvec4 {
 #define GLOBE_TERRAIN_LOD_COLOURS 1u
 #define GLOBE_TERRAIN_WIREFRAME 2u
 
-// Constants of one frame (std430, 224 bytes).
+// Constants of one frame (std430, 240 bytes).
 struct TerrainFrame {
   GLOBE_MAT4 clipFromCamera;  //   0: projection * view rotation: camera-centred planet-fixed axes -> clip
   GLOBE_VEC4 cameraHigh;      //  64: xyz = float(camera - origin), metres
@@ -54,6 +54,7 @@ struct TerrainFrame {
   GLOBE_VEC4 waterDeep;       // 176: rgb = the sea's colour over deep ground (linear); w = 1 / depth scale (per m)
   GLOBE_VEC4 skyZenith;       // 192: rgb = the sky overhead (linear), reflected by the sea
   GLOBE_VEC4 skyHorizon;      // 208: rgb = the sky at the horizon (linear)
+  GLOBE_VEC4 centreFromCamera;  // 224: xyz = float(planet centre - camera), metres (a direction for the sea's normal)
 };
 
 // One drawn node (std430, 48 bytes).
@@ -83,7 +84,7 @@ struct TerrainDrawPush {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(TerrainFrame) == 224);
+static_assert(sizeof(TerrainFrame) == 240);
 static_assert(sizeof(TerrainInstance) == 48);
 static_assert(sizeof(TerrainReprojectionFrame) == 32 && sizeof(TerrainReprojectionNode) == 32);
 }  // namespace globe::gpu

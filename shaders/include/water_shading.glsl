@@ -17,8 +17,7 @@ const float kGlintStrength = 6.0;
 vec3 waterColour(float depth_m, vec3 relative) {
   // The camera-to-fragment ray and the sea's normal (the local vertical): directions only, so
   // float is enough although the planet centre is far.
-  vec3 centre = frame.planetCentre.xyz - frame.cameraHigh.xyz - frame.cameraLow.xyz;
-  vec3 up = normalize(relative - centre);
+  vec3 up = normalize(relative - frame.centreFromCamera.xyz);
   vec3 view = normalize(relative);
   vec3 sun = frame.sun.xyz;
   float sunHeight = dot(up, sun);
