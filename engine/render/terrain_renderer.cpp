@@ -35,14 +35,18 @@ constexpr VkDeviceSize kFrameHeaderBytes = 512;
 static_assert(sizeof(gpu::TerrainFrame) <= kFrameHeaderBytes);
 
 // Draw groups: the index buffer's four ranges (full grid, half grid, full skirt strip, half skirt
-// strip), then the two grids again for nodes with sea, drawn with the water shader.
+// strip) for nodes without sea, then the same four for nodes with sea, drawn with the water shader
+// (their skirts too: a skirt shows through sub-pixel gaps, and below the sea it must be sea).
 constexpr uint32_t kIndexRanges = 4;
-constexpr uint32_t kDrawGroups = 6;
-constexpr uint32_t kWaterGroups = 4;  // groups 4, 5: full and half grids of nodes with sea
+constexpr uint32_t kDrawGroups = 2 * kIndexRanges;
+constexpr uint32_t kWaterGroups = kIndexRanges;  // groups 4..7: nodes with sea
 // Grids before skirts, so that the pass marks split them.
-constexpr std::array<uint32_t, kDrawGroups> kGroupOrder{0, 1, 4, 5, 2, 3};
+constexpr std::array<uint32_t, kDrawGroups> kGroupOrder{0, 1, 4, 5, 2, 3, 6, 7};
 
-uint32_t gridGroup(const DrawNode& n) { return (n.partial ? 1u : 0u) + (n.water ? kWaterGroups : 0u); }
+// The group of a node's grid (range 0) or skirts (range 2).
+uint32_t drawGroup(const DrawNode& n, uint32_t range) {
+  return range + (n.partial ? 1u : 0u) + (n.water ? kWaterGroups : 0u);
+}
 
 vk::GraphicsPipelineDesc terrainDesc(VkFormat colourFormat, bool wireframe, VkCullModeFlags cull,
                                      VertexPositions positions, const char* fragmentShader) {
@@ -114,6 +118,9 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
               made.water = std::make_unique<vk::GraphicsPipeline>(
                   device, terrainDesc(colourFormat, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT,
                                       positions, style.holes ? "terrain_water_holes.frag" : "terrain_water.frag"));
+              made.waterSkirts = std::make_unique<vk::GraphicsPipeline>(
+                  device, terrainDesc(colourFormat, false, VK_CULL_MODE_NONE, positions,
+                                      style.holes ? "terrain_water_holes.frag" : "terrain_water.frag"));
             }
             VkPhysicalDeviceFeatures features{};
             vkGetPhysicalDeviceFeatures(device.physical(), &features);
@@ -140,6 +147,7 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
   assert(gridCells >= 16 && gridCells <= 256 && (gridCells & (gridCells - 1)) == 0);
   OptionalPipelines optional = pendingOptional_.get();
   water_ = std::move(optional.water);
+  waterSkirts_ = std::move(optional.waterSkirts);
   wireframe_ = std::move(optional.wireframe);
 
   // Ranges: full grid, half grid, full skirt strip, half skirt strip.
@@ -331,10 +339,10 @@ void TerrainRenderer::groupInstances(std::span<const DrawNode> nodes, const Payl
   // contiguous instance range with its page's window bound.
   instancesOf_.assign(size_t(kDrawGroups) * pageCount, 0);
   for (size_t k = 0; k < nodes.size(); ++k) {
-    const uint32_t range = nodes[k].partial ? 1u : 0u;
     const uint32_t page = payloads.page(nodes[k].slot);
-    ++instancesOf_[size_t(gridGroup(nodes[k])) * pageCount + page];
-    if (skirts) instancesOf_[size_t(range + 2) * pageCount + page] += uint32_t(std::popcount(skirtMask_[k]));
+    ++instancesOf_[size_t(drawGroup(nodes[k], 0)) * pageCount + page];
+    if (skirts)
+      instancesOf_[size_t(drawGroup(nodes[k], 2)) * pageCount + page] += uint32_t(std::popcount(skirtMask_[k]));
   }
   firstInstance_.assign(instancesOf_.size(), 0);
   for (size_t g = 1; g < instancesOf_.size(); ++g) firstInstance_[g] = firstInstance_[g - 1] + instancesOf_[g - 1];
@@ -369,10 +377,9 @@ uint32_t TerrainRenderer::writeInstances(unsigned char* bytes, const glm::dvec3&
     inst.morph = {morphDistance(n.morph.start_m), morphDistance(n.morph.end_m), 0.0f, 0.0f};
     inst.info = {payloads.localSlot(n.slot) * slotVec4, n.partial ? 2u : 1u,
                  uint32_t(n.id.level) - (n.partial ? 1u : 0u), 0u};
-    const uint32_t range = n.partial ? 1u : 0u;
-    partial += range;
+    partial += n.partial ? 1u : 0u;
     const uint32_t page = payloads.page(n.slot);
-    const size_t grid = size_t(gridGroup(n)) * pageCount + page, skirt = size_t(range + 2) * pageCount + page;
+    const size_t grid = size_t(drawGroup(n, 0)) * pageCount + page, skirt = size_t(drawGroup(n, 2)) * pageCount + page;
     if (reprojection) reprojection[next[grid]] = mapping;
     instances[next[grid]++] = inst;
     for (uint32_t e = 0; skirts && e < 4; ++e) {
@@ -393,16 +400,17 @@ DrawStats TerrainRenderer::recordDraws(VkCommandBuffer cmd, const PayloadPages& 
   vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
   for (const uint32_t group : kGroupOrder) {
     const uint32_t r = group % kIndexRanges;                      // the group's index range
-    if (group == 2) writeMarks(cmd, nextMark, kMarkSkirtsBegin);  // groups 0, 1, 4, 5 are grids; 2, 3 skirts
+    if (group == 2) writeMarks(cmd, nextMark, kMarkSkirtsBegin);  // groups 0, 1, 4, 5 are grids; the rest skirts
     for (uint32_t page = 0; page < pageCount; ++page) {
       const size_t g = size_t(group) * pageCount + page;
       if (instancesOf_[g] == 0) continue;
       // Grids are drawn with back faces culled, skirts from both sides; the wireframe view shows
       // both. Nodes with sea use the water shader unless a debug view colours them by level.
-      const vk::GraphicsPipeline& pipeline = wireframe                                       ? *wireframe_
-                                             : group >= kWaterGroups && water_ && !debugView ? *water_
-                                             : r < 2                                         ? solid_
-                                                                                             : skirts_;
+      const vk::GraphicsPipeline& pipeline = wireframe ? *wireframe_
+                                             : group >= kWaterGroups && water_ && !debugView
+                                                 ? (r < 2 ? *water_ : *waterSkirts_)
+                                             : r < 2 ? solid_
+                                                     : skirts_;
       const gpu::TerrainDrawPush push{r % 2 == 0 ? cells_ : cells_ / 2, 0};
       if (reprojected) {
         pipeline.bind(cmd,

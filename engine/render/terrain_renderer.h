@@ -165,12 +165,13 @@ class TerrainRenderer {
   // The water and wireframe pipelines, created on a second thread while the others are (pipeline
   // creation is most of the renderer's set-up: docs/benchmark.md, "Cold start").
   struct OptionalPipelines {
-    std::unique_ptr<vk::GraphicsPipeline> water, wireframe;
+    std::unique_ptr<vk::GraphicsPipeline> water, waterSkirts, wireframe;
   };
   std::future<OptionalPipelines> pendingOptional_;
-  vk::GraphicsPipeline solid_;                   // grids, back faces culled
-  vk::GraphicsPipeline skirts_;                  // skirt strips, both sides
-  std::unique_ptr<vk::GraphicsPipeline> water_;  // grids of nodes with sea (planets with water only)
+  vk::GraphicsPipeline solid_;                         // grids, back faces culled
+  vk::GraphicsPipeline skirts_;                        // skirt strips, both sides
+  std::unique_ptr<vk::GraphicsPipeline> water_;        // grids of nodes with sea (planets with water only)
+  std::unique_ptr<vk::GraphicsPipeline> waterSkirts_;  // their skirts, both sides
   std::unique_ptr<vk::GraphicsPipeline> wireframe_;
   vk::GraphicsPipeline sky_;
   vk::Buffer indices_;
