@@ -128,6 +128,13 @@ Result<TerrainSettings> terrainSettingsFromOptions(const QualityOptions& options
   return settings;
 }
 
+void addHeightReferenceOption(CLI::App& cmd, std::string& heightRef) {
+  cmd.add_option("--height-ref", heightRef,
+                 "What --at's HEIGHT is measured from: ground (the terrain below the camera), or sphere / "
+                 "ellipsoid (the planet's reference surface: ellipsoidal height on an ellipsoidal planet)")
+      ->capture_default_str();
+}
+
 void addBudgetOptions(CLI::App& cmd, BudgetOptions& budget) {
   const FrameBudget defaults;
   cmd.add_option("--max-nodes", budget.maxNodes,

@@ -70,6 +70,8 @@ struct BudgetOptions {
   double vram_MiB = 0;
 };
 void addBudgetOptions(CLI::App& cmd, BudgetOptions& budget);
+// --height-ref: what --at's HEIGHT is measured from (parseHeightReference checks the value).
+void addHeightReferenceOption(CLI::App& cmd, std::string& heightRef);
 // Applies the given budgets to `settings` and validates them; errors name the options.
 Status applyBudgetOptions(const BudgetOptions& budget, TerrainSettings& settings);
 // A budget error (from the settings or Terrain::create, e.g. a VRAM budget too small for the

@@ -43,6 +43,7 @@ struct RenderOptions {
   DeviceFlags device;
   std::string planet;
   std::string at = "20,10,2000000";
+  std::string heightRef = "ground";
   std::string size = "1280x720";
   std::string out = "out/render.png";
   std::string mode = "terrain";
@@ -64,7 +65,9 @@ ImageRgba renderSphere(vk::Device& device, const Camera& camera, const Elevation
 }
 
 int runRender(const RenderOptions& o) {
-  auto pose = parsePose(o.at, "--at");
+  auto reference = parseHeightReference(o.heightRef, "--height-ref");
+  if (!reference) return usageError(reference.error());
+  auto pose = parsePose(o.at, "--at", *reference);
   if (!pose) return usageError(pose.error());
   auto size = parseSize(o.size, "--size");
   if (!size) return usageError(size.error());
@@ -85,6 +88,10 @@ int runRender(const RenderOptions& o) {
   const double ground = o.mode == "terrain"
                             ? queries.cameraFloorRadius(down, settings->ranges.maxDepth, settings->gridCells)
                             : model.radius_m() + queries.exactHeight_m(down);
+  if (*reference == HeightReference::sphere) {
+    pose = poseAboveGround(*pose, ground, model.radius_m(), "--at");
+    if (!pose) return usageError(pose.error());
+  }
   Camera camera = cameraFromPose(*pose, ground, model.shape(), aspect);
 
   vk::Device device(deviceOptions(o.device));
@@ -114,10 +121,12 @@ void addRenderCommand(CLI::App& app, Runner& run) {
   CLI::App* cmd = app.add_subcommand("render", "Render one frame headless to a PNG or OpenEXR file");
   cmd->add_option("--planet", opts->planet, "Planet file (TOML)")->capture_default_str();
   cmd->add_option("--at", opts->at,
-                  "Camera: LAT,LON,HEIGHT[,HEADING,PITCH,ROLL] in degrees and metres above the terrain; "
+                  "Camera: LAT,LON,HEIGHT[,HEADING,PITCH,ROLL] in degrees and metres above the terrain (or the "
+                  "reference surface, --height-ref); "
                   "heading clockwise from north, pitch 0 horizontal and -90 down; without the angles the "
                   "camera looks at the horizon")
       ->capture_default_str();
+  addHeightReferenceOption(*cmd, opts->heightRef);
   cmd->add_option("--size", opts->size, "Image size WxH in pixels")->capture_default_str();
   cmd->add_option("--out", opts->out, "Output file: .png (8-bit sRGB) or .exr (half RGB + float Z, metres)")
       ->capture_default_str();

@@ -6,6 +6,7 @@
 #include "engine/viewer/window.h"
 #include "engine/vk/device.h"
 #include "options.h"
+#include "planet/analysis/terrain_queries.h"
 #include "planet/camera/camera.h"
 #include "planet/camera/camera_path_file.h"
 #include "planet/core/atomic_file.h"
@@ -22,6 +23,7 @@ namespace {
 struct ViewCommandOptions {
   DeviceFlags device;
   std::string at = "20,10,2000000";
+  std::string heightRef = "ground";
   std::string size = "1280x720";
   int64_t frames = 0;
   std::string script;
@@ -152,7 +154,9 @@ int runViewer(const ViewCommandOptions& o, const ImageSize& size, ViewerOptions 
 }
 
 int runView(const ViewCommandOptions& o) {
-  auto pose = parsePose(o.at, "--at");
+  auto reference = parseHeightReference(o.heightRef, "--height-ref");
+  if (!reference) return usageError(reference.error());
+  auto pose = parsePose(o.at, "--at", *reference);
   if (!pose) return usageError(pose.error());
   auto size = parseSize(o.size, "--size");
   if (!size) return usageError(size.error());
@@ -160,6 +164,18 @@ int runView(const ViewCommandOptions& o) {
   viewer.pose = *pose;
   if (auto s = checkViewerOptions(o, viewer); !s) return usageError(s.error());
   if (auto s = checkSceneOptions(o, *pose, viewer.path, *size, viewer.scene); !s) return usageError(s.error());
+  if (*reference == HeightReference::sphere) {
+    // The viewer keeps its camera above what is drawn, like render: the same floor converts the height.
+    const ElevationModel model(viewer.scene.planet);
+    const glm::dvec3 down = directionFromLatLon(pose->latitude_deg, pose->longitude_deg);
+    const double ground = viewer.scene.mode == ViewerMode::kSphere
+                              ? model.radius_m()
+                              : TerrainQueries(model).cameraFloorRadius(down, viewer.scene.terrain.ranges.maxDepth,
+                                                                        viewer.scene.terrain.gridCells);
+    auto above = poseAboveGround(*pose, ground, model.radius_m(), "--at");
+    if (!above) return usageError(above.error());
+    viewer.pose = *above;
+  }
   return runViewer(o, *size, std::move(viewer));
 }
 
@@ -173,6 +189,7 @@ void addViewCommand(CLI::App& app, Runner& run) {
                   "Starting camera: LAT,LON,HEIGHT[,HEADING,PITCH,ROLL] in degrees and metres above the surface "
                   "(as for render)")
       ->capture_default_str();
+  addHeightReferenceOption(*cmd, opts->heightRef);
   cmd->add_option("--size", opts->size, "Window size WxH in pixels")->capture_default_str();
   cmd->add_option("--frames", opts->frames, "Quit after N frames (0: run until Esc or the window closes)")
       ->capture_default_str();

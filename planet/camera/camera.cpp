@@ -1,5 +1,7 @@
 #include "planet/camera/camera.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -24,7 +26,27 @@ Result<double> parseNumber(const std::string& text, const std::string& field, co
 }
 }  // namespace
 
-Result<GeodeticPose> parsePose(const std::string& text, const std::string& field) {
+Result<HeightReference> parseHeightReference(std::string_view text, const std::string& field) {
+  if (text == "ground") return HeightReference::ground;
+  if (text == "sphere" || text == "ellipsoid") return HeightReference::sphere;
+  return Error::inField(field, "must be 'ground', 'sphere' or 'ellipsoid', got '" + std::string(text) + "'");
+}
+
+Result<GeodeticPose> poseAboveGround(GeodeticPose pose, double groundRadius_m, double referenceRadius_m,
+                                     const std::string& field) {
+  const double terrain_m = groundRadius_m - referenceRadius_m;  // the ground above the reference surface
+  const double above_m = pose.height_m - terrain_m;
+  if (!(above_m > 0.0)) {
+    return Error::inField(field, fmt::format("height {:g} m above the reference surface is {} the ground there "
+                                             "({:.3f} m): the camera must be above it",
+                                             pose.height_m, above_m == 0.0 ? "on" : "under", terrain_m));
+  }
+  pose.height_m = above_m;
+  if (auto s = validatePose(pose, field); !s) return s.error();
+  return pose;
+}
+
+Result<GeodeticPose> parsePose(const std::string& text, const std::string& field, HeightReference reference) {
   std::vector<std::string> parts;
   std::stringstream ss(text);
   std::string part;
@@ -41,7 +63,16 @@ Result<GeodeticPose> parsePose(const std::string& text, const std::string& field
   }
   GeodeticPose pose{v[0], v[1], v[2], v[3], v[4], v[5]};
   if (parts.size() == 3) pose.pitch_deg = std::nan("");  // "look at the horizon", resolved later
-  if (auto s = validatePose(pose, field); !s) return s.error();
+  if (reference == HeightReference::ground) {
+    if (auto s = validatePose(pose, field); !s) return s.error();
+    return pose;
+  }
+  if (pose.height_m < -kMaxDepthBelowReference_m || pose.height_m > 1e12)
+    return Error::inField(field, fmt::format("height must be within [{:g}, 1e12] metres above the reference surface",
+                                             -kMaxDepthBelowReference_m));
+  GeodeticPose check = pose;
+  check.height_m = 1.0;  // the other fields; the height is checked against the ground later
+  if (auto s = validatePose(check, field); !s) return s.error();
   return pose;
 }
 

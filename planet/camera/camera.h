@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include <string>
+#include <string_view>
 
 namespace globe {
 
@@ -29,12 +30,31 @@ GeodeticPose standardCameraPose(int index);
 // "orbit", "100km", "10km", "1km", "2m".
 const char* standardCameraName(int index);
 
+// What a height is measured from (a path's height_ref column, the commands' --height-ref).
+enum class HeightReference {
+  ground,  // the terrain below the camera (the default)
+  sphere,  // the planet's reference surface: the sphere of radius_m, or on an ellipsoidal planet the
+           // ellipsoid (ellipsoidal height); elevation 0, KML altitudeMode "absolute"
+};
+
+// "ground", or "sphere" / "ellipsoid" (the same reference surface); errors name `field`.
+Result<HeightReference> parseHeightReference(std::string_view text, const std::string& field);
+
 // Parses "LAT,LON,HEIGHT[,HEADING,PITCH,ROLL]" (degrees, metres). Errors name `field`.
 // When HEADING/PITCH/ROLL are omitted the camera looks at the horizon (pitch is chosen so the
-// view centre sits just below the geometric horizon).
-Result<GeodeticPose> parsePose(const std::string& text, const std::string& field);
+// view centre sits just below the geometric horizon). HEIGHT is above `reference`: > 0 above the
+// ground; any height in [-kMaxDepthBelowReference_m, 1e12] above the reference surface.
+Result<GeodeticPose> parsePose(const std::string& text, const std::string& field,
+                               HeightReference reference = HeightReference::ground);
+inline constexpr double kMaxDepthBelowReference_m = 1e5;
 
-// Checks ranges and finiteness of a pose; errors name `field`.
+// The pose with a height above the reference surface of radius `referenceRadius_m` (a on an
+// ellipsoid) turned into the height above the ground of radius `groundRadius_m` (a + the ground's
+// ellipsoidal height) below it. A camera at or under the ground is an Error naming `field`.
+Result<GeodeticPose> poseAboveGround(GeodeticPose pose, double groundRadius_m, double referenceRadius_m,
+                                     const std::string& field);
+
+// Checks ranges and finiteness of a pose whose height is above the ground; errors name `field`.
 Status validatePose(const GeodeticPose& pose, const std::string& field);
 
 struct Camera {

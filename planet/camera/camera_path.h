@@ -33,12 +33,6 @@ namespace globe {
 // model's surface, or a constant sphere. Camera paths don't depend on the elevation model itself.
 using GroundRadiusFn = std::function<double(const glm::dvec3& unitDirection)>;
 
-// What a keyframe's height_m is measured from.
-enum class HeightReference {
-  ground,  // the terrain below the camera (the default, and all a path could say before)
-  sphere,  // the planet's reference sphere, radius_m (elevation 0; KML altitudeMode "absolute")
-};
-
 struct PathKeyframe {
   double time_s = 0;  // path time, seconds; strictly increasing along a path
   GeodeticPose pose;  // pitch must not be NaN (no "look at the horizon" default in paths)

@@ -50,6 +50,9 @@ expect 2 "--at: height must be within" "$O" -- "$GLOBE" render --at 0,0,-1 --out
 expect 2 "--at: latitude must be finite" "$O" -- "$GLOBE" render --at nan,0,10 --out "$O" --size 64x64
 expect 2 "--at: longitude must be finite" "$O" -- "$GLOBE" render --at 0,inf,10 --out "$O" --size 64x64
 expect 2 "--at: expected LAT,LON,HEIGHT" "$O" -- "$GLOBE" render --at 1,2 --out "$O" --size 64x64
+expect 2 "--height-ref: must be 'ground', 'sphere' or 'ellipsoid', got 'sea'" "$O" -- "$GLOBE" render --at 0,0,10 --height-ref sea --out "$O" --size 64x64
+# 100 m above the reference surface is under earthlike's plateau (ground at ~7 km there).
+expect 2 "--at: height 100 m above the reference surface is under the ground there" "$O" -- "$GLOBE" render --at 22,-98.4,100 --height-ref ellipsoid --out "$O" --size 64x64
 # Zero or empty values are errors, not a silent "the default" (leave the option out for that).
 expect 2 "--grid: .*0" "$O" -- "$GLOBE" render --grid 0 --out "$O" --size 64x64
 expect 2 "--quality: .*must not be empty" "$O" -- "$GLOBE" render --quality "" --out "$O" --size 64x64

@@ -119,6 +119,44 @@ TEST(Camera, AtRoundTripsOnWgs84) {
   EXPECT_EQ(cases, 9 * 6 * 3 * 6);
 }
 
+// --height-ref ellipsoid: HEIGHT is the ellipsoidal height; the camera stands exactly there, the
+// ground below it whatever its elevation (under the ellipsoid too), and under the ground is refused.
+TEST(Pose, EllipsoidalHeightsPlaceTheCameraAtThatHeight) {
+  EXPECT_EQ(*parseHeightReference("ground", "--height-ref"), HeightReference::ground);
+  EXPECT_EQ(*parseHeightReference("ellipsoid", "--height-ref"), HeightReference::sphere);
+  EXPECT_EQ(*parseHeightReference("sphere", "--height-ref"), HeightReference::sphere);
+  EXPECT_EQ(parseHeightReference("sea", "--height-ref").error().format(),
+            "--height-ref: must be 'ground', 'sphere' or 'ellipsoid', got 'sea'");
+  EXPECT_EQ(parsePose("0,0,-5", "--at", HeightReference::sphere)->height_m, -5.0);
+  EXPECT_EQ(parsePose("0,0,-2e5", "--at", HeightReference::sphere).error().format(),
+            "--at: height must be within [-100000, 1e12] metres above the reference surface");
+  EXPECT_EQ(parsePose("95,0,10", "--at", HeightReference::sphere).error().format(),
+            "--at: latitude must be within [-90, 90] degrees");
+
+  const Ellipsoid wgs84 = Ellipsoid::wgs84();
+  const double a = wgs84.equatorialRadius_m();
+  for (double lat : {-90.0, -33.0, 0.0, 46.5, 90.0})
+    for (double ground_m : {-420.0, 0.0, 4807.0})
+      for (double height_m : {-400.0, 1.0, 5000.0, 2e7}) {
+        SCOPED_TRACE(::testing::Message() << lat << " ground " << ground_m << " height " << height_m);
+        auto pose = parsePose(std::to_string(lat) + ",7.5," + std::to_string(height_m) + ",0,-10,0", "--at",
+                              HeightReference::sphere);
+        ASSERT_TRUE(pose.ok());
+        auto above = poseAboveGround(*pose, a + ground_m, a, "--at");
+        if (height_m <= ground_m) {
+          ASSERT_FALSE(above.ok());
+          EXPECT_NE(above.error().format().find("--at: height"), std::string::npos);
+          EXPECT_NE(above.error().format().find("the camera must be above it"), std::string::npos);
+          continue;
+        }
+        ASSERT_TRUE(above.ok()) << above.error().format();
+        const Camera c = cameraFromPose(*above, a + ground_m, wgs84, 1.5);
+        const GeodeticPoint g = wgs84.geodeticFromGeocentric(c.position_m);
+        EXPECT_NEAR(g.height_m, height_m, std::max(1e-6, 4e-16 * glm::length(c.position_m)));
+        EXPECT_NEAR(g.latitude_deg, lat, 1e-9);
+      }
+}
+
 // On a sphere the ellipsoid overload is the sphere placement, bit for bit.
 TEST(Camera, SphereShapeIsTheSpherePlacementBitForBit) {
   const GeodeticPose pose{22.1, -98.4, 2.0, 60.0, -10.0, 0.0};
