@@ -77,26 +77,12 @@ struct FixedFunctionState {
   VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
 };
 
-// Binding 0: one combined image sampler read by the fragment shader, pushed per draw.
-UniqueDescriptorSetLayout sampledImageSetLayout(Device& device) {
-  const VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
-                                             VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
-  VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-  info.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
-  info.bindingCount = 1;
-  info.pBindings = &binding;
-  VkDescriptorSetLayout layout;
-  GLOBE_VK_CHECK(vkCreateDescriptorSetLayout(device.device(), &info, nullptr, &layout));
-  return UniqueDescriptorSetLayout(device.device(), layout);
-}
-
 }  // namespace
 
 GraphicsPipeline::GraphicsPipeline(Device& device, const GraphicsPipelineDesc& desc) {
   pushDescriptorSet_ = pushDescriptorSetFunction(device);
   uniformMask_ = desc.uniformMask;
-  setLayout_ = desc.sampledImage ? sampledImageSetLayout(device)
-                                 : storageBufferSetLayout(device, desc.storageBuffers, stages_, desc.uniformMask);
+  setLayout_ = storageBufferSetLayout(device, desc.storageBuffers, stages_, desc.uniformMask);
   layout_ = pushDescriptorPipelineLayout(device, setLayout_, stages_, desc.pushConstantBytes);
 
   UniqueShaderModule vert = loadShaderModule(device, desc.vertexShader);
@@ -126,18 +112,6 @@ void GraphicsPipeline::bind(VkCommandBuffer cmd, std::initializer_list<VkDescrip
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
   if (buffers.size())
     pushStorageBuffers(pushDescriptorSet_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, buffers, uniformMask_);
-  if (pushConstantBytes) vkCmdPushConstants(cmd, layout_, stages_, 0, pushConstantBytes, pushConstants);
-}
-
-void GraphicsPipeline::bindImage(VkCommandBuffer cmd, const VkDescriptorImageInfo& image, const void* pushConstants,
-                                 uint32_t pushConstantBytes) const {
-  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-  write.dstBinding = 0;
-  write.descriptorCount = 1;
-  write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-  write.pImageInfo = &image;
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
-  pushDescriptorSet_(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &write);
   if (pushConstantBytes) vkCmdPushConstants(cmd, layout_, stages_, 0, pushConstantBytes, pushConstants);
 }
 

@@ -28,7 +28,6 @@ struct GraphicsPipelineDesc {
   VkCullModeFlags cull = VK_CULL_MODE_NONE;
   bool blend = false;                                     // premultiplied-alpha blending (overlays)
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  // the target's (OffscreenTarget::samples)
-  bool sampledImage = false;  // binding 0 is one combined image sampler (fragment stage) instead of buffers
 };
 
 class GraphicsPipeline {
@@ -37,9 +36,6 @@ class GraphicsPipeline {
 
   void bind(VkCommandBuffer cmd, std::initializer_list<VkDescriptorBufferInfo> buffers, const void* pushConstants,
             uint32_t pushConstantBytes) const;
-  // A pipeline made with sampledImage: binds it with `image` at binding 0.
-  void bindImage(VkCommandBuffer cmd, const VkDescriptorImageInfo& image, const void* pushConstants,
-                 uint32_t pushConstantBytes) const;
 
   VkPipeline pipeline() const { return pipeline_; }
   VkPipelineLayout layout() const { return layout_; }

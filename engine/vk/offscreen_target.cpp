@@ -59,9 +59,10 @@ OffscreenTarget::OffscreenTarget(Device& device, VkExtent2D extent, Antialiasing
       depthReadback_(device, VkDeviceSize(extent.width) * extent.height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                      MemoryUse::HostVisible, "depth readback") {
   if (antialiasing_ == Antialiasing::kFxaa) {
-    fxaaInput_ = Image(device, kColourFormat, extent, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                       VK_IMAGE_ASPECT_COLOR_BIT, "offscreen colour (before FXAA)");
-    fxaa_ = std::make_unique<FxaaPass>(device);
+    fxaaInput_ =
+        Image(device, kColourFormat, extent, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+              VK_IMAGE_ASPECT_COLOR_BIT, "offscreen colour (before FXAA)");
+    fxaa_ = std::make_unique<FxaaPass>(device, extent);
   }
   if (antialiasing_ != Antialiasing::kMsaa4) return;
   // Transient: only the resolved images outlive the pass.
@@ -130,7 +131,8 @@ void OffscreenTarget::drawMultisampled(VkCommandBuffer cmd, VkRenderingAttachmen
 
 void OffscreenTarget::filter(VkCommandBuffer cmd) {
   transitionImage(cmd, fxaaInput_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+                  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+  fxaa_->copy(cmd, fxaaInput_);
   VkRenderingAttachmentInfo colour{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
   colour.imageView = colour_.view();
   colour.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
@@ -143,7 +145,7 @@ void OffscreenTarget::filter(VkCommandBuffer cmd) {
   info.pColorAttachments = &colour;
   vkCmdBeginRendering(cmd, &info);
   setWholeViewport(cmd, extent());
-  fxaa_->record(cmd, fxaaInput_);
+  fxaa_->record(cmd);
   vkCmdEndRendering(cmd);
 }
 
