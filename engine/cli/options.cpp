@@ -100,6 +100,15 @@ void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid) {
   cmd.add_option("--quality", options.quality,
                  "fast, balanced or exact (docs/tradeoffs.md; default: the planet's default_quality)")
       ->check(nonEmptyValue());
+  cmd.add_option(
+         "--aa", options.antialiasing,
+         "Anti-aliasing: none, fxaa or msaa4 (docs/rendering.md, \"Anti-aliasing\"; default: the quality preset's)")
+      ->check(CLI::Validator(
+          [](const std::string& text) -> std::string {
+            auto aa = vk::parseAntialiasing(text, "--aa");
+            return aa ? std::string() : aa.error().message;
+          },
+          "AA"));
   cmd.add_option("--tolerance", options.tolerance_px,
                  "Screen error in pixels the LOD keeps within (0.05..1000; docs/lod.md; default: the preset's LOD)")
       ->check(CLI::Validator(
@@ -119,6 +128,11 @@ Result<TerrainSettings> terrainSettingsFromOptions(const QualityOptions& options
   TerrainSettings settings = terrainSettingsFor(*preset);
   if (options.gridCells) settings.gridCells = options.gridCells;
   if (options.tolerance_px > 0) settings.ranges.tolerance_px = options.tolerance_px;
+  if (!options.antialiasing.empty()) {
+    auto aa = vk::parseAntialiasing(options.antialiasing, "--aa");
+    if (!aa) return aa.error();
+    settings.antialiasing = *aa;
+  }
   settings.viewHeight_px = viewHeight_px;
   if (auto s = validateTerrainSettings(settings); !s) {
     Error e = s.error();

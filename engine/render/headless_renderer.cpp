@@ -36,7 +36,7 @@ void readGpuTimes(VkDevice device, VkQueryPool queries, double timestampPeriod_n
 
 HeadlessRenderer::HeadlessRenderer(vk::Device& device, VkExtent2D extent)
     : device_(device),
-      target_(device, extent),
+      target_(std::make_unique<vk::OffscreenTarget>(device, extent)),
       pool_(vk::createCommandPool(device.device(), device.queueFamily(),
                                   VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT)),
       cmd_(vk::allocateCommandBuffer(device.device(), pool_.get())),
@@ -64,17 +64,19 @@ FrameStats HeadlessRenderer::renderFrame(Terrain& terrain, const Camera& camera,
     frame_ += 1;
     terrain.update(frame_, camera, frame_ - 1);
   }
+  if (const vk::Antialiasing aa = terrain.settings().antialiasing; aa != target_->antialiasing())
+    target_ = std::make_unique<vk::OffscreenTarget>(device_, target_->extent(), aa);  // earlier frames completed
   vkResetQueryPool(device_.device(), queries_, 0, kQueryCount);
   GLOBE_VK_CHECK(vkResetCommandBuffer(cmd_, 0));
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   GLOBE_VK_CHECK(vkBeginCommandBuffer(cmd_, &begin));
   vkCmdWriteTimestamp2(cmd_, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, queries_, kFrameBeginQuery);
-  target_.begin(cmd_, clear_.data());
+  target_->begin(cmd_, clear_.data());
   terrain.renderer().setPassTimestamps({queries_, kFirstPassQuery});
   terrain.record(cmd_, camera, uint32_t(frame_ % 2));
   terrain.renderer().setPassTimestamps({});  // the terrain may be drawn elsewhere next (tests)
-  target_.end(cmd_);
+  target_->end(cmd_);
   vkCmdWriteTimestamp2(cmd_, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, queries_, kFrameEndQuery);
   GLOBE_VK_CHECK(vkEndCommandBuffer(cmd_));
   VkFence fence = fence_;

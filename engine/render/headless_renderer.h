@@ -6,6 +6,7 @@
 #include "engine/vk/offscreen_target.h"
 
 #include <array>
+#include <memory>
 
 namespace globe {
 
@@ -18,16 +19,18 @@ class HeadlessRenderer {
   // Returns the frame's statistics.
   FrameStats renderFrame(Terrain& terrain, const Camera& camera, bool converge);
 
-  vk::ReadbackImage readback() { return target_.readback(); }
+  // The target follows the terrain's anti-aliasing: a frame of a terrain with another one than the
+  // last frame's remakes it (TerrainSettings::antialiasing).
+  vk::ReadbackImage readback() { return target_->readback(); }
   // Colour the target is cleared to before each frame (default opaque black). Tests clear to a
   // colour the terrain never writes (e.g. magenta with alpha 0) to find holes.
   void setClearColour(const std::array<float, 4>& rgba) { clear_ = rgba; }
-  VkExtent2D extent() const { return target_.extent(); }
+  VkExtent2D extent() const { return target_->extent(); }
   uint64_t frame() const { return frame_; }
 
  private:
   vk::Device& device_;
-  vk::OffscreenTarget target_;
+  std::unique_ptr<vk::OffscreenTarget> target_;
   vk::UniqueCommandPool pool_;
   VkCommandBuffer cmd_ = VK_NULL_HANDLE;
   vk::UniqueFence fence_;

@@ -79,8 +79,19 @@ void Terrain::attachPool(std::unique_ptr<PayloadPool> pool) {
   style.holes = model_.sources() != nullptr && model_.sources()->hasHoles();
   style.water = model_.water();
   style.seaLevel_m = model_.seaLevel_m();
-  renderer_ = std::make_unique<TerrainRenderer>(device_, settings_.gridCells, style, settings_.vertexPositions);
+  renderer_ = std::make_unique<TerrainRenderer>(device_, settings_.gridCells, style, settings_.vertexPositions, 1024,
+                                                vk::kSceneColourFormat, vk::sampleCount(settings_.antialiasing));
   drawNodes_.reserve(4096);
+}
+
+void Terrain::setAntialiasing(vk::Antialiasing antialiasing) {
+  if (antialiasing == settings_.antialiasing) return;
+  // The renderer's per-frame buffers may be in use by frames in flight.
+  GLOBE_VK_CHECK(vkDeviceWaitIdle(device_.device()));
+  settings_.antialiasing = antialiasing;
+  renderer_ =
+      std::make_unique<TerrainRenderer>(device_, settings_.gridCells, renderer_->style(), settings_.vertexPositions,
+                                        1024, vk::kSceneColourFormat, vk::sampleCount(antialiasing));
 }
 
 Terrain::~Terrain() {

@@ -5,6 +5,7 @@
 // the headless renderer and the benchmark run exactly the same frame.
 #include "engine/generation/payload_generator.h"
 #include "engine/render/terrain_renderer.h"
+#include "engine/vk/antialiasing.h"
 #include "planet/analysis/frame_stats.h"
 #include "planet/camera/camera.h"
 #include "planet/camera/floating_origin.h"
@@ -36,6 +37,9 @@ struct TerrainSettings {
   // so no frame shows an empty planet. Rounds, not milliseconds, so replays stay deterministic.
   // 0: start empty (tests of cold streaming).
   uint32_t primeRounds = 12;
+  // The target the terrain is drawn into must be made with the same (OffscreenTarget): its samples
+  // per pixel are the pipelines' (HeadlessRenderer follows the terrain's; the viewer makes its target so).
+  vk::Antialiasing antialiasing = vk::Antialiasing::kNone;
 };
 
 // Bad settings and planets are reported as an Error naming the field.
@@ -57,6 +61,10 @@ class Terrain {
   const FrameStats& update(uint64_t frame, const Camera& camera, uint64_t completedFrame);
   // Records the draw of the last update(). `frameIndex`: which per-frame buffers to use (frame % 2).
   void record(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex);
+
+  // Remakes the renderer's pipelines for another anti-aliasing (the payloads stay): `globe trade`
+  // times the frame with the preset's and measures depth single-sampled, at the pixel centres.
+  void setAntialiasing(vk::Antialiasing antialiasing);
 
   // True when the last selection drew every node at its wanted level and nothing is queued (except
   // prefetch the full pool declined) or being generated: the view has fully converged.

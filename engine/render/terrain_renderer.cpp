@@ -48,7 +48,13 @@ uint32_t drawGroup(const DrawNode& n, uint32_t range) {
   return range + (n.partial ? 1u : 0u) + (n.water ? kWaterGroups : 0u);
 }
 
-vk::GraphicsPipelineDesc terrainDesc(VkFormat colourFormat, bool wireframe, VkCullModeFlags cull,
+// The target's colour format and samples per pixel.
+struct TargetFormat {
+  VkFormat colour;
+  VkSampleCountFlagBits samples;
+};
+
+vk::GraphicsPipelineDesc terrainDesc(TargetFormat target, bool wireframe, VkCullModeFlags cull,
                                      VertexPositions positions, const char* fragmentShader) {
   vk::GraphicsPipelineDesc d;
   const bool reprojected = positions == VertexPositions::kReprojected;
@@ -58,7 +64,8 @@ vk::GraphicsPipelineDesc terrainDesc(VkFormat colourFormat, bool wireframe, VkCu
   d.storageBuffers = reprojected ? 5 : 3;
   d.uniformMask = 1u << 2;
   d.pushConstantBytes = sizeof(gpu::TerrainDrawPush);
-  d.colourFormat = colourFormat;
+  d.colourFormat = target.colour;
+  d.samples = target.samples;
   d.wireframe = wireframe;
   d.cull = cull;
   return d;
@@ -102,7 +109,8 @@ gpu::TerrainVec4 toGpu(const glm::vec3& v, float w) { return {v.x, v.y, v.z, w};
 }  // namespace
 
 TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const TerrainStyle& style,
-                                 VertexPositions positions, uint32_t initialNodes, VkFormat colourFormat)
+                                 VertexPositions positions, uint32_t initialNodes, VkFormat colourFormat,
+                                 VkSampleCountFlagBits samples)
     : device_(device),
       cells_(gridCells),
       style_(style),
@@ -112,27 +120,28 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
       // surface and the hole's rim are seen from below through the hole too.
       pendingOptional_(std::async(
           std::launch::async,
-          [&device, style, positions, colourFormat] {
+          [&device, style, positions, target = TargetFormat{colourFormat, samples}] {
             OptionalPipelines made;
             if (style.water.enabled) {
               made.water = std::make_unique<vk::GraphicsPipeline>(
-                  device, terrainDesc(colourFormat, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT,
-                                      positions, style.holes ? "terrain_water_holes.frag" : "terrain_water.frag"));
+                  device, terrainDesc(target, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT, positions,
+                                      style.holes ? "terrain_water_holes.frag" : "terrain_water.frag"));
               made.waterSkirts = std::make_unique<vk::GraphicsPipeline>(
-                  device, terrainDesc(colourFormat, false, VK_CULL_MODE_NONE, positions,
+                  device, terrainDesc(target, false, VK_CULL_MODE_NONE, positions,
                                       style.holes ? "terrain_water_holes.frag" : "terrain_water.frag"));
             }
             VkPhysicalDeviceFeatures features{};
             vkGetPhysicalDeviceFeatures(device.physical(), &features);
             if (features.fillModeNonSolid) {
               made.wireframe = std::make_unique<vk::GraphicsPipeline>(
-                  device, terrainDesc(colourFormat, true, VK_CULL_MODE_NONE, positions, "terrain.frag"));
+                  device, terrainDesc(target, true, VK_CULL_MODE_NONE, positions, "terrain.frag"));
             }
             return made;
           })),
-      solid_(device, terrainDesc(colourFormat, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT,
-                                 positions, style.holes ? "terrain_holes.frag" : "terrain.frag")),
-      skirts_(device, terrainDesc(colourFormat, false, VK_CULL_MODE_NONE, positions,
+      solid_(device,
+             terrainDesc({colourFormat, samples}, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT,
+                         positions, style.holes ? "terrain_holes.frag" : "terrain.frag")),
+      skirts_(device, terrainDesc({colourFormat, samples}, false, VK_CULL_MODE_NONE, positions,
                                   style.holes ? "terrain_holes.frag" : "terrain.frag")),
       sky_(device, [&] {
         vk::GraphicsPipelineDesc d;
@@ -140,6 +149,7 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
         d.fragmentShader = "terrain_sky.frag";
         d.pushConstantBytes = sizeof(SkyPush);
         d.colourFormat = colourFormat;
+        d.samples = samples;
         d.depthTest = true;  // GREATER_OR_EQUAL against depth 0: passes only where nothing was drawn
         d.depthWrite = false;
         return d;

@@ -99,10 +99,11 @@ class TerrainRenderer {
   static uint64_t maxTrianglesPerNode(uint32_t gridCells) { return 2ull * gridCells * (gridCells + 4ull); }
   // gridCells: payload grid cells per node side, a power of two in [16, 256]. initialNodes: per-frame
   // capacity allocated up front (grows when exceeded). Pipelines target OffscreenTarget's formats
-  // unless `colourFormat` says otherwise (e.g. a swapchain's).
+  // unless `colourFormat` says otherwise (e.g. a swapchain's); `samples`: the target's samples per pixel.
   TerrainRenderer(vk::Device& device, uint32_t gridCells, const TerrainStyle& style = {},
                   VertexPositions positions = VertexPositions::kStored, uint32_t initialNodes = 1024,
-                  VkFormat colourFormat = vk::kSceneColourFormat);
+                  VkFormat colourFormat = vk::kSceneColourFormat,
+                  VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT);
   ~TerrainRenderer();
   TerrainRenderer(const TerrainRenderer&) = delete;
   TerrainRenderer& operator=(const TerrainRenderer&) = delete;

@@ -63,6 +63,11 @@ std::unique_ptr<ViewerScene> makeScene(vk::Device& device, ViewerSceneOptions op
   return std::move(*scene);
 }
 
+// The scene target's anti-aliasing: the terrain's (the sphere mode's passes draw one sample per pixel).
+vk::Antialiasing sceneAntialiasing(const ViewerSceneOptions& scene) {
+  return scene.mode == ViewerMode::kTerrain ? scene.terrain.antialiasing : vk::Antialiasing::kNone;
+}
+
 }  // namespace
 
 using Clock = std::chrono::steady_clock;
@@ -74,7 +79,7 @@ struct Viewer::State {
         options(std::move(o)),
         swapchain(d, w.framebufferExtent(), options.vsync),
         ring(d),
-        target(std::make_unique<vk::OffscreenTarget>(d, swapchain.extent())),
+        target(std::make_unique<vk::OffscreenTarget>(d, swapchain.extent(), sceneAntialiasing(options.scene))),
         scene(makeScene(d, options.scene)),
         overlay(std::make_unique<Overlay>(d, w, swapchain)),
         // The scene outlives the camera (declared earlier), and is never replaced: a reload
@@ -255,8 +260,9 @@ bool Viewer::State::recreateSwapchain() {
   overlay->attach(swapchain);
   VkExtent2D size = swapchain.extent();
   if (size.width != target->extent().width || size.height != target->extent().height) {
+    const vk::Antialiasing aa = target->antialiasing();
     releases.retire(frame, std::move(target));
-    target = std::make_unique<vk::OffscreenTarget>(device, size);
+    target = std::make_unique<vk::OffscreenTarget>(device, size, aa);
   }
   swapchainStale = false;
   return true;

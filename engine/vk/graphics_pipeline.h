@@ -26,7 +26,8 @@ struct GraphicsPipelineDesc {
   bool depthWrite = true;
   bool wireframe = false;  // needs fillModeNonSolid
   VkCullModeFlags cull = VK_CULL_MODE_NONE;
-  bool blend = false;  // premultiplied-alpha blending (overlays)
+  bool blend = false;                                     // premultiplied-alpha blending (overlays)
+  VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  // the target's (OffscreenTarget::samples)
 };
 
 class GraphicsPipeline {

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <tuple>
 
 #include <stdexcept>
 
@@ -36,9 +37,15 @@ const std::array<float, 256>& linearOfCode() {
   }();
   return table;
 }
+void setWholeViewport(VkCommandBuffer cmd, VkExtent2D extent) {
+  VkViewport viewport{0, 0, float(extent.width), float(extent.height), 0, 1};
+  VkRect2D scissor{{0, 0}, extent};
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+}
 }  // namespace
 
-OffscreenTarget::OffscreenTarget(Device& device, VkExtent2D extent)
+OffscreenTarget::OffscreenTarget(Device& device, VkExtent2D extent, Antialiasing antialiasing)
     : device_(device),
       colour_(device, kColourFormat, checkedExtent(device, extent),
               VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT,
@@ -46,10 +53,26 @@ OffscreenTarget::OffscreenTarget(Device& device, VkExtent2D extent)
       depth_(device, kDepthFormat, extent,
              VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_DEPTH_BIT,
              "offscreen depth"),
+      antialiasing_(antialiasing),
       colourReadback_(device, VkDeviceSize(extent.width) * extent.height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                       MemoryUse::HostVisible, "colour readback"),
       depthReadback_(device, VkDeviceSize(extent.width) * extent.height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                     MemoryUse::HostVisible, "depth readback") {}
+                     MemoryUse::HostVisible, "depth readback") {
+  if (antialiasing_ == Antialiasing::kFxaa) {
+    fxaaInput_ =
+        Image(device, kColourFormat, extent, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+              VK_IMAGE_ASPECT_COLOR_BIT, "offscreen colour (before FXAA)");
+    fxaa_ = std::make_unique<FxaaPass>(device, extent);
+  }
+  if (antialiasing_ != Antialiasing::kMsaa4) return;
+  // Transient: only the resolved images outlive the pass.
+  multisampledColour_ = Image(device, kColourFormat, extent,
+                              VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
+                              VK_IMAGE_ASPECT_COLOR_BIT, "offscreen colour (multisampled)", samples());
+  multisampledDepth_ = Image(device, kDepthFormat, extent,
+                             VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
+                             VK_IMAGE_ASPECT_DEPTH_BIT, "offscreen depth (multisampled)", samples());
+}
 
 void OffscreenTarget::begin(VkCommandBuffer cmd, const float clear[4]) {
   VkImageLayout colourFrom = initialised_ ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED;
@@ -73,6 +96,12 @@ void OffscreenTarget::begin(VkCommandBuffer cmd, const float clear[4]) {
   depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
   depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
   depth.clearValue.depthStencil = {0.0f, 0};  // reversed-Z: far is 0
+  if (antialiasing_ == Antialiasing::kMsaa4) drawMultisampled(cmd, colour, depth);
+  if (fxaa_) {
+    transitionImage(cmd, fxaaInput_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+    colour.imageView = fxaaInput_.view();
+  }
   VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
   info.renderArea = {{0, 0}, extent()};
   info.layerCount = 1;
@@ -80,15 +109,49 @@ void OffscreenTarget::begin(VkCommandBuffer cmd, const float clear[4]) {
   info.pColorAttachments = &colour;
   info.pDepthAttachment = &depth;
   vkCmdBeginRendering(cmd, &info);
+  setWholeViewport(cmd, extent());
+}
 
-  VkViewport viewport{0, 0, float(extent().width), float(extent().height), 0, 1};
-  VkRect2D scissor{{0, 0}, extent()};
-  vkCmdSetViewport(cmd, 0, 1, &viewport);
-  vkCmdSetScissor(cmd, 0, 1, &scissor);
+void OffscreenTarget::drawMultisampled(VkCommandBuffer cmd, VkRenderingAttachmentInfo& colour,
+                                       VkRenderingAttachmentInfo& depth) {
+  // Cleared every frame: the previous contents are not needed.
+  transitionImage(cmd, multisampledColour_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                  VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+  transitionImage(cmd, multisampledDepth_.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                  VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+  for (auto [attachment, image, mode] : {std::tuple{&colour, &multisampledColour_, VK_RESOLVE_MODE_AVERAGE_BIT},
+                                         std::tuple{&depth, &multisampledDepth_, VK_RESOLVE_MODE_SAMPLE_ZERO_BIT}}) {
+    attachment->resolveMode = mode;  // SAMPLE_ZERO: the depth resolve every device supports
+    attachment->resolveImageView = attachment->imageView;
+    attachment->resolveImageLayout = attachment->imageLayout;
+    attachment->imageView = image->view();
+    attachment->storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  }
+}
+
+void OffscreenTarget::filter(VkCommandBuffer cmd) {
+  transitionImage(cmd, fxaaInput_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+  fxaa_->copy(cmd, fxaaInput_);
+  VkRenderingAttachmentInfo colour{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  colour.imageView = colour_.view();
+  colour.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  colour.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;  // every pixel is written
+  colour.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
+  info.renderArea = {{0, 0}, extent()};
+  info.layerCount = 1;
+  info.colorAttachmentCount = 1;
+  info.pColorAttachments = &colour;
+  vkCmdBeginRendering(cmd, &info);
+  setWholeViewport(cmd, extent());
+  fxaa_->record(cmd);
+  vkCmdEndRendering(cmd);
 }
 
 void OffscreenTarget::end(VkCommandBuffer cmd) {
   vkCmdEndRendering(cmd);
+  if (fxaa_) filter(cmd);
   transitionImage(cmd, colour_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                   VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
   transitionImage(cmd, depth_.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,

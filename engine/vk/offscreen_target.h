@@ -1,10 +1,17 @@
 #pragma once
 // An offscreen render target: display-encoded 8-bit colour (kSceneColourFormat) and a 32-bit float
 // depth buffer (reversed-Z: 1 is near, 0 is infinitely far), with readback to linear floats.
+// Anti-aliased (antialiasing.h): with MSAA x4 the pass draws into multisampled colour and depth images
+// and resolves them at its end into the one-sample images that are read back or copied: colour
+// averaged, depth from sample 0 (at the standard location, not the pixel centre). With FXAA it draws
+// into an intermediate colour image that end() filters into the colour image; depth as without.
+#include "engine/vk/antialiasing.h"
+#include "engine/vk/fxaa_pass.h"
 #include "engine/vk/graphics_pipeline.h"
 #include "engine/vk/resources.h"
 #include "planet/core/error.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -31,9 +38,12 @@ class OffscreenTarget {
   static constexpr VkFormat kColourFormat = kSceneColourFormat;
   static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
-  OffscreenTarget(Device& device, VkExtent2D extent);
+  OffscreenTarget(Device& device, VkExtent2D extent, Antialiasing antialiasing = Antialiasing::kNone);
 
   VkExtent2D extent() const { return colour_.extent(); }
+  // Samples per pixel of the pass: every pipeline drawing into it must have as many.
+  VkSampleCountFlagBits samples() const { return sampleCount(antialiasing_); }
+  Antialiasing antialiasing() const { return antialiasing_; }
   const Image& colour() const { return colour_; }
   const Image& depth() const { return depth_; }
 
@@ -46,9 +56,19 @@ class OffscreenTarget {
   ReadbackImage readback();
 
  private:
+  // Points `colour` and `depth` at the multisampled images, resolving into the one-sample ones.
+  void drawMultisampled(VkCommandBuffer cmd, VkRenderingAttachmentInfo& colour, VkRenderingAttachmentInfo& depth);
+  // FXAA: the second pass, fxaaInput_ into colour_.
+  void filter(VkCommandBuffer cmd);
+
   Device& device_;
   Image colour_;
   Image depth_;
+  Antialiasing antialiasing_;
+  Image multisampledColour_;  // MSAA only: what the pass draws into
+  Image multisampledDepth_;
+  Image fxaaInput_;  // FXAA only: what the pass draws into, then end() filters into colour_
+  std::unique_ptr<FxaaPass> fxaa_;
   Buffer colourReadback_;
   Buffer depthReadback_;
   bool initialised_ = false;

@@ -48,7 +48,7 @@ Buffer::Buffer(Device& device, VkDeviceSize sizeBytes, VkBufferUsageFlags usage,
 }
 
 Image::Image(Device& device, VkFormat format, VkExtent2D extent, VkImageUsageFlags usage, VkImageAspectFlags aspect,
-             const char* name)
+             const char* name, VkSampleCountFlagBits samples)
     : format_(format), extent_(extent), aspect_(aspect) {
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
   info.imageType = VK_IMAGE_TYPE_2D;
@@ -56,7 +56,7 @@ Image::Image(Device& device, VkFormat format, VkExtent2D extent, VkImageUsageFla
   info.extent = {extent.width, extent.height, 1};
   info.mipLevels = 1;
   info.arrayLayers = 1;
-  info.samples = VK_SAMPLE_COUNT_1_BIT;
+  info.samples = samples;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
   info.usage = usage;
   info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;

@@ -38,7 +38,7 @@ class Image {
  public:
   Image() = default;
   Image(Device& device, VkFormat format, VkExtent2D extent, VkImageUsageFlags usage, VkImageAspectFlags aspect,
-        const char* name);
+        const char* name, VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT);
 
   VkImage handle() const { return image_; }
   VkImageView view() const { return view_; }

@@ -91,7 +91,8 @@ GeodeticPose overTheHole(GeodeticPose pose) {
 
 // One process-like run on a fresh device (its own Mesa screen and cache handle): the views through
 // Terrain + HeadlessRenderer (budgeted frames, every fourth converged, so generation batches vary
-// in size), each view also as a sphere preview and an elevation batch of a different size.
+// in size; the planet with MSAA x4, the DEM with FXAA), each view also as a sphere preview and an
+// elevation batch of a different size.
 void renderViews(const std::vector<View>& views, const ElevationModel& holes) {
   vk::DeviceOptions options;
   options.validation = true;
@@ -100,14 +101,16 @@ void renderViews(const std::vector<View>& views, const ElevationModel& holes) {
   const ElevationModel& model = earthlikeModel();
   TerrainSettings settings;
   settings.gridCells = 16;
+  settings.antialiasing = vk::Antialiasing::kMsaa4;
   auto terrain = Terrain::create(device, model, settings);
   ASSERT_TRUE(terrain.ok()) << terrain.error().format();
   const uint32_t w = 96, h = 64;
-  HeadlessRenderer renderer(device, {w, h});
+  HeadlessRenderer renderer(device, {w, h}), holeRenderer(device, {w, h});
   vk::OffscreenTarget sphereTarget(device, {w, h});
   SpherePreview sphere(device);
   SphereGrid grid(device);
   ElevationSampler sampler(device, model.params(), 512);
+  settings.antialiasing = vk::Antialiasing::kFxaa;
   auto holeTerrain = Terrain::create(device, holes, settings);
   ASSERT_TRUE(holeTerrain.ok()) << holeTerrain.error().format();
   ASSERT_TRUE((*holeTerrain)->renderer().style().holes);
@@ -136,7 +139,7 @@ void renderViews(const std::vector<View>& views, const ElevationModel& holes) {
     holeStyle.sunDirection = v.sun;
     holeStyle.debug = v.debug;
     (*holeTerrain)->renderer().setStyle(holeStyle);
-    renderer.renderFrame(**holeTerrain, holeCamera, k % 4 == 0);
+    holeRenderer.renderFrame(**holeTerrain, holeCamera, k % 4 == 0);
     ++k;
   }
   const auto messages = device.validation().messages();
