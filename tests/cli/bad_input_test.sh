@@ -57,6 +57,8 @@ expect 2 "--at: height 100 m above the reference surface is under the ground the
 expect 2 "--grid: .*0" "$O" -- "$GLOBE" render --grid 0 --out "$O" --size 64x64
 expect 2 "--quality: .*must not be empty" "$O" -- "$GLOBE" render --quality "" --out "$O" --size 64x64
 expect 2 "--quality: .*must not be empty" "" -- "$GLOBE" bench --quality "" --out "$WORK/bench"
+expect 2 "--aa: unknown anti-aliasing 'msaa8' \(none, fxaa, msaa4\)" "$O" -- "$GLOBE" render --aa msaa8 --out "$O" --size 64x64
+expect 2 "--aa: unknown anti-aliasing 'smaa'" "" -- "$GLOBE" bench --aa smaa --out "$WORK/bench"
 expect 2 "--stride: .*0" "" -- "$GLOBE" trade --quick --stride 0 --out "$WORK/trade"
 expect 2 "--png-width: .*0" "$WORK/p.png" -- "$GLOBE" planet export --width 64 --out "$WORK/m.exr" --png "$WORK/p.png" --png-width 0
 # Sizes that wrap modulo 2^32 or need more memory than the limit.
