@@ -45,11 +45,12 @@ void addDeviceFlags(CLI::App& cmd, DeviceFlags& flags);
 
 // The quality options of every rendering command.
 struct QualityOptions {
-  std::string quality;      // --quality; empty: the planet's default_quality
-  uint32_t gridCells = 0;   // --grid; 0: the preset's grid
-  double tolerance_px = 0;  // --tolerance; 0: the preset's LOD (distance or tolerance ranges)
+  std::string quality;          // --quality; empty: the planet's default_quality
+  uint32_t gridCells = 0;       // --grid; 0: the preset's grid
+  double tolerance_px = 0;      // --tolerance; 0: the preset's LOD (distance or tolerance ranges)
+  uint32_t normalMapScale = 0;  // --normal-map-scale; 0: the preset's
 };
-// --quality, --tolerance and, when withGrid, --grid, with the same help and checks on every
+// --quality, --tolerance, --normal-map-scale and, when withGrid, --grid, with the same help and checks on every
 // rendering command; read them back with terrainSettingsFromOptions.
 void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid = true);
 vk::DeviceOptions deviceOptions(const DeviceFlags& flags);

@@ -145,6 +145,7 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
         return d;
       }()) {
   assert(gridCells >= 16 && gridCells <= 256 && (gridCells & (gridCells - 1)) == 0);
+  assert(style.normalMapScale == 1 || style.normalMapScale == 2 || style.normalMapScale == 4);
   OptionalPipelines optional = pendingOptional_.get();
   water_ = std::move(optional.water);
   waterSkirts_ = std::move(optional.waterSkirts);
@@ -318,7 +319,7 @@ TerrainDebugView TerrainRenderer::writeFrameConstants(unsigned char* bytes, cons
                    view == TerrainDebugView::kShaded       ? GLOBE_TERRAIN_SHADED
                    : view == TerrainDebugView::kLodColours ? GLOBE_TERRAIN_LOD_COLOURS
                                                            : GLOBE_TERRAIN_WIREFRAME,
-                   skirts ? 1u : 0u, 0u};
+                   skirts ? 1u : 0u, cells_ * style_.normalMapScale};
   frame.skirt = {style_.skirtOutward, style_.skirtDrop, 0.0f, 0.0f};
   const Water& w = style_.water;
   // Without water the sea level is -FLT_MAX: nothing is below it (terrain_vertex.glsl).
@@ -364,7 +365,7 @@ uint32_t TerrainRenderer::writeInstances(unsigned char* bytes, const glm::dvec3&
                                          std::span<const DrawNode> nodes, const PayloadPages& payloads,
                                          uint32_t pageCount, bool skirts, gpu::TerrainReprojectionNode* reprojection) {
   auto* instances = reinterpret_cast<gpu::TerrainInstance*>(bytes + kFrameHeaderBytes);
-  const uint32_t slotVec4 = GLOBE_PAYLOAD_VEC4_PER_SLOT(cells_);
+  const uint32_t slotVec4 = GLOBE_PAYLOAD_SLOT_VEC4(cells_, style_.normalMapScale);
   std::vector<uint32_t>& next = nextInstance_;
   next = firstInstance_;
   uint32_t partial = 0;
