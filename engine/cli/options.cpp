@@ -110,10 +110,10 @@ void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid) {
             return {};
           },
           "PX"));
-  cmd.add_option(
-         "--normal-map-scale", options.normalMapScale,
-         "Normal map cells per grid cell: 1, 2 or 4 (docs/rendering.md, \"Normal maps\"; default: the preset's)")
-      ->check(CLI::IsMember({1U, 2U, 4U}));
+  cmd.add_option("--normal-map-scale", options.normalMapScale,
+                 "Normal map cells per grid cell: 1, 2 or 4; 0 = none, light per vertex (docs/rendering.md, "
+                 "\"Normal maps\"; default: the preset's)")
+      ->check(CLI::IsMember({0U, 1U, 2U, 4U}));
 }
 
 Result<TerrainSettings> terrainSettingsFromOptions(const QualityOptions& options, const PlanetDescription& planet,
@@ -123,7 +123,7 @@ Result<TerrainSettings> terrainSettingsFromOptions(const QualityOptions& options
   TerrainSettings settings = terrainSettingsFor(*preset);
   if (options.gridCells) settings.gridCells = options.gridCells;
   if (options.tolerance_px > 0) settings.ranges.tolerance_px = options.tolerance_px;
-  if (options.normalMapScale) settings.normalMapScale = options.normalMapScale;
+  if (options.normalMapScale != kPresetNormalMapScale) settings.normalMapScale = options.normalMapScale;
   settings.viewHeight_px = viewHeight_px;
   if (auto s = validateTerrainSettings(settings); !s) {
     Error e = s.error();

@@ -43,12 +43,14 @@ struct DeviceFlags {
 };
 void addDeviceFlags(CLI::App& cmd, DeviceFlags& flags);
 
+// QualityOptions::normalMapScale without --normal-map-scale: the preset's.
+inline constexpr uint32_t kPresetNormalMapScale = ~0u;
 // The quality options of every rendering command.
 struct QualityOptions {
-  std::string quality;          // --quality; empty: the planet's default_quality
-  uint32_t gridCells = 0;       // --grid; 0: the preset's grid
-  double tolerance_px = 0;      // --tolerance; 0: the preset's LOD (distance or tolerance ranges)
-  uint32_t normalMapScale = 0;  // --normal-map-scale; 0: the preset's
+  std::string quality;                              // --quality; empty: the planet's default_quality
+  uint32_t gridCells = 0;                           // --grid; 0: the preset's grid
+  double tolerance_px = 0;                          // --tolerance; 0: the preset's LOD (distance or tolerance ranges)
+  uint32_t normalMapScale = kPresetNormalMapScale;  // --normal-map-scale
 };
 // --quality, --tolerance, --normal-map-scale and, when withGrid, --grid, with the same help and checks on every
 // rendering command; read them back with terrainSettingsFromOptions.

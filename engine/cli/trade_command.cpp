@@ -117,19 +117,19 @@ std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::st
     return list;
   }
   if (quick) {  // the cheap knobs only: a minute or two on lavapipe
+    vary(normalMap, {0, 1, 2, 4});
     vary(grid, {16, 32, 64});
     vary(mult, {0.5, 1, 2});
     vary(precision, {1});
     vary(reproject, {1});
     vary(tolerance, {2});
-    vary(normalMap, {1, 2, 4});
     return list;
   }
   // The presets and the knobs that do not change the triangle count much first: --configs N keeps
   // the first N.
   for (QualityPreset p : {QualityPreset::kFast, QualityPreset::kBalanced, QualityPreset::kExact})
     add(std::string(qualityPresetName(p)), terrainSettingsFor(p));
-  vary(normalMap, {1, 2, 4});
+  vary(normalMap, {0, 1, 2, 4});
   vary(depth, {16, 20, 24});
   vary(morph, {0.25, 0.5});
   vary(precision, {1});

@@ -24,8 +24,8 @@ constexpr uint32_t kGenerationFailuresBeforeGivingUp = 256;
 Status validateTerrainSettings(const TerrainSettings& s) {
   if (s.gridCells < 16 || s.gridCells > 256 || (s.gridCells & (s.gridCells - 1)) != 0)
     return Error::inField("grid_cells", "must be a power of two in [16, 256], got " + std::to_string(s.gridCells));
-  if (s.normalMapScale != 1 && s.normalMapScale != 2 && s.normalMapScale != 4)
-    return Error::inField("normal_map_scale", "must be 1, 2 or 4, got " + std::to_string(s.normalMapScale));
+  if (s.normalMapScale != 0 && s.normalMapScale != 1 && s.normalMapScale != 2 && s.normalMapScale != 4)
+    return Error::inField("normal_map_scale", "must be 0, 1, 2 or 4, got " + std::to_string(s.normalMapScale));
   if (!std::isfinite(s.originThreshold_m) || s.originThreshold_m < 0)
     return Error::inField("origin_threshold_m", "must be a finite number >= 0");
   if (!(std::isfinite(s.viewHeight_px) && s.viewHeight_px >= 1.0))

@@ -49,8 +49,10 @@ uint32_t drawGroup(const DrawNode& n, uint32_t range) {
 }
 
 vk::GraphicsPipelineDesc terrainDesc(VkFormat colourFormat, bool wireframe, VkCullModeFlags cull,
-                                     VertexPositions positions, const char* fragmentShader) {
+                                     VertexPositions positions, const char* fragmentShader, bool normalMaps) {
   vk::GraphicsPipelineDesc d;
+  // constant_id 0 of terrain_fragment.glsl: shade from the payloads' normal maps.
+  d.fragmentSpecialization = {normalMaps ? 1u : 0u};
   const bool reprojected = positions == VertexPositions::kReprojected;
   d.vertexShader = reprojected ? "terrain_reprojected.vert" : "terrain.vert";
   d.fragmentShader = fragmentShader;
@@ -114,26 +116,29 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
           std::launch::async,
           [&device, style, positions, colourFormat] {
             OptionalPipelines made;
+            const bool maps = style.normalMapScale > 0;
             if (style.water.enabled) {
               made.water = std::make_unique<vk::GraphicsPipeline>(
-                  device, terrainDesc(colourFormat, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT,
-                                      positions, style.holes ? "terrain_water_holes.frag" : "terrain_water.frag"));
+                  device,
+                  terrainDesc(colourFormat, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT, positions,
+                              style.holes ? "terrain_water_holes.frag" : "terrain_water.frag", maps));
               made.waterSkirts = std::make_unique<vk::GraphicsPipeline>(
                   device, terrainDesc(colourFormat, false, VK_CULL_MODE_NONE, positions,
-                                      style.holes ? "terrain_water_holes.frag" : "terrain_water.frag"));
+                                      style.holes ? "terrain_water_holes.frag" : "terrain_water.frag", maps));
             }
             VkPhysicalDeviceFeatures features{};
             vkGetPhysicalDeviceFeatures(device.physical(), &features);
             if (features.fillModeNonSolid) {
               made.wireframe = std::make_unique<vk::GraphicsPipeline>(
-                  device, terrainDesc(colourFormat, true, VK_CULL_MODE_NONE, positions, "terrain.frag"));
+                  device, terrainDesc(colourFormat, true, VK_CULL_MODE_NONE, positions, "terrain.frag", maps));
             }
             return made;
           })),
-      solid_(device, terrainDesc(colourFormat, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT,
-                                 positions, style.holes ? "terrain_holes.frag" : "terrain.frag")),
+      solid_(device,
+             terrainDesc(colourFormat, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT, positions,
+                         style.holes ? "terrain_holes.frag" : "terrain.frag", style.normalMapScale > 0)),
       skirts_(device, terrainDesc(colourFormat, false, VK_CULL_MODE_NONE, positions,
-                                  style.holes ? "terrain_holes.frag" : "terrain.frag")),
+                                  style.holes ? "terrain_holes.frag" : "terrain.frag", style.normalMapScale > 0)),
       sky_(device, [&] {
         vk::GraphicsPipelineDesc d;
         d.vertexShader = "terrain_sky.vert";
@@ -145,7 +150,7 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
         return d;
       }()) {
   assert(gridCells >= 16 && gridCells <= 256 && (gridCells & (gridCells - 1)) == 0);
-  assert(style.normalMapScale == 1 || style.normalMapScale == 2 || style.normalMapScale == 4);
+  assert(style.normalMapScale <= 4 && (style.normalMapScale & (style.normalMapScale - 1)) == 0);
   OptionalPipelines optional = pendingOptional_.get();
   water_ = std::move(optional.water);
   waterSkirts_ = std::move(optional.waterSkirts);

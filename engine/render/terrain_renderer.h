@@ -66,6 +66,7 @@ struct TerrainStyle {
   double seaLevel_m = 0.0;
   // Map cells per grid cell of the payloads' normal maps (1, 2 or 4; payload_layout.h): the
   // fragment stages shade from them, and slots are GpuPayloadGenerator::slotBytesFor(cells, this).
+  // 0: payloads without maps, lit per vertex from the mesh's normals and albedo.
   uint32_t normalMapScale = 1;
 };
 

@@ -6,6 +6,7 @@
 
 #include <initializer_list>
 #include <string>
+#include <vector>
 
 namespace globe::vk {
 
@@ -27,6 +28,8 @@ struct GraphicsPipelineDesc {
   bool wireframe = false;  // needs fillModeNonSolid
   VkCullModeFlags cull = VK_CULL_MODE_NONE;
   bool blend = false;  // premultiplied-alpha blending (overlays)
+  // Specialization constants of the fragment shader: constant_id k takes fragmentSpecialization[k].
+  std::vector<uint32_t> fragmentSpecialization;
 };
 
 class GraphicsPipeline {

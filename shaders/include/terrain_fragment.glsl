@@ -1,11 +1,13 @@
 // Body of the terrain fragment stages (terrain.frag; terrain_holes.frag defines GLOBE_TERRAIN_HOLES,
-// terrain_water.frag GLOBE_TERRAIN_WATER, terrain_water_holes.frag both). Shades per fragment from
-// the node's normal map (payload_layout.h): normal and colour sampled bilinearly from the map's own
-// level, blended with its parent level by the morph factor k (at k = 1 the parent's map, exactly what
-// the parent draws: no pop), then the sun's Lambert light plus ambient. The parent level is only
-// read where k > 0 (a per-fragment branch on an interpolated value). Debug views write the vertex
-// stage's level colour. The water variant, used only for nodes that have sea, shades the fragments
-// below sea level itself (water_shading.glsl).
+// terrain_water.frag GLOBE_TERRAIN_WATER, terrain_water_holes.frag both). With normal maps
+// (specialization constant kNormalMaps) it shades per fragment from the node's normal map
+// (payload_layout.h): normal and colour sampled bilinearly from the map's own level, blended with its
+// parent level by the morph factor k (at k = 1 the parent's map, exactly what the parent draws: no
+// pop), then the sun's Lambert light plus ambient; the parent level is only read where k > 0 (a
+// per-fragment branch on an interpolated value). Without, and in the debug views, it writes the
+// vertex stage's lit, display-encoded colour and reads no buffers, since per-fragment cost is what
+// bounds lavapipe. The water variant, used only for nodes that have sea, shades the fragments below
+// sea level itself (water_shading.glsl).
 #include "display_encoding.glsl"
 #include "terrain_layout.h"
 
@@ -14,6 +16,9 @@ layout(std140, set = 0, binding = 2) uniform TerrainFrameBlock { TerrainFrame fr
 layout(std430, set = 0, binding = 1) readonly buffer PayloadTexels { uvec2 payloadTexels[]; };
 #define GLOBE_NORMAL_MAP_SAMPLE
 #include "normal_map.glsl"
+
+// 1: the payloads carry normal maps (TerrainStyle::normalMapScale > 0) and the fragments are shaded from them.
+layout(constant_id = 0) const uint kNormalMaps = 0u;
 
 layout(location = 0) in vec3 inColour;
 // Hole mask of a source's kept no-data (elevation_sources.glsl), interpolated from the samples.
@@ -50,9 +55,10 @@ vec3 mappedColour() {
 }
 
 void main() {
+  vec3 colour = inColour;
   // A select, not an if, on the debug view (a uniform value: an if would make lavapipe compile the
-  // shader again at draw time, docs/rendering.md).
-  vec3 colour = mix(mappedColour(), inColour, bvec3(frame.options.y != GLOBE_TERRAIN_SHADED));
+  // shader again at draw time, docs/rendering.md); the if is on a specialization constant.
+  if (kNormalMaps != 0u) colour = mix(mappedColour(), inColour, bvec3(frame.options.y != GLOBE_TERRAIN_SHADED));
 #ifdef GLOBE_TERRAIN_WATER
   // The coast is where the interpolated depth changes sign: crisp at every distance, whatever the
   // mesh resolution (the vertex colours of sea samples are their shore's, so land is not tinted).

@@ -1,9 +1,14 @@
 // Body of the terrain vertex stage (terrain.vert; terrain_reprojected.vert defines
 // GLOBE_TERRAIN_REPROJECT first). One instance per selected node, vertices pulled from the node's
 // payload slot (include/terrain_vertex.glsl does the work, shared with the readback test kernel).
-// The shaded colour and its light are the fragment stage's, from the payload's normal map
-// (terrain_fragment.glsl, docs/rendering.md "Normal maps"); here only the debug views' colour per
-// level, and where the fragment is in the node's normal map.
+// The surface colour (the payload's albedo, or the debug colour per level) and its Lambert light
+// from the sun are computed here, per vertex, already in the scene target's display encoding: without
+// normal maps the fragment shader only writes the interpolated value. lavapipe's cost is per fragment
+// (half of its rasteriser time is the JIT-compiled fragment code), and its vertex stage runs on one
+// thread before the rasterisers start: the colour ramp is evaluated once per payload sample by the
+// generation kernel, not here (docs/rendering.md, "Per-vertex light", "Albedo in the payload").
+// With normal maps the fragment stage shades from the map instead (docs/rendering.md, "Normal maps")
+// and uses this colour for the debug views only.
 #include "terrain_vertex.glsl"
 #include "display_encoding.glsl"
 #include "terrain_level_colour.glsl"
@@ -12,7 +17,7 @@ layout(push_constant) uniform Push {
   TerrainDrawPush draw;
 } push;
 
-layout(location = 0) out vec3 outColour;  // debug views: the level's colour, display-encoded (display_encoding.h)
+layout(location = 0) out vec3 outColour;  // lit, display-encoded (display_encoding.h)
 layout(location = 1) out float outHole;
 // For the water shader (terrain_water.frag; other fragment shaders do not read them, and linking
 // drops them): depth of the sea above the ground (m, < 0 on land) and the camera-relative position.
@@ -26,7 +31,15 @@ layout(location = 6) out float outMapBlend;
 void main() {
   TerrainVertex v = terrainVertex(uint(gl_VertexIndex), uint(gl_InstanceIndex), push.draw.drawnCells);
   gl_Position = v.clip;
-  outColour = encodeDisplay(terrainLevelColour(v.level), 1.0).rgb;  // unlit
+  vec3 n = normalize(v.normal);
+  // Both colours, then a select (mix with a bool): an if on the debug view (a uniform value) would
+  // make lavapipe compile the shader again at draw time (docs/rendering.md).
+  bool debug = frame.options.y != GLOBE_TERRAIN_SHADED;
+  vec3 level = terrainLevelColour(v.level);
+  vec3 albedo = mix(v.albedo, level, bvec3(debug));
+  vec4 sun = mix(frame.sun, vec4(0.0, 0.0, 0.0, 1.0), bvec4(debug));  // debug colours are unlit
+  float light = sun.w + (1.0 - sun.w) * max(dot(n, sun.xyz), 0.0);
+  outColour = encodeDisplay(albedo * light, 1.0).rgb;
   outHole = v.hole;
   outSeaDepth = frame.waterShallow.w - v.elevation;
   outRelative = v.relative;
