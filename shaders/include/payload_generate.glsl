@@ -5,7 +5,8 @@
 // pass 2 derives normals from those double positions by central differences, and each sample's albedo from the planet's
 // colour ramp at its elevation and slope (payload_surface.glsl); a shared-memory reduction gives the node's
 // min/max vertex radius and its geometric error (the largest distance a vertex moves when the node morphs to its
-// parent's mesh). Mirrors planet/streaming/payload_reference.cpp operation for operation (the double kernel).
+// parent's mesh); pass 3 (with a normal map, kNormalMapScale > 0) evaluates the map's grid in double and writes its
+// texels (fillNormalMap, payload_layout.h). Mirrors planet/streaming/payload_reference.cpp operation for operation (the double kernel).
 #include "colour_ramp.h"
 #include "elevation_params.h"
 #include "face_mapping.glsl"
