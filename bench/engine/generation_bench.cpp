@@ -73,11 +73,13 @@ std::vector<NodeId> benchNodes(size_t count) {
 }
 
 // Warm: ms per node payload, `batch` nodes per submit (the pool's budget is 8 per frame); third
-// argument 0 on earthlike's sphere, 1 on WGS84.
+// argument 0 on earthlike's sphere, 1 on WGS84; fourth the normal map's scale (0: none, as collision
+// meshes; 1, 2, 4: the renderer's payloads, docs/rendering.md "Normal maps").
 void BM_GpuPayload(benchmark::State& state) {
   const uint32_t cells = uint32_t(state.range(0));
   const uint32_t batch = uint32_t(state.range(1));
-  GpuPayloadGenerator gen(device(), state.range(2) == 0 ? model() : wgs84Model(), cells, batch, 1);
+  GpuPayloadGenerator gen(device(), state.range(2) == 0 ? model() : wgs84Model(), cells, batch, 1,
+                          GenerationPrecision::kDouble, false, uint32_t(state.range(3)));
   gen.reserveSlots(batch);
   auto nodes = benchNodes(batch);
   std::vector<GenerationJob> jobs;
@@ -102,9 +104,10 @@ void BM_GpuPayload(benchmark::State& state) {
   state.SetItemsProcessed(int64_t(state.iterations()) * batch);
 }
 BENCHMARK(BM_GpuPayload)
-    ->ArgsProduct({{16, 32, 64, 128}, {8, 32}, {0}})
-    ->Args({64, 32, 1})
-    ->Args({128, 32, 1})
+    ->ArgsProduct({{16, 32, 64, 128}, {8, 32}, {0}, {0}})
+    ->ArgsProduct({{16}, {8}, {0}, {1, 2, 4}})
+    ->Args({64, 32, 1, 0})
+    ->Args({128, 32, 1, 0})
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond);
 

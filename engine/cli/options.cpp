@@ -119,6 +119,10 @@ void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid) {
             return {};
           },
           "PX"));
+  cmd.add_option("--normal-map-scale", options.normalMapScale,
+                 "Normal map cells per grid cell: 1, 2 or 4; 0 = none, light per vertex (docs/rendering.md, "
+                 "\"Normal maps\"; default: the preset's)")
+      ->check(CLI::IsMember({0U, 1U, 2U, 4U}));
 }
 
 Result<TerrainSettings> terrainSettingsFromOptions(const QualityOptions& options, const PlanetDescription& planet,
@@ -133,6 +137,7 @@ Result<TerrainSettings> terrainSettingsFromOptions(const QualityOptions& options
     if (!aa) return aa.error();
     settings.antialiasing = *aa;
   }
+  if (options.normalMapScale != kPresetNormalMapScale) settings.normalMapScale = options.normalMapScale;
   settings.viewHeight_px = viewHeight_px;
   if (auto s = validateTerrainSettings(settings); !s) {
     Error e = s.error();

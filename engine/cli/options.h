@@ -43,14 +43,17 @@ struct DeviceFlags {
 };
 void addDeviceFlags(CLI::App& cmd, DeviceFlags& flags);
 
+// QualityOptions::normalMapScale without --normal-map-scale: the preset's.
+inline constexpr uint32_t kPresetNormalMapScale = ~0u;
 // The quality options of every rendering command.
 struct QualityOptions {
-  std::string quality;       // --quality; empty: the planet's default_quality
-  uint32_t gridCells = 0;    // --grid; 0: the preset's grid
-  double tolerance_px = 0;   // --tolerance; 0: the preset's LOD (distance or tolerance ranges)
-  std::string antialiasing;  // --aa; empty: the preset's
+  std::string quality;                              // --quality; empty: the planet's default_quality
+  uint32_t gridCells = 0;                           // --grid; 0: the preset's grid
+  double tolerance_px = 0;                          // --tolerance; 0: the preset's LOD (distance or tolerance ranges)
+  std::string antialiasing;                         // --aa; empty: the preset's
+  uint32_t normalMapScale = kPresetNormalMapScale;  // --normal-map-scale
 };
-// --quality, --tolerance, --aa and, when withGrid, --grid, with the same help and checks on every
+// --quality, --tolerance, --aa, --normal-map-scale and, when withGrid, --grid, with the same help and checks on every
 // rendering command; read them back with terrainSettingsFromOptions.
 void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid = true);
 vk::DeviceOptions deviceOptions(const DeviceFlags& flags);

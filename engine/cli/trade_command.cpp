@@ -59,8 +59,8 @@ std::string knobName(const TerrainSettings& s) {
   else
     std::snprintf(lod, sizeof(lod), "x%g", s.ranges.distanceMultiplier);
   char text[128];
-  std::snprintf(text, sizeof(text), "g%u %s d%d f%g%s%s", s.gridCells, lod, s.ranges.maxDepth, s.ranges.morphFraction,
-                s.generation == GenerationPrecision::kFloat ? " float" : "",
+  std::snprintf(text, sizeof(text), "g%u %s d%d f%g n%u%s%s", s.gridCells, lod, s.ranges.maxDepth,
+                s.ranges.morphFraction, s.normalMapScale, s.generation == GenerationPrecision::kFloat ? " float" : "",
                 s.vertexPositions == VertexPositions::kReprojected ? " reprojected" : "");
   return text;
 }
@@ -69,7 +69,7 @@ bool sameKnobs(const TerrainSettings& a, const TerrainSettings& b) {
   return a.gridCells == b.gridCells && a.ranges.distanceMultiplier == b.ranges.distanceMultiplier &&
          a.ranges.maxDepth == b.ranges.maxDepth && a.ranges.morphFraction == b.ranges.morphFraction &&
          a.generation == b.generation && a.vertexPositions == b.vertexPositions &&
-         a.ranges.tolerance_px == b.ranges.tolerance_px;
+         a.ranges.tolerance_px == b.ranges.tolerance_px && a.normalMapScale == b.normalMapScale;
 }
 
 // One knob at a time around the baseline, then the presets and a few combinations.
@@ -100,6 +100,8 @@ std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::st
     s.ranges.distanceMultiplier = 1;
   };
   auto depth = [](TerrainSettings& s, double v) { s.ranges.maxDepth = int(v); };
+  // Normal map cells per grid cell (docs/rendering.md, "Normal maps"): shading detail vs generation.
+  auto normalMap = [](TerrainSettings& s, double v) { s.normalMapScale = uint32_t(v); };
   auto morph = [](TerrainSettings& s, double v) { s.ranges.morphFraction = v; };
   // Generation in float instead of double (what double buys; never a preset).
   auto precision = [](TerrainSettings& s, double v) {
@@ -115,6 +117,7 @@ std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::st
     return list;
   }
   if (quick) {  // the cheap knobs only: a minute or two on lavapipe
+    vary(normalMap, {0, 1, 2, 4});
     vary(grid, {16, 32, 64});
     vary(mult, {0.5, 1, 2});
     vary(precision, {1});
@@ -126,6 +129,7 @@ std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::st
   // the first N.
   for (QualityPreset p : {QualityPreset::kFast, QualityPreset::kBalanced, QualityPreset::kExact})
     add(std::string(qualityPresetName(p)), terrainSettingsFor(p));
+  vary(normalMap, {0, 1, 2, 4});
   vary(depth, {16, 20, 24});
   vary(morph, {0.25, 0.5});
   vary(precision, {1});

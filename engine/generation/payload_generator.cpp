@@ -19,14 +19,18 @@
 namespace globe {
 namespace {
 
-// The elevation kernel's constants, then the water-surface switch (GLOBE_PAYLOAD_SPEC_WATER_SURFACE).
-std::array<uint32_t, GLOBE_PAYLOAD_SPEC_WATER_SURFACE + 1> payloadSpecialization(const ElevationModel& model,
-                                                                                 bool waterSurface) {
+// The elevation kernel's constants, then the water-surface switch (GLOBE_PAYLOAD_SPEC_WATER_SURFACE)
+// and the normal map's scale (GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE).
+std::array<uint32_t, GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE + 1> payloadSpecialization(const ElevationModel& model,
+                                                                                    bool waterSurface,
+                                                                                    uint32_t normalMapScale) {
   static_assert(GLOBE_PAYLOAD_SPEC_WATER_SURFACE == GLOBE_ELEVATION_SPEC_COUNT);
-  std::array<uint32_t, GLOBE_PAYLOAD_SPEC_WATER_SURFACE + 1> values{};
+  static_assert(GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE == GLOBE_PAYLOAD_SPEC_WATER_SURFACE + 1);
+  std::array<uint32_t, GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE + 1> values{};
   const ElevationSpecialization elevation = elevationSpecialization(model.params());
   std::copy(elevation.begin(), elevation.end(), values.begin());
   values[GLOBE_PAYLOAD_SPEC_WATER_SURFACE] = waterSurface && model.drawsWater() ? 1u : 0u;
+  values[GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE] = normalMapScale;
   return values;
 }
 
@@ -34,14 +38,16 @@ std::array<uint32_t, GLOBE_PAYLOAD_SPEC_WATER_SURFACE + 1> payloadSpecialization
 
 GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationModel& model, uint32_t cells,
                                          uint32_t maxJobsPerSubmit, uint32_t maxSubmitsInFlight,
-                                         GenerationPrecision precision, bool waterSurface)
+                                         GenerationPrecision precision, bool waterSurface, uint32_t normalMapScale)
     : device_(device),
       model_(model),
       cells_(cells),
+      normalMapScale_(normalMapScale),
       maxJobs_(std::min<uint32_t>(maxJobsPerSubmit, GLOBE_PAYLOAD_MAX_BATCH)),
-      pipeline_(
-          device, precision == GenerationPrecision::kFloat ? "payload_generate_float.comp" : "payload_generate.comp", 8,
-          2 * sizeof(uint32_t), /*uniformMask=*/(1u << 0) | (1u << 7), payloadSpecialization(model, waterSurface)),
+      pipeline_(device,
+                precision == GenerationPrecision::kFloat ? "payload_generate_float.comp" : "payload_generate.comp", 8,
+                2 * sizeof(uint32_t), /*uniformMask=*/(1u << 0) | (1u << 7),
+                payloadSpecialization(model, waterSurface, normalMapScale)),
       elevation_(device, sizeof(gpu::ElevationParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::HostVisible,
                  "elevation params"),
       colourRamp_(device, sizeof(gpu::ColourRampParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::HostVisible,
@@ -50,6 +56,8 @@ GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationMode
              "face corners") {
   if (cells < 16 || cells > 256 || (cells & (cells - 1)) != 0)
     throw std::runtime_error("grid cells must be a power of two in [16, 256], got " + std::to_string(cells));
+  if (normalMapScale != 0 && normalMapScale != 1 && normalMapScale != 2 && normalMapScale != 4)
+    throw std::runtime_error("normal map scale must be 0, 1, 2 or 4, got " + std::to_string(normalMapScale));
   std::memcpy(elevation_.mapped(), &model.params(), sizeof(gpu::ElevationParams));
   std::memcpy(colourRamp_.mapped(), &model.colourRamp(), sizeof(gpu::ColourRampParams));
   waterSurface_ = waterSurface && model.drawsWater();
@@ -65,6 +73,9 @@ GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationMode
   timestampPeriod_ns_ = double(device.properties().limits.timestampPeriod);
 
   size_t samples = size_t(cells + 3) * size_t(cells + 3);
+  // The scratch holds a job's double positions: the mesh samples, then (reused) the normal map's grid.
+  const size_t mapSide = normalMapScale > 0 ? size_t(cells) * normalMapScale + 5 : 0;
+  const size_t scratchPerJob = std::max(samples, mapSide * mapSide);
   batches_.resize(batchCount);
   for (uint32_t b = 0; b < batchCount; ++b) {
     Batch& batch = batches_[b];
@@ -75,7 +86,7 @@ GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationMode
                             vk::MemoryUse::HostVisible, "payload jobs");
     batch.results = vk::Buffer(device, maxJobs_ * sizeof(gpu::PayloadResult), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                vk::MemoryUse::HostVisible, "payload results");
-    batch.scratch = vk::Buffer(device, VkDeviceSize(maxJobs_) * samples * 32, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+    batch.scratch = vk::Buffer(device, VkDeviceSize(maxJobs_) * scratchPerJob * 32, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                vk::MemoryUse::DeviceLocal, "payload scratch");
     // A planet without sources binds a one-term buffer it never reads.
     const VkDeviceSize termBytes = model.sources() != nullptr ? VkDeviceSize(maxJobs_) * samples * 32 : 32;

@@ -35,10 +35,11 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   // `model` must outlive the generator (job centres are surface points of the CPU reference).
   // `waterSurface`: samples below sea level are placed on the sea surface (the renderer's payloads on
   // a planet with water, ElevationModel::drawsWater); otherwise the ground everywhere (collision
-  // meshes, bakes).
+  // meshes, bakes). `normalMapScale`: map cells per grid cell of each payload's normal map (1, 2
+  // or 4: the renderer's payloads), 0 = none (collision meshes, bakes).
   GpuPayloadGenerator(vk::Device& device, const ElevationModel& model, uint32_t cells, uint32_t maxJobsPerSubmit,
                       uint32_t maxSubmitsInFlight, GenerationPrecision precision = GenerationPrecision::kDouble,
-                      bool waterSurface = false);
+                      bool waterSurface = false, uint32_t normalMapScale = 0);
   ~GpuPayloadGenerator() override;
 
   // Allocates the payload buffer for `slots` slots (once, before the first generate()), bound in
@@ -48,9 +49,12 @@ class GpuPayloadGenerator final : public PayloadGenerator {
 
   void generate(std::span<const GenerationJob> jobs) override;
   void collect(std::vector<GenerationResult>& finished) override;
-  size_t slotBytes() const override { return slotBytesFor(cells_); }
+  size_t slotBytes() const override { return slotBytesFor(cells_, normalMapScale_); }
   std::string lastFailure() const override { return lastFailure_; }
-  static size_t slotBytesFor(uint32_t cells) { return size_t(GLOBE_PAYLOAD_VEC4_PER_SLOT(cells)) * 16u; }
+  // Bytes of one slot: the mesh (payload_layout.h), then the normal map if normalMapScale > 0.
+  static size_t slotBytesFor(uint32_t cells, uint32_t normalMapScale = 0) {
+    return size_t(GLOBE_PAYLOAD_SLOT_VEC4(cells, normalMapScale)) * 16u;
+  }
 
   // Blocks until every submitted batch has finished (converged mode, shutdown, tests).
   void waitIdle();
@@ -62,6 +66,7 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   void copyToHost(const vk::Buffer& destination, VkDeviceSize bytes);
 
   uint32_t cells() const { return cells_; }
+  uint32_t normalMapScale() const { return normalMapScale_; }
   // Node centre (metres) the payload in `slot` is relative to (the job's snapped centre).
   const glm::dvec3& slotCentre(uint32_t slot) const { return slotCentres_[slot]; }
   // The payload in `slot` has ground below sea level, i.e. water to draw (always false without
@@ -106,6 +111,7 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   vk::Device& device_;
   const ElevationModel& model_;
   uint32_t cells_;
+  uint32_t normalMapScale_;
   uint32_t maxJobs_;
   vk::ComputePipeline pipeline_;
   vk::Buffer elevation_;

@@ -9,6 +9,7 @@ TerrainSettings terrainSettingsFor(QualityPreset preset) {
     case QualityPreset::kFast:  // ~75k triangles at the 1 km camera: the cheapest useful view
       s.gridCells = 16;
       s.ranges.distanceMultiplier = 0.25;
+      s.normalMapScale = 0;  // light per vertex, as balanced
       break;
     case QualityPreset::kBalanced:  // ~80k triangles at 1 km: 26 ms at 1280x720 on lavapipe (goal 33)
       s.gridCells = 16;
@@ -16,6 +17,9 @@ TerrainSettings terrainSettingsFor(QualityPreset preset) {
       // Depth 24 instead of 20: the same nodes above ~100 m, and at the 2 m camera p95 6.1 px
       // instead of 10.5 px for the same frame time (globe trade, 2026-11-22).
       s.ranges.maxDepth = 24;
+      // Light per vertex: with normal maps (scale 1) the flight's CPU doubles on lavapipe and its
+      // median would pass 33 ms (docs/rendering.md, "Normal maps").
+      s.normalMapScale = 0;
       break;
     case QualityPreset::kExact:  // p95 screen error <= 0.5 px at 1280x720 at every standard camera
       s.gridCells = 64;
@@ -23,6 +27,7 @@ TerrainSettings terrainSettingsFor(QualityPreset preset) {
       // FXAA's fixed ~16 ms of CPU a 1280x720 frame is ~1 % of this preset's frame; on fast and
       // balanced it is +40 % (MSAA x4 +160 %) of the flyover's CPU: docs/rendering.md, "Anti-aliasing".
       s.antialiasing = vk::Antialiasing::kFxaa;
+      s.normalMapScale = 1;  // 64 map cells a node; scale 2 would fit only 1728 slots in 512 MiB
       break;
   }
   return s;

@@ -24,6 +24,8 @@ constexpr uint32_t kGenerationFailuresBeforeGivingUp = 256;
 Status validateTerrainSettings(const TerrainSettings& s) {
   if (s.gridCells < 16 || s.gridCells > 256 || (s.gridCells & (s.gridCells - 1)) != 0)
     return Error::inField("grid_cells", "must be a power of two in [16, 256], got " + std::to_string(s.gridCells));
+  if (s.normalMapScale != 0 && s.normalMapScale != 1 && s.normalMapScale != 2 && s.normalMapScale != 4)
+    return Error::inField("normal_map_scale", "must be 0, 1, 2 or 4, got " + std::to_string(s.normalMapScale));
   if (!std::isfinite(s.originThreshold_m) || s.originThreshold_m < 0)
     return Error::inField("origin_threshold_m", "must be a finite number >= 0");
   if (!(std::isfinite(s.viewHeight_px) && s.viewHeight_px >= 1.0))
@@ -68,7 +70,7 @@ Terrain::Terrain(vk::Device& device, const ElevationModel& model, const TerrainS
   uint32_t batches = settings.streaming.maxInFlight;
   generator_ =
       std::make_unique<GpuPayloadGenerator>(device, model, settings.gridCells, budget, batches, settings.generation,
-                                            /*waterSurface=*/true);
+                                            /*waterSurface=*/true, settings.normalMapScale);
 }
 
 void Terrain::attachPool(std::unique_ptr<PayloadPool> pool) {
@@ -79,6 +81,7 @@ void Terrain::attachPool(std::unique_ptr<PayloadPool> pool) {
   style.holes = model_.sources() != nullptr && model_.sources()->hasHoles();
   style.water = model_.water();
   style.seaLevel_m = model_.seaLevel_m();
+  style.normalMapScale = settings_.normalMapScale;
   renderer_ = std::make_unique<TerrainRenderer>(device_, settings_.gridCells, style, settings_.vertexPositions, 1024,
                                                 vk::kSceneColourFormat, vk::sampleCount(settings_.antialiasing));
   drawNodes_.reserve(4096);

@@ -22,7 +22,11 @@ namespace globe {
 
 struct TerrainSettings {
   uint32_t gridCells = 32;  // cells per node side: power of two in [16, 256]
-  LodRangeConfig ranges;    // view ranges, max depth, morph region
+  // Normal map cells per grid cell (1, 2 or 4): each payload's normal and colour map has
+  // normalMapScale * gridCells cells per side (docs/rendering.md, "Normal maps"). 0: no maps, the
+  // light and colour per vertex (cheaper per fragment on lavapipe).
+  uint32_t normalMapScale = 1;
+  LodRangeConfig ranges;  // view ranges, max depth, morph region
   // Height (pixels) of the image the view is drawn in: tolerance-driven ranges (ranges.tolerance_px)
   // keep the screen error within the tolerance in pixels of this height. The commands set it.
   double viewHeight_px = 720.0;

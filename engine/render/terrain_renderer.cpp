@@ -55,8 +55,10 @@ struct TargetFormat {
 };
 
 vk::GraphicsPipelineDesc terrainDesc(TargetFormat target, bool wireframe, VkCullModeFlags cull,
-                                     VertexPositions positions, const char* fragmentShader) {
+                                     VertexPositions positions, const char* fragmentShader, bool normalMaps) {
   vk::GraphicsPipelineDesc d;
+  // constant_id 0 of terrain_fragment.glsl: shade from the payloads' normal maps.
+  d.fragmentSpecialization = {normalMaps ? 1u : 0u};
   const bool reprojected = positions == VertexPositions::kReprojected;
   d.vertexShader = reprojected ? "terrain_reprojected.vert" : "terrain.vert";
   d.fragmentShader = fragmentShader;
@@ -122,27 +124,28 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
           std::launch::async,
           [&device, style, positions, target = TargetFormat{colourFormat, samples}] {
             OptionalPipelines made;
+            const bool maps = style.normalMapScale > 0;
             if (style.water.enabled) {
               made.water = std::make_unique<vk::GraphicsPipeline>(
                   device, terrainDesc(target, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT, positions,
-                                      style.holes ? "terrain_water_holes.frag" : "terrain_water.frag"));
+                                      style.holes ? "terrain_water_holes.frag" : "terrain_water.frag", maps));
               made.waterSkirts = std::make_unique<vk::GraphicsPipeline>(
                   device, terrainDesc(target, false, VK_CULL_MODE_NONE, positions,
-                                      style.holes ? "terrain_water_holes.frag" : "terrain_water.frag"));
+                                      style.holes ? "terrain_water_holes.frag" : "terrain_water.frag", maps));
             }
             VkPhysicalDeviceFeatures features{};
             vkGetPhysicalDeviceFeatures(device.physical(), &features);
             if (features.fillModeNonSolid) {
               made.wireframe = std::make_unique<vk::GraphicsPipeline>(
-                  device, terrainDesc(target, true, VK_CULL_MODE_NONE, positions, "terrain.frag"));
+                  device, terrainDesc(target, true, VK_CULL_MODE_NONE, positions, "terrain.frag", maps));
             }
             return made;
           })),
       solid_(device,
              terrainDesc({colourFormat, samples}, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT,
-                         positions, style.holes ? "terrain_holes.frag" : "terrain.frag")),
+                         positions, style.holes ? "terrain_holes.frag" : "terrain.frag", style.normalMapScale > 0)),
       skirts_(device, terrainDesc({colourFormat, samples}, false, VK_CULL_MODE_NONE, positions,
-                                  style.holes ? "terrain_holes.frag" : "terrain.frag")),
+                                  style.holes ? "terrain_holes.frag" : "terrain.frag", style.normalMapScale > 0)),
       sky_(device, [&] {
         vk::GraphicsPipelineDesc d;
         d.vertexShader = "terrain_sky.vert";
@@ -155,6 +158,7 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
         return d;
       }()) {
   assert(gridCells >= 16 && gridCells <= 256 && (gridCells & (gridCells - 1)) == 0);
+  assert(style.normalMapScale <= 4 && (style.normalMapScale & (style.normalMapScale - 1)) == 0);
   OptionalPipelines optional = pendingOptional_.get();
   water_ = std::move(optional.water);
   waterSkirts_ = std::move(optional.waterSkirts);
@@ -328,7 +332,7 @@ TerrainDebugView TerrainRenderer::writeFrameConstants(unsigned char* bytes, cons
                    view == TerrainDebugView::kShaded       ? GLOBE_TERRAIN_SHADED
                    : view == TerrainDebugView::kLodColours ? GLOBE_TERRAIN_LOD_COLOURS
                                                            : GLOBE_TERRAIN_WIREFRAME,
-                   skirts ? 1u : 0u, 0u};
+                   skirts ? 1u : 0u, cells_ * style_.normalMapScale};
   frame.skirt = {style_.skirtOutward, style_.skirtDrop, 0.0f, 0.0f};
   const Water& w = style_.water;
   // Without water the sea level is -FLT_MAX: nothing is below it (terrain_vertex.glsl).
@@ -374,7 +378,7 @@ uint32_t TerrainRenderer::writeInstances(unsigned char* bytes, const glm::dvec3&
                                          std::span<const DrawNode> nodes, const PayloadPages& payloads,
                                          uint32_t pageCount, bool skirts, gpu::TerrainReprojectionNode* reprojection) {
   auto* instances = reinterpret_cast<gpu::TerrainInstance*>(bytes + kFrameHeaderBytes);
-  const uint32_t slotVec4 = GLOBE_PAYLOAD_VEC4_PER_SLOT(cells_);
+  const uint32_t slotVec4 = GLOBE_PAYLOAD_SLOT_VEC4(cells_, style_.normalMapScale);
   std::vector<uint32_t>& next = nextInstance_;
   next = firstInstance_;
   uint32_t partial = 0;

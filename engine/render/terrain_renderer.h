@@ -64,6 +64,10 @@ struct TerrainStyle {
   // (terrain_water.frag), which colours fragments below sea level per fragment.
   Water water;
   double seaLevel_m = 0.0;
+  // Map cells per grid cell of the payloads' normal maps (1, 2 or 4; payload_layout.h): the
+  // fragment stages shade from them, and slots are GpuPayloadGenerator::slotBytesFor(cells, this).
+  // 0: payloads without maps, lit per vertex from the mesh's normals and albedo.
+  uint32_t normalMapScale = 1;
 };
 
 // One node to draw; the caller builds these from the selection and the payload pool.
@@ -110,7 +114,7 @@ class TerrainRenderer {
 
   // Records the sky (if enabled) and the terrain into the current dynamic-rendering pass (viewport and
   // scissor already set). `origin_m`: the floating origin (FloatingOrigin); `payloads`: the payload
-  // pages, slot s starting at vec4 localSlot(s) * GLOBE_PAYLOAD_VEC4_PER_SLOT(gridCells) of page
+  // pages, slot s starting at vec4 localSlot(s) * GLOBE_PAYLOAD_SLOT_VEC4(gridCells, normalMapScale) of page
   // page(s)'s window. frameIndex < vk::kFramesInFlight.
   DrawStats record(VkCommandBuffer cmd, const Camera& camera, const glm::dvec3& origin_m,
                    std::span<const DrawNode> nodes, const PayloadPages& payloads, uint32_t frameIndex);

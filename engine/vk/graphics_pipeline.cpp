@@ -95,6 +95,12 @@ GraphicsPipeline::GraphicsPipeline(Device& device, const GraphicsPipelineDesc& d
   stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
   stages[1].module = frag;
   stages[1].pName = "main";
+  std::vector<VkSpecializationMapEntry> entries(desc.fragmentSpecialization.size());
+  for (uint32_t k = 0; k < entries.size(); ++k) entries[k] = {k, k * uint32_t(sizeof(uint32_t)), sizeof(uint32_t)};
+  const VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(),
+                                            desc.fragmentSpecialization.size() * sizeof(uint32_t),
+                                            desc.fragmentSpecialization.data()};
+  if (!entries.empty()) stages[1].pSpecializationInfo = &specialization;
 
   const FixedFunctionState state(desc);
   VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};

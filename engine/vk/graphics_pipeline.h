@@ -6,6 +6,7 @@
 
 #include <initializer_list>
 #include <string>
+#include <vector>
 
 namespace globe::vk {
 
@@ -28,6 +29,8 @@ struct GraphicsPipelineDesc {
   VkCullModeFlags cull = VK_CULL_MODE_NONE;
   bool blend = false;                                     // premultiplied-alpha blending (overlays)
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  // the target's (OffscreenTarget::samples)
+  // Specialization constants of the fragment shader: constant_id k takes fragmentSpecialization[k].
+  std::vector<uint32_t> fragmentSpecialization;
 };
 
 class GraphicsPipeline {

@@ -4,6 +4,7 @@
 #include "planet/geometry/triacontahedron.h"
 #include "planet/lod/lod_ranges.h"
 #include "planet/sources/source_mosaic.h"
+#include "planet/streaming/normal_map_reference.h"
 
 #include <glm/geometric.hpp>
 
@@ -12,6 +13,7 @@
 #include <bit>
 #include <cassert>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -180,11 +182,18 @@ glm::dvec3 ellipsoidGradientOf(const gpu::ElevationParams& e, const glm::dvec3& 
 }  // namespace
 
 RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
-                                 std::span<glm::vec4> slot, bool waterSurface) {
+                                 std::span<glm::vec4> slot, bool waterSurface, uint32_t normalMapScale) {
   const bool sea = waterSurface && model.drawsWater();
   const int n = int(cells);
   const int s = n + 3;
-  assert(slot.size() >= size_t(GLOBE_PAYLOAD_VEC4_PER_SLOT(cells)));
+  assert(slot.size() >= size_t(GLOBE_PAYLOAD_SLOT_VEC4(cells, normalMapScale)));
+  if (normalMapScale > 0) {
+    const std::vector<NormalMapTexel> texels = normalMapReference(model, job, cells, normalMapScale, waterSurface);
+    std::vector<glm::uvec2> packed(texels.size());
+    std::transform(texels.begin(), texels.end(), packed.begin(),
+                   [](const NormalMapTexel& t) { return packNormalMapTexel(t); });
+    std::memcpy(slot.data() + GLOBE_PAYLOAD_VEC4_PER_SLOT(cells), packed.data(), packed.size() * sizeof(glm::uvec2));
+  }
   const glm::dvec3 centre{job.centre.x, job.centre.y, job.centre.z};
   const double q = job.centre.w;
   std::vector<glm::dvec3> positions(size_t(s) * size_t(s));

@@ -5,7 +5,8 @@
 // pass 2 derives normals from those double positions by central differences, and each sample's albedo from the planet's
 // colour ramp at its elevation and slope (payload_surface.glsl); a shared-memory reduction gives the node's
 // min/max vertex radius and its geometric error (the largest distance a vertex moves when the node morphs to its
-// parent's mesh). Mirrors planet/streaming/payload_reference.cpp operation for operation (the double kernel).
+// parent's mesh); pass 3 (with a normal map, kNormalMapScale > 0) evaluates the map's grid in double and writes its
+// texels (fillNormalMap, payload_layout.h). Mirrors planet/streaming/payload_reference.cpp operation for operation (the double kernel).
 #include "colour_ramp.h"
 #include "elevation_params.h"
 #include "face_mapping.glsl"
@@ -18,6 +19,8 @@ layout(std140, binding = 0) uniform Elevation { ElevationParams elevation; };
 layout(std430, binding = 1) readonly buffer Faces { FaceCorners faces[30]; };
 layout(std430, binding = 2) readonly buffer Jobs { PayloadJob jobs[]; };
 layout(std430, binding = 3) writeonly buffer Payloads { vec4 payloads[]; };
+// The same slots seen as normal map texels (payload_layout.h, normal_map.glsl).
+layout(std430, binding = 3) writeonly buffer PayloadTexels { uvec2 payloadTexels[]; };
 layout(std430, binding = 4) buffer Scratch { dvec4 scratch[]; };
 layout(std430, binding = 5) writeonly buffer Results { PayloadResult results[]; };
 layout(std140, binding = 7) uniform ColourRamp { ColourRampParams colourRamp; };
@@ -37,6 +40,8 @@ push;
 #include "payload_surface.glsl"
 #define GLOBE_RAMP colourRamp
 #include "colour_ramp.glsl"
+#define GLOBE_NORMAL_MAP_PACK
+#include "normal_map.glsl"
 
 shared double sharedMin[GLOBE_PAYLOAD_WORKGROUP];
 shared double sharedMax[GLOBE_PAYLOAD_WORKGROUP];
@@ -45,6 +50,8 @@ shared double sharedLowest[GLOBE_PAYLOAD_WORKGROUP];
 
 // 1: samples below sea level lie on the sea surface (their w keeps the ground's elevation).
 layout(constant_id = GLOBE_PAYLOAD_SPEC_WATER_SURFACE) const uint kWaterSurface = 0u;
+// Normal map cells per grid cell (0: no normal map: collision meshes, bakes).
+layout(constant_id = GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE) const uint kNormalMapScale = 0u;
 
 // How far the vertex at scratch index `at` moves when the node morphs to its parent's mesh: the
 // distance to the midpoint of the even neighbours the vertex shader slides it to (row, column, or
@@ -79,9 +86,9 @@ dvec3 normalised(dvec3 p) {
   return q;
 }
 
-// = globe::payloadSampleDirection
-dvec3 sampleDirection(PayloadJob job, int i, int j) {
-  precise double invCells = 1.0lf / double(push.cells);
+// = globe::payloadSampleDirection; `cells`: of the grid (i, j) count in (the mesh's, or the normal map's).
+dvec3 sampleDirection(PayloadJob job, uint cells, int i, int j) {
+  precise double invCells = 1.0lf / double(cells);
   precise double u = job.uv.x + job.uv.z * (double(i) * invCells);
   precise double v = job.uv.y + job.uv.z * (double(j) * invCells);
   bool uOut = u < 0.0lf || u > 1.0lf;
@@ -128,6 +135,67 @@ dvec3 globeEllipsoidGradient(dvec3 p) {
   return normalised(dvec3(p.x / a2, p.y / a2, p.z / b2));
 }
 
+// Positions the normal map evaluates per job: its M + 1 texels per side plus two all around (the
+// parent-level texels' differences reach two texels beyond the node).
+uint normalMapEvaluations(uint cells) {
+  uint side = cells * kNormalMapScale + 5u;
+  return kNormalMapScale == 0u ? 0u : side * side;
+}
+
+// The job's elevation at map grid point (a, b): the procedural layers plus, on a planet with
+// sources, the sample grid's terms interpolated bilinearly (the I/O thread resolves terms at the
+// mesh samples only; clamped to the ring).
+double normalMapElevation(PayloadJob job, dvec3 dir, int a, int b) {
+  double procedural = globeElevation(dir);
+  if (job.sourceBase == GLOBE_NO_SOURCE_TERMS) return procedural;
+  int n = int(push.cells), s = n + 3;
+  dvec2 at = clamp(dvec2(a, b) / double(kNormalMapScale), dvec2(-1.0lf), dvec2(double(n + 1)));
+  ivec2 c = min(ivec2(floor(at)), ivec2(n));
+  dvec2 f = at - dvec2(c);
+  uint i = uint((c.y + 1) * s + (c.x + 1));
+  dvec4 t = mix(mix(sourceTerms[job.sourceBase + i], sourceTerms[job.sourceBase + i + 1u], f.x),
+                mix(sourceTerms[job.sourceBase + i + uint(s)], sourceTerms[job.sourceBase + i + uint(s) + 1u], f.x), f.y);
+  precise double h = (1.0lf - t.y) * procedural + t.y * t.x;
+  return h;
+}
+
+// Fills the slot's normal map (payload_layout.h) from `mapBase` (vec4 index) on: positions of the
+// map grid and its two-texel ring in double into the job's scratch, then per texel of both levels
+// the normal by central differences (one texel apart for level 0, two for level 1) and the colour
+// ramp at the texel's elevation and slope, as pass 2 does for the mesh samples.
+void fillNormalMap(PayloadJob job, uint mapBase, uint scratchBase) {
+  uint m = push.cells * kNormalMapScale;
+  int w = int(m) + 5;
+  memoryBarrierBuffer();
+  barrier();  // the mesh passes are done with the scratch
+  for (uint index = gl_LocalInvocationID.x; index < normalMapEvaluations(push.cells); index += GLOBE_PAYLOAD_WORKGROUP) {
+    int a = int(index % uint(w)) - 2;
+    int b = int(index / uint(w)) - 2;
+    dvec3 dir = sampleDirection(job, m, a, b);
+    double h = normalMapElevation(job, dir, a, b);
+    double drawn = kWaterSurface != 0u ? max(h, GLOBE_ELEVATION_PARAMS.sea_level_m) : h;
+    scratch[scratchBase + index] = dvec4(globePosition(dir, drawn), drawn);
+  }
+  memoryBarrierBuffer();
+  barrier();
+  uint level0 = (m + 1u) * (m + 1u);
+  for (uint t = gl_LocalInvocationID.x; t < GLOBE_NORMAL_MAP_TEXELS(m); t += GLOBE_PAYLOAD_WORKGROUP) {
+    bool parent = t >= level0;
+    uint side = parent ? m / 2u + 1u : m + 1u;
+    uint local = parent ? t - level0 : t;
+    uint step = parent ? 2u : 1u;
+    uint at = scratchBase + (local / side * step + 2u) * uint(w) + local % side * step + 2u;
+    precise dvec3 du = scratch[at + step].xyz - scratch[at - step].xyz;
+    precise dvec3 dv = scratch[at + step * uint(w)].xyz - scratch[at - step * uint(w)].xyz;
+    precise dvec3 c = dvec3(du.y * dv.z - du.z * dv.y, du.z * dv.x - du.x * dv.z, du.x * dv.y - du.y * dv.x);
+    dvec3 normal = normalised(c);
+    dvec3 up = kGlobeEllipsoid != 0u ? globeEllipsoidGradient(scratch[at].xyz) : normalised(scratch[at].xyz);
+    double cosSlope = clamp(dot(normal, up), 0.0lf, 1.0lf);
+    vec3 albedo = terrainRampColour(float(scratch[at].w), float(cosSlope));
+    payloadTexels[mapBase * 2u + t] = packNormalMapTexel(normal, albedo);
+  }
+}
+
 void main() {
   uint jobIndex = gl_WorkGroupID.x;
   if (jobIndex >= push.jobCount) return;
@@ -135,8 +203,8 @@ void main() {
   int n = int(push.cells);
   int s = n + 3;
   uint samples = uint(s * s);
-  uint slotBase = job.slot * GLOBE_PAYLOAD_VEC4_PER_SLOT(push.cells);
-  uint scratchBase = jobIndex * samples;
+  uint slotBase = job.slot * GLOBE_PAYLOAD_SLOT_VEC4(push.cells, kNormalMapScale);
+  uint scratchBase = jobIndex * max(samples, normalMapEvaluations(push.cells));
   dvec3 centre = job.centre.xyz;
   double q = job.centre.w;
 
@@ -146,7 +214,7 @@ void main() {
   for (uint index = gl_LocalInvocationID.x; index < samples; index += GLOBE_PAYLOAD_WORKGROUP) {
     int i = int(index % uint(s)) - 1;
     int j = int(index / uint(s)) - 1;
-    dvec3 dir = sampleDirection(job, i, j);
+    dvec3 dir = sampleDirection(job, push.cells, i, j);
 #ifdef GLOBE_PAYLOAD_FLOAT
     // What an all-float pipeline computes: the direction rounded to float, the elevation and the
     // planet-centred position in float (a 0.5 m grid at Earth radius), then made relative.
@@ -222,4 +290,5 @@ void main() {
   }
   if (gl_LocalInvocationID.x == 0u)
     results[jobIndex] = PayloadResult(sharedMin[0], sharedMax[0], sharedError[0], sharedLowest[0]);
+  fillNormalMap(job, slotBase + 2u * samples, scratchBase);
 }

@@ -24,6 +24,19 @@
 //                         mask (0 without elevation sources; >= 0.5 inside a kept no-data hole,
 //                         elevation_sources.glsl). Ring samples hold the normal and surface word of
 //                         the nearest vertex (there are no samples beyond the ring).
+// With a normal map (GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE s > 0: the renderer's payloads; collision
+// meshes and bakes have none) the slot goes on with M = s * N map cells per side, as uvec2 texels
+// (8 bytes; shaders/include/normal_map.glsl), counted from the slot's first vec4 times 2:
+//   [2*S*S*2, +(M+1)^2)            level 0: texel (a, b), a, b in [0, M], at index b * (M+1) + a, lies
+//                                  at the node's (u, v) = corner + size * (a, b) / M: texels sit on the
+//                                  map grid's corners, so the border texels are the shared edges and
+//                                  both nodes hold the same directions there (across face seams too);
+//   [.. , +(M/2+1)^2)              level 1: the parent's texels over this node's quadrant (every other
+//                                  direction, normals from differences two texels apart): what the
+//                                  parent's own map holds there, so morphing towards it does not pop.
+// A texel holds the unit normal (octahedral, 2 x 20 bits: error < 3e-6) from double positions by
+// central differences (the positions two texels around the node come from the ring technique), and
+// the square root of the albedo (the colour ramp at the texel's elevation and slope) in 3 bytes.
 // Quantum: positions and node centres are multiples of q(level) = 2^(ceil(log2(node width)) - 18)
 // metres, so that centre + position is the same double from every node of a level that holds the
 // sample, and stays exact in float relative to a floating origin snapped to the coarsest quantum.
@@ -49,9 +62,15 @@ struct uvec4_ {
 
 // Samples per side including the ring.
 #define GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells) ((cells) + 3u)
-// vec4 entries in one slot: positions then normals.
+// vec4 entries of a slot's mesh: positions then normals (the whole slot without a normal map).
 #define GLOBE_PAYLOAD_VEC4_PER_SLOT(cells) \
   (2u * GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells) * GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells))
+// Normal map texels of one slot with M = mapCells map cells per side (0: no map); vec4 entries of
+// a slot with grid `cells` and map scale `scale` (0, 1, 2, 4), the map's texels rounded up to vec4.
+#define GLOBE_NORMAL_MAP_TEXELS(mapCells) \
+  ((mapCells) == 0u ? 0u : ((mapCells) + 1u) * ((mapCells) + 1u) + ((mapCells) / 2u + 1u) * ((mapCells) / 2u + 1u))
+#define GLOBE_PAYLOAD_SLOT_VEC4(cells, scale) \
+  (GLOBE_PAYLOAD_VEC4_PER_SLOT(cells) + (GLOBE_NORMAL_MAP_TEXELS((cells) * (scale)) + 1u) / 2u)
 // Most jobs one generation dispatch takes.
 #define GLOBE_PAYLOAD_MAX_BATCH 64u
 // PayloadJob.sourceBase of a job without source terms.
@@ -62,6 +81,8 @@ struct uvec4_ {
 // 1 = place samples below sea level on the sea surface (the renderer's payloads on a planet with
 // water); 0 = the ground everywhere (collision meshes, bakes, dry planets).
 #define GLOBE_PAYLOAD_SPEC_WATER_SURFACE 26
+// Specialization constant: the normal map's scale s (map cells = s * grid cells), 0 = no map.
+#define GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE 27
 
 // One node to generate (std430, 96 bytes).
 struct PayloadJob {

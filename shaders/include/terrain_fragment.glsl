@@ -1,13 +1,31 @@
 // Body of the terrain fragment stages (terrain.frag; terrain_holes.frag defines GLOBE_TERRAIN_HOLES,
-// terrain_water.frag GLOBE_TERRAIN_WATER, terrain_water_holes.frag both). Writes the vertex stage's
-// lit, display-encoded colour (terrain_vertex_stage.glsl): reads no buffers and computes nothing,
-// since per-fragment cost is what bounds lavapipe. The water variant, used only for nodes that have
-// sea, shades the fragments below sea level itself (water_shading.glsl).
+// terrain_water.frag GLOBE_TERRAIN_WATER, terrain_water_holes.frag both). With normal maps
+// (specialization constant kNormalMaps) it shades per fragment from the node's normal map
+// (payload_layout.h): normal and colour sampled bilinearly from the map's own level, blended with its
+// parent level by the morph factor k (at k = 1 the parent's map, exactly what the parent draws: no
+// pop), then the sun's Lambert light plus ambient; the parent level is only read where k > 0 (a
+// per-fragment branch on an interpolated value). Without, and in the debug views, it writes the
+// vertex stage's lit, display-encoded colour and reads no buffers, since per-fragment cost is what
+// bounds lavapipe. The water variant, used only for nodes that have sea, shades the fragments below
+// sea level itself (water_shading.glsl).
 #include "display_encoding.glsl"
+#include "terrain_layout.h"
+
+layout(std140, set = 0, binding = 2) uniform TerrainFrameBlock { TerrainFrame frame; };
+// The payload page's slots seen as normal map texels (the vertex stage reads them as vec4).
+layout(std430, set = 0, binding = 1) readonly buffer PayloadTexels { uvec2 payloadTexels[]; };
+#define GLOBE_NORMAL_MAP_SAMPLE
+#include "normal_map.glsl"
+
+// 1: the payloads carry normal maps (TerrainStyle::normalMapScale > 0) and the fragments are shaded from them.
+layout(constant_id = 0) const uint kNormalMaps = 0u;
 
 layout(location = 0) in vec3 inColour;
 // Hole mask of a source's kept no-data (elevation_sources.glsl), interpolated from the samples.
 layout(location = 1) in float inHole;
+layout(location = 4) in vec2 inMapUv;
+layout(location = 5) flat in uint inMapBase;
+layout(location = 6) in float inMapBlend;
 layout(location = 0) out vec4 outColour;
 
 #ifdef GLOBE_TERRAIN_WATER
@@ -19,8 +37,28 @@ layout(location = 3) in vec3 inRelative;
 // Width (in mask units) of the dark rim drawn on the kept side of a hole's border.
 const float kHoleRim = 0.12;
 
+// The lit, display-encoded colour from the normal map.
+vec3 mappedColour() {
+  uint cells = frame.options.w;
+  vec3 normal, root;
+  sampleNormalMap(inMapBase, cells + 1u, inMapUv * float(cells), normal, root);
+  if (inMapBlend > 0.0) {
+    vec3 parentNormal, parentRoot;
+    sampleNormalMap(inMapBase + (cells + 1u) * (cells + 1u), cells / 2u + 1u, inMapUv * float(cells / 2u),
+                    parentNormal, parentRoot);
+    normal = mix(normal, parentNormal, inMapBlend);
+    root = mix(root, parentRoot, inMapBlend);
+  }
+  vec3 n = normalize(normal);
+  float light = frame.sun.w + (1.0 - frame.sun.w) * max(dot(n, frame.sun.xyz), 0.0);
+  return encodeDisplay(root * root * light, 1.0).rgb;
+}
+
 void main() {
   vec3 colour = inColour;
+  // A select, not an if, on the debug view (a uniform value: an if would make lavapipe compile the
+  // shader again at draw time, docs/rendering.md); the if is on a specialization constant.
+  if (kNormalMaps != 0u) colour = mix(mappedColour(), inColour, bvec3(frame.options.y != GLOBE_TERRAIN_SHADED));
 #ifdef GLOBE_TERRAIN_WATER
   // The coast is where the interpolated depth changes sign: crisp at every distance, whatever the
   // mesh resolution (the vertex colours of sea samples are their shore's, so land is not tinted).

@@ -48,7 +48,8 @@ struct TerrainFrame {
   GLOBE_VEC4 cameraLow;       //  80: xyz = float((camera - origin) - cameraHigh), metres (rounding residue)
   GLOBE_VEC4 planetCentre;    //  96: xyz = float(planet centre - origin), metres; w = planet radius, metres
   GLOBE_VEC4 sun;             // 112: xyz = unit direction towards the sun (planet-fixed); w = ambient light
-  GLOBE_UVEC4 options;        // 128: x = payload grid cells N, y = debug view, z = 1 when skirts are drawn
+  GLOBE_UVEC4 options;        // 128: x = payload grid cells N, y = debug view, z = 1 when skirts are drawn,
+                              //      w = normal map cells M per node side (payload_layout.h)
   GLOBE_VEC4 skirt;           // 144: x = outward offset, y = drop, both in drawn cells
   GLOBE_VEC4 waterShallow;    // 160: rgb = the sea's colour at the shore (linear); w = sea level (m), -FLT_MAX: no sea
   GLOBE_VEC4 waterDeep;       // 176: rgb = the sea's colour over deep ground (linear); w = 1 / depth scale (per m)

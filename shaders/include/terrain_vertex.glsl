@@ -70,6 +70,12 @@ struct TerrainVertex {
   float hole;       // hole mask of elevation sources (payload surface word, morphed; >= 0.5 is discarded)
   float morph;      // k in [0, 1]
   uint level;       // level the node is drawn at (TerrainInstance.info.z)
+  // Normal map (payload_layout.h): where the vertex is in its node's (u, v) square, [0, 1]^2 (morphed
+  // with the position), the first texel of the slot's map (uvec2 index in the page), and the weight
+  // of the map's parent level (k; 1 for partial nodes, which stand for their parent).
+  vec2 mapUv;
+  uint mapBase;
+  float mapBlend;
 };
 
 float terrainMorphFactor(float distance_m, vec2 band) {
@@ -123,6 +129,7 @@ TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCell
   vec3 normal = normal0.xyz;
   float elevation = sample0.w;
   vec4 surface = unpackPayloadSurface(normal0.w);
+  vec2 mapUv = vec2(si, sj) / float(cells);
   bool oddI = (gi & 1u) != 0u, oddJ = (gj & 1u) != 0u;
   if (k > 0.0 && (oddI || oddJ)) {
     // Even neighbours whose midpoint the vertex slides to (never outside the drawn grid: the
@@ -148,6 +155,7 @@ TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCell
     // Colour and hole mask slide like the position: at k = 1 the vertex has the colour the
     // parent's triangle interpolates there.
     surface = mix(surface, 0.5 * (unpackPayloadSurface(na.w) + unpackPayloadSurface(nb.w)), k);
+    mapUv = mix(mapUv, vec2((a + b) * stride) / (2.0 * float(cells)), k);
   }
 
   if (skirt) {
@@ -180,6 +188,9 @@ TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCell
   v.hole = surface.a;
   v.morph = k;
   v.level = inst.info.z;
+  v.mapUv = mapUv;
+  v.mapBase = (base + 2u * normals) * 2u;
+  v.mapBlend = stride == 2u ? 1.0 : k;
   return v;
 }
 

@@ -2,11 +2,13 @@
 // GLOBE_TERRAIN_REPROJECT first). One instance per selected node, vertices pulled from the node's
 // payload slot (include/terrain_vertex.glsl does the work, shared with the readback test kernel).
 // The surface colour (the payload's albedo, or the debug colour per level) and its Lambert light
-// from the sun are computed here, per vertex, already in the scene target's display encoding: the
-// fragment shader only writes the interpolated value. lavapipe's cost is per fragment (half of its
-// rasteriser time is the JIT-compiled fragment code), and its vertex stage runs on one thread
-// before the rasterisers start: the colour ramp is evaluated once per payload sample by the
+// from the sun are computed here, per vertex, already in the scene target's display encoding: without
+// normal maps the fragment shader only writes the interpolated value. lavapipe's cost is per fragment
+// (half of its rasteriser time is the JIT-compiled fragment code), and its vertex stage runs on one
+// thread before the rasterisers start: the colour ramp is evaluated once per payload sample by the
 // generation kernel, not here (docs/rendering.md, "Per-vertex light", "Albedo in the payload").
+// With normal maps the fragment stage shades from the map instead (docs/rendering.md, "Normal maps")
+// and uses this colour for the debug views only.
 #include "terrain_vertex.glsl"
 #include "display_encoding.glsl"
 #include "terrain_level_colour.glsl"
@@ -21,6 +23,10 @@ layout(location = 1) out float outHole;
 // drops them): depth of the sea above the ground (m, < 0 on land) and the camera-relative position.
 layout(location = 2) out float outSeaDepth;
 layout(location = 3) out vec3 outRelative;
+// The normal map (terrain_vertex.glsl's TerrainVertex.mapUv, mapBase, mapBlend).
+layout(location = 4) out vec2 outMapUv;
+layout(location = 5) flat out uint outMapBase;
+layout(location = 6) out float outMapBlend;
 
 void main() {
   TerrainVertex v = terrainVertex(uint(gl_VertexIndex), uint(gl_InstanceIndex), push.draw.drawnCells);
@@ -37,4 +43,7 @@ void main() {
   outHole = v.hole;
   outSeaDepth = frame.waterShallow.w - v.elevation;
   outRelative = v.relative;
+  outMapUv = v.mapUv;
+  outMapBase = v.mapBase;
+  outMapBlend = v.mapBlend;
 }

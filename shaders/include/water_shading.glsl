@@ -3,10 +3,7 @@
 // a sun glint. Per fragment because the view angle changes within the large flat triangles of a
 // sea near the camera (per vertex, a camera 10 cm above the water saw a sky-coloured sea at its
 // feet). Reads the frame constants; no branch or loop depends on them alone (docs/rendering.md,
-// "No shader compile per frame").
-#include "terrain_layout.h"
-
-layout(std140, set = 0, binding = 2) uniform TerrainFrameBlock { TerrainFrame frame; };
+// "No shader compile per frame"). The includer declares the frame constants (TerrainFrameBlock).
 
 // Reflectance of water at normal incidence ((1.33 - 1) / (1.33 + 1))^2.
 const float kWaterF0 = 0.02;

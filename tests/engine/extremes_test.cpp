@@ -132,14 +132,16 @@ class ExtremesTest : public GpuTest {
     return cameraFromPose(pose, s.terrain->cameraGroundRadius(direction), s.model.radius_m(), double(kWidth) / kHeight);
   }
 
-  // Copies the payload slots of the drawn nodes to the host, in selection order.
+  // Copies the meshes of the drawn nodes' payload slots to the host, in selection order (not the
+  // normal maps: their texels are not floats).
   std::vector<glm::vec4> readSlots(const Scene& s, const std::vector<uint32_t>& slots) {
     const VkDeviceSize slotBytes = s.terrain->generator().slotBytes();
-    vk::Buffer host(device(), std::max<VkDeviceSize>(1, slots.size()) * slotBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+    const VkDeviceSize meshBytes = GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells) * 16u;
+    vk::Buffer host(device(), std::max<VkDeviceSize>(1, slots.size()) * meshBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                     vk::MemoryUse::HostVisible, "extremes payload readback");
     if (!slots.empty()) {
       std::vector<VkBufferCopy> regions;
-      for (size_t k = 0; k < slots.size(); ++k) regions.push_back({slots[k] * slotBytes, k * slotBytes, slotBytes});
+      for (size_t k = 0; k < slots.size(); ++k) regions.push_back({slots[k] * slotBytes, k * meshBytes, meshBytes});
       device().submitAndWait([&](VkCommandBuffer cmd) {
         vkCmdCopyBuffer(cmd, s.terrain->generator().payloads().handle(), host.handle(), uint32_t(regions.size()),
                         regions.data());
@@ -410,8 +412,9 @@ class ExtremesTest : public GpuTest {
         uint32_t instance = UINT32_MAX;
         for (uint32_t i = 0; i < selection.nodes.size() && instance == UINT32_MAX; ++i) {
           const gpu::TerrainInstance& r = records[i];
-          if (r.info.x == pages.localSlot(slot) * GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells) && r.info.y == 1u &&
-              r.offset.x == offset.x && r.offset.y == offset.y && r.offset.z == offset.z)
+          if (r.info.x ==
+                  pages.localSlot(slot) * GLOBE_PAYLOAD_SLOT_VEC4(kCells, s.terrain->settings().normalMapScale) &&
+              r.info.y == 1u && r.offset.x == offset.x && r.offset.y == offset.y && r.offset.z == offset.z)
             instance = i;
         }
         ASSERT_NE(instance, UINT32_MAX);

@@ -1,5 +1,7 @@
-// No pops: moving the camera by 1 mm changes the rendered depth by about 1 mm, everywhere but at a
-// few occlusion edges — no node switches level or snaps without morphing.
+// No pops: moving the camera by 1 mm changes the rendered depth by about 1 mm and the colour
+// (shaded from the normal maps, blended with the parent's by the morph factor) by next to nothing,
+// everywhere but at a few occlusion edges — no node switches level or snaps without morphing.
+#include "engine/io/image_io.h"
 #include "engine/render/headless_renderer.h"
 #include "engine/render/render_output.h"
 #include "planet/elevation/planet_file.h"
@@ -44,7 +46,7 @@ TEST_P(NoPopsTest, OneMillimetreStepChangesDepthSmoothly) {
       renderer.renderFrame(**terrain, b, true);
       ImageRgba ib = toImage(renderer.readback(), b);
       std::vector<double> diffs;
-      int jumps = 0, hits = 0;
+      int jumps = 0, hits = 0, colourJumps = 0;
       for (size_t i = 0; i < ia.z.size(); ++i) {
         bool ha = std::isfinite(ia.z[i]), hb = std::isfinite(ib.z[i]);
         if (ha != hb) ++jumps;  // silhouette pixels may flip
@@ -52,6 +54,11 @@ TEST_P(NoPopsTest, OneMillimetreStepChangesDepthSmoothly) {
         ++hits;
         double d = std::abs(double(ia.z[i]) - double(ib.z[i]));
         diffs.push_back(d);
+        float colour = 0.0f;
+        for (size_t ch = 0; ch < 3; ++ch)
+          colour = std::max(
+              colour, std::abs(float(linearToSrgb8(ia.rgba[4 * i + ch])) - float(linearToSrgb8(ib.rgba[4 * i + ch]))));
+        if (colour > 12.0f) ++colourJumps;  // 12 sRGB steps: a pop, or an occlusion edge
         // More than 1 cm + 0.1 % of the distance: an occlusion edge moved under this pixel, or a pop.
         if (d > 0.01 + 1e-3 * double(ia.z[i])) ++jumps;
       }
@@ -60,11 +67,13 @@ TEST_P(NoPopsTest, OneMillimetreStepChangesDepthSmoothly) {
       double p99 = diffs[diffs.size() * 99 / 100];
       std::printf(
           "[ info ] %s %s, tolerance %.0f px: depth change for a 1 mm step: p50 %.3g m, p99 %.3g m; %d edge "
-          "pixels of %d\n",
-          GetParam().name, c.name, tolerance, diffs[diffs.size() / 2], p99, jumps, hits);
+          "pixels of %d, %d changed colour by > 12 steps\n",
+          GetParam().name, c.name, tolerance, diffs[diffs.size() / 2], p99, jumps, hits, colourJumps);
       EXPECT_LT(p99, 0.01 + 1e-4 * double(ia.z[ia.z.size() / 2])) << c.name << " tolerance " << tolerance;
       EXPECT_LT(jumps, int(w * h / 100)) << c.name << " tolerance " << tolerance
                                          << ": more than 1 % of the pixels jumped";
+      EXPECT_LT(colourJumps, int(w * h / 100))
+          << c.name << " tolerance " << tolerance << ": more than 1 % of the pixels changed colour";
     }
 }
 
