@@ -71,5 +71,8 @@ void transitionImage(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspe
 // Makes device writes by `srcStage` (e.g. a transfer into a readback buffer) visible to host reads
 // after the fence: ALL_COMMANDS does not include the host stage.
 void hostReadBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess);
+// A global memory barrier: writes of (srcStage, srcAccess) made visible to (dstStage, dstAccess).
+void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
+                   VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess);
 
 }  // namespace globe::vk
