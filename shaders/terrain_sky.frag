@@ -1,24 +1,41 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
+// Background behind the terrain: the atmosphere's sky, from the ground or from space (limb glow),
+// and the sun's disc seen through it (include/atmosphere.glsl). Only pixels no terrain covered are
+// shaded (depth test against the far plane, no depth written). The vertex stage interpolates the
+// smooth part, tone-mapped (terrain_sky.vert); here the sun's disc per pixel, and, seen from outside
+// the atmosphere, the whole sky for the rays through it (the limb is a few pixels wide).
+#define GLOBE_ATMOSPHERE_BINDING 0
+#include "include/atmosphere.glsl"
 #include "include/display_encoding.glsl"
-// Background behind the terrain: a cheap sky gradient by the angle between the view ray and the
-// local vertical, fading to black space as the camera climbs through the atmosphere height.
-// No depth written (the depth buffer stays at its clear value 0 = infinitely far).
+
 layout(location = 0) in vec3 inRay;
-layout(location = 1) in float inUp;
+layout(location = 1) in vec3 inSky;
+layout(location = 2) in vec3 inDisc;
+layout(location = 3) in float inShell;
 layout(location = 0) out vec4 outColour;
 
 layout(push_constant) uniform Push {
-  vec4 right;    // see terrain_sky.vert
+  vec4 right;  // see terrain_sky.vert
   vec4 up;
   vec4 forward;
-  vec4 zenith;   // rgb: sky colour straight up; w: atmosphere factor (1 at the ground, 0 in space)
-  vec4 horizon;  // rgb: sky colour at the horizon
-  vec4 local;
+  vec4 camera;
+  vec4 sun;
 } push;
 
 void main() {
-  float t = inUp * inversesqrt(dot(inRay, inRay));  // cosine of the ray's angle to the vertical
-  vec3 sky = mix(push.horizon.rgb, push.zenith.rgb, sqrt(clamp(t, 0.0, 1.0)));
-  outColour = encodeDisplay(sky * push.zenith.w, 1.0);
+  vec3 v = normalize(inRay);
+  vec3 sun = push.sun.xyz;
+  vec3 sky = inSky, disc = inDisc;
+  // A branch on the interpolated value (not on the camera alone, which lavapipe would inline): per
+  // pixel only near the shell seen from outside, where atmosphereSky is black for rays that miss.
+  if (inShell > 0.0) {
+    vec3 transmittance;
+    sky = atmosphereToneMap(atmosphereSky(push.camera.xyz, v, sun, transmittance));
+    float alpha = atmosphere.sun.w;
+    disc = atmosphereToneMap(atmosphere.sun.rgb / (kAtmospherePi * alpha * alpha) * transmittance);
+  }
+  // The sun's disc over the sky, as if its radiance were added before tone-mapping.
+  sky = mix(sky, sky + disc * (1.0 - sky), bvec3(dot(v, sun) > atmosphere.misc.w));
+  outColour = encodeDisplay(sky, 1.0);
 }

@@ -47,6 +47,7 @@ struct BenchOptions {
   std::string baseline;    // an earlier run's output directory (its summary.json), or empty
   BudgetOptions budget;
   std::string commandLine;
+  std::string sun;        // --sun AZIMUTH,ELEVATION at the path's first keyframe; empty: the default sun
   int sourceRam_MiB = 0;  // RAM budget of elevation source tiles; 0 = kDefaultSourceRamBudget
 };
 
@@ -196,15 +197,24 @@ int runBench(const BenchOptions& o) {
   if (model.sources() != nullptr && o.sourceRam_MiB > 0)
     model.sources()->cache().setBudget(std::size_t(o.sourceRam_MiB) << 20);
   TerrainSettings settings = in->settings;
-  // One sun for the whole flight, lighting the region of the path's first keyframe.
-  settings.style.sunDirection = defaultSunDirection(in->path.positionAt(
-      in->path.startTime_s(), [&](const glm::dvec3& d) { return model.radius_m() + model.visibleElevation_m(d); }));
+  // One sun for the whole flight, placed in the sky of the path's first keyframe (--sun, else the
+  // path's own, else the default).
+  auto sun = sunFromOption(
+      o.sun,
+      in->path.positionAt(in->path.startTime_s(),
+                          [&](const glm::dvec3& d) { return model.radius_m() + model.visibleElevation_m(d); }),
+      in->path.keyframes().front().sun);
+  if (!sun) return usageError(sun.error());
+  settings.style.sunDirection = *sun;
   vk::Device device(deviceOptions(o.device));
   if (auto s = vk::checkImageExtent(device, {in->size.width, in->size.height}, "--size"); !s)
     return usageError(s.error());
   const double deviceReady_ms = millisecondsSinceProcessStart();
   auto terrain = Terrain::create(device, model, settings);
   if (!terrain) return usageError(budgetOptionError(terrain.error()));
+  if (const AtmosphereLuts* a = (*terrain)->atmosphere())
+    std::printf("atmosphere tables: %s in %.0f ms\n", a->fromCache() ? "read from the cache" : "computed",
+                a->build_ms());
   HeadlessRenderer renderer(device, {in->size.width, in->size.height});
   const double pipelinesReady_ms = millisecondsSinceProcessStart();
   std::error_code ec;
@@ -270,6 +280,7 @@ void addBenchCommand(CLI::App& app, Runner& run, const std::string& commandLine)
   cmd->add_option("--keyframes", opts->keyFrames, "Path times (s) whose frames are saved as PNG")
       ->capture_default_str();
   cmd->add_option("--rate", opts->rate_hz, "Frames per second of path time (fixed step)")->capture_default_str();
+  addSunOption(*cmd, opts->sun);
   addQualityOptions(*cmd, opts->quality);
   addBudgetOptions(*cmd, opts->budget);
   cmd->add_option("--baseline", opts->baseline,

@@ -123,6 +123,15 @@ void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid) {
                  "Normal map cells per grid cell: 1, 2 or 4; 0 = none, light per vertex (docs/rendering.md, "
                  "\"Normal maps\"; default: the preset's)")
       ->check(CLI::IsMember({0U, 1U, 2U, 4U}));
+  cmd.add_option("--atmosphere", options.atmosphere,
+                 "With a planet's [atmosphere]: full (sky, light and aerial perspective), sky (the sky only, the "
+                 "terrain Lambert-lit) or off (docs/rendering.md, \"Atmosphere\"; default: the preset's)")
+      ->check(CLI::Validator(
+          [](const std::string& text) -> std::string {
+            auto detail = parseAtmosphereDetail(text, "--atmosphere");
+            return detail ? std::string() : detail.error().message;
+          },
+          "DETAIL"));
 }
 
 Result<TerrainSettings> terrainSettingsFromOptions(const QualityOptions& options, const PlanetDescription& planet,
@@ -138,6 +147,11 @@ Result<TerrainSettings> terrainSettingsFromOptions(const QualityOptions& options
     settings.antialiasing = *aa;
   }
   if (options.normalMapScale != kPresetNormalMapScale) settings.normalMapScale = options.normalMapScale;
+  if (!options.atmosphere.empty()) {
+    auto detail = parseAtmosphereDetail(options.atmosphere, "--atmosphere");
+    if (!detail) return detail.error();
+    settings.atmosphere = *detail;
+  }
   settings.viewHeight_px = viewHeight_px;
   if (auto s = validateTerrainSettings(settings); !s) {
     Error e = s.error();
@@ -198,6 +212,22 @@ std::string defaultPlanetPath() { return defaultAssetPath("planets/earthlike.tom
 
 std::string defaultAssetPath(const std::string& relative) {
   return dataDirectory("GLOBE_ASSET_DIR", "assets") + "/" + relative;
+}
+
+void addSunOption(CLI::App& cmd, std::string& sun) {
+  cmd.add_option("--sun", sun,
+                 "Sun: AZIMUTH,ELEVATION in degrees in the sky of the camera's (first) position, azimuth "
+                 "clockwise from north; default: about 55 degrees up in the south-east (north-east south "
+                 "of the equator)")
+      ->check(nonEmptyValue());
+}
+
+Result<glm::dvec3> sunFromOption(const std::string& sun, const glm::dvec3& position_m,
+                                 const std::optional<SunAngles>& fallback) {
+  if (sun.empty()) return fallback ? sunDirectionAt(position_m, *fallback) : defaultSunDirection(position_m);
+  auto angles = parseSunAngles(sun, "--sun");
+  if (!angles) return angles.error();
+  return sunDirectionAt(position_m, *angles);
 }
 
 }  // namespace globe::cli

@@ -2,10 +2,12 @@
 // Option parsing shared by the subcommands: sizes, device selection, error reporting.
 #include "engine/render/quality.h"
 #include "engine/vk/device.h"
+#include "planet/camera/camera.h"
 #include "planet/core/error.h"
 
 #include <CLI/CLI.hpp>
 
+#include <optional>
 #include <string>
 
 namespace globe::cli {
@@ -52,9 +54,10 @@ struct QualityOptions {
   double tolerance_px = 0;                          // --tolerance; 0: the preset's LOD (distance or tolerance ranges)
   std::string antialiasing;                         // --aa; empty: the preset's
   uint32_t normalMapScale = kPresetNormalMapScale;  // --normal-map-scale
+  std::string atmosphere;                           // --atmosphere; empty: the preset's
 };
-// --quality, --tolerance, --aa, --normal-map-scale and, when withGrid, --grid, with the same help and checks on every
-// rendering command; read them back with terrainSettingsFromOptions.
+// --quality, --tolerance, --aa, --normal-map-scale, --atmosphere and, when withGrid, --grid, with the same help and
+// checks on every rendering command; read them back with terrainSettingsFromOptions.
 void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid = true);
 vk::DeviceOptions deviceOptions(const DeviceFlags& flags);
 
@@ -86,6 +89,13 @@ Error budgetOptionError(Error error);
 // applied; `viewHeight_px` is the drawn image's height (the tolerance's pixels). Errors name the options.
 Result<TerrainSettings> terrainSettingsFromOptions(const QualityOptions& options, const PlanetDescription& planet,
                                                    double viewHeight_px);
+
+// --sun AZIMUTH,ELEVATION (degrees, where the camera starts): empty keeps the default sun.
+void addSunOption(CLI::App& cmd, std::string& sun);
+// The sun direction for a camera at `position_m`: --sun's angles there, else `fallback`'s (a camera
+// path's first keyframe's), else defaultSunDirection. Errors name --sun.
+Result<glm::dvec3> sunFromOption(const std::string& sun, const glm::dvec3& position_m,
+                                 const std::optional<SunAngles>& fallback = std::nullopt);
 
 // Prints the error and returns kExitUsage.
 int usageError(const Error& error);

@@ -161,6 +161,7 @@ Result<ImageRgba> renderBodies(vk::Device& device, const ElevationModel& model, 
   const glm::dvec3 down = directionFromLatLon(pose.latitude_deg, pose.longitude_deg);
   const double ground = TerrainQueries(model).cameraFloorRadius(down, settings->ranges.maxDepth, cells);
   const Camera camera = cameraFromPose(pose, ground, model.shape(), 16.0 / 9.0);
+  settings->style.sunDirection = defaultSunDirection(camera.position_m);
   auto image = renderTerrain(device, camera, model, *settings, 960, 540);
   if (!image) return image.error();
   std::printf("%u bodies in view\n", drawBodies(*image, camera, world));

@@ -22,7 +22,7 @@ namespace globe::cli {
 // One converged terrain frame: waits until every node the view needs is resident before drawing.
 Result<ImageRgba> renderTerrain(vk::Device& device, const Camera& camera, const ElevationModel& model,
                                 TerrainSettings settings, uint32_t width, uint32_t height) {
-  settings.style.sunDirection = defaultSunDirection(camera.position_m);
+  // The caller put the sun in settings.style.sunDirection.
   auto terrain = Terrain::create(device, model, settings);
   if (!terrain) return budgetOptionError(terrain.error());
   HeadlessRenderer renderer(device, {width, height});
@@ -32,6 +32,9 @@ Result<ImageRgba> renderTerrain(vk::Device& device, const Camera& camera, const 
   std::printf("%u nodes (%u partial), %llu triangles, %u payloads resident (%.1f MiB), frame %.1f ms (GPU %.1f ms)\n",
               stats.nodes_selected, stats.nodes_partial, (unsigned long long)stats.triangles,
               (*terrain)->pool().stats().residentNodes, stats.resident_mib, stats.frame_ms, stats.gpu_ms);
+  if (const AtmosphereLuts* a = (*terrain)->atmosphere())
+    std::printf("atmosphere tables: %s in %.0f ms\n", a->fromCache() ? "read from the cache" : "computed",
+                a->build_ms());
   if ((*terrain)->depthCap() < settings.ranges.maxDepth)
     std::printf("frame budget: levels up to %d of %d\n", (*terrain)->depthCap(), settings.ranges.maxDepth);
   return toImage(renderer.readback(), camera);
@@ -47,18 +50,20 @@ struct RenderOptions {
   std::string size = "1280x720";
   std::string out = "out/render.png";
   std::string mode = "terrain";
+  std::string sun;         // --sun AZIMUTH,ELEVATION; empty: the default sun
   QualityOptions quality;  // --quality, --grid, --tolerance
   BudgetOptions budget;
 };
 
-// The reference sphere, lit by the default sun.
-ImageRgba renderSphere(vk::Device& device, const Camera& camera, const ElevationModel& model, const ImageSize& size) {
+// The reference sphere, lit by `sun`.
+ImageRgba renderSphere(vk::Device& device, const Camera& camera, const ElevationModel& model, const ImageSize& size,
+                       const glm::dvec3& sun) {
   vk::OffscreenTarget target(device, {size.width, size.height});
   SpherePreview preview(device);
   const float clear[4] = {0, 0, 0, 1};
   device.submitAndWait([&](VkCommandBuffer cmd) {
     target.begin(cmd, clear);
-    preview.record(cmd, camera, model.radius_m(), defaultSunDirection(camera.position_m));
+    preview.record(cmd, camera, model.radius_m(), sun);
     target.end(cmd);
   });
   return toImage(target.readback(), camera);
@@ -93,12 +98,15 @@ int runRender(const RenderOptions& o) {
     if (!pose) return usageError(pose.error());
   }
   Camera camera = cameraFromPose(*pose, ground, model.shape(), aspect);
+  auto sun = sunFromOption(o.sun, camera.position_m);
+  if (!sun) return usageError(sun.error());
+  settings->style.sunDirection = *sun;
 
   vk::Device device(deviceOptions(o.device));
   if (auto s = vk::checkImageExtent(device, {size->width, size->height}, "--size"); !s) return usageError(s.error());
   ImageRgba image;
   if (o.mode == "sphere") {
-    image = renderSphere(device, camera, model, *size);
+    image = renderSphere(device, camera, model, *size, *sun);
   } else {
     auto terrain = renderTerrain(device, camera, model, *settings, size->width, size->height);
     if (!terrain) return usageError(terrain.error());
@@ -133,6 +141,7 @@ void addRenderCommand(CLI::App& app, Runner& run) {
   cmd->add_option("--mode", opts->mode, "terrain (the planet) or sphere (its reference sphere, analytic)")
       ->check(CLI::IsMember({"terrain", "sphere"}))
       ->capture_default_str();
+  addSunOption(*cmd, opts->sun);
   addQualityOptions(*cmd, opts->quality);
   addBudgetOptions(*cmd, opts->budget);
   addDeviceFlags(*cmd, opts->device);

@@ -1,6 +1,6 @@
 #pragma once
 // One converged terrain frame (every node the view needs resident before drawing), shared by
-// `globe render` and `globe physics --render`.
+// `globe render` and `globe physics --render`. The sun is settings.style.sunDirection.
 #include "engine/io/image_io.h"
 #include "engine/render/terrain.h"
 #include "planet/camera/camera.h"

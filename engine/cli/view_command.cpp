@@ -34,6 +34,7 @@ struct ViewCommandOptions {
   std::string mode = "terrain";
   QualityOptions quality;  // --quality, --grid, --tolerance
   BudgetOptions budget;
+  std::string sun;  // --sun AZIMUTH,ELEVATION at the start; empty: the default sun
   std::string recordDir = ".";
   std::string record;
   bool noReload = false;
@@ -111,12 +112,16 @@ Status checkSceneOptions(const ViewCommandOptions& o, const GeodeticPose& pose, 
   scene.terrain = *terrain;
   // The sun of `globe render` at the starting point (about 45 degrees up): the first view is lit,
   // and a viewer screenshot matches a render of the same pose.
-  scene.sunDirection = defaultSunDirection(directionFromLatLon(pose.latitude_deg, pose.longitude_deg));
+  glm::dvec3 place = directionFromLatLon(pose.latitude_deg, pose.longitude_deg);
+  std::optional<SunAngles> pathSun;
   if (path) {  // a flown path is lit like `globe bench` lights it: at its first keyframe
     const double radius_m = ElevationModel(scene.planet).radius_m();
-    scene.sunDirection =
-        defaultSunDirection(path->positionAt(path->startTime_s(), [radius_m](const glm::dvec3&) { return radius_m; }));
+    place = path->positionAt(path->startTime_s(), [radius_m](const glm::dvec3&) { return radius_m; });
+    pathSun = path->keyframes().front().sun;
   }
+  auto sun = sunFromOption(o.sun, place, pathSun);
+  if (!sun) return sun.error();
+  scene.sunDirection = *sun;
   return Ok{};
 }
 
@@ -209,6 +214,7 @@ void addViewCommand(CLI::App& app, Runner& run) {
   cmd->add_option("--mode", opts->mode, "terrain (the planet) or sphere (its reference sphere, analytic)")
       ->check(CLI::IsMember({"terrain", "sphere"}))
       ->capture_default_str();
+  addSunOption(*cmd, opts->sun);
   addQualityOptions(*cmd, opts->quality);
   addBudgetOptions(*cmd, opts->budget);
   cmd->add_option("--record-dir", opts->recordDir,

@@ -81,10 +81,13 @@ Result<std::unique_ptr<FrameSource>> makeFrameSource(vk::Device& device, const P
                                                      const CameraPath& path, MovieSettings& s) {
   auto source = std::unique_ptr<FrameSource>(new FrameSource{device, ElevationModel(planet), nullptr, nullptr, {}});
   ElevationModel& model = source->model;
-  // One sun for the whole movie, lighting the region of the path's first keyframe (as globe bench).
-  s.terrain.style.sunDirection = defaultSunDirection(path.positionAt(
+  // One sun for the whole movie, lighting the region of the path's first keyframe (as globe bench):
+  // the path's own sun there, else the default.
+  const glm::dvec3 start = path.positionAt(
       path.startTime_s(), [&](const glm::dvec3& d) { return model.radius_m() + model.visibleElevation_m(d); },
-      model.radius_m()));
+      model.radius_m());
+  const std::optional<SunAngles>& pathSun = path.keyframes().front().sun;
+  s.terrain.style.sunDirection = pathSun ? sunDirectionAt(start, *pathSun) : defaultSunDirection(start);
   auto terrain = Terrain::create(device, model, s.terrain);
   if (!terrain) return terrain.error();
   source->terrain = std::move(*terrain);

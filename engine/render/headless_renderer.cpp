@@ -72,6 +72,7 @@ FrameStats HeadlessRenderer::renderFrame(Terrain& terrain, const Camera& camera,
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   GLOBE_VK_CHECK(vkBeginCommandBuffer(cmd_, &begin));
   vkCmdWriteTimestamp2(cmd_, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, queries_, kFrameBeginQuery);
+  terrain.prepare(cmd_, camera, uint32_t(frame_ % 2));
   target_->begin(cmd_, clear_.data());
   terrain.renderer().setPassTimestamps({queries_, kFirstPassQuery});
   terrain.record(cmd_, camera, uint32_t(frame_ % 2));

@@ -10,6 +10,7 @@ TerrainSettings terrainSettingsFor(QualityPreset preset) {
       s.gridCells = 16;
       s.ranges.distanceMultiplier = 0.25;
       s.normalMapScale = 0;  // light per vertex, as balanced
+      s.atmosphere = AtmosphereDetail::kSky;
       break;
     case QualityPreset::kBalanced:  // ~80k triangles at 1 km: 26 ms at 1280x720 on lavapipe (goal 33)
       s.gridCells = 16;
@@ -20,6 +21,9 @@ TerrainSettings terrainSettingsFor(QualityPreset preset) {
       // Light per vertex: with normal maps (scale 1) the flight's CPU doubles on lavapipe and its
       // median would pass 33 ms (docs/rendering.md, "Normal maps").
       s.normalMapScale = 0;
+      // The sky only: light and aerial perspective through the atmosphere cost +75-95 % of the
+      // flight's CPU on lavapipe (docs/rendering.md, "Atmosphere").
+      s.atmosphere = AtmosphereDetail::kSky;
       break;
     case QualityPreset::kExact:  // p95 screen error <= 0.5 px at 1280x720 at every standard camera
       s.gridCells = 64;

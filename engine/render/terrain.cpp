@@ -21,6 +21,24 @@ namespace {
 constexpr uint32_t kGenerationFailuresBeforeGivingUp = 256;
 }  // namespace
 
+Result<AtmosphereDetail> parseAtmosphereDetail(const std::string& text, const std::string& field) {
+  for (AtmosphereDetail d : {AtmosphereDetail::kOff, AtmosphereDetail::kSky, AtmosphereDetail::kFull})
+    if (text == atmosphereDetailName(d)) return d;
+  return Error::inField(field, "unknown atmosphere detail '" + text + "' (off, sky, full)");
+}
+
+const char* atmosphereDetailName(AtmosphereDetail detail) {
+  switch (detail) {
+    case AtmosphereDetail::kOff:
+      return "off";
+    case AtmosphereDetail::kSky:
+      return "sky";
+    case AtmosphereDetail::kFull:
+      break;
+  }
+  return "full";
+}
+
 Status validateTerrainSettings(const TerrainSettings& s) {
   if (s.gridCells < 16 || s.gridCells > 256 || (s.gridCells & (s.gridCells - 1)) != 0)
     return Error::inField("grid_cells", "must be a power of two in [16, 256], got " + std::to_string(s.gridCells));
@@ -82,6 +100,12 @@ void Terrain::attachPool(std::unique_ptr<PayloadPool> pool) {
   style.water = model_.water();
   style.seaLevel_m = model_.seaLevel_m();
   style.normalMapScale = settings_.normalMapScale;
+  if (settings_.atmosphere != AtmosphereDetail::kOff && model_.atmosphere())
+    atmosphere_ = std::make_unique<AtmosphereLuts>(device_, *model_.atmosphere(), model_.radius_m());
+  style.atmosphere = atmosphere_.get();
+  style.aerialPerspective = settings_.atmosphere == AtmosphereDetail::kFull;
+  const ElevationRange bounds = model_.bounds();
+  style.terrainRadii_m = {model_.shape().polarRadius_m() + bounds.min_m, model_.radius_m() + bounds.max_m};
   renderer_ = std::make_unique<TerrainRenderer>(device_, settings_.gridCells, style, settings_.vertexPositions, 1024,
                                                 vk::kSceneColourFormat, vk::sampleCount(settings_.antialiasing));
   drawNodes_.reserve(4096);

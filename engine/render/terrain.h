@@ -20,6 +20,14 @@
 
 namespace globe {
 
+// kFull: the sky, and the terrain lit through the atmosphere and seen through the air (aerial
+// perspective); kSky: the atmosphere's sky and sun disc behind a Lambert-lit terrain; kOff: none, as
+// for a planet without an atmosphere (black space).
+enum class AtmosphereDetail { kOff, kSky, kFull };
+// "off", "sky" or "full"; anything else is an Error naming `field`.
+Result<AtmosphereDetail> parseAtmosphereDetail(const std::string& text, const std::string& field);
+const char* atmosphereDetailName(AtmosphereDetail detail);
+
 struct TerrainSettings {
   uint32_t gridCells = 32;  // cells per node side: power of two in [16, 256]
   // Normal map cells per grid cell (1, 2 or 4): each payload's normal and colour map has
@@ -33,6 +41,9 @@ struct TerrainSettings {
   StreamingConfig streaming;     // budgets: memory (RAM, VRAM), generation, per-frame nodes/triangles/requests
   double originThreshold_m = 0;  // floating origin re-base distance (0 = camera-relative)
   TerrainStyle style;            // shading (the planet's colour ramp); its radius is set from the planet
+  // How much of the planet's [atmosphere] is drawn when it has one (its tables are computed, or read
+  // from the cache, AtmosphereLuts, when the terrain is made unless kOff).
+  AtmosphereDetail atmosphere = AtmosphereDetail::kFull;
   GenerationPrecision generation = GenerationPrecision::kDouble;  // kFloat only to measure (globe trade)
   VertexPositions vertexPositions = VertexPositions::kStored;     // kReprojected only to measure
   uint32_t payloadSlotsPerPage = 0;  // cap on slots per payload page (0: one binding's worth; tests)
@@ -65,6 +76,10 @@ class Terrain {
   const FrameStats& update(uint64_t frame, const Camera& camera, uint64_t completedFrame);
   // Records the draw of the last update(). `frameIndex`: which per-frame buffers to use (frame % 2).
   void record(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex);
+  // What record() reads and must be computed first, outside the render pass (TerrainRenderer::prepare).
+  void prepare(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex) {
+    renderer_->prepare(cmd, camera, frameIndex);
+  }
 
   // Remakes the renderer's pipelines for another anti-aliasing (the payloads stay): `globe trade`
   // times the frame with the preset's and measures depth single-sampled, at the pixel centres.
@@ -104,6 +119,8 @@ class Terrain {
   // Generation rounds the warm-up ran (0 before the first update or with primeRounds 0).
   uint32_t primedRounds() const { return primedRounds_; }
   double primeWall_ms() const { return primeWall_ms_; }  // wall time the warm-up took
+  // The atmosphere's tables, or nullptr (no atmosphere, or TerrainSettings::atmosphere off).
+  const AtmosphereLuts* atmosphere() const { return atmosphere_.get(); }
 
  private:
   // The constructor makes the generator; create() then makes the pool from it (a bad streaming
@@ -123,6 +140,7 @@ class Terrain {
   BudgetedSelection budgeted_;
   std::unique_ptr<GpuPayloadGenerator> generator_;
   std::unique_ptr<PayloadPool> pool_;
+  std::unique_ptr<AtmosphereLuts> atmosphere_;
   std::unique_ptr<TerrainRenderer> renderer_;
   Selection selection_;
   std::vector<DrawNode> drawNodes_;

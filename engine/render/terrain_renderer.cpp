@@ -23,11 +23,10 @@ namespace {
 
 struct SkyPush {
   ViewRays rays;
-  float zenith[4];
-  float horizon[4];
-  float local[4];
+  float camera[4];  // camera minus planet centre, metres
+  float sun[4];     // unit, towards the sun
 };
-static_assert(sizeof(SkyPush) == 96);
+static_assert(sizeof(SkyPush) == 80);
 
 // Per-frame buffer: the TerrainFrame constants, then the instances at an offset every device accepts
 // for a storage-buffer binding (minStorageBufferOffsetAlignment is at most 256).
@@ -54,17 +53,28 @@ struct TargetFormat {
   VkSampleCountFlagBits samples;
 };
 
+// What a terrain pipeline's shaders compute besides the grid: shading from the payloads' normal
+// maps, light and aerial perspective through the atmosphere.
+struct TerrainShading {
+  bool normalMaps;
+  bool atmosphere;
+};
+
 vk::GraphicsPipelineDesc terrainDesc(TargetFormat target, bool wireframe, VkCullModeFlags cull,
-                                     VertexPositions positions, const char* fragmentShader, bool normalMaps) {
+                                     VertexPositions positions, const char* fragmentShader, TerrainShading shading) {
   vk::GraphicsPipelineDesc d;
   // constant_id 0 of terrain_fragment.glsl: shade from the payloads' normal maps.
-  d.fragmentSpecialization = {normalMaps ? 1u : 0u};
+  // constant_id 1: light from the atmosphere's per-vertex terms.
+  d.fragmentSpecialization = {shading.normalMaps ? 1u : 0u, shading.atmosphere ? 1u : 0u};
   const bool reprojected = positions == VertexPositions::kReprojected;
-  d.vertexShader = reprojected ? "terrain_reprojected.vert" : "terrain.vert";
+  const bool atmosphere = shading.atmosphere;
+  d.vertexShader = reprojected ? "terrain_reprojected.vert" : atmosphere ? "terrain_atmosphere.vert" : "terrain.vert";
   d.fragmentShader = fragmentShader;
-  // 0: instances, 1: payloads, 2: frame constants (uniform); reprojected: 3 nodes' (u, v), 4 faces.
-  d.storageBuffers = reprojected ? 5 : 3;
-  d.uniformMask = 1u << 2;
+  // 0: instances, 1: payloads, 2: frame constants (uniform); reprojected: 3 nodes' (u, v), 4 faces;
+  // atmosphere: 3 its parameters (uniform), 4-6 its tables, 7 the frame's camera (uniform), 8 its
+  // aerial perspective table (AtmosphereView).
+  d.storageBuffers = reprojected ? 5 : atmosphere ? 9 : 3;
+  d.uniformMask = atmosphere ? (1u << 2) | (1u << 3) | (1u << 7) : 1u << 2;
   d.pushConstantBytes = sizeof(gpu::TerrainDrawPush);
   d.colourFormat = target.colour;
   d.samples = target.samples;
@@ -120,49 +130,57 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
       // always hidden behind front faces, and culling them halves the rasteriser's work. Skirts
       // fill gaps seen from either side. A planet with kept holes draws both faces, so that the
       // surface and the hole's rim are seen from below through the hole too.
-      pendingOptional_(std::async(
-          std::launch::async,
-          [&device, style, positions, target = TargetFormat{colourFormat, samples}] {
-            OptionalPipelines made;
-            const bool maps = style.normalMapScale > 0;
-            if (style.water.enabled) {
-              made.water = std::make_unique<vk::GraphicsPipeline>(
-                  device, terrainDesc(target, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT, positions,
-                                      style.holes ? "terrain_water_holes.frag" : "terrain_water.frag", maps));
-              made.waterSkirts = std::make_unique<vk::GraphicsPipeline>(
-                  device, terrainDesc(target, false, VK_CULL_MODE_NONE, positions,
-                                      style.holes ? "terrain_water_holes.frag" : "terrain_water.frag", maps));
-            }
-            VkPhysicalDeviceFeatures features{};
-            vkGetPhysicalDeviceFeatures(device.physical(), &features);
-            if (features.fillModeNonSolid) {
-              made.wireframe = std::make_unique<vk::GraphicsPipeline>(
-                  device, terrainDesc(target, true, VK_CULL_MODE_NONE, positions, "terrain.frag", maps));
-            }
-            return made;
-          })),
+      // The reprojected positions (a measurement only) are drawn without the atmosphere.
+      atmosphere_(positions == VertexPositions::kStored && style.aerialPerspective ? style.atmosphere : nullptr),
+      pendingOptional_(
+          std::async(std::launch::async,
+                     [&device, style, positions, target = TargetFormat{colourFormat, samples},
+                      shading = TerrainShading{style.normalMapScale > 0, atmosphere_ != nullptr}] {
+                       OptionalPipelines made;
+                       if (style.water.enabled) {
+                         const char* water = style.holes ? "terrain_water_holes.frag" : "terrain_water.frag";
+                         made.water = std::make_unique<vk::GraphicsPipeline>(
+                             device, terrainDesc(target, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT,
+                                                 positions, water, shading));
+                         made.waterSkirts = std::make_unique<vk::GraphicsPipeline>(
+                             device, terrainDesc(target, false, VK_CULL_MODE_NONE, positions, water, shading));
+                       }
+                       VkPhysicalDeviceFeatures features{};
+                       vkGetPhysicalDeviceFeatures(device.physical(), &features);
+                       if (features.fillModeNonSolid) {
+                         made.wireframe = std::make_unique<vk::GraphicsPipeline>(
+                             device, terrainDesc(target, true, VK_CULL_MODE_NONE, positions, "terrain.frag", shading));
+                       }
+                       return made;
+                     })),
       solid_(device,
              terrainDesc({colourFormat, samples}, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT,
-                         positions, style.holes ? "terrain_holes.frag" : "terrain.frag", style.normalMapScale > 0)),
+                         positions, style.holes ? "terrain_holes.frag" : "terrain.frag",
+                         {style.normalMapScale > 0, atmosphere_ != nullptr})),
       skirts_(device, terrainDesc({colourFormat, samples}, false, VK_CULL_MODE_NONE, positions,
-                                  style.holes ? "terrain_holes.frag" : "terrain.frag", style.normalMapScale > 0)),
-      sky_(device, [&] {
-        vk::GraphicsPipelineDesc d;
-        d.vertexShader = "terrain_sky.vert";
-        d.fragmentShader = "terrain_sky.frag";
-        d.pushConstantBytes = sizeof(SkyPush);
-        d.colourFormat = colourFormat;
-        d.samples = samples;
-        d.depthTest = true;  // GREATER_OR_EQUAL against depth 0: passes only where nothing was drawn
-        d.depthWrite = false;
-        return d;
-      }()) {
+                                  style.holes ? "terrain_holes.frag" : "terrain.frag",
+                                  {style.normalMapScale > 0, atmosphere_ != nullptr})) {
   assert(gridCells >= 16 && gridCells <= 256 && (gridCells & (gridCells - 1)) == 0);
   assert(style.normalMapScale <= 4 && (style.normalMapScale & (style.normalMapScale - 1)) == 0);
   OptionalPipelines optional = pendingOptional_.get();
   water_ = std::move(optional.water);
   waterSkirts_ = std::move(optional.waterSkirts);
   wireframe_ = std::move(optional.wireframe);
+  if (atmosphere_) view_ = std::make_unique<AtmosphereView>(device, *atmosphere_);
+  if (style.atmosphere) {
+    // Without an atmosphere the background stays the clear colour: black space.
+    vk::GraphicsPipelineDesc d;
+    d.vertexShader = "terrain_sky.vert";
+    d.fragmentShader = "terrain_sky.frag";
+    d.storageBuffers = 4;  // the atmosphere's parameters (uniform) and tables
+    d.uniformMask = 1u << 0;
+    d.pushConstantBytes = sizeof(SkyPush);
+    d.colourFormat = colourFormat;
+    d.samples = samples;
+    d.depthTest = true;  // GREATER_OR_EQUAL against depth 0: passes only where nothing was drawn
+    d.depthWrite = false;
+    sky_ = std::make_unique<vk::GraphicsPipeline>(device, d);
+  }
 
   // Ranges: full grid, half grid, full skirt strip, half skirt strip.
   std::vector<uint32_t> indices;
@@ -237,17 +255,21 @@ gpu::TerrainReprojectionNode* TerrainRenderer::beginReprojection(uint32_t frameI
 }
 
 void TerrainRenderer::recordSky(VkCommandBuffer cmd, const Camera& camera) const {
-  const double distance_m = glm::length(camera.position_m);
-  const glm::dvec3 local = distance_m > 0.0 ? camera.position_m / distance_m : glm::dvec3(0, 0, 1);
-  const double altitude_m = distance_m - style_.radius_m;
-  const float atmosphere = float(std::clamp(1.0 - altitude_m / style_.atmosphereHeight_m, 0.0, 1.0));
-  const glm::vec3 z = style_.zenithColour, h = style_.horizonColour;
-  SkyPush push{viewRays(camera, 0.0f),
-               {z.x, z.y, z.z, atmosphere},
-               {h.x, h.y, h.z, 0.0f},
-               {float(local.x), float(local.y), float(local.z), 0.0f}};
-  sky_.bind(cmd, {}, &push, sizeof(push));
-  vkCmdDraw(cmd, 3, 1, 0, 0);
+  // Camera minus planet centre in double, then float: the sky never sees the planet-scale sum.
+  const glm::vec3 c(camera.position_m);
+  const glm::vec3 sun(glm::normalize(style_.sunDirection));
+  // The sky's screen grid is the terrain's full grid (its index range 0), one vertex per sample.
+  SkyPush push{viewRays(camera, float(cells_)), {c.x, c.y, c.z, 0.0f}, {sun.x, sun.y, sun.z, 0.0f}};
+  const AtmosphereLuts& a = *style_.atmosphere;
+  sky_->bind(cmd, {a.parameters(), a.transmittance(), a.irradiance(), a.scattering()}, &push, sizeof(push));
+  vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
+  vkCmdDrawIndexed(cmd, count_[0], 1, first_[0], 0, 0);
+}
+
+void TerrainRenderer::prepare(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex) {
+  if (!view_) return;
+  const glm::dvec2 radii = style_.terrainRadii_m;
+  view_->record(cmd, camera, style_.sunDirection, radii, frameIndex);
 }
 
 DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, const glm::dvec3& origin_m,
@@ -257,10 +279,10 @@ DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, con
   uint32_t nextMark = kMarkGridsBegin;
   writeMarks(cmd, nextMark, kMarkGridsBegin);
   if (!nodes.empty()) stats = recordTerrain(cmd, camera, origin_m, nodes, payloads, frameIndex, nextMark);
-  // The sky goes last, behind everything: its fullscreen triangle lies at the far plane (depth 0),
+  // The sky goes last, behind everything: its screen grid lies at the far plane (depth 0),
   // so the depth test keeps only the pixels no terrain covered, and those are the only ones shaded.
   writeMarks(cmd, nextMark, kMarkSkyBegin);
-  if (style_.sky) {
+  if (style_.sky && sky_ && style_.atmosphere) {
     recordSky(cmd, camera);
     ++stats.drawCalls;
   }
@@ -430,6 +452,12 @@ DrawStats TerrainRenderer::recordDraws(VkCommandBuffer cmd, const PayloadPages& 
         pipeline.bind(cmd,
                       {instanceDescriptor(frameIndex), payloads.window(page), constantsDescriptor(frameIndex),
                        reprojection_[frameIndex].descriptor(), faces_.descriptor()},
+                      &push, sizeof(push));
+      } else if (atmosphere_) {
+        pipeline.bind(cmd,
+                      {instanceDescriptor(frameIndex), payloads.window(page), constantsDescriptor(frameIndex),
+                       atmosphere_->parameters(), atmosphere_->transmittance(), atmosphere_->irradiance(),
+                       atmosphere_->scattering(), view_->camera(frameIndex), view_->table(frameIndex)},
                       &push, sizeof(push));
       } else {
         pipeline.bind(cmd, {instanceDescriptor(frameIndex), payloads.window(page), constantsDescriptor(frameIndex)},

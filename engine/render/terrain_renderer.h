@@ -11,6 +11,8 @@
 // Frames in flight: per-frame data (constants + one record per node) lives in one host-visible
 // buffer per frame index, preallocated and grown only when a frame has more nodes than ever before.
 // The caller must have waited for the previous use of `frameIndex` before record().
+#include "engine/atmosphere/atmosphere_luts.h"
+#include "engine/atmosphere/atmosphere_view.h"
 #include "engine/generation/payload_pages.h"
 #include "engine/vk/frame_ring.h"
 #include "engine/vk/graphics_pipeline.h"
@@ -45,13 +47,26 @@ enum class TerrainDebugView {
 enum class VertexPositions { kStored, kReprojected };
 
 struct TerrainStyle {
-  double radius_m = 6371000.0;                   // planet radius (metres): local vertical, altitude for the sky
-  glm::dvec3 sunDirection{1.0, 0.4, 0.6};        // towards the sun, planet-fixed (normalised here)
-  float ambient = 0.08f;                         // light on faces turned away from the sun, [0, 1]
-  bool sky = true;                               // draw the sky gradient behind the terrain
-  double atmosphereHeight_m = 100000.0;          // above it the background is black space (> 0)
-  glm::vec3 zenithColour{0.20f, 0.38f, 0.80f};   // linear RGB
-  glm::vec3 horizonColour{0.62f, 0.74f, 0.92f};  // linear RGB
+  double radius_m = 6371000.0;             // planet radius (metres)
+  glm::dvec3 sunDirection{1.0, 0.4, 0.6};  // towards the sun, planet-fixed (normalised here)
+  float ambient = 0.08f;                   // without an atmosphere: light on faces turned away from the sun, [0, 1]
+  bool sky = true;                         // draw the atmosphere's sky behind the terrain (when there is one)
+  // The sky the water reflects on a planet without an atmosphere (linear RGB); with one, the
+  // atmosphere's own sky colours.
+  glm::vec3 zenithColour{0.20f, 0.38f, 0.80f};
+  glm::vec3 horizonColour{0.62f, 0.74f, 0.92f};
+  // The planet's atmosphere tables (Terrain owns them; must outlive the renderer): the sky, sunlight
+  // through the atmosphere and aerial perspective. nullptr: no atmosphere, black space around a
+  // Lambert-lit terrain. Fixed at construction (it selects the pipelines).
+  const AtmosphereLuts* atmosphere = nullptr;
+  // With an atmosphere: the terrain lit by the sun and the sky through it and seen through the air
+  // (terrain_atmosphere.vert). false: only the sky is the atmosphere's; the terrain is Lambert-lit,
+  // as without one (AtmosphereDetail::kSky: the per-vertex light and aerial perspective cost most of
+  // the atmosphere on lavapipe, docs/rendering.md "Atmosphere").
+  bool aerialPerspective = true;
+  // Radii (metres) of the lowest and the highest terrain: where the aerial perspective table's rays
+  // can meet the ground (AtmosphereView).
+  glm::dvec2 terrainRadii_m{6371000.0 - 11000.0, 6371000.0 + 9000.0};
   TerrainDebugView debug = TerrainDebugView::kShaded;
   // Skirt flare, in drawn cells: outward under the neighbour and down. 0 = no skirts (cracks of a
   // fraction of a pixel may then show between nodes of different levels).
@@ -112,6 +127,11 @@ class TerrainRenderer {
   TerrainRenderer(const TerrainRenderer&) = delete;
   TerrainRenderer& operator=(const TerrainRenderer&) = delete;
 
+  // Records what the frame's draws read and must be computed first: with an atmosphere, the aerial
+  // perspective table for `camera` (AtmosphereView). Outside the render pass, before record() with
+  // the same camera and frameIndex; nothing without an atmosphere.
+  void prepare(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex);
+
   // Records the sky (if enabled) and the terrain into the current dynamic-rendering pass (viewport and
   // scissor already set). `origin_m`: the floating origin (FloatingOrigin); `payloads`: the payload
   // pages, slot s starting at vec4 localSlot(s) * GLOBE_PAYLOAD_SLOT_VEC4(gridCells, normalMapScale) of page
@@ -124,6 +144,8 @@ class TerrainRenderer {
   void setDebugView(TerrainDebugView view) { style_.debug = view; }
   void setPassTimestamps(PassTimestamps timestamps) { timestamps_ = timestamps; }
   bool wireframeSupported() const { return wireframe_ != nullptr; }
+  // The per-frame aerial perspective tables (nullptr without an atmosphere), for tests.
+  const AtmosphereView* atmosphereView() const { return view_.get(); }
   uint32_t gridCells() const { return cells_; }
   // Index counts of the full and the half-resolution grids, and of one skirt strip (one node edge) of each.
   uint32_t fullIndexCount() const { return count_[0]; }
@@ -167,6 +189,8 @@ class TerrainRenderer {
   PassTimestamps timestamps_;
   // Writes the pass marks from `next` up to and including `mark` (none without a query pool).
   void writeMarks(VkCommandBuffer cmd, uint32_t& next, uint32_t mark) const;
+  const AtmosphereLuts* atmosphere_;      // the style's, for the terrain pipelines (nullptr: none)
+  std::unique_ptr<AtmosphereView> view_;  // with atmosphere_ only
   // The water and wireframe pipelines, created on a second thread while the others are (pipeline
   // creation is most of the renderer's set-up: docs/benchmark.md, "Cold start").
   struct OptionalPipelines {
@@ -178,7 +202,7 @@ class TerrainRenderer {
   std::unique_ptr<vk::GraphicsPipeline> water_;        // grids of nodes with sea (planets with water only)
   std::unique_ptr<vk::GraphicsPipeline> waterSkirts_;  // their skirts, both sides
   std::unique_ptr<vk::GraphicsPipeline> wireframe_;
-  vk::GraphicsPipeline sky_;
+  std::unique_ptr<vk::GraphicsPipeline> sky_;  // with an atmosphere only
   vk::Buffer indices_;
   // Index ranges: full grid, half grid, one full skirt strip, one half skirt strip.
   std::array<uint32_t, 4> first_{};

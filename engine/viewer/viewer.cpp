@@ -22,6 +22,7 @@
 #include <GLFW/glfw3.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <thread>
@@ -129,6 +130,7 @@ struct Viewer::State {
   bool screenshotRequested = false;
   bool recordToggleRequested = false;
   bool dropRequested = false;
+  glm::dvec2 sunMove{0.0};               // H/K: azimuth, U/J: elevation (degrees) asked since the last frame
   std::unique_ptr<ViewerBodies> bodies;  // created by the first drop (B); reset on planet reload
   bool waitForReloadRequested = false;
   bool swapchainStale = false;
@@ -209,6 +211,8 @@ void Viewer::State::handle(const InputEvent& e) {
         if (e.code == GLFW_KEY_F1 || e.code == GLFW_KEY_L) scene->cycleDebugView();
         if (e.code == GLFW_KEY_R) recordToggleRequested = true;
         if (e.code == GLFW_KEY_B) dropRequested = true;
+        if (e.code == GLFW_KEY_H || e.code == GLFW_KEY_K) sunMove.x += e.code == GLFW_KEY_K ? 15.0 : -15.0;
+        if (e.code == GLFW_KEY_U || e.code == GLFW_KEY_J) sunMove.y += e.code == GLFW_KEY_U ? 5.0 : -5.0;
       } else {
         input.keysDown.erase(e.code);
       }
@@ -275,6 +279,7 @@ void Viewer::State::renderFrame(uint32_t image, VkCommandBuffer cmd, const Camer
 
   // Scene: display-encoded colour and reversed-Z depth. The terrain's per-frame buffers are indexed by
   // frame % kFramesInFlight, the FrameRing slot whose fence begin() waited for.
+  scene->prepare(cmd, cam, uint32_t(frame % vk::kFramesInFlight));
   target->begin(cmd, kSpaceColour);
   scene->record(cmd, cam, uint32_t(frame % vk::kFramesInFlight));
   target->end(cmd);  // colour is now TRANSFER_SRC_OPTIMAL
@@ -408,6 +413,13 @@ Camera Viewer::State::stepCamera(double wall_s, Clock::time_point now) {
     recorder.advance(step_s, currentPose(cam));
   }
   stepBodies(step_s, cam);
+  if (sunMove != glm::dvec2(0.0)) {
+    scene->moveSun(cam.position_m, sunMove.x, sunMove.y);
+    const SunAngles sun = sunAnglesAt(cam.position_m, scene->sunDirection());
+    message = "sun at azimuth " + std::to_string(int(std::lround(sun.azimuth_deg))) + ", elevation " +
+              std::to_string(int(std::lround(sun.elevation_deg))) + " degrees";
+    sunMove = glm::dvec2(0.0);
+  }
   return cam;
 }
 

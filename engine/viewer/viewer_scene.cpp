@@ -1,5 +1,7 @@
 #include "engine/viewer/viewer_scene.h"
 
+#include <algorithm>
+
 #include "planet/analysis/terrain_queries.h"
 
 #include "engine/vk/vk_check.h"
@@ -50,6 +52,17 @@ Status ViewerScene::buildTerrain() {
   return Ok{};
 }
 
+void ViewerScene::moveSun(const glm::dvec3& position_m, double azimuth_deg, double elevation_deg) {
+  SunAngles sun = sunAnglesAt(position_m, options_.sunDirection);
+  sun.azimuth_deg += azimuth_deg;
+  sun.elevation_deg = std::clamp(sun.elevation_deg + elevation_deg, -90.0, 90.0);
+  options_.sunDirection = sunDirectionAt(position_m, sun);
+  if (!terrain_) return;
+  TerrainStyle style = terrain_->renderer().style();
+  style.sunDirection = options_.sunDirection;
+  terrain_->renderer().setStyle(style);
+}
+
 std::optional<ReloadOutcome> ViewerScene::pollReload(PlanetFileWatcher::Clock::time_point now) {
   if (!watcher_ || !watcher_->changed(now)) return std::nullopt;
   PlanetFileCheck check = checkPlanetFile(watcher_->path());
@@ -89,6 +102,10 @@ std::optional<ReloadOutcome> ViewerScene::pollReload(PlanetFileWatcher::Clock::t
 
 void ViewerScene::update(uint64_t frame, const Camera& camera, uint64_t completedFrame) {
   if (terrain_) stats_ = terrain_->update(frame, camera, completedFrame);
+}
+
+void ViewerScene::prepare(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex) {
+  if (terrain_) terrain_->prepare(cmd, camera, frameIndex);
 }
 
 void ViewerScene::record(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex) {

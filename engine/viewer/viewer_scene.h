@@ -53,9 +53,16 @@ class ViewerScene {
 
   // CPU part of viewer frame `frame`; `completedFrame` as for Terrain::update. Terrain only.
   void update(uint64_t frame, const Camera& camera, uint64_t completedFrame);
+  // Records what record() reads and must be computed first, outside the render pass (Terrain::prepare).
+  void prepare(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex);
   // Records the scene into the current dynamic-rendering pass (the scene target); draw calls are
   // counted in stats().
   void record(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex);
+
+  // H/K turn the sun's azimuth by -/+15 degrees, U/J raise/lower it by 5 degrees, in the sky above
+  // `position_m` (the camera). The sun stays where it is in the planet's frame otherwise.
+  void moveSun(const glm::dvec3& position_m, double azimuth_deg, double elevation_deg);
+  const glm::dvec3& sunDirection() const { return options_.sunDirection; }
 
   // F1/L: terrain cycles shaded -> LOD colours -> wireframe; the sphere toggles its grid.
   void cycleDebugView();

@@ -89,14 +89,56 @@ Status validatePose(const GeodeticPose& pose, const std::string& field) {
   return Ok{};
 }
 
-glm::dvec3 defaultSunDirection(const glm::dvec3& position_m) {
+namespace {
+// Local east, north and up at a position (from its latitude and longitude, so defined at the poles).
+glm::dmat3 localFrame(const glm::dvec3& position_m) {
   glm::dvec2 ll = latLonFromPosition(position_m);
   double lat = ll.x * kDeg, lon = ll.y * kDeg;
   glm::dvec3 up{std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
   glm::dvec3 east{-std::sin(lon), std::cos(lon), 0.0};
-  glm::dvec3 north = glm::cross(up, east);
-  double towardsEquator = ll.x >= 0 ? -1.0 : 1.0;
-  return glm::normalize(0.5 * east + 0.5 * towardsEquator * north + 1.0 * up);
+  return glm::dmat3(east, glm::cross(up, east), up);
+}
+}  // namespace
+
+glm::dvec3 defaultSunDirection(const glm::dvec3& position_m) {
+  const glm::dmat3 frame = localFrame(position_m);
+  double towardsEquator = latLonFromPosition(position_m).x >= 0 ? -1.0 : 1.0;
+  return glm::normalize(0.5 * frame[0] + 0.5 * towardsEquator * frame[1] + 1.0 * frame[2]);
+}
+
+Result<SunAngles> parseSunAngles(const std::string& text, const std::string& field) {
+  const size_t comma = text.find(',');
+  if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos)
+    return Error::inField(field, "expected AZIMUTH,ELEVATION in degrees, got '" + text + "'");
+  auto azimuth = parseNumber(text.substr(0, comma), field, "azimuth");
+  if (!azimuth) return azimuth.error();
+  auto elevation = parseNumber(text.substr(comma + 1), field, "elevation");
+  if (!elevation) return elevation.error();
+  SunAngles sun{*azimuth, *elevation};
+  if (auto s = validateSunAngles(sun, field); !s) return s.error();
+  return sun;
+}
+
+Status validateSunAngles(const SunAngles& sun, const std::string& field) {
+  if (!std::isfinite(sun.azimuth_deg)) return Error::inField(field, "sun azimuth must be finite");
+  if (!std::isfinite(sun.elevation_deg) || std::abs(sun.elevation_deg) > 90)
+    return Error::inField(field, "sun elevation must be within [-90, 90] degrees");
+  return Ok{};
+}
+
+glm::dvec3 sunDirectionAt(const glm::dvec3& position_m, const SunAngles& sun) {
+  const glm::dmat3 frame = localFrame(position_m);
+  const double az = sun.azimuth_deg * kDeg, el = sun.elevation_deg * kDeg;
+  return glm::normalize(std::cos(el) * (std::sin(az) * frame[0] + std::cos(az) * frame[1]) + std::sin(el) * frame[2]);
+}
+
+SunAngles sunAnglesAt(const glm::dvec3& position_m, const glm::dvec3& direction) {
+  const glm::dmat3 frame = localFrame(position_m);
+  const glm::dvec3 d = glm::normalize(direction);
+  const double east = glm::dot(d, frame[0]), north = glm::dot(d, frame[1]), up = glm::dot(d, frame[2]);
+  double azimuth = std::atan2(east, north) / kDeg;
+  if (azimuth < 0) azimuth += 360.0;
+  return {azimuth, std::asin(std::clamp(up, -1.0, 1.0)) / kDeg};
 }
 
 double horizonPitch_deg(double height_m, double radius_m) {

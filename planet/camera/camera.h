@@ -93,6 +93,20 @@ glm::dvec3 directionFromLatLon(double latitude_deg, double longitude_deg);
 // light of headless renders and benchmarks, so their views are lit wherever they are.
 glm::dvec3 defaultSunDirection(const glm::dvec3& position_m);
 
+// The sun as users give it (--sun AZIMUTH,ELEVATION, camera paths): where it stands in the sky of a
+// place, in degrees: azimuth clockwise from north, elevation above the local horizon.
+struct SunAngles {
+  double azimuth_deg = 0;    // any finite value (wrapped)
+  double elevation_deg = 0;  // [-90, 90]
+};
+// Parses "AZIMUTH,ELEVATION"; errors name `field`.
+Result<SunAngles> parseSunAngles(const std::string& text, const std::string& field);
+Status validateSunAngles(const SunAngles& sun, const std::string& field);
+// The planet-fixed unit direction towards a sun standing at `sun` in the sky above `position_m`.
+glm::dvec3 sunDirectionAt(const glm::dvec3& position_m, const SunAngles& sun);
+// The inverse: where the sun in direction `direction` stands in the sky above `position_m`.
+SunAngles sunAnglesAt(const glm::dvec3& position_m, const glm::dvec3& direction);
+
 // Pitch (degrees) that looks at the geometric horizon from height h above a sphere of radius R.
 double horizonPitch_deg(double height_m, double radius_m);
 

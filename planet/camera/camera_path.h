@@ -24,6 +24,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,9 @@ struct PathKeyframe {
   HeightReference heightReference = HeightReference::ground;
   // The camera comes to rest here: zero velocity and height rate (a KML "bounce" FlyTo's ends).
   bool stop = false;
+  // Where the sun stands in this keyframe's sky (sun_azimuth_deg, sun_elevation_deg columns); the
+  // commands light a flight by its first keyframe's (docs/camera-paths.md).
+  std::optional<SunAngles> sun;
 };
 
 class CameraPath {

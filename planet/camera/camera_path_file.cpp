@@ -20,8 +20,10 @@ namespace globe {
 
 namespace {
 // Columns a header may add after the fixed seven (docs/camera-paths.md): what height_m is measured
-// from, and where the camera comes to rest.
-constexpr std::array<std::string_view, 2> kOptionalColumns = {"height_ref", "stop"};
+// from, where the camera comes to rest, and where the sun stands in the keyframe's sky (both or
+// neither).
+constexpr std::array<std::string_view, 4> kOptionalColumns = {"height_ref", "stop", "sun_azimuth_deg",
+                                                              "sun_elevation_deg"};
 constexpr std::array<std::string_view, 7> kColumns = {"t_s",         "lat_deg",   "lon_deg", "height_m",
                                                       "heading_deg", "pitch_deg", "roll_deg"};
 
@@ -79,13 +81,17 @@ Result<OptionalColumns> parseHeader(const std::vector<std::string_view>& fields,
     bool known = std::find(kOptionalColumns.begin(), kOptionalColumns.end(), fields[i]) != kOptionalColumns.end();
     bool repeated = std::find(columns.names.begin(), columns.names.end(), fields[i]) != columns.names.end();
     if (!known || repeated)
-      return Error::atLine(
-          file, line,
-          fmt::format("{} column '{}' in the header (after the seven fixed columns only height_ref and "
-                      "stop may follow, once each)",
-                      repeated ? "repeated" : "unknown", fields[i]));
+      return Error::atLine(file, line,
+                           fmt::format("{} column '{}' in the header (after the seven fixed columns only height_ref, "
+                                       "stop, sun_azimuth_deg and sun_elevation_deg may follow, once each)",
+                                       repeated ? "repeated" : "unknown", fields[i]));
     columns.names.push_back(fields[i]);
   }
+  auto has = [&](std::string_view name) {
+    return std::find(columns.names.begin(), columns.names.end(), name) != columns.names.end();
+  };
+  if (has("sun_azimuth_deg") != has("sun_elevation_deg"))
+    return Error::atLine(file, line, "sun_azimuth_deg and sun_elevation_deg go together: give both columns or neither");
   return columns;
 }
 
@@ -96,10 +102,17 @@ Status parseOptionalField(std::string_view name, std::string_view text, PathKeyf
     if (text != "ground" && text != "sphere")
       return Error::atLine(file, line, fmt::format("height_ref must be 'ground' or 'sphere', got '{}'", text));
     key.heightReference = text == "sphere" ? HeightReference::sphere : HeightReference::ground;
-  } else {
+  } else if (name == "stop") {
     if (text != "0" && text != "1")
       return Error::atLine(file, line, fmt::format("stop must be 0 or 1, got '{}'", text));
     key.stop = text == "1";
+  } else {
+    auto number = parseNumber(text, name, file, line);
+    if (!number) return number.error();
+    key.sun = key.sun.value_or(SunAngles{});
+    (name == "sun_azimuth_deg" ? key.sun->azimuth_deg : key.sun->elevation_deg) = *number;
+    if (name == "sun_elevation_deg" && std::abs(*number) > 90.0)
+      return Error::atLine(file, line, fmt::format("sun_elevation_deg must be within [-90, 90], got '{}'", text));
   }
   return Ok{};
 }
@@ -175,15 +188,17 @@ Result<CameraPath> loadCameraPath(const std::string& path) {
 
 std::string formatCameraPath(const CameraPath& path) {
   // The optional columns only when a keyframe needs them, so ground-only paths keep the seven.
-  bool anySphere = false, anyStop = false;
+  bool anySphere = false, anyStop = false, anySun = false;
   for (const PathKeyframe& k : path.keyframes()) {
     anySphere = anySphere || k.heightReference == HeightReference::sphere;
     anyStop = anyStop || k.stop;
+    anySun = anySun || k.sun.has_value();
   }
   std::string out = "# globe camera path (format: docs/camera-paths.md)\n";
   out += kCameraPathHeader;
   out += anySphere ? " height_ref" : "";
   out += anyStop ? " stop" : "";
+  out += anySun ? " sun_azimuth_deg sun_elevation_deg" : "";
   out += '\n';
   for (const PathKeyframe& k : path.keyframes()) {
     const GeodeticPose& p = k.pose;
@@ -192,6 +207,11 @@ std::string formatCameraPath(const CameraPath& path) {
                        p.longitude_deg, p.height_m, p.heading_deg, p.pitch_deg, p.roll_deg);
     if (anySphere) out += k.heightReference == HeightReference::sphere ? " sphere" : " ground";
     if (anyStop) out += k.stop ? " 1" : " 0";
+    // A keyframe without a sun in a path where others have one (built in memory): 0, 45.
+    if (anySun) {
+      const SunAngles sun = k.sun.value_or(SunAngles{0.0, 45.0});
+      out += fmt::format(" {:.17g} {:.17g}", sun.azimuth_deg, sun.elevation_deg);
+    }
     out += '\n';
   }
   return out;

@@ -19,4 +19,15 @@ std::string dataDirectory(const char* environmentVariable, const std::string& su
   return dataDirectory() + "/" + subdirectory;
 }
 
+std::string userCacheDirectory(const char* environmentVariable, const std::string& name) {
+  for (const char* variable : {environmentVariable, "XDG_CACHE_HOME", "HOME"}) {
+    const char* value = std::getenv(variable);
+    if (value == nullptr || *value == '\0') continue;
+    if (variable == environmentVariable) return value;
+    return std::string(value) + (variable[0] == 'X' ? "/globe/" : "/.cache/globe/") + name;
+  }
+  std::error_code error;
+  return (std::filesystem::temp_directory_path(error) / ("globe-" + name)).string();
+}
+
 }  // namespace globe

@@ -13,4 +13,8 @@ std::string dataDirectory();
 // $VARIABLE when set and not empty, else dataDirectory() + "/" + subdirectory.
 std::string dataDirectory(const char* environmentVariable, const std::string& subdirectory);
 
+// A per-user cache folder: $VARIABLE when set and not empty, else $XDG_CACHE_HOME/globe/NAME, else
+// $HOME/.cache/globe/NAME, else the system's temporary folder's globe-NAME. Not created here.
+std::string userCacheDirectory(const char* environmentVariable, const std::string& name);
+
 }  // namespace globe

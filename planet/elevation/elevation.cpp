@@ -135,7 +135,8 @@ ElevationModel::ElevationModel(const PlanetDescription& planet)
       colourRamp_(packColourRamp(planet.colour_ramp)),
       water_(planet.water),
       bounds_(elevationBounds(planet)),
-      shape_(planetShape(planet)) {
+      shape_(planetShape(planet)),
+      atmosphere_(planet.atmosphere) {
   if (planet.sources.empty()) return;
   sources_ = std::make_shared<const SourceMosaic>(planet.sources, planet.radius_m, planet.seed);
   if (sources_->layers().empty()) return;

@@ -18,6 +18,8 @@
 #include <memory>
 
 #include "planet/elevation/planet_description.h"
+
+#include <optional>
 #include "shaders/include/elevation_params.h"
 
 namespace globe {
@@ -71,6 +73,8 @@ class ElevationModel {
   double radius_m() const { return params_.radius_m; }
   // The reference surface elevations are heights above (along its geodetic normals).
   const Ellipsoid& shape() const { return shape_; }
+  // The planet's [atmosphere], if it has one (kept here for the renderer; elevation ignores it).
+  const std::optional<AtmosphereParameters>& atmosphere() const { return atmosphere_; }
   double seaLevel_m() const { return params_.sea_level_m; }
   // The planet has a sea ([water]): the renderer draws a water surface at sea level over lower ground.
   bool drawsWater() const { return water_.enabled; }
@@ -92,6 +96,7 @@ class ElevationModel {
   ElevationRange bounds_{};
   Ellipsoid shape_;
   std::shared_ptr<const SourceMosaic> sources_;  // shared by copies
+  std::optional<AtmosphereParameters> atmosphere_;
 };
 
 }  // namespace globe

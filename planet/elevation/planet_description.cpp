@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <optional>
 
 #include "planet/elevation/crater_field.h"
@@ -174,6 +175,10 @@ std::vector<Error> validatePlanetAll(const PlanetDescription& planet) {
   }
   appendColourRampErrors(planet.colour_ramp, errors);
   appendWaterErrors(planet.water, errors);
+  if (planet.atmosphere) {
+    std::vector<Error> atmosphere = validateAtmosphere(*planet.atmosphere, radius_ok ? planet.radius_m : 1e6);
+    errors.insert(errors.end(), std::make_move_iterator(atmosphere.begin()), std::make_move_iterator(atmosphere.end()));
+  }
   return errors;
 }
 

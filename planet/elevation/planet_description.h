@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "planet/atmosphere/atmosphere_parameters.h"
 #include "planet/core/error.h"
 #include "planet/elevation/colour_ramp.h"
 #include "planet/geometry/ellipsoid.h"
@@ -85,6 +86,8 @@ struct PlanetDescription {
   Water water;             // the sea drawn at sea_level_m ([water]); disabled = a dry planet
   // Real elevation rasters mosaicked over the layers ([[sources]], planet/sources/); empty = procedural only.
   std::vector<ElevationSource> sources;
+  // [atmosphere]: precomputed scattering (docs/rendering.md, "Atmosphere"); none = black sky.
+  std::optional<AtmosphereParameters> atmosphere;
 
   bool operator==(const PlanetDescription&) const = default;
 };

@@ -1,6 +1,7 @@
 #include "planet/elevation/planet_file.h"
 #include "planet/core/input_file.h"
 
+#include "planet/atmosphere/atmosphere_toml.h"
 #include "planet/elevation/planet_toml_reader.h"
 #include "planet/sources/source_toml.h"
 
@@ -18,9 +19,20 @@
 namespace globe {
 namespace {
 
-constexpr std::string_view kTopKeys[] = {
-    "name",        "radius_m", "shape", "seed",  "sea_level_m", "surface_gravity_m_s2", "default_quality", "layers",
-    "colour_ramp", "rock",     "snow",  "water", "sources"};
+constexpr std::string_view kTopKeys[] = {"name",
+                                         "radius_m",
+                                         "shape",
+                                         "seed",
+                                         "sea_level_m",
+                                         "surface_gravity_m_s2",
+                                         "default_quality",
+                                         "layers",
+                                         "colour_ramp",
+                                         "rock",
+                                         "snow",
+                                         "water",
+                                         "sources",
+                                         "atmosphere"};
 constexpr std::string_view kShapeKeys[] = {"equatorial_radius_m", "flattening"};
 constexpr std::string_view kStopKeys[] = {"elevation_m", "colour"};
 constexpr std::string_view kRockKeys[] = {"slope_deg", "blend_deg", "colour"};
@@ -356,7 +368,9 @@ PlanetFileCheck readPlanet(const toml::table& root, std::string_view source_name
     if (k == "radius_m") radius = &node;
     if (k == "shape") shape = &node;
     have_layers = have_layers || k == "layers";
-    if (k == "sources") {
+    if (k == "atmosphere") {
+      readAtmosphere(r, node, planet.atmosphere.emplace());
+    } else if (k == "sources") {
       readSources(r, node, std::filesystem::path(source_name).parent_path().string(), planet.sources);
     } else {
       readTopLevel(r, k, node, planet);

@@ -1,5 +1,7 @@
 #include "planet/elevation/planet_file_writer.h"
 
+#include "planet/atmosphere/atmosphere_toml.h"
+
 #include <fmt/format.h>
 #include <cassert>
 #include <iterator>
@@ -79,6 +81,7 @@ std::string formatPlanetToml(const PlanetDescription& planet) {
                    colour(planet.water.shallow_colour), colour(planet.water.deep_colour),
                    number(planet.water.depth_scale_m));
   }
+  if (planet.atmosphere) out += formatAtmosphereToml(*planet.atmosphere);
   return out;
 }
 

@@ -1,5 +1,7 @@
 #include "planet/sources/raster_pyramid.h"
 
+#include "planet/core/data_directory.h"
+
 #include "planet/core/atomic_file.h"
 #include "planet/core/hash.h"
 
@@ -128,15 +130,7 @@ int pyramidLevelFor(double pixel0_m, double spacing_m, int levelCount) {
   return k;
 }
 
-std::string sourceCacheDirectory() {
-  if (const char* dir = std::getenv("GLOBE_SOURCE_CACHE_DIR"); dir != nullptr && dir[0] != '\0') return dir;
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg != nullptr && xdg[0] != '\0')
-    return std::string(xdg) + "/globe/sources";
-  if (const char* home = std::getenv("HOME"); home != nullptr && home[0] != '\0')
-    return std::string(home) + "/.cache/globe/sources";
-  std::error_code ec;
-  return (fs::temp_directory_path(ec) / "globe-sources").string();
-}
+std::string sourceCacheDirectory() { return userCacheDirectory("GLOBE_SOURCE_CACHE_DIR", "sources"); }
 
 RasterPyramid::RasterPyramid(const GdalRaster& raster, std::string cacheDirectory)
     : raster_(raster), cacheDirectory_(std::move(cacheDirectory)) {

@@ -19,6 +19,8 @@ layout(std430, set = 0, binding = 1) readonly buffer PayloadTexels { uvec2 paylo
 
 // 1: the payloads carry normal maps (TerrainStyle::normalMapScale > 0) and the fragments are shaded from them.
 layout(constant_id = 0) const uint kNormalMaps = 0u;
+// 1: the vertex stage is terrain_atmosphere.vert: mapped fragments take their light from its terms.
+layout(constant_id = 1) const uint kAtmosphere = 0u;
 
 layout(location = 0) in vec3 inColour;
 // Hole mask of a source's kept no-data (elevation_sources.glsl), interpolated from the samples.
@@ -28,9 +30,16 @@ layout(location = 5) flat in uint inMapBase;
 layout(location = 6) in float inMapBlend;
 layout(location = 0) out vec4 outColour;
 
+layout(location = 8) in vec3 inAerialFog;
+layout(location = 11) in vec3 inSunLight;
+layout(location = 12) in vec3 inSkyLight;
+layout(location = 13) in vec3 inUp;
 #ifdef GLOBE_TERRAIN_WATER
 layout(location = 2) in float inSeaDepth;
 layout(location = 3) in vec3 inRelative;
+layout(location = 7) in vec3 inAerialTransmittance;
+layout(location = 9) flat in vec3 inSkyZenith;
+layout(location = 10) flat in vec3 inSkyHorizon;
 #include "water_shading.glsl"
 #endif
 
@@ -50,8 +59,15 @@ vec3 mappedColour() {
     root = mix(root, parentRoot, inMapBlend);
   }
   vec3 n = normalize(normal);
+  vec3 albedo = root * root;
+  if (kAtmosphere != 0u) {
+    // The vertex stage's light through the air, applied to the mapped normal and colour
+    // (terrain_atmosphere.glsl, TerrainAerial).
+    vec3 light = inSunLight * max(dot(n, frame.sun.xyz), 0.0) + inSkyLight * (1.0 + dot(n, normalize(inUp))) * 0.5;
+    return encodeDisplay(vec3(1.0) - exp(-albedo * light) * inAerialFog, 1.0).rgb;
+  }
   float light = frame.sun.w + (1.0 - frame.sun.w) * max(dot(n, frame.sun.xyz), 0.0);
-  return encodeDisplay(root * root * light, 1.0).rgb;
+  return encodeDisplay(albedo * light, 1.0).rgb;
 }
 
 void main() {

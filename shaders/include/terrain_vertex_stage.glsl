@@ -12,6 +12,9 @@
 #include "terrain_vertex.glsl"
 #include "display_encoding.glsl"
 #include "terrain_level_colour.glsl"
+#ifdef GLOBE_TERRAIN_ATMOSPHERE
+#include "terrain_atmosphere.glsl"
+#endif
 
 layout(push_constant) uniform Push {
   TerrainDrawPush draw;
@@ -27,6 +30,17 @@ layout(location = 3) out vec3 outRelative;
 layout(location = 4) out vec2 outMapUv;
 layout(location = 5) flat out uint outMapBase;
 layout(location = 6) out float outMapBlend;
+// Also for the water: the air between the camera and the vertex (terrain_atmosphere.glsl; none
+// without an atmosphere) and the sky the sea reflects (the atmosphere's, else the frame's gradient).
+layout(location = 7) out vec3 outAerialTransmittance;
+layout(location = 8) out vec3 outAerialFog;
+layout(location = 9) flat out vec3 outSkyZenith;
+layout(location = 10) flat out vec3 outSkyHorizon;
+// For normal-mapped fragments under an atmosphere: the sun's and the sky's light at the vertex as
+// they reach the camera (TerrainAerial), and the local vertical.
+layout(location = 11) out vec3 outSunLight;
+layout(location = 12) out vec3 outSkyLight;
+layout(location = 13) out vec3 outUp;
 
 void main() {
   TerrainVertex v = terrainVertex(uint(gl_VertexIndex), uint(gl_InstanceIndex), push.draw.drawnCells);
@@ -39,7 +53,27 @@ void main() {
   vec3 albedo = mix(v.albedo, level, bvec3(debug));
   vec4 sun = mix(frame.sun, vec4(0.0, 0.0, 0.0, 1.0), bvec4(debug));  // debug colours are unlit
   float light = sun.w + (1.0 - sun.w) * max(dot(n, sun.xyz), 0.0);
-  outColour = encodeDisplay(albedo * light, 1.0).rgb;
+  vec3 lit = albedo * light;
+#ifdef GLOBE_TERRAIN_ATMOSPHERE
+  TerrainAerial aerial;
+  lit = mix(terrainAtmosphereColour(albedo, n, v.relative, frame.sun.xyz, aerial), lit, bvec3(debug));
+  outAerialTransmittance = aerial.transmittance;
+  outAerialFog = aerial.fog;
+  outSunLight = aerial.sunLight;
+  outSkyLight = aerial.skyLight;
+  outUp = aerial.up;
+  outSkyZenith = uintBitsToFloat(atmosphereViewTable[GLOBE_VIEW_TEXELS].xyz);
+  outSkyHorizon = uintBitsToFloat(atmosphereViewTable[GLOBE_VIEW_TEXELS + 1].xyz);
+#else
+  outAerialTransmittance = vec3(1.0);
+  outAerialFog = vec3(1.0);
+  outSunLight = vec3(0.0);
+  outSkyLight = vec3(0.0);
+  outUp = vec3(0.0);
+  outSkyZenith = frame.skyZenith.rgb;
+  outSkyHorizon = frame.skyHorizon.rgb;
+#endif
+  outColour = encodeDisplay(lit, 1.0).rgb;
   outHole = v.hole;
   outSeaDepth = frame.waterShallow.w - v.elevation;
   outRelative = v.relative;

@@ -3,11 +3,13 @@
 // no variant cache it does so at every bind (100-200 ms each, docs/rendering.md "No shader compile
 // per frame"). Every variant it compiles is a new entry in Mesa's on-disk shader cache, so the
 // guard counts the entries of a cache pointed at an empty directory: after a few warm-up frames,
-// 20 frames at 20 different cameras (moving floating origin, altitudes from 2 m to 2e7 m so the
+// 21 frames at 21 different cameras (moving floating origin, altitudes from 2 m to 2e7 m and 1e11 m so the
 // morph ranges change, sun directions, debug views, generation batches of different sizes) plus
 // elevation batches and sphere previews with the latitude/longitude grid, of different sizes, must
 // add none; the same views over a DEM with a kept no-data hole (a `nodata = "hole"` source: the
-// double-sided terrain_holes.frag pipeline) too. No timing is asserted.
+// double-sided terrain_holes.frag pipeline) too. The earthlike planet has an atmosphere, so its
+// pipelines are the ones with aerial perspective and the atmosphere's sky, from 2 m to 1e11 m. No
+// timing is asserted.
 #include "engine/generation/elevation_sampler.h"
 #include "engine/render/headless_renderer.h"
 #include "engine/render/sphere_grid.h"
@@ -79,6 +81,9 @@ std::vector<View> variedViews() {
     if (i % 5 == 3) v.debug = TerrainDebugView::kLodColours;
     views.push_back(v);
   }
+  // The atmosphere's other regime: a camera far outside it (the sky shader's entry point, the
+  // terrain's aerial perspective from space), the sun moved again.
+  views.push_back({{22.0, -98.5, 1.0e11, 0, -90, 0}, {0.2, -0.9, 0.4}});
   return views;
 }
 
@@ -104,6 +109,8 @@ void renderViews(const std::vector<View>& views, const ElevationModel& holes) {
   settings.antialiasing = vk::Antialiasing::kMsaa4;
   auto terrain = Terrain::create(device, model, settings);
   ASSERT_TRUE(terrain.ok()) << terrain.error().format();
+  // The earthlike planet has an [atmosphere]: its sky and terrain pipelines are the ones guarded.
+  ASSERT_NE((*terrain)->atmosphere(), nullptr);
   const uint32_t w = 96, h = 64;
   HeadlessRenderer renderer(device, {w, h}), holeRenderer(device, {w, h});
   vk::OffscreenTarget sphereTarget(device, {w, h});
@@ -170,7 +177,7 @@ TEST(ShaderVariants, NoNewShaderVariantsAfterWarmUp) {
   renderViews(views, holes);
   ::unsetenv("GLOBE_SOURCE_CACHE_DIR");
   const size_t afterVaried = settledCacheEntries(cache);
-  std::printf("[ info ] shader cache entries: %zu after warm-up, %zu after 20 more cameras\n", afterWarmUp,
+  std::printf("[ info ] shader cache entries: %zu after warm-up, %zu after 21 more cameras\n", afterWarmUp,
               afterVaried);
   fs::remove_all(cache);
   if (afterWarmUp == 0) GTEST_SKIP() << "the Vulkan driver keeps no Mesa shader cache (not lavapipe?)";

@@ -257,6 +257,38 @@ TEST(CameraPathFile, WriterRoundTripsBitExactly) {
   std::filesystem::remove(file);
 }
 
+TEST(CameraPathFile, SunColumnsAreReadCheckedAndWritten) {
+  const std::string h = std::string(kCameraPathHeader) + " sun_azimuth_deg sun_elevation_deg\n";
+  auto p = parseCameraPath(h + "0 0 0 10 0 0 0 250 -3.5\n1 0 0.001 10 0 0 0 -30 90\n", "s.path");
+  ASSERT_TRUE(p.ok()) << p.error().format();
+  ASSERT_TRUE(p->keyframes()[0].sun.has_value());
+  EXPECT_EQ(p->keyframes()[0].sun->azimuth_deg, 250.0);
+  EXPECT_EQ(p->keyframes()[0].sun->elevation_deg, -3.5);
+  const std::string text = formatCameraPath(*p);
+  EXPECT_NE(text.find("sun_azimuth_deg sun_elevation_deg"), std::string::npos);
+  auto back = parseCameraPath(text, "back.path");
+  ASSERT_TRUE(back.ok());
+  EXPECT_EQ(back->keyframes()[1].sun->azimuth_deg, -30.0);
+  EXPECT_EQ(back->keyframes()[1].sun->elevation_deg, 90.0);
+  EXPECT_FALSE(load("flyover.path").keyframes()[0].sun.has_value());  // no columns, no sun
+  const std::string ok0 = "0 0 0 10 0 0 0 0 45\n";
+  struct Case {
+    std::string text;
+    std::string message;
+  } cases[] = {
+      {std::string(kCameraPathHeader) + " sun_azimuth_deg\n0 0 0 10 0 0 0 0\n",
+       "t.path:1: sun_azimuth_deg and sun_elevation_deg go together: give both columns or neither"},
+      {h + ok0 + "1 0 0.001 10 0 0 0 0 91\n", "t.path:3: sun_elevation_deg must be within [-90, 90], got '91'"},
+      {h + ok0 + "1 0 0.001 10 0 0 0 east 10\n", "t.path:3: sun_azimuth_deg 'east' is not a number"},
+      {h + ok0 + "1 0 0.001 10 0 0 0 0 nan\n", "t.path:3: sun_elevation_deg must be finite, got 'nan'"},
+  };
+  for (const auto& c : cases) {
+    auto r = parseCameraPath(c.text, "t.path");
+    ASSERT_FALSE(r.ok()) << c.text;
+    EXPECT_EQ(r.error().format(), c.message) << c.text;
+  }
+}
+
 // ---- interpolation ------------------------------------------------------------------------------
 
 TEST(CameraPathInterpolation, KeyframesAreHitExactly) {

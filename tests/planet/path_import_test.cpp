@@ -270,8 +270,8 @@ TEST(PathFileColumns, Errors) {
     return r.ok() ? std::string("ok") : r.error().format();
   };
   EXPECT_EQ(bad(" speed", " 1"),
-            "x.path:1: unknown column 'speed' in the header (after the seven fixed columns only height_ref and stop "
-            "may follow, once each)");
+            "x.path:1: unknown column 'speed' in the header (after the seven fixed columns only height_ref, stop, "
+            "sun_azimuth_deg and sun_elevation_deg may follow, once each)");
   EXPECT_EQ(bad(" height_ref", " sea"), "x.path:2: height_ref must be 'ground' or 'sphere', got 'sea'");
   EXPECT_EQ(bad(" stop", " yes"), "x.path:2: stop must be 0 or 1, got 'yes'");
   EXPECT_EQ(bad(" stop", ""), "x.path:2: missing field stop (expected 8 fields, found 7)");

@@ -185,6 +185,25 @@ const BadCase kBadCases[] = {
     {"water colour out of range", "radius_m = 5e6\n" LAYER "[water]\nshallow_colour = [0, 2, 0]\n", 8, 18,
      "water.shallow_colour", "within [0, 1]"},
     {"water not a table", "radius_m = 5e6\nwater = true\n" LAYER, 2, 9, "water", "expected a table ([water])"},
+    {"unknown atmosphere key", "radius_m = 5e6\n" LAYER "[atmosphere]\nthickness = 1\n", 8, 1, "atmosphere.thickness",
+     "did you mean 'thickness_m'"},
+    {"atmosphere not a table", "radius_m = 5e6\natmosphere = 3\n" LAYER, 2, 14, "atmosphere",
+     "expected a table ([atmosphere])"},
+    {"atmosphere thickness negative", "radius_m = 5e6\n" LAYER "[atmosphere]\nthickness_m = -5\n", 8, 15,
+     "atmosphere.thickness_m", "must be > 0"},
+    {"atmosphere coefficient with 2 components",
+     "radius_m = 5e6\n" LAYER "[atmosphere]\nrayleigh_scattering_per_m = [1e-6, 1e-6]\n", 8, 29,
+     "atmosphere.rayleigh_scattering_per_m", "3 components"},
+    {"atmosphere coefficient NaN", "radius_m = 5e6\n" LAYER "[atmosphere]\nozone_absorption_per_m = [1e-6, nan, 0]\n",
+     8, 33, "atmosphere.ozone_absorption_per_m", "finite"},
+    {"Mie extinction below its scattering",
+     "radius_m = 5e6\n" LAYER
+     "[atmosphere]\nmie_scattering_per_m = [1e-5, 1e-5, 1e-5]\nmie_extinction_per_m = [1e-6, 1e-5, 1e-5]\n",
+     9, 24, "atmosphere.mie_extinction_per_m", ">= mie_scattering_per_m"},
+    {"Mie g out of range", "radius_m = 5e6\n" LAYER "[atmosphere]\nmie_g = 1.5\n", 8, 9, "atmosphere.mie_g",
+     "[0, 0.999]"},
+    {"sun radius zero", "radius_m = 5e6\n" LAYER "[atmosphere]\nsun_angular_radius_deg = 0\n", 8, 26,
+     "atmosphere.sun_angular_radius_deg", "> 0"},
 };
 
 TEST(PlanetFile, EveryErrorHasFileLineColumnAndKey) {
@@ -412,6 +431,30 @@ TEST(PlanetFile, EarthDemIsOnWgs84) {
   ASSERT_TRUE(p.ok()) << p.error().format();
   EXPECT_EQ(p->radius_m, 6378137.0);
   EXPECT_EQ(p->flattening, 1.0 / 298.257223563);
+}
+
+TEST(PlanetPresets, AtmospheresWhereThereIsAir) {
+  // Earth's values (the reference implementation's defaults) on the earthlike planet, air on Mars
+  // and the gas giant, none on the Moon and the asteroid (black sky, hard light).
+  for (const char* name : kPresets) {
+    SCOPED_TRACE(name);
+    auto planet = loadPlanetFile(presetPath(name));
+    ASSERT_TRUE(planet.ok());
+    const std::string n = name;
+    EXPECT_EQ(planet->atmosphere.has_value(), n == "earthlike" || n == "marslike" || n == "gasgiant-core");
+    if (n == "earthlike") {
+      EXPECT_EQ(*planet->atmosphere, AtmosphereParameters{});
+    }
+  }
+  // No [atmosphere] section: no atmosphere; an empty one: Earth's.
+  auto bare =
+      parsePlanetToml("radius_m = 5e6\n[[layers]]\noctaves = 1\nwavelength_m = 1e6\namplitude_m = 1\n", "a.toml");
+  ASSERT_TRUE(bare.ok());
+  EXPECT_FALSE(bare->atmosphere.has_value());
+  auto empty = parsePlanetToml(
+      "radius_m = 5e6\n[[layers]]\noctaves = 1\nwavelength_m = 1e6\namplitude_m = 1\n[atmosphere]\n", "b.toml");
+  ASSERT_TRUE(empty.ok()) << empty.error().format();
+  EXPECT_EQ(empty->atmosphere, AtmosphereParameters{});
 }
 
 TEST(PlanetPresets, RadiiAndPrecisionMargins) {
