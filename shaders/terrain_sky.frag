@@ -15,6 +15,9 @@ layout(location = 2) in vec3 inDisc;
 layout(location = 3) in float inShell;
 layout(location = 0) out vec4 outColour;
 
+// 1: the camera is outside the atmosphere (TerrainRenderer picks the pipeline per frame).
+layout(constant_id = 0) const uint kFromSpace = 0u;
+
 layout(push_constant) uniform Push {
   vec4 right;  // see terrain_sky.vert
   vec4 up;
@@ -27,9 +30,10 @@ void main() {
   vec3 v = normalize(inRay);
   vec3 sun = push.sun.xyz;
   vec3 sky = inSky, disc = inDisc;
-  // A branch on the interpolated value (not on the camera alone, which lavapipe would inline): per
-  // pixel only near the shell seen from outside, where atmosphereSky is black for rays that miss.
-  if (inShell > 0.0) {
+  // Seen from outside (a specialization constant: a uniform condition would make lavapipe compile
+  // variants), a branch on the interpolated value: per pixel only near the shell, where
+  // atmosphereSky is black for rays that miss.
+  if (kFromSpace != 0u && inShell > 0.0) {
     vec3 transmittance;
     sky = atmosphereToneMap(atmosphereSky(push.camera.xyz, v, sun, transmittance));
     float alpha = atmosphere.sun.w;

@@ -64,12 +64,12 @@ vk::GraphicsPipelineDesc terrainDesc(TargetFormat target, bool wireframe, VkCull
                                      VertexPositions positions, const char* fragmentShader, TerrainShading shading) {
   vk::GraphicsPipelineDesc d;
   // constant_id 0 of terrain_fragment.glsl: shade from the payloads' normal maps.
-  // constant_id 1: light from the atmosphere's per-vertex terms.
-  d.fragmentSpecialization = {shading.normalMaps ? 1u : 0u, shading.atmosphere ? 1u : 0u};
+  d.fragmentSpecialization = {shading.normalMaps ? 1u : 0u};
   const bool reprojected = positions == VertexPositions::kReprojected;
   const bool atmosphere = shading.atmosphere;
   d.vertexShader = reprojected ? "terrain_reprojected.vert" : atmosphere ? "terrain_atmosphere.vert" : "terrain.vert";
-  d.fragmentShader = fragmentShader;
+  // terrain_X.frag, or terrain_atmosphere_X.frag for the atmosphere's vertex stage.
+  d.fragmentShader = atmosphere ? "terrain_atmosphere" + std::string(fragmentShader).substr(7) : fragmentShader;
   // 0: instances, 1: payloads, 2: frame constants (uniform); reprojected: 3 nodes' (u, v), 4 faces;
   // atmosphere: 3 its parameters (uniform), 4-6 its tables, 7 the frame's camera (uniform), 8 its
   // aerial perspective table (AtmosphereView).
@@ -179,7 +179,13 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
     d.samples = samples;
     d.depthTest = true;  // GREATER_OR_EQUAL against depth 0: passes only where nothing was drawn
     d.depthWrite = false;
+    // constant_id 0 of terrain_sky.frag: 1 seen from outside the atmosphere, where the pixels near
+    // the shell evaluate the sky themselves. From inside, lavapipe ran that evaluation's code for
+    // every sky pixel although its branch was never taken (+8 ms a frame on the flyover).
+    d.fragmentSpecialization = {0u};
     sky_ = std::make_unique<vk::GraphicsPipeline>(device, d);
+    d.fragmentSpecialization = {1u};
+    skyFromSpace_ = std::make_unique<vk::GraphicsPipeline>(device, d);
   }
 
   // Ranges: full grid, half grid, full skirt strip, half skirt strip.
@@ -261,7 +267,9 @@ void TerrainRenderer::recordSky(VkCommandBuffer cmd, const Camera& camera) const
   // The sky's screen grid is the terrain's full grid (its index range 0), one vertex per sample.
   SkyPush push{viewRays(camera, float(cells_)), {c.x, c.y, c.z, 0.0f}, {sun.x, sun.y, sun.z, 0.0f}};
   const AtmosphereLuts& a = *style_.atmosphere;
-  sky_->bind(cmd, {a.parameters(), a.transmittance(), a.irradiance(), a.scattering()}, &push, sizeof(push));
+  const double top_m = double(a.packed().radii.y);
+  const vk::GraphicsPipeline& sky = glm::length(camera.position_m) > top_m ? *skyFromSpace_ : *sky_;
+  sky.bind(cmd, {a.parameters(), a.transmittance(), a.irradiance(), a.scattering()}, &push, sizeof(push));
   vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
   vkCmdDrawIndexed(cmd, count_[0], 1, first_[0], 0, 0);
 }

@@ -202,7 +202,8 @@ class TerrainRenderer {
   std::unique_ptr<vk::GraphicsPipeline> water_;        // grids of nodes with sea (planets with water only)
   std::unique_ptr<vk::GraphicsPipeline> waterSkirts_;  // their skirts, both sides
   std::unique_ptr<vk::GraphicsPipeline> wireframe_;
-  std::unique_ptr<vk::GraphicsPipeline> sky_;  // with an atmosphere only
+  std::unique_ptr<vk::GraphicsPipeline> sky_;           // with an atmosphere only: the camera inside it
+  std::unique_ptr<vk::GraphicsPipeline> skyFromSpace_;  // the same, the camera outside it
   vk::Buffer indices_;
   // Index ranges: full grid, half grid, one full skirt strip, one half skirt strip.
   std::array<uint32_t, 4> first_{};

@@ -1,13 +1,17 @@
 // Body of the terrain fragment stages (terrain.frag; terrain_holes.frag defines GLOBE_TERRAIN_HOLES,
-// terrain_water.frag GLOBE_TERRAIN_WATER, terrain_water_holes.frag both). With normal maps
+// terrain_water.frag GLOBE_TERRAIN_WATER, terrain_water_holes.frag both; terrain_atmosphere*.frag
+// the same with GLOBE_TERRAIN_ATMOSPHERE, for terrain_atmosphere.vert). With normal maps
 // (specialization constant kNormalMaps) it shades per fragment from the node's normal map
 // (payload_layout.h): normal and colour sampled bilinearly from the map's own level, blended with its
 // parent level by the morph factor k (at k = 1 the parent's map, exactly what the parent draws: no
-// pop), then the sun's Lambert light plus ambient; the parent level is only read where k > 0 (a
-// per-fragment branch on an interpolated value). Without, and in the debug views, it writes the
-// vertex stage's lit, display-encoded colour and reads no buffers, since per-fragment cost is what
-// bounds lavapipe. The water variant, used only for nodes that have sea, shades the fragments below
-// sea level itself (water_shading.glsl).
+// pop), then the sun's Lambert light plus ambient, or under an atmosphere the vertex stage's sun and
+// sky light through the air; the parent level is only read where k > 0 (a per-fragment branch on an
+// interpolated value). Without, and in the debug views, it writes the vertex stage's lit,
+// display-encoded colour and reads no buffers, since per-fragment cost is what bounds lavapipe. The
+// water variant, used only for nodes that have sea, shades the fragments below sea level itself
+// (water_shading.glsl). The atmosphere's inputs are declared only in its variants: declared but
+// unused inputs (dead under a specialization constant) made lavapipe's terrain pass up to 4x slower
+// in some frames of the flyover (docs/rendering.md, "Atmosphere").
 #include "display_encoding.glsl"
 #include "terrain_layout.h"
 
@@ -19,8 +23,6 @@ layout(std430, set = 0, binding = 1) readonly buffer PayloadTexels { uvec2 paylo
 
 // 1: the payloads carry normal maps (TerrainStyle::normalMapScale > 0) and the fragments are shaded from them.
 layout(constant_id = 0) const uint kNormalMaps = 0u;
-// 1: the vertex stage is terrain_atmosphere.vert: mapped fragments take their light from its terms.
-layout(constant_id = 1) const uint kAtmosphere = 0u;
 
 layout(location = 0) in vec3 inColour;
 // Hole mask of a source's kept no-data (elevation_sources.glsl), interpolated from the samples.
@@ -30,16 +32,20 @@ layout(location = 5) flat in uint inMapBase;
 layout(location = 6) in float inMapBlend;
 layout(location = 0) out vec4 outColour;
 
+#ifdef GLOBE_TERRAIN_ATMOSPHERE
 layout(location = 8) in vec3 inAerialFog;
 layout(location = 11) in vec3 inSunLight;
 layout(location = 12) in vec3 inSkyLight;
 layout(location = 13) in vec3 inUp;
+#endif
 #ifdef GLOBE_TERRAIN_WATER
 layout(location = 2) in float inSeaDepth;
 layout(location = 3) in vec3 inRelative;
+#ifdef GLOBE_TERRAIN_ATMOSPHERE
 layout(location = 7) in vec3 inAerialTransmittance;
 layout(location = 9) flat in vec3 inSkyZenith;
 layout(location = 10) flat in vec3 inSkyHorizon;
+#endif
 #include "water_shading.glsl"
 #endif
 
@@ -60,14 +66,15 @@ vec3 mappedColour() {
   }
   vec3 n = normalize(normal);
   vec3 albedo = root * root;
-  if (kAtmosphere != 0u) {
-    // The vertex stage's light through the air, applied to the mapped normal and colour
-    // (terrain_atmosphere.glsl, TerrainAerial).
-    vec3 light = inSunLight * max(dot(n, frame.sun.xyz), 0.0) + inSkyLight * (1.0 + dot(n, normalize(inUp))) * 0.5;
-    return encodeDisplay(vec3(1.0) - exp(-albedo * light) * inAerialFog, 1.0).rgb;
-  }
+#ifdef GLOBE_TERRAIN_ATMOSPHERE
+  // The vertex stage's light through the air, applied to the mapped normal and colour
+  // (terrain_atmosphere.glsl, TerrainAerial).
+  vec3 light = inSunLight * max(dot(n, frame.sun.xyz), 0.0) + inSkyLight * (1.0 + dot(n, normalize(inUp))) * 0.5;
+  return encodeDisplay(vec3(1.0) - exp(-albedo * light) * inAerialFog, 1.0).rgb;
+#else
   float light = frame.sun.w + (1.0 - frame.sun.w) * max(dot(n, frame.sun.xyz), 0.0);
   return encodeDisplay(albedo * light, 1.0).rgb;
+#endif
 }
 
 void main() {

@@ -30,17 +30,19 @@ layout(location = 3) out vec3 outRelative;
 layout(location = 4) out vec2 outMapUv;
 layout(location = 5) flat out uint outMapBase;
 layout(location = 6) out float outMapBlend;
-// Also for the water: the air between the camera and the vertex (terrain_atmosphere.glsl; none
-// without an atmosphere) and the sky the sea reflects (the atmosphere's, else the frame's gradient).
+#ifdef GLOBE_TERRAIN_ATMOSPHERE
+// Only with the atmosphere (its fragment stages, terrain_atmosphere*.frag, read them): for the
+// water, the air between the camera and the vertex (terrain_atmosphere.glsl) and the sky the sea
+// reflects; for normal-mapped fragments, the sun's and the sky's light at the vertex as they reach
+// the camera (TerrainAerial), and the local vertical.
 layout(location = 7) out vec3 outAerialTransmittance;
 layout(location = 8) out vec3 outAerialFog;
 layout(location = 9) flat out vec3 outSkyZenith;
 layout(location = 10) flat out vec3 outSkyHorizon;
-// For normal-mapped fragments under an atmosphere: the sun's and the sky's light at the vertex as
-// they reach the camera (TerrainAerial), and the local vertical.
 layout(location = 11) out vec3 outSunLight;
 layout(location = 12) out vec3 outSkyLight;
 layout(location = 13) out vec3 outUp;
+#endif
 
 void main() {
   TerrainVertex v = terrainVertex(uint(gl_VertexIndex), uint(gl_InstanceIndex), push.draw.drawnCells);
@@ -64,14 +66,6 @@ void main() {
   outUp = aerial.up;
   outSkyZenith = uintBitsToFloat(atmosphereViewTable[GLOBE_VIEW_TEXELS].xyz);
   outSkyHorizon = uintBitsToFloat(atmosphereViewTable[GLOBE_VIEW_TEXELS + 1].xyz);
-#else
-  outAerialTransmittance = vec3(1.0);
-  outAerialFog = vec3(1.0);
-  outSunLight = vec3(0.0);
-  outSkyLight = vec3(0.0);
-  outUp = vec3(0.0);
-  outSkyZenith = frame.skyZenith.rgb;
-  outSkyHorizon = frame.skyHorizon.rgb;
 #endif
   outColour = encodeDisplay(lit, 1.0).rgb;
   outHole = v.hole;

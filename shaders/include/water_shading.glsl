@@ -25,13 +25,20 @@ vec3 waterColour(float depth_m, vec3 relative) {
   float fresnel = kWaterF0 + (1.0 - kWaterF0) * pow(1.0 - cosView, 5.0);
   vec3 reflected = reflect(view, up);
   float skyUp = clamp(dot(reflected, up), 0.0, 1.0);
-  // The sky's colours from the vertex stage (the atmosphere's, or the fixed gradient's), dimmed on
+  // The sky's colours (the atmosphere's from the vertex stage, else the fixed gradient's), dimmed on
   // the night side.
-  vec3 sky = mix(inSkyHorizon, inSkyZenith, sqrt(skyUp)) * clamp(sunHeight * 4.0 + 0.1, 0.0, 1.0);
+#ifdef GLOBE_TERRAIN_ATMOSPHERE
+  vec3 sky = mix(inSkyHorizon, inSkyZenith, sqrt(skyUp));
+#else
+  vec3 sky = mix(frame.skyHorizon.rgb, frame.skyZenith.rgb, sqrt(skyUp));
+#endif
+  sky *= clamp(sunHeight * 4.0 + 0.1, 0.0, 1.0);
   float glint = pow(max(dot(reflected, sun), 0.0), kGlintExponent) * kGlintStrength * step(0.0, sunHeight);
+  vec3 c = mix(body, sky, fresnel) + vec3(glint);
+#ifdef GLOBE_TERRAIN_ATMOSPHERE
   // Through the air to the camera as the land's vertices are (terrain_atmosphere.glsl), taking the
-  // colour as tone-mapped radiance: 1 - exp(-e (L T + S)) = 1 - (1 - c)^T exp(-e S). No air: c.
-  vec3 c = clamp(mix(body, sky, fresnel) + vec3(glint), 0.0, 0.9999);
-  vec3 seen = vec3(1.0) - pow(vec3(1.0) - c, inAerialTransmittance) * inAerialFog;
-  return encodeDisplay(seen, 1.0).rgb;
+  // colour as tone-mapped radiance: 1 - exp(-e (L T + S)) = 1 - (1 - c)^T exp(-e S).
+  c = vec3(1.0) - pow(vec3(1.0) - clamp(c, 0.0, 0.9999), inAerialTransmittance) * inAerialFog;
+#endif
+  return encodeDisplay(c, 1.0).rgb;
 }

@@ -38,17 +38,20 @@ class AtmosphereRenderTest : public GpuTest {
   // A converged frame over the earthlike plateau at `pose`, the sun at `sun` in its sky; `inspect`
   // sees the terrain and the frame before the terrain goes.
   Frame render(const ElevationModel& model, GeodeticPose pose, SunAngles sun,
-               const std::function<void(Terrain&, const Frame&)>& inspect = {}) {
+               const std::function<void(Terrain&, const Frame&)>& inspect = {},
+               AtmosphereDetail detail = AtmosphereDetail::kFull) {
     const glm::dvec3 down = directionFromLatLon(pose.latitude_deg, pose.longitude_deg);
-    auto terrain = makeTerrain(model);
+    auto terrain = makeTerrain(model, detail);
     const Camera camera =
         cameraFromPose(pose, terrain->cameraGroundRadius(down), model.shape(), double(kWidth) / kHeight);
     return draw(*terrain, camera, sunDirectionAt(camera.position_m, sun), inspect);
   }
 
-  std::unique_ptr<Terrain> makeTerrain(const ElevationModel& model) {
+  std::unique_ptr<Terrain> makeTerrain(const ElevationModel& model,
+                                       AtmosphereDetail detail = AtmosphereDetail::kFull) {
     TerrainSettings settings;
     settings.gridCells = 16;
+    settings.atmosphere = detail;
     auto terrain = Terrain::create(device(), model, settings);
     EXPECT_TRUE(terrain.ok());
     return std::move(*terrain);
@@ -202,6 +205,39 @@ TEST_F(AtmosphereRenderTest, BlueSkyByDayRedTowardsTheSettingSun) {
   const glm::dvec3 red = meanSky(dusk, kWidth / 4, 3 * kWidth / 4, horizon - 20, horizon);
   std::printf("[ info ] sun 2 degrees: sky towards it (%.3f, %.3f, %.3f)\n", red.x, red.y, red.z);
   EXPECT_GT(red.x, red.z);
+}
+
+// The `sky` detail of fast and balanced: the atmosphere's sky behind a terrain lit exactly as with the
+// atmosphere off (no per-frame table, the terrain pipelines without the air).
+TEST_F(AtmosphereRenderTest, SkyDetailDrawsTheSkyBehindTheTerrainOfNoAtmosphere) {
+  const ElevationModel& model = earthlikeModel();
+  const GeodeticPose pose{0.0, 0.0, 2.0, 90.0, 3.0, 0.0};
+  const Frame off = render(model, pose, {270.0, 45.0}, {}, AtmosphereDetail::kOff);
+  const Frame sky = render(
+      model, pose, {270.0, 45.0},
+      [](Terrain& terrain, const Frame&) {
+        EXPECT_NE(terrain.atmosphere(), nullptr);
+        EXPECT_EQ(terrain.renderer().atmosphereView(), nullptr);
+      },
+      AtmosphereDetail::kSky);
+  int terrainPixels = 0, skyPixels = 0;
+  for (size_t i = 0; i < size_t(kWidth) * kHeight; ++i) {
+    ASSERT_EQ(std::isfinite(off.image.z[i]), std::isfinite(sky.image.z[i])) << i;
+    if (std::isfinite(off.image.z[i])) {
+      ++terrainPixels;
+      for (int c = 0; c < 3; ++c) ASSERT_EQ(off.image.rgba[4 * i + c], sky.image.rgba[4 * i + c]) << i;
+    } else {
+      ++skyPixels;
+      EXPECT_EQ(off.image.rgba[4 * i + 2], 0.0f) << i;  // black space without the atmosphere
+    }
+  }
+  EXPECT_GT(terrainPixels, 1000);
+  EXPECT_GT(skyPixels, 1000);
+  const uint32_t horizon = kHeight / 2 + 4;
+  const glm::dvec3 blue = meanSky(sky, 0, kWidth, horizon - 20, horizon);
+  EXPECT_GT(blue.z, blue.x);
+  EXPECT_GT(blue.z, 0.1);
+  EXPECT_EQ(device().validation().count(), 0u);
 }
 
 // Standard deviation of the luminance of terrain pixels between `near_m` and `far_m` from the camera.
