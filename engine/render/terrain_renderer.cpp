@@ -23,7 +23,7 @@ namespace {
 
 struct SkyPush {
   ViewRays rays;
-  float camera[4];  // camera minus planet centre, metres
+  float camera[4];  // xyz: camera minus planet centre, w: radius of the lowest terrain, metres
   float sun[4];     // unit, towards the sun
 };
 static_assert(sizeof(SkyPush) == 80);
@@ -184,7 +184,7 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
     // every sky pixel although its branch was never taken (+8 ms a frame on the flyover).
     d.fragmentSpecialization = {0u};
     sky_ = std::make_unique<vk::GraphicsPipeline>(device, d);
-    d.fragmentSpecialization = {1u};
+    d.fragmentSpecialization = d.vertexSpecialization = {1u};
     skyFromSpace_ = std::make_unique<vk::GraphicsPipeline>(device, d);
   }
 
@@ -265,7 +265,8 @@ void TerrainRenderer::recordSky(VkCommandBuffer cmd, const Camera& camera) const
   const glm::vec3 c(camera.position_m);
   const glm::vec3 sun(glm::normalize(style_.sunDirection));
   // The sky's screen grid is the terrain's full grid (its index range 0), one vertex per sample.
-  SkyPush push{viewRays(camera, float(cells_)), {c.x, c.y, c.z, 0.0f}, {sun.x, sun.y, sun.z, 0.0f}};
+  SkyPush push{
+      viewRays(camera, float(cells_)), {c.x, c.y, c.z, float(style_.terrainRadii_m.x)}, {sun.x, sun.y, sun.z, 0.0f}};
   const AtmosphereLuts& a = *style_.atmosphere;
   const double top_m = double(a.packed().radii.y);
   const vk::GraphicsPipeline& sky = glm::length(camera.position_m) > top_m ? *skyFromSpace_ : *sky_;

@@ -3,6 +3,7 @@
 #include "engine/vk/compute_pipeline.h"
 #include "engine/vk/vk_check.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace globe::vk {
@@ -95,12 +96,18 @@ GraphicsPipeline::GraphicsPipeline(Device& device, const GraphicsPipelineDesc& d
   stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
   stages[1].module = frag;
   stages[1].pName = "main";
-  std::vector<VkSpecializationMapEntry> entries(desc.fragmentSpecialization.size());
+  // constant_id k of a stage takes its vector's [k].
+  const size_t most = std::max(desc.vertexSpecialization.size(), desc.fragmentSpecialization.size());
+  std::vector<VkSpecializationMapEntry> entries(most);
   for (uint32_t k = 0; k < entries.size(); ++k) entries[k] = {k, k * uint32_t(sizeof(uint32_t)), sizeof(uint32_t)};
-  const VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(),
-                                            desc.fragmentSpecialization.size() * sizeof(uint32_t),
-                                            desc.fragmentSpecialization.data()};
-  if (!entries.empty()) stages[1].pSpecializationInfo = &specialization;
+  const VkSpecializationInfo vertexSpecialization{uint32_t(desc.vertexSpecialization.size()), entries.data(),
+                                                  desc.vertexSpecialization.size() * sizeof(uint32_t),
+                                                  desc.vertexSpecialization.data()};
+  const VkSpecializationInfo fragmentSpecialization{uint32_t(desc.fragmentSpecialization.size()), entries.data(),
+                                                    desc.fragmentSpecialization.size() * sizeof(uint32_t),
+                                                    desc.fragmentSpecialization.data()};
+  if (!desc.vertexSpecialization.empty()) stages[0].pSpecializationInfo = &vertexSpecialization;
+  if (!desc.fragmentSpecialization.empty()) stages[1].pSpecializationInfo = &fragmentSpecialization;
 
   const FixedFunctionState state(desc);
   VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};

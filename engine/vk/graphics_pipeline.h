@@ -31,6 +31,7 @@ struct GraphicsPipelineDesc {
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  // the target's (OffscreenTarget::samples)
   // Specialization constants of the fragment shader: constant_id k takes fragmentSpecialization[k].
   std::vector<uint32_t> fragmentSpecialization;
+  std::vector<uint32_t> vertexSpecialization;  // the same for the vertex shader
 };
 
 class GraphicsPipeline {

@@ -47,8 +47,7 @@ class AtmosphereRenderTest : public GpuTest {
     return draw(*terrain, camera, sunDirectionAt(camera.position_m, sun), inspect);
   }
 
-  std::unique_ptr<Terrain> makeTerrain(const ElevationModel& model,
-                                       AtmosphereDetail detail = AtmosphereDetail::kFull) {
+  std::unique_ptr<Terrain> makeTerrain(const ElevationModel& model, AtmosphereDetail detail = AtmosphereDetail::kFull) {
     TerrainSettings settings;
     settings.gridCells = 16;
     settings.atmosphere = detail;
