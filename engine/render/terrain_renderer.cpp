@@ -16,6 +16,8 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <string>
+#include <string_view>
 #include <vector>
 
 namespace globe {
@@ -63,13 +65,12 @@ struct TerrainShading {
 vk::GraphicsPipelineDesc terrainDesc(TargetFormat target, bool wireframe, VkCullModeFlags cull,
                                      VertexPositions positions, const char* fragmentShader, TerrainShading shading) {
   vk::GraphicsPipelineDesc d;
-  // constant_id 0 of terrain_fragment.glsl: shade from the payloads' normal maps.
-  d.fragmentSpecialization = {shading.normalMaps ? 1u : 0u};
   const bool reprojected = positions == VertexPositions::kReprojected;
   const bool atmosphere = shading.atmosphere;
   d.vertexShader = reprojected ? "terrain_reprojected.vert" : atmosphere ? "terrain_atmosphere.vert" : "terrain.vert";
-  // terrain_X.frag, or terrain_atmosphere_X.frag for the atmosphere's vertex stage.
-  d.fragmentShader = atmosphere ? "terrain_atmosphere" + std::string(fragmentShader).substr(7) : fragmentShader;
+  // terrain_X.frag becomes terrain[_atmosphere][_maps]_X.frag (the variants of shaders/CMakeLists.txt).
+  d.fragmentShader = std::string("terrain") + (atmosphere ? "_atmosphere" : "") + (shading.normalMaps ? "_maps" : "") +
+                     std::string(fragmentShader).substr(std::string_view("terrain").size());
   // 0: instances, 1: payloads, 2: frame constants (uniform); reprojected: 3 nodes' (u, v), 4 faces;
   // atmosphere: 3 its parameters (uniform), 4-6 its tables, 7 the frame's camera (uniform), 8 its
   // aerial perspective table (AtmosphereView).

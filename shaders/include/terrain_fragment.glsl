@@ -1,42 +1,44 @@
-// Body of the terrain fragment stages (terrain.frag; terrain_holes.frag defines GLOBE_TERRAIN_HOLES,
-// terrain_water.frag GLOBE_TERRAIN_WATER, terrain_water_holes.frag both; terrain_atmosphere*.frag
-// the same with GLOBE_TERRAIN_ATMOSPHERE, for terrain_atmosphere.vert). With normal maps
-// (specialization constant kNormalMaps) it shades per fragment from the node's normal map
-// (payload_layout.h): normal and colour sampled bilinearly from the map's own level, blended with its
-// parent level by the morph factor k (at k = 1 the parent's map, exactly what the parent draws: no
-// pop), then the sun's Lambert light plus ambient, or under an atmosphere the vertex stage's sun and
-// sky light through the air; the parent level is only read where k > 0 (a per-fragment branch on an
-// interpolated value). Without, and in the debug views, it writes the vertex stage's lit,
-// display-encoded colour and reads no buffers, since per-fragment cost is what bounds lavapipe. The
-// water variant, used only for nodes that have sea, shades the fragments below sea level itself
-// (water_shading.glsl). The atmosphere's inputs are declared only in its variants: declared but
-// unused inputs (dead under a specialization constant) made lavapipe's terrain pass up to 4x slower
-// in some frames of the flyover (docs/rendering.md, "Atmosphere").
+// Body of the terrain fragment stages: terrain.frag, compiled once per combination of the features
+// below as terrain[_atmosphere][_maps][_water][_holes].frag (shaders/CMakeLists.txt); each variant
+// declares only the inputs it reads: lavapipe made the terrain pass up to 4x slower in some frames
+// of the flyover when unused inputs were declared (docs/rendering.md, "Atmosphere").
+// - GLOBE_TERRAIN_NORMAL_MAPS (TerrainStyle::normalMapScale > 0): shades per fragment from the
+//   node's normal map (payload_layout.h): normal and colour sampled bilinearly from the map's own
+//   level, blended with its parent level by the morph factor k (at k = 1 the parent's map, exactly
+//   what the parent draws: no pop), then lit; the parent level is only read where k > 0 (a
+//   per-fragment branch on an interpolated value). Without, and in the debug views, it writes the
+//   vertex stage's lit, display-encoded colour and reads no buffers, since per-fragment cost is what
+//   bounds lavapipe.
+// - GLOBE_TERRAIN_ATMOSPHERE (for terrain_atmosphere.vert): mapped fragments lit by the vertex
+//   stage's sun and sky light through the air instead of Lambert + ambient, water seen through it.
+// - GLOBE_TERRAIN_WATER (nodes that have sea): the fragments below sea level shaded as water
+//   (water_shading.glsl).
+// - GLOBE_TERRAIN_HOLES (planets with kept no-data holes): discard inside them, a rim at the border.
 #include "display_encoding.glsl"
 #include "terrain_layout.h"
 
 layout(std140, set = 0, binding = 2) uniform TerrainFrameBlock { TerrainFrame frame; };
+layout(location = 0) in vec3 inColour;
+// Hole mask of a source's kept no-data (elevation_sources.glsl), interpolated from the samples.
+layout(location = 1) in float inHole;
+layout(location = 0) out vec4 outColour;
+
+#ifdef GLOBE_TERRAIN_NORMAL_MAPS
 // The payload page's slots seen as normal map texels (the vertex stage reads them as vec4).
 layout(std430, set = 0, binding = 1) readonly buffer PayloadTexels { uvec2 payloadTexels[]; };
 #define GLOBE_NORMAL_MAP_SAMPLE
 #include "normal_map.glsl"
-
-// 1: the payloads carry normal maps (TerrainStyle::normalMapScale > 0) and the fragments are shaded from them.
-layout(constant_id = 0) const uint kNormalMaps = 0u;
-
-layout(location = 0) in vec3 inColour;
-// Hole mask of a source's kept no-data (elevation_sources.glsl), interpolated from the samples.
-layout(location = 1) in float inHole;
 layout(location = 4) in vec2 inMapUv;
 layout(location = 5) flat in uint inMapBase;
 layout(location = 6) in float inMapBlend;
-layout(location = 0) out vec4 outColour;
-
 #ifdef GLOBE_TERRAIN_ATMOSPHERE
-layout(location = 8) in vec3 inAerialFog;
 layout(location = 11) in vec3 inSunLight;
 layout(location = 12) in vec3 inSkyLight;
 layout(location = 13) in vec3 inUp;
+#endif
+#endif
+#if defined(GLOBE_TERRAIN_ATMOSPHERE) && (defined(GLOBE_TERRAIN_NORMAL_MAPS) || defined(GLOBE_TERRAIN_WATER))
+layout(location = 8) in vec3 inAerialFog;
 #endif
 #ifdef GLOBE_TERRAIN_WATER
 layout(location = 2) in float inSeaDepth;
@@ -52,6 +54,7 @@ layout(location = 10) flat in vec3 inSkyHorizon;
 // Width (in mask units) of the dark rim drawn on the kept side of a hole's border.
 const float kHoleRim = 0.12;
 
+#ifdef GLOBE_TERRAIN_NORMAL_MAPS
 // The lit, display-encoded colour from the normal map.
 vec3 mappedColour() {
   uint cells = frame.options.w;
@@ -76,12 +79,15 @@ vec3 mappedColour() {
   return encodeDisplay(albedo * light, 1.0).rgb;
 #endif
 }
+#endif
 
 void main() {
   vec3 colour = inColour;
+#ifdef GLOBE_TERRAIN_NORMAL_MAPS
   // A select, not an if, on the debug view (a uniform value: an if would make lavapipe compile the
-  // shader again at draw time, docs/rendering.md); the if is on a specialization constant.
-  if (kNormalMaps != 0u) colour = mix(mappedColour(), inColour, bvec3(frame.options.y != GLOBE_TERRAIN_SHADED));
+  // shader again at draw time, docs/rendering.md).
+  colour = mix(mappedColour(), inColour, bvec3(frame.options.y != GLOBE_TERRAIN_SHADED));
+#endif
 #ifdef GLOBE_TERRAIN_WATER
   // The coast is where the interpolated depth changes sign: crisp at every distance, whatever the
   // mesh resolution (the vertex colours of sea samples are their shore's, so land is not tinted).

@@ -1,8 +1,0 @@
-#version 450
-// Terrain shading through the atmosphere for nodes with sea on planets with kept holes.
-#extension GL_GOOGLE_include_directive : require
-
-#define GLOBE_TERRAIN_ATMOSPHERE
-#define GLOBE_TERRAIN_WATER
-#define GLOBE_TERRAIN_HOLES
-#include "include/terrain_fragment.glsl"
