@@ -29,7 +29,8 @@ layout(push_constant) uniform Push {
 
 // 1: the camera is outside the atmosphere (TerrainRenderer picks the pipeline per frame): the grid
 // becomes a ring round the planet covering the rays that cross the atmosphere, every one of its
-// pixels evaluated per pixel; the rest of the background stays the clear colour, black space.
+// pixels evaluated per pixel, and a second instance a square round the sun; the rest of the
+// background stays the clear colour, black space.
 // lavapipe runs a fragment branch's code for every pixel of a draw, so a screen-wide grid with the
 // per-pixel evaluation behind a branch cost 18 ms a frame from 2e7 m although the limb is thin.
 layout(constant_id = 0) const uint kFromSpace = 0u;
@@ -51,9 +52,20 @@ vec3 ringRay(vec3 c) {
   return normalize(centre + mix(t0, t1, float(j) / float(n)) * (cos(phi) * a1 + sin(phi) * a2));
 }
 
+// Corner gl_VertexIndex (0-5, two triangles) of a square round the sun's disc, twice its angular
+// radius, so that the sun is drawn in open space too (instance 1 of the draw from space).
+vec3 sunSquareRay() {
+  const vec2 corners[6] = vec2[](vec2(-1, -1), vec2(1, -1), vec2(1, 1), vec2(-1, -1), vec2(1, 1), vec2(-1, 1));
+  vec3 sun = push.sun.xyz;
+  vec3 a1 = normalize(cross(sun, abs(sun.z) < 0.9 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0)));
+  vec3 a2 = cross(sun, a1);
+  vec2 corner = corners[gl_VertexIndex % 6] * 2.0 * tan(atmosphere.sun.w);
+  return normalize(sun + corner.x * a1 + corner.y * a2);
+}
+
 void main() {
   if (kFromSpace != 0u) {
-    vec3 v = ringRay(push.camera.xyz);
+    vec3 v = gl_InstanceIndex == 0 ? ringRay(push.camera.xyz) : sunSquareRay();
     outRay = v;  // interpolated perspective-correctly: the pixel's own ray, up to scale
     outSky = vec3(0.0);
     outDisc = vec3(0.0);

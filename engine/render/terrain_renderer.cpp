@@ -270,10 +270,13 @@ void TerrainRenderer::recordSky(VkCommandBuffer cmd, const Camera& camera) const
       viewRays(camera, float(cells_)), {c.x, c.y, c.z, float(style_.terrainRadii_m.x)}, {sun.x, sun.y, sun.z, 0.0f}};
   const AtmosphereLuts& a = *style_.atmosphere;
   const double top_m = double(a.packed().radii.y);
-  const vk::GraphicsPipeline& sky = glm::length(camera.position_m) > top_m ? *skyFromSpace_ : *sky_;
-  sky.bind(cmd, {a.parameters(), a.transmittance(), a.irradiance(), a.scattering()}, &push, sizeof(push));
+  const bool fromSpace = glm::length(camera.position_m) > top_m;
+  (fromSpace ? *skyFromSpace_ : *sky_)
+      .bind(cmd, {a.parameters(), a.transmittance(), a.irradiance(), a.scattering()}, &push, sizeof(push));
   vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
   vkCmdDrawIndexed(cmd, count_[0], 1, first_[0], 0, 0);
+  // From space, the sun in open space: a square round its disc (terrain_sky.vert, instance 1).
+  if (fromSpace) vkCmdDraw(cmd, 6, 1, 0, 1);
 }
 
 void TerrainRenderer::prepare(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex) {

@@ -174,6 +174,22 @@ TEST_F(AtmosphereRenderTest, AirlessPlanetHasABlackSky) {
   }
 }
 
+// From space the sky is drawn on a ring round the planet; the sun's disc in open space has its own
+// square (terrain_sky.vert): looking straight up from 2e7 m with the sun at the zenith.
+TEST_F(AtmosphereRenderTest, SunDiscIsDrawnInOpenSpace) {
+  const Frame f = render(earthlikeModel(), {20.0, 30.0, 2.0e7, 0.0, 90.0, 0.0}, {0.0, 90.0});
+  const auto pixel = [&](uint32_t x, uint32_t y) {
+    const size_t i = size_t(y) * kWidth + x;
+    return glm::dvec3(f.image.rgba[4 * i], f.image.rgba[4 * i + 1], f.image.rgba[4 * i + 2]);
+  };
+  const glm::dvec3 centre = pixel(kWidth / 2, kHeight / 2), aside = pixel(kWidth / 2 + kWidth / 8, kHeight / 2);
+  std::printf("[ info ] sun from 2e7 m: (%.3f, %.3f, %.3f), beside it (%.3f, %.3f, %.3f)\n", centre.x, centre.y,
+              centre.z, aside.x, aside.y, aside.z);
+  EXPECT_GT(std::min({centre.x, centre.y, centre.z}), 0.9);
+  EXPECT_EQ(aside, glm::dvec3(0.0));  // black space
+  EXPECT_EQ(device().validation().count(), 0u);
+}
+
 // Mean linear colour of the background pixels in the band of rows [y0, y1) and columns [x0, x1).
 glm::dvec3 meanSky(const Frame& f, uint32_t x0, uint32_t x1, uint32_t y0, uint32_t y1) {
   glm::dvec3 sum(0.0);
