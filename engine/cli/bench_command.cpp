@@ -182,6 +182,8 @@ Result<BenchFlight> flyPath(const BenchOptions& o, const BenchInputs& in, const 
 BenchRunInfo runInfo(const BenchOptions& o, const vk::Device& device, const TerrainSettings& settings) {
   BenchRunInfo info{
       o.planet, o.path, o.mode, device.name(), o.size, settings.gridCells, o.commandLine, std::string(GLOBE_VERSION)};
+  info.shading = std::string("aa ") + vk::antialiasingName(settings.antialiasing) + ", normal map scale " +
+                 std::to_string(settings.normalMapScale) + ", atmosphere " + atmosphereDetailName(settings.atmosphere);
   info.driver = device.driverName() + " " + device.driverInfo();
   info.shaderCache = mesaShaderCacheState();
   info.commit = GLOBE_COMMIT;

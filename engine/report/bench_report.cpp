@@ -140,6 +140,7 @@ std::string summaryJson(const BenchRunInfo& info, std::span<const BenchFrame> fr
               {"device", info.device},
               {"size", info.size},
               {"grid_cells", info.gridCells},
+              {"shading", info.shading},
               {"command_line", info.commandLine},
               {"globe_version", info.globeVersion},
               {"driver", info.driver},

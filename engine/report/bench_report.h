@@ -46,6 +46,8 @@ struct BenchRunInfo {
   std::string device;      // Vulkan device name
   std::string size;        // "WxH" in pixels
   uint32_t gridCells = 0;  // node grid (cells per node side)
+  // The rest of the quality settings that move the figures: "aa none, normal map scale 0, atmosphere sky".
+  std::string shading;
   std::string commandLine;
   std::string globeVersion;
   // What else moves the figures (docs/benchmark.md); "" where unknown.

@@ -63,6 +63,7 @@ std::string runSection(const BenchRunInfo& info) {
   out += infoRow("date (UTC)", info.dateUtc);
   out += infoRow("image size", info.size);
   out += infoRow("node grid", std::to_string(info.gridCells) + " cells per side");
+  out += infoRow("shading", info.shading);
   out += infoRow("globe version", info.globeVersion);
   out += "<tr>" + cell("command", "th") + "<td><code>" + escapeMarkup(info.commandLine) + "</code></td></tr>\n";
   return out + "</table>\n";

@@ -77,6 +77,7 @@ BenchRunInfo runInfo() {
   info.device = "llvmpipe (LLVM 15.0.6, 256 bits)";
   info.size = "1280x720";
   info.gridCells = 64;
+  info.shading = "aa none, normal map scale 0, atmosphere sky";
   info.commandLine = "globe bench --planet assets/planets/earthlike.toml --path assets/paths/flyover.path --out out";
   info.globeVersion = "0.1.0";
   return info;
@@ -299,11 +300,12 @@ TEST(BenchReport, SummaryJsonHasEveryKey) {
                           "frames_over_33ms", "percentile_method", "metrics", "key_frames"}) {
     EXPECT_TRUE(json.contains(key)) << key;
   }
-  for (const char* key :
-       {"planet_file", "path_file", "mode", "device", "size", "grid_cells", "command_line", "globe_version"}) {
+  for (const char* key : {"planet_file", "path_file", "mode", "device", "size", "grid_cells", "shading", "command_line",
+                          "globe_version"}) {
     EXPECT_TRUE(json["run"].contains(key)) << key;
   }
   EXPECT_EQ(json["run"]["grid_cells"], 64);
+  EXPECT_EQ(json["run"]["shading"], "aa none, normal map scale 0, atmosphere sky");
   EXPECT_EQ(json["frame_count"], 600);
   EXPECT_EQ(json["percentile_method"], "nearest-rank");
   const std::vector<std::string> columns = {
