@@ -88,7 +88,7 @@ void main() {
   vec3 level = v - mu * zenith;
   float muMin = min(muHorizon + 0.02, 1.0);
   vec3 lifted = muMin * zenith + sqrt(max(1.0 - muMin * muMin, 0.0)) * level / max(length(level), 1e-6);
-  v = mix(v, lifted, bvec3(mu < muMin && r < atmTop()));
+  v = mix(v, lifted, bvec3(mu < muMin));  // this grid is drawn from inside the atmosphere only
   vec4 entry = atmosphereEntry(c, v);
   vec4 ray = atmosphereRay(entry.xyz, v, push.sun.xyz);
   bool hitsGround = atmRayHitsGround(ray.x, ray.y);
@@ -96,10 +96,7 @@ void main() {
   // The phases with the vertex's own ray (v before the lift: the sun's halo stays round the sun).
   vec4 s = atmScattering(ray.x, ray.y, ray.z, ray.w, hitsGround);
   vec3 sky = atmosphereInscatter(s, dot(normalize(outRay), push.sun.xyz), ray.z);
-  // Seen from outside the atmosphere the fragment stage evaluates every ray through the shell per
-  // pixel: a vertex's value there would blend the lit ground's air into the space beside the limb.
-  bool outside = dot(c, c) > atmTop() * atmTop();
-  outSky = atmosphereToneMap(mix(sky, vec3(0.0), bvec3(misses || outside)));
+  outSky = atmosphereToneMap(mix(sky, vec3(0.0), bvec3(misses)));
   vec3 transmittance = mix(atmTransmittanceToTop(ray.x, ray.y), vec3(float(misses)), bvec3(hitsGround || misses));
   float alpha = atmosphere.sun.w;
   outDisc = atmosphereToneMap(atmosphere.sun.rgb / (kAtmospherePi * alpha * alpha) * transmittance);

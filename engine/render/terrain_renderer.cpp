@@ -17,7 +17,6 @@
 #include <cstring>
 #include <limits>
 #include <string>
-#include <string_view>
 #include <vector>
 
 namespace globe {
@@ -56,21 +55,32 @@ struct TargetFormat {
 };
 
 // What a terrain pipeline's shaders compute besides the grid: shading from the payloads' normal
-// maps, light and aerial perspective through the atmosphere.
+// maps, light and aerial perspective through the atmosphere, the sea, the holes' discard.
 struct TerrainShading {
-  bool normalMaps;
-  bool atmosphere;
+  bool normalMaps = false;
+  bool atmosphere = false;
+  bool water = false;
+  bool holes = false;
 };
 
+// The surface pipelines' shading (the wireframe's has neither water nor holes).
+TerrainShading surfaceShading(const TerrainStyle& style, bool atmosphere, bool water) {
+  return {style.normalMapScale > 0, atmosphere, water, style.holes};
+}
+
+// terrain[_atmosphere][_maps][_water][_holes].frag: the variants of shaders/CMakeLists.txt.
+std::string terrainFragmentShader(const TerrainShading& s) {
+  return std::string("terrain") + (s.atmosphere ? "_atmosphere" : "") + (s.normalMaps ? "_maps" : "") +
+         (s.water ? "_water" : "") + (s.holes ? "_holes" : "") + ".frag";
+}
+
 vk::GraphicsPipelineDesc terrainDesc(TargetFormat target, bool wireframe, VkCullModeFlags cull,
-                                     VertexPositions positions, const char* fragmentShader, TerrainShading shading) {
+                                     VertexPositions positions, const TerrainShading& shading) {
   vk::GraphicsPipelineDesc d;
   const bool reprojected = positions == VertexPositions::kReprojected;
   const bool atmosphere = shading.atmosphere;
   d.vertexShader = reprojected ? "terrain_reprojected.vert" : atmosphere ? "terrain_atmosphere.vert" : "terrain.vert";
-  // terrain_X.frag becomes terrain[_atmosphere][_maps]_X.frag (the variants of shaders/CMakeLists.txt).
-  d.fragmentShader = std::string("terrain") + (atmosphere ? "_atmosphere" : "") + (shading.normalMaps ? "_maps" : "") +
-                     std::string(fragmentShader).substr(std::string_view("terrain").size());
+  d.fragmentShader = terrainFragmentShader(shading);
   // 0: instances, 1: payloads, 2: frame constants (uniform); reprojected: 3 nodes' (u, v), 4 faces;
   // atmosphere: 3 its parameters (uniform), 4-6 its tables, 7 the frame's camera (uniform), 8 its
   // aerial perspective table (AtmosphereView).
@@ -133,34 +143,33 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
       // surface and the hole's rim are seen from below through the hole too.
       // The reprojected positions (a measurement only) are drawn without the atmosphere.
       atmosphere_(positions == VertexPositions::kStored && style.aerialPerspective ? style.atmosphere : nullptr),
-      pendingOptional_(
-          std::async(std::launch::async,
-                     [&device, style, positions, target = TargetFormat{colourFormat, samples},
-                      shading = TerrainShading{style.normalMapScale > 0, atmosphere_ != nullptr}] {
-                       OptionalPipelines made;
-                       if (style.water.enabled) {
-                         const char* water = style.holes ? "terrain_water_holes.frag" : "terrain_water.frag";
-                         made.water = std::make_unique<vk::GraphicsPipeline>(
-                             device, terrainDesc(target, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT,
-                                                 positions, water, shading));
-                         made.waterSkirts = std::make_unique<vk::GraphicsPipeline>(
-                             device, terrainDesc(target, false, VK_CULL_MODE_NONE, positions, water, shading));
-                       }
-                       VkPhysicalDeviceFeatures features{};
-                       vkGetPhysicalDeviceFeatures(device.physical(), &features);
-                       if (features.fillModeNonSolid) {
-                         made.wireframe = std::make_unique<vk::GraphicsPipeline>(
-                             device, terrainDesc(target, true, VK_CULL_MODE_NONE, positions, "terrain.frag", shading));
-                       }
-                       return made;
-                     })),
+      pendingOptional_(std::async(
+          std::launch::async,
+          [&device, style, positions, target = TargetFormat{colourFormat, samples},
+           atmosphere = atmosphere_ != nullptr] {
+            OptionalPipelines made;
+            if (style.water.enabled) {
+              const TerrainShading water = surfaceShading(style, atmosphere, true);
+              made.water = std::make_unique<vk::GraphicsPipeline>(
+                  device, terrainDesc(target, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT, positions,
+                                      water));
+              made.waterSkirts = std::make_unique<vk::GraphicsPipeline>(
+                  device, terrainDesc(target, false, VK_CULL_MODE_NONE, positions, water));
+            }
+            VkPhysicalDeviceFeatures features{};
+            vkGetPhysicalDeviceFeatures(device.physical(), &features);
+            if (features.fillModeNonSolid) {
+              made.wireframe = std::make_unique<vk::GraphicsPipeline>(
+                  device,
+                  terrainDesc(target, true, VK_CULL_MODE_NONE, positions, {style.normalMapScale > 0, atmosphere}));
+            }
+            return made;
+          })),
       solid_(device,
              terrainDesc({colourFormat, samples}, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT,
-                         positions, style.holes ? "terrain_holes.frag" : "terrain.frag",
-                         {style.normalMapScale > 0, atmosphere_ != nullptr})),
+                         positions, surfaceShading(style, atmosphere_ != nullptr, false))),
       skirts_(device, terrainDesc({colourFormat, samples}, false, VK_CULL_MODE_NONE, positions,
-                                  style.holes ? "terrain_holes.frag" : "terrain.frag",
-                                  {style.normalMapScale > 0, atmosphere_ != nullptr})) {
+                                  surfaceShading(style, atmosphere_ != nullptr, false))) {
   assert(gridCells >= 16 && gridCells <= 256 && (gridCells & (gridCells - 1)) == 0);
   assert(style.normalMapScale <= 4 && (style.normalMapScale & (style.normalMapScale - 1)) == 0);
   OptionalPipelines optional = pendingOptional_.get();

@@ -110,15 +110,17 @@ SkyCount countSky(const Frame& f, double bottom_m, double top_m, const glm::dvec
   return count;
 }
 
+// A named camera pose and the sun in its sky.
+struct View {
+  const char* name;
+  GeodeticPose pose;
+  SunAngles sun;
+};
+
 TEST_F(AtmosphereRenderTest, SkyIsLitWhereverItShouldBeFromOneCentimetreToOneHundredMillionKilometres) {
   const ElevationModel& model = earthlikeModel();
   ASSERT_TRUE(model.atmosphere().has_value());
   const double bottom = model.radius_m(), top = bottom + model.atmosphere()->thickness_m;
-  struct View {
-    const char* name;
-    GeodeticPose pose;
-    SunAngles sun;
-  };
   const View views[] = {
       {"1 cm", {22.0, -98.4, 0.01, 90.0, 10.0, 0.0}, {90.0, 30.0}},
       {"2 m", {22.0, -98.4, 2.0, 90.0, 5.0, 0.0}, {90.0, 30.0}},
@@ -345,11 +347,6 @@ double percentile(std::vector<double> v, double q) {
 // evaluation: the errors are the table's, at every distance up to its reach and every altitude.
 TEST_F(AtmosphereRenderTest, PerFrameTableMatchesTheExactEvaluation) {
   const ElevationModel& model = earthlikeModel();
-  struct View {
-    const char* name;
-    GeodeticPose pose;
-    SunAngles sun;
-  };
   const View views[] = {
       {"2 m, noon", {22.0, -98.4, 2.0, 90.0, 0.0, 0.0}, {270.0, 45.0}},
       {"2 m, dusk", {22.0, -98.4, 2.0, 90.0, 0.0, 0.0}, {90.0, 2.0}},
