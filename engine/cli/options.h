@@ -55,9 +55,10 @@ struct QualityOptions {
   std::string antialiasing;                         // --aa; empty: the preset's
   uint32_t normalMapScale = kPresetNormalMapScale;  // --normal-map-scale
   std::string atmosphere;                           // --atmosphere; empty: the preset's
+  std::string roughness;                            // --roughness on|off; empty: on
 };
-// --quality, --tolerance, --aa, --normal-map-scale, --atmosphere and, when withGrid, --grid, with the same help and
-// checks on every rendering command; read them back with terrainSettingsFromOptions.
+// --quality, --tolerance, --roughness, --aa, --normal-map-scale, --atmosphere and, when withGrid, --grid, with the same
+// help and checks on every rendering command; read them back with terrainSettingsFromOptions.
 void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid = true);
 vk::DeviceOptions deviceOptions(const DeviceFlags& flags);
 

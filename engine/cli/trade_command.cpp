@@ -55,7 +55,7 @@ struct TradeCamera {
 std::string knobName(const TerrainSettings& s) {
   char lod[32];  // tolerance ranges ignore the multiplier: name the tolerance instead
   if (s.ranges.tolerance_px > 0)
-    std::snprintf(lod, sizeof(lod), "t%gpx", s.ranges.tolerance_px);
+    std::snprintf(lod, sizeof(lod), "t%gpx%s", s.ranges.tolerance_px, s.ranges.roughness ? "" : " per-depth");
   else
     std::snprintf(lod, sizeof(lod), "x%g", s.ranges.distanceMultiplier);
   char text[128];
@@ -69,7 +69,8 @@ bool sameKnobs(const TerrainSettings& a, const TerrainSettings& b) {
   return a.gridCells == b.gridCells && a.ranges.distanceMultiplier == b.ranges.distanceMultiplier &&
          a.ranges.maxDepth == b.ranges.maxDepth && a.ranges.morphFraction == b.ranges.morphFraction &&
          a.generation == b.generation && a.vertexPositions == b.vertexPositions &&
-         a.ranges.tolerance_px == b.ranges.tolerance_px && a.normalMapScale == b.normalMapScale;
+         a.ranges.tolerance_px == b.ranges.tolerance_px && a.ranges.roughness == b.ranges.roughness &&
+         a.normalMapScale == b.normalMapScale;
 }
 
 // One knob at a time around the baseline, then the presets and a few combinations.
@@ -99,6 +100,11 @@ std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::st
     s.ranges.tolerance_px = v;
     s.ranges.distanceMultiplier = 1;
   };
+  // The same with one range per depth (no roughness term): what the roughness buys.
+  auto perDepthTolerance = [&](TerrainSettings& s, double v) {
+    tolerance(s, v);
+    s.ranges.roughness = false;
+  };
   auto depth = [](TerrainSettings& s, double v) { s.ranges.maxDepth = int(v); };
   // Normal map cells per grid cell (docs/rendering.md, "Normal maps"): shading detail vs generation.
   auto normalMap = [](TerrainSettings& s, double v) { s.normalMapScale = uint32_t(v); };
@@ -114,6 +120,7 @@ std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::st
   if (lodSweep) {  // distance ranges vs tolerance-driven ranges at the baseline's grid and depth
     vary(mult, {0.25, 0.5, 0.75, 1, 1.5, 2, 4});
     vary(tolerance, {0.5, 1, 2, 3, 4, 6, 8, 16});
+    vary(perDepthTolerance, {2, 3, 4, 6, 8, 16});
     return list;
   }
   if (quick) {  // the cheap knobs only: a minute or two on lavapipe
@@ -275,7 +282,9 @@ TradeRow tradeRow(const TradeConfig& config, const TradeCamera& camera, const Te
   row.morphFraction = settings.ranges.morphFraction;
   row.generation = settings.generation == GenerationPrecision::kFloat ? "float" : "double";
   row.positions = settings.vertexPositions == VertexPositions::kReprojected ? "reprojected" : "stored";
-  row.lod = settings.ranges.tolerance_px > 0 ? "tolerance" : "distance";
+  row.lod = settings.ranges.tolerance_px <= 0 ? "distance"
+            : settings.ranges.roughness       ? "tolerance"
+                                              : "tolerance-depth";
   row.tolerance_px = settings.ranges.tolerance_px;
   row.width = in.size.width;
   row.height = in.size.height;

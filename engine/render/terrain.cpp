@@ -1,6 +1,9 @@
 #include "engine/render/terrain.h"
 
+#include "planet/elevation/relief_roughness.h"
+
 #include "engine/vk/vk_check.h"
+#include "planet/elevation/relief_roughness.h"
 #include "planet/sources/source_mosaic.h"
 #include "planet/sources/tile_cache.h"
 
@@ -65,6 +68,8 @@ Result<std::unique_ptr<Terrain>> Terrain::create(vk::Device& device, const Eleva
   lod.ranges = settings.ranges;
   auto selector = LodSelector::create(lod);
   if (!selector) return selector.error();
+  if (lod.ranges.tolerance_px > 0.0 && lod.ranges.roughness)
+    selector->ranges().setRoughness(reliefRoughnessMap(model, int(settings.gridCells), lod.ranges.maxDepth));
   std::unique_ptr<Terrain> terrain(new Terrain(device, model, settings, std::move(*selector)));
   // The payload buffer is bound in pages of at most maxStorageBufferRange bytes (PayloadPages), so
   // only the VRAM budget bounds the pool.

@@ -432,7 +432,10 @@ uint32_t TerrainRenderer::writeInstances(unsigned char* bytes, const glm::dvec3&
     gpu::TerrainInstance inst{};
     // Double first, float last: the offset is a multiple of the level's quantum and small.
     inst.offset = toGpu(glm::vec3(n.centre_m - origin_m), 0.0f);
-    inst.morph = {morphDistance(n.morph.start_m), morphDistance(n.morph.end_m), 0.0f, 0.0f};
+    inst.morph = {morphDistance(n.morph.startFloor_m), morphDistance(n.morph.ownRange_m), float(n.morph.fraction),
+                  0.0f};
+    inst.morphEnd = {morphDistance(n.morph.end_m[0]), morphDistance(n.morph.end_m[1]), morphDistance(n.morph.end_m[2]),
+                     morphDistance(n.morph.end_m[3])};
     inst.info = {payloads.localSlot(n.slot) * slotVec4, n.partial ? 2u : 1u,
                  uint32_t(n.id.level) - (n.partial ? 1u : 0u), 0u};
     partial += n.partial ? 1u : 0u;

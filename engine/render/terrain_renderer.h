@@ -89,7 +89,7 @@ struct TerrainStyle {
 struct DrawNode {
   NodeId id;
   uint32_t slot = 0;         // payload slot holding the node's samples
-  MorphRange morph;          // metres from the camera (SelectedNode::morph)
+  NodeMorph morph;           // metres from the camera (SelectedNode::morph)
   bool partial = false;      // drawn at half resolution (the parent's LOD) over its own quadrant
   glm::dvec3 centre_m{0.0};  // node centre the payload was generated with (PayloadJob::centre)
   bool water = false;        // the payload has sea to draw (GpuPayloadGenerator::slotHasWater)

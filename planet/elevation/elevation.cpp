@@ -74,6 +74,44 @@ Real shapedNoise(gpu::uint kind, Real n) {
   return n;
 }
 
+// The scale a modulated layer's octave sum is multiplied by: floor + (1 - floor) * smoothstep of its
+// modulator's value (values[] holds the earlier layers' values); 1 for a layer without modulator.
+template <class Real>
+Real modulationScale(const gpu::ElevationLayerParams& layer, const Real* values) {
+  if (layer.modulator < 0) return Real(1);
+  const Real low = static_cast<Real>(layer.modulation_low_m);
+  const Real inv_range = static_cast<Real>(layer.modulation_inv_range);
+  const Real floor_scale = static_cast<Real>(layer.modulation_floor);
+  Real m = (values[layer.modulator] - low) * inv_range;
+  m = std::min(std::max(m, Real(0)), Real(1));
+  const Real s = m * m * (Real(3) - Real(2) * m);
+  return floor_scale + (Real(1) - floor_scale) * s;
+}
+
+// A layer's octave sum at the point (px, py, pz) (metres), before modulation and offset.
+template <class Real>
+Real octaveSum(const gpu::ElevationLayerParams& layer, gpu::uint octaves, Real px, Real py, Real pz) {
+  const Real lacunarity = static_cast<Real>(layer.lacunarity);
+  const Real gain = static_cast<Real>(layer.gain);
+  Real frequency = static_cast<Real>(layer.frequency);
+  Real amplitude = static_cast<Real>(layer.amplitude_m);
+  std::uint32_t seed = layer.seed;
+  Real sum = Real(0);
+  for (gpu::uint o = 0; o < octaves; ++o) {
+    Real t;
+    if (layer.kind == GLOBE_LAYER_CRATERS) {
+      t = craterField(px * frequency, py * frequency, pz * frequency, seed);
+    } else {
+      t = shapedNoise(layer.kind, gradientNoise(px * frequency, py * frequency, pz * frequency, seed));
+    }
+    sum = sum + amplitude * t;
+    frequency = frequency * lacunarity;
+    amplitude = amplitude * gain;
+    seed = seed + 0x9e3779b9U;
+  }
+  return sum;
+}
+
 // The elevation function. Mirrored statement by statement in shaders/include/elevation.glsl:
 // keep the operation order identical (no FMA contraction: -ffp-contract=off / `precise`).
 template <class Real>
@@ -86,40 +124,13 @@ Real evaluateElevation(const gpu::ElevationParams& p, Real dx, Real dy, Real dz)
   Real total = Real(0);
   for (gpu::uint l = 0; l < p.layer_count; ++l) {
     const gpu::ElevationLayerParams& layer = p.layers[l];
-    const Real lacunarity = static_cast<Real>(layer.lacunarity);
-    const Real gain = static_cast<Real>(layer.gain);
-    Real frequency = static_cast<Real>(layer.frequency);
-    Real amplitude = static_cast<Real>(layer.amplitude_m);
-    std::uint32_t seed = layer.seed;
     // The modulation scale comes first (its modulator is an earlier layer): where it is exactly 0
     // the octaves are skipped. Same value as summing them: sum * 0 is +-0, and +-0 + offset equals
     // 0 + offset for every offset (-0 + +0 = +0), so this is bit-identical to always summing. It
     // saves the mountains' octaves on the ~70 % of earthlike below its 200 m mask threshold (the
     // GPU skips only when all lanes of a subgroup do, which coherent payload samples mostly do).
-    Real scale = Real(1);
-    if (layer.modulator >= 0) {
-      const Real low = static_cast<Real>(layer.modulation_low_m);
-      const Real inv_range = static_cast<Real>(layer.modulation_inv_range);
-      const Real floor_scale = static_cast<Real>(layer.modulation_floor);
-      Real m = (values[layer.modulator] - low) * inv_range;
-      m = std::min(std::max(m, Real(0)), Real(1));
-      const Real s = m * m * (Real(3) - Real(2) * m);
-      scale = floor_scale + (Real(1) - floor_scale) * s;
-    }
-    const gpu::uint octaves = scale == Real(0) ? 0U : layer.octaves;
-    Real sum = Real(0);
-    for (gpu::uint o = 0; o < octaves; ++o) {
-      Real t;
-      if (layer.kind == GLOBE_LAYER_CRATERS) {
-        t = craterField(px * frequency, py * frequency, pz * frequency, seed);
-      } else {
-        t = shapedNoise(layer.kind, gradientNoise(px * frequency, py * frequency, pz * frequency, seed));
-      }
-      sum = sum + amplitude * t;
-      frequency = frequency * lacunarity;
-      amplitude = amplitude * gain;
-      seed = seed + 0x9e3779b9U;
-    }
+    const Real scale = modulationScale(layer, values);
+    Real sum = octaveSum(layer, scale == Real(0) ? 0U : layer.octaves, px, py, pz);
     if (layer.modulator >= 0) sum = sum * scale;
     const Real value = sum + static_cast<Real>(layer.offset_m);
     values[l] = value;
@@ -178,6 +189,26 @@ double ElevationModel::heightAboveTerrain_m(const glm::dvec3& p, bool aboveWater
   const double r = std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
   if (!(r > 0)) return -params_.radius_m;
   return r - params_.radius_m - below(p / r);
+}
+
+LayerModulation ElevationModel::layerModulation(const glm::dvec3& d) const {
+  LayerModulation out;
+  bool modulator[GLOBE_MAX_ELEVATION_LAYERS] = {};
+  for (gpu::uint l = 0; l < params_.layer_count; ++l) {
+    if (params_.layers[l].modulator >= 0) modulator[params_.layers[l].modulator] = true;
+  }
+  double values[GLOBE_MAX_ELEVATION_LAYERS] = {};
+  const double radius = params_.radius_m;
+  for (gpu::uint l = 0; l < params_.layer_count; ++l) {
+    const gpu::ElevationLayerParams& layer = params_.layers[l];
+    out.scale[l] = modulationScale(layer, values);
+    if (!modulator[l]) continue;
+    const double sum =
+        octaveSum(layer, out.scale[l] == 0.0 ? 0U : layer.octaves, d.x * radius, d.y * radius, d.z * radius);
+    values[l] = (layer.modulator >= 0 ? sum * out.scale[l] : sum) + layer.offset_m;
+    out.value[l] = values[l];
+  }
+  return out;
 }
 
 float ElevationModel::elevationFloat_m(const glm::vec3& unit_direction) const {

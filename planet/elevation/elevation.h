@@ -40,6 +40,14 @@ gpu::ElevationParams packElevationParams(const PlanetDescription& planet);
 using ElevationSpecialization = std::array<std::uint32_t, GLOBE_ELEVATION_SPEC_COUNT>;
 ElevationSpecialization elevationSpecialization(const gpu::ElevationParams& params);
 
+// What modulates each layer at a direction (ElevationModel::layerModulation): the scale its octave
+// sum is multiplied by (1 without modulator) and, for the layers that modulate others, their value
+// (metres; nullopt for the layers not evaluated).
+struct LayerModulation {
+  std::array<double, GLOBE_MAX_ELEVATION_LAYERS> scale{};
+  std::array<std::optional<double>, GLOBE_MAX_ELEVATION_LAYERS> value{};
+};
+
 class ElevationModel {
  public:
   // `planet` must be valid (validatePlanet); checked by assert.
@@ -65,6 +73,9 @@ class ElevationModel {
   // at the geodetic normal below p (GeographicLib).
   // `aboveWater`: above the visible surface (visibleElevation_m) instead of the ground.
   double heightAboveTerrain_m(const glm::dvec3& position_m, bool aboveWater = false) const;
+  // The procedural layers' modulation at a direction; evaluates only the modulating layers' octaves
+  // (where the terrain is rough: planet/elevation/relief_roughness.h).
+  LayerModulation layerModulation(const glm::dvec3& unit_direction) const;
   // The same evaluation carried out entirely in float (radius, point, frequencies, noise): only to
   // measure what double buys (docs/elevation.md); never use it for geometry.
   float elevationFloat_m(const glm::vec3& unit_direction) const;

@@ -64,35 +64,36 @@ double amplitudeSum(const ElevationLayer& layer) {
 
 }  // namespace
 
+ElevationRange layerValueBounds(const ElevationLayer& layer) {
+  const double sum = amplitudeSum(layer);
+  ElevationRange r;
+  switch (layer.kind) {
+    case LayerKind::kFbm:
+      r = {-sum * kGradientNoiseBound, sum * kGradientNoiseBound};
+      break;
+    case LayerKind::kRidged:  // (1 - |n|)^2 <= max(1, (1 - bound)^2) = 1
+      r = {0.0, sum};
+      break;
+    case LayerKind::kBillow:
+      r = {0.0, sum * kGradientNoiseBound};
+      break;
+    case LayerKind::kCraters:
+      r = {sum * kCraterFieldMin, sum * kCraterFieldMax};
+      break;
+  }
+  return r;
+}
+
 ElevationRange elevationBounds(const PlanetDescription& planet) {
   ElevationRange total;
   for (const ElevationLayer& layer : planet.layers) {
-    const double sum = amplitudeSum(layer);
-    double lo = 0.0;
-    double hi = 0.0;
-    switch (layer.kind) {
-      case LayerKind::kFbm:
-        lo = -sum * kGradientNoiseBound;
-        hi = sum * kGradientNoiseBound;
-        break;
-      case LayerKind::kRidged:  // (1 - |n|)^2 <= max(1, (1 - bound)^2) = 1
-        hi = sum;
-        break;
-      case LayerKind::kBillow:
-        hi = sum * kGradientNoiseBound;
-        break;
-      case LayerKind::kCraters:
-        lo = sum * kCraterFieldMin;
-        hi = sum * kCraterFieldMax;
-        break;
-    }
+    ElevationRange r = layerValueBounds(layer);
     if (layer.modulated_by >= 0) {  // scale in [floor, 1]
       const double f = layer.modulation_floor;
-      lo = std::min(lo, lo * f);
-      hi = std::max(hi, hi * f);
+      r = {std::min(r.min_m, r.min_m * f), std::max(r.max_m, r.max_m * f)};
     }
-    total.min_m += lo + layer.offset_m;
-    total.max_m += hi + layer.offset_m;
+    total.min_m += r.min_m + layer.offset_m;
+    total.max_m += r.max_m + layer.offset_m;
   }
   // Margin for the rounding of the evaluation itself (~1e-12 relative).
   const double margin = 1e-9 * (std::abs(total.min_m) + std::abs(total.max_m)) + 1e-6;

@@ -99,6 +99,8 @@ struct ElevationRange {
   double max_m = 0.0;
 };
 ElevationRange elevationBounds(const PlanetDescription& planet);
+// The range of one layer's octave sum before its modulation scale and offset (same rules).
+ElevationRange layerValueBounds(const ElevationLayer& layer);
 
 // The planet's reference surface: Ellipsoid::create(radius_m, flattening); `planet` must be valid.
 Ellipsoid planetShape(const PlanetDescription& planet);

@@ -20,6 +20,16 @@ double morphFactor(const MorphRange& morph, double distance_m) {
   return std::clamp((distance_m - morph.start_m) / (morph.end_m - morph.start_m), 0.0, 1.0);
 }
 
+MorphRange NodeMorph::at(double s, double t) const {
+  const double inf = std::numeric_limits<double>::infinity();
+  if (!std::isfinite(end_m[0])) return {inf, inf};
+  const bool uniform = end_m[0] == end_m[1] && end_m[0] == end_m[2] && end_m[0] == end_m[3];
+  const double end =
+      uniform ? end_m[0]
+              : (end_m[0] * (1.0 - s) + end_m[1] * s) * (1.0 - t) + (end_m[2] * (1.0 - s) + end_m[3] * s) * t;
+  return {std::min(end, std::max(end - fraction * (end - ownRange_m), startFloor_m)), end};
+}
+
 double pixelsPerRadian(double height_px, double verticalFov_rad) {
   return height_px / (2.0 * std::tan(0.5 * verticalFov_rad));
 }
@@ -80,7 +90,106 @@ bool LodRanges::setPixelsPerRadian(double lambda) {
   return recompute();
 }
 
+bool LodRanges::observeError(const NodeId& node, double error_m) {
+  if (!toleranceDriven()) return false;
+  const int depth = node.level - 1;  // a payload measures what drawing its parent's depth costs
+  if (depth < 0) return false;
+  if (!fieldDepth(depth)) return observeError(node.level, error_m);
+  return observeError(node.level, error_m / map_->maxOver(map_->relative(depth), node));
+}
+
+void LodRanges::setRoughness(std::shared_ptr<const RoughnessMap> map) {
+  map_ = std::move(map);
+  field_.clear();
+  recompute();
+  refresh();
+}
+
+double LodRanges::refineRangeOver(const NodeId& node) const {
+  if (!fieldDepth(node.level)) return range_[node.level];
+  return map_->maxOver(std::span<const double>(field_[node.level]), node);
+}
+
+NodeMorph LodRanges::morphFor(const NodeId& node, bool partial) const {
+  const int depth = node.level - (partial ? 1 : 0);  // the depth it is drawn at
+  NodeMorph m;
+  m.fraction = config_.morphFraction;
+  if (depth == 0) {
+    const double inf = std::numeric_limits<double>::infinity();
+    m.end_m.fill(inf);
+    m.ownRange_m = m.startFloor_m = inf;
+    return m;
+  }
+  if (fieldDepth(depth - 1)) {
+    m.end_m = map_->corners(std::span<const double>(field_[static_cast<size_t>(depth - 1)]), node);
+  } else {
+    m.end_m.fill(range_[static_cast<size_t>(depth - 1)]);
+  }
+  if (depth >= config_.maxDepth) return m;  // no finer level: starts at end - fraction * end
+  m.ownRange_m = refineRangeOver(partial ? node.parent() : node);
+  // Crack-freedom: where this node meets a finer neighbour it must not have started morphing. That
+  // neighbour's parent met its own range, at most the slope times a diagonal above ours.
+  const double diagonal = maxDiagonal_[static_cast<size_t>(depth)];
+  const double slope = fieldDepth(depth) ? fieldSlope_[static_cast<size_t>(depth)] : 0.0;
+  if (diagonal > 0.0) {
+    m.startFloor_m = (m.ownRange_m + diagonal * (1.0 + slope)) * (1.0 + kRestrictionSlack) + kRestrictionPad_m;
+  }
+  return m;
+}
+
+void LodRanges::refresh() {
+  if (!dirty_) return;
+  dirty_ = false;
+  recomputeFields();
+}
+
+bool LodRanges::recomputeFields() {
+  bool changed = false;
+  const std::size_t points = map_->pointCount();
+  field_.resize(static_cast<size_t>(config_.maxDepth));
+  const std::vector<double>* finer = nullptr;  // R_{d+1} per point, when d+1 has a field
+  double finerMax = 0.0;                       // the largest R_{d+1}
+  double finerSlope = 0.0;
+  for (int d = config_.maxDepth - 1; d >= 0; --d) {
+    const size_t i = static_cast<size_t>(d);
+    const double scale = pixelsPerRadian_ * estimatedError(d) / config_.tolerance_px;
+    const bool grows = d + 1 <= config_.maxDepth - 1;
+    const double diagonal = grows ? maxDiagonal_[i + 1] : 0.0;
+    double largest = 0.0;
+    if (fieldDepth(d)) {
+      std::vector<double>& table = field_[i];
+      table.resize(points, -1.0);
+      const std::span<const float> w = map_->relative(d);
+      const double pad = diagonal * (1.0 + finerSlope);
+      for (size_t p = 0; p < points; ++p) {
+        double value = scale * w[p];
+        if (grows) value = std::max(value, ((*finer)[p] + pad) * (1.0 + kRestrictionSlack) + kRestrictionPad_m);
+        changed = changed || value != table[p];
+        table[p] = value;
+        largest = std::max(largest, value);
+      }
+      fieldSlope_[i] = std::max(scale * map_->slope(d), finerSlope * (1.0 + kRestrictionSlack));
+      finer = &table;
+      finerSlope = fieldSlope_[i];
+    } else {
+      largest = scale;
+      if (grows) largest = std::max(largest, (finerMax + diagonal) * (1.0 + kRestrictionSlack) + kRestrictionPad_m);
+      changed = changed || largest != range_[i];
+      finer = nullptr;
+      finerSlope = 0.0;
+    }
+    range_[i] = largest;
+    finerMax = largest;
+  }
+  recomputeBands();
+  return changed;
+}
+
 bool LodRanges::recompute() {
+  if (map_ && toleranceDriven()) {  // fields: once per selection pass (refresh), not per observation
+    dirty_ = true;
+    return true;
+  }
   bool changed = false;
   double finer = 0.0;  // R(d+1), none below the last refinable depth
   for (int d = config_.maxDepth - 1; d >= 0; --d) {
@@ -93,6 +202,11 @@ bool LodRanges::recompute() {
     range_[i] = value;
     finer = value;
   }
+  recomputeBands();
+  return changed;
+}
+
+void LodRanges::recomputeBands() {
   // Morph bands: depth 0 never morphs; depth d lives in [R(d), R(d-1)] (R(maxDepth) = 0).
   const double inf = std::numeric_limits<double>::infinity();
   morph_[0] = {inf, inf};
@@ -110,7 +224,6 @@ bool LodRanges::recompute() {
     }
     morph_[static_cast<size_t>(d)] = band;
   }
-  return changed;
 }
 
 void LodRanges::resetObservedDiagonals() {

@@ -17,13 +17,26 @@
 // has been seen. Nominal R(d) = lambda * E(d) / tolerance; the growth rule below still applies, so
 // the selection stays restricted and the morph bands stay per level (crack-free across seams).
 //
+// Roughness (tolerance mode with a RoughnessMap, docs/lod.md "Roughness"): from depth
+// RoughnessMap::firstDepth() on, the range is a field over the sphere instead of one number,
+// R_d(x) = max(lambda * K(d) * w_d(x) / tolerance, growth), with w_d the map's relative roughness and
+// K(d) = max over observed payloads of E / max_node w_d (so the rough places seen set the scale and a
+// plain is refined as far as its own error needs). Stored at the map's grid points, bilinear between
+// them; the growth rule holds point by point with the field's slope S:
+// R_d(g) >= (R_{d+1}(g) + D(d+1) * (1 + S_{d+1})) * (1 + 1e-9) + 1 mm, which keeps the quadtree
+// restricted; a node is refined when its bounds meet the ball of its largest R_d, and its morph band
+// ends at R_{d-1} interpolated per vertex, so neighbours agree on every shared vertex.
+//
 // A node drawn at depth d (full) lives between R(d) and R(d-1) and morphs towards its parent's
 // resolution over the last `morphFraction` of that band: morphEnd = R(d-1), morphStart = morphEnd -
 // morphFraction * (R(d-1) - R(d)). Depth 0 never morphs (start = end = +infinity).
 #include <array>
+#include <memory>
+#include <vector>
 
 #include "planet/core/error.h"
 #include "planet/geometry/node_id.h"
+#include "planet/lod/roughness_map.h"
 
 namespace globe {
 
@@ -36,6 +49,9 @@ struct LodRangeConfig {
   // > 0: ranges from the payloads' geometric error so the screen error stays within this many pixels
   // (distanceMultiplier and baseRange_m are then unused); 0: distance ranges.
   double tolerance_px = 0.0;
+  // Tolerance mode: ranges also follow where the relief is rough (a RoughnessMap the terrain builds
+  // from its planet, LodRanges::setRoughness); false: one range per depth.
+  bool roughness = true;
 };
 
 // Pixels per radian of a view `height_px` tall with vertical field of view `verticalFov_rad`:
@@ -55,6 +71,17 @@ struct MorphRange {
 // k in [0, 1] for a vertex at distance_m; 0 when the range does not morph (infinite start).
 double morphFactor(const MorphRange& morph, double distance_m);
 
+// The morph band of one drawn node, which may vary over it (roughness): the end is bilinear between
+// its corners' values, the start follows the band rule from it. Uniform bands have four equal ends.
+struct NodeMorph {
+  std::array<double, 4> end_m{};  // at the node's corners (u0 v0, u1 v0, u0 v1, u1 v1); +inf: never
+  double ownRange_m = 0.0;        // refine range of the drawn depth over the node (0 at max depth)
+  double startFloor_m = 0.0;      // the band starts no nearer (unmorphed where a finer neighbour may be)
+  double fraction = 0.5;          // morphFraction
+  // The band at (s, t) in [0, 1]^2 of the node's (u, v) square.
+  MorphRange at(double s, double t) const;
+};
+
 // Nominal width of a node at `depth` (metres): the rhombus edge arc on a sphere of radius_m / 2^depth.
 double nominalNodeWidth(int depth, double radius_m);
 // "cm per sample": nominal sample spacing (metres) of a node grid of gridCells cells at `depth`.
@@ -71,7 +98,18 @@ class LodRanges {
   // R(d) (metres) for d in [0, maxDepth); +infinity is never returned.
   double refineRange(int depth) const { return range_[static_cast<size_t>(depth)]; }
   // Morph band of a node drawn at the resolution of `depth` (a partial node at depth d uses d - 1).
+  // With roughness: the widest band of that depth (NodeMorph for one node).
   MorphRange morph(int depth) const { return morph_[static_cast<size_t>(depth)]; }
+
+  // Tolerance mode: let the ranges follow where the terrain is rough (nullptr: per depth only).
+  void setRoughness(std::shared_ptr<const RoughnessMap> map);
+  const RoughnessMap* roughness() const { return map_.get(); }
+  // The range a node is refined within: the largest R over it (refineRange(depth) without roughness).
+  double refineRangeOver(const NodeId& node) const;
+  // The band of a selected node (partial: drawn at its parent's depth, over its own square).
+  NodeMorph morphFor(const NodeId& node, bool partial) const;
+  // Recomputes the range fields if an observation changed them (the selection calls it per pass).
+  void refresh();
 
   // Record a node's bounds diagonal (metres); returns true when a range grew (callers that need the
   // restriction guarantee for this frame re-run their selection).
@@ -87,6 +125,8 @@ class LodRanges {
   // changed (re-select, as for observeDiagonal). Errors only grow, so ranges never shrink once
   // their depth has been seen: no popping from the statistics.
   bool observeError(int depth, double error_m);
+  // The same for a payload node: with roughness its error is divided by max_node w (the K above).
+  bool observeError(const NodeId& node, double error_m);
   // Tolerance mode: the view's pixels per radian (pixelsPerRadian()); true when a range changed.
   bool setPixelsPerRadian(double lambda);
   // E(d) the tolerance ranges use (metres; 0 before any payload is known).
@@ -95,7 +135,8 @@ class LodRanges {
   void resetObservedDiagonals();
 
  private:
-  bool recompute();  // true when any range changed
+  bool recompute();  // true when any range changed (with roughness: marks the fields for refresh())
+  void recomputeBands();
   LodRangeConfig config_;
   std::array<double, kMaxNodeLevel + 1> nominal_{};
   std::array<double, kMaxNodeLevel + 1> range_{};
@@ -103,6 +144,15 @@ class LodRanges {
   std::array<double, kMaxNodeLevel + 1> maxError_{};  // per payload depth; < 0: none observed
   double pixelsPerRadian_ = 0.0;
   std::array<MorphRange, kMaxNodeLevel + 1> morph_{};  // per drawn depth, derived from range_
+  // Roughness: the map, and per depth with a field the range at each grid point and its slope.
+  bool fieldDepth(int depth) const {
+    return map_ && toleranceDriven() && depth >= RoughnessMap::firstDepth() && depth < config_.maxDepth;
+  }
+  bool recomputeFields();
+  std::shared_ptr<const RoughnessMap> map_;
+  std::vector<std::vector<double>> field_;              // [depth][point], metres
+  std::array<double, kMaxNodeLevel + 1> fieldSlope_{};  // per metre
+  bool dirty_ = false;
 };
 
 }  // namespace globe

@@ -103,11 +103,13 @@ Status LodSelector::select(const SelectionCamera& camera, NodeResidency& residen
     const uint32_t passes = out.stats.passes + 1;
     out.stats = {};
     out.stats.passes = passes;
+    ranges_.refresh();
     selectOnce(ctx);
   } while (ctx.grew && out.stats.passes < kMaxPasses);
   // Morph bands also depend on the diagonals observed during the pass (crack-freedom, see
   // LodRanges); they never change which nodes are selected, so they are written from the final ranges.
-  for (SelectedNode& n : out.nodes) n.morph = ranges_.morph(n.partial ? n.id.level - 1 : n.id.level);
+  ranges_.refresh();
+  for (SelectedNode& n : out.nodes) n.morph = ranges_.morphFor(n.id, n.partial);
   return Ok{};
 }
 
@@ -150,8 +152,7 @@ void LodSelector::addSelected(const NodeId& id, bool partial, Context& ctx) {
     return;
   }
   const int depth = id.level;
-  ctx.out->nodes.push_back(
-      {id, ranges_.morph(partial ? depth - 1 : depth), partial, static_cast<uint8_t>(depth > 0 ? id.quadrant() : 0)});
+  ctx.out->nodes.push_back({id, {}, partial, static_cast<uint8_t>(depth > 0 ? id.quadrant() : 0)});
   ++ctx.out->stats.selected;
   if (partial) ++ctx.out->stats.partial;
 }
@@ -193,7 +194,7 @@ void LodSelector::visit(const NodeId& id, const NodeBounds& b, VisitState state,
   if (state.knownRange && ranges_.observeDiagonal(depth, b.diagonal())) ctx.grew = true;
   if (state.knownRange && ranges_.toleranceDriven()) {
     const std::optional<double> error = ctx.residency->knownGeometricError(id);
-    if (error && ranges_.observeError(depth, *error)) ctx.grew = true;
+    if (error && ranges_.observeError(id, *error)) ctx.grew = true;
   }
   if (state.partial) {
     addSelected(id, true, ctx);
@@ -204,7 +205,7 @@ void LodSelector::visit(const NodeId& id, const NodeBounds& b, VisitState state,
     ++stats.requests;
     return;
   }
-  const double range = depth < ranges_.maxDepth() ? ranges_.refineRange(depth) : 0.0;
+  const double range = depth < ranges_.maxDepth() ? ranges_.refineRangeOver(id) : 0.0;
   const bool refine = depth < ranges_.maxDepth() && intersectsSphere(b, ctx.camera, range);
   if (refine && depth >= ctx.maxDepth) ++stats.heldBack;  // a budget's cap keeps it coarser
   if (!refine || depth >= ctx.maxDepth) {
@@ -257,7 +258,7 @@ void LodSelector::prefetchVisit(const NodeId& id, const NodeBounds& b, bool full
     return;
   }
   if (depth >= ctx.maxDepth) return;
-  const double range = ranges_.refineRange(depth) * config_.prefetch.ringRangeFactor;
+  const double range = ranges_.refineRangeOver(id) * config_.prefetch.ringRangeFactor;
   if (!intersectsSphere(b, ctx.camera, range)) return;
   if (!prefetchChildren(id, distanceToBounds(b, ctx.camera), ctx)) return;
   std::array<RadiusRange, 4> childRadius;

@@ -58,7 +58,7 @@ struct LodConfig {
 
 struct SelectedNode {
   NodeId id;             // level = id.level
-  MorphRange morph;      // metres; for a partial node, the band of its parent's depth
+  NodeMorph morph;       // metres; for a partial node, the band of its parent's depth over its square
   bool partial = false;  // draw at half resolution (the parent's LOD, sampling this node's quadrant)
   uint8_t quadrant = 0;  // id.quadrant(): where the node lies in its parent (0 for roots)
 };

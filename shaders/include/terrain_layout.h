@@ -58,13 +58,16 @@ struct TerrainFrame {
   GLOBE_VEC4 centreFromCamera;  // 224: xyz = float(planet centre - camera), metres (a direction for the sea's normal)
 };
 
-// One drawn node (std430, 48 bytes).
+// One drawn node (std430, 64 bytes). Morph band (metres from the camera, LodRanges / NodeMorph): the
+// end is bilinear between morphEnd's corner values at the vertex's place in the node's (u, v) square,
+// start = min(end, max(end - morph.z * (end - morph.y), morph.x)); morphEnd.x = FLT_MAX: never morphs.
 struct TerrainInstance {
-  GLOBE_VEC4 offset;  //  0: xyz = float(node centre - origin), metres: exact (multiples of the quantum)
-  GLOBE_VEC4 morph;   // 16: x = morph start, y = morph end (metres from the camera); z, w unused
-  GLOBE_UVEC4 info;   // 32: x = first vec4 of the node's payload slot, y = sample stride (1 full, 2 partial),
-                      //     z = level the node is drawn at (id.level - partial),
-                      //     w = node edge of a skirt instance (NodeEdge), 0 for the grid
+  GLOBE_VEC4 offset;    //  0: xyz = float(node centre - origin), metres: exact (multiples of the quantum)
+  GLOBE_VEC4 morph;     // 16: x = start floor, y = refine range of the drawn depth, z = morph fraction; w unused
+  GLOBE_UVEC4 info;     // 32: x = first vec4 of the node's payload slot, y = sample stride (1 full, 2 partial),
+                        //     z = level the node is drawn at (id.level - partial),
+                        //     w = node edge of a skirt instance (NodeEdge), 0 for the grid
+  GLOBE_VEC4 morphEnd;  // 48: morph end at the node's corners u0 v0, u1 v0, u0 v1, u1 v1
 };
 
 // Positions re-projected every frame (VertexPositions::kReprojected, measured by globe trade): one
@@ -86,7 +89,7 @@ struct TerrainDrawPush {
 
 #ifdef __cplusplus
 static_assert(sizeof(TerrainFrame) == 240);
-static_assert(sizeof(TerrainInstance) == 48);
+static_assert(sizeof(TerrainInstance) == 64);
 static_assert(sizeof(TerrainReprojectionFrame) == 32 && sizeof(TerrainReprojectionNode) == 32);
 }  // namespace globe::gpu
 #endif

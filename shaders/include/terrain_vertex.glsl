@@ -78,9 +78,14 @@ struct TerrainVertex {
   float mapBlend;
 };
 
-float terrainMorphFactor(float distance_m, vec2 band) {
-  if (!(band.y > band.x)) return distance_m >= band.y ? 1.0 : 0.0;  // empty band; FLT_MAX = never
-  float t = (distance_m - band.x) / (band.y - band.x);
+// k of a vertex at distance_m and at st in the node's (u, v) square (TerrainInstance's band).
+float terrainMorphFactor(float distance_m, TerrainInstance inst, vec2 st) {
+  vec4 e = inst.morphEnd;
+  if (e.x >= 3.0e38) return 0.0;  // depth 0 never morphs (FLT_MAX)
+  float end = mix(mix(e.x, e.y, st.x), mix(e.z, e.w, st.x), st.y);
+  float start = min(end, max(end - inst.morph.z * (end - inst.morph.y), inst.morph.x));
+  if (!(end > start)) return distance_m >= end ? 1.0 : 0.0;  // empty band
+  float t = (distance_m - start) / (end - start);
   return clamp(t * (1.0 + 2.0 * kMorphMargin) - kMorphMargin, 0.0, 1.0);
 }
 
@@ -122,7 +127,7 @@ TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCell
   precise vec3 world = inst.offset.xyz + sample0.xyz;
   precise vec3 rel0 = (world - frame.cameraHigh.xyz) - frame.cameraLow.xyz;
 #endif
-  float k = terrainMorphFactor(length(rel0), inst.morph.xy);
+  float k = terrainMorphFactor(length(rel0), inst, vec2(si, sj) / float(cells));
 
   vec3 position = world;
   vec4 normal0 = payload[terrainSample(base, cells, si, sj) + normals];

@@ -167,12 +167,13 @@ class ExtremesTest : public GpuTest {
     long selectionBad = 0;
     for (const SelectedNode& n : s.terrain->selection().nodes) {
       const int drawn = n.id.level - (n.partial ? 1 : 0);
+      const MorphRange morph = n.morph.at(0.5, 0.5);
       if (drawn == 0) {
         selectionBad +=
-            n.morph.start_m == std::numeric_limits<double>::infinity() && n.morph.end_m == n.morph.start_m ? 0 : 1;
+            morph.start_m == std::numeric_limits<double>::infinity() && morph.end_m == morph.start_m ? 0 : 1;
       } else {
-        selectionBad += std::isfinite(n.morph.start_m) && std::isfinite(n.morph.end_m) && n.morph.start_m >= 0.0 &&
-                                n.morph.start_m <= n.morph.end_m
+        selectionBad += std::isfinite(morph.start_m) && std::isfinite(morph.end_m) && morph.start_m >= 0.0 &&
+                                morph.start_m <= morph.end_m
                             ? 0
                             : 1;
       }
@@ -259,7 +260,11 @@ class ExtremesTest : public GpuTest {
       std::memcpy(&inst, s.terrain->renderer().instanceBytes(uint32_t(s.renderer->frame() % 2)) + k * sizeof(inst),
                   sizeof(inst));
       bad += std::isfinite(inst.offset.x + inst.offset.y + inst.offset.z + inst.offset.w) ? 0 : 1;
-      bad += std::isfinite(inst.morph.x) && std::isfinite(inst.morph.y) && inst.morph.x <= inst.morph.y ? 0 : 1;
+      const gpu::TerrainVec4& e = inst.morphEnd;
+      bad += std::isfinite(inst.morph.x + inst.morph.y + inst.morph.z + e.x + e.y + e.z + e.w) &&
+                     inst.morph.y <= std::min(std::min(e.x, e.y), std::min(e.z, e.w))
+                 ? 0
+                 : 1;
     }
     EXPECT_EQ(bad, 0) << "instances";
     return bad;
@@ -436,7 +441,7 @@ class ExtremesTest : public GpuTest {
           const glm::dvec3 rel = (centre + glm::dvec3(glm::vec3(p))) - camera.position_m;
           // Unmorphed vertices only (even-even ones never move; others only before the band).
           const bool even = (i % 2 == 0) && (j % 2 == 0);
-          if (!even && !(glm::length(rel) < node.morph.start_m * 0.99)) {
+          if (!even && !(glm::length(rel) < node.morph.at(double(i) / kCells, double(j) / kCells).start_m * 0.99)) {
             ++dbgMorph;
             continue;
           }

@@ -8,6 +8,7 @@
 #include "engine/vk/compute_pipeline.h"
 #include "engine/vk/offscreen_target.h"
 #include "planet/camera/floating_origin.h"
+#include "planet/elevation/relief_roughness.h"
 #include "planet/geometry/face_mapping.h"
 #include "planet/geometry/triacontahedron.h"
 #include "planet/lod/selection.h"
@@ -159,8 +160,9 @@ class TerrainRenderTest : public GpuTest {
     return cameraFromPose(pose, ground, kRadius_m, double(kWidth) / kHeight);
   }
 
-  // tolerance_px > 0: tolerance-driven ranges from the payloads' geometric errors.
-  LodSelector makeSelector(double tolerance_px = 0.0) const {
+  // tolerance_px > 0: tolerance-driven ranges from the payloads' geometric errors; roughness: also
+  // following the planet's relief (reliefRoughnessMap), as Terrain does by default.
+  LodSelector makeSelector(double tolerance_px = 0.0, bool roughness = false) const {
     LodConfig config;
     config.ranges.tolerance_px = tolerance_px;
     config.radius_m = model_.radius_m();
@@ -170,6 +172,7 @@ class TerrainRenderTest : public GpuTest {
     config.maxElevation_m = range.max_m;
     auto selector = LodSelector::create(config);
     EXPECT_TRUE(selector.ok());
+    if (roughness) selector->ranges().setRoughness(reliefRoughnessMap(model_, int(kCells), config.ranges.maxDepth));
     return std::move(selector.value());
   }
 
@@ -185,8 +188,8 @@ class TerrainRenderTest : public GpuTest {
     const auto& mapping = RhombusFaceMapping::get();
     for (const SelectedNode& s : selection.nodes) {
       const CpuPayloads::Entry& e = payloads.entry(s.id);
-      const MorphRange band = selector.ranges().morph(s.id.level - (s.partial ? 1 : 0));
-      f.nodes.push_back({s.id, e.slot, band, s.partial, e.centre_m});
+      f.nodes.push_back({s.id, e.slot, s.morph, s.partial, e.centre_m});
+      const MorphRange band = s.morph.at(0.5, 0.5);
       // Angular size of a drawn cell's diagonal, doubled for the morph to the parent's cells: every
       // drawn triangle lies within that angle of one of its vertices, so above r * cos(angle).
       const double diagonal =
@@ -290,11 +293,13 @@ TEST_P(TerrainRenderShapeTest, NoCracksAtSeamsVerticesPolesAndAntimeridian) {
   style.radius_m = model_.radius_m();
   TerrainRenderer renderer(device(), kCells, style);
   CpuPayloads payloads(device(), model_, 6000);
-  // Distance ranges, then tolerance-driven ranges (docs/lod.md): both must stay crack-free.
+  // Distance ranges, then tolerance-driven ranges following the relief (docs/lod.md): both must
+  // stay crack-free (per-depth tolerance ranges: WithoutSkirtsMorphedEdgesStillMeet).
   for (const double tolerance : {0.0, 2.0})
     for (const CrackCase& c : crackCases()) {
       payloads.clear();
-      LodSelector selector = makeSelector(tolerance);  // fresh ranges: observed for this camera only
+      // Fresh ranges: observed for this camera only.
+      LodSelector selector = makeSelector(tolerance, /*roughness=*/tolerance > 0.0);
       const glm::dvec2 ll = latLonFromPosition(c.direction);
       const Camera camera = cameraAt(ll.x, ll.y, c.height_m, c.heading_deg, c.pitch_deg);
       auto start = std::chrono::steady_clock::now();
@@ -334,10 +339,10 @@ TEST_F(TerrainRenderTest, WithoutSkirtsMorphedEdgesStillMeet) {
   CpuPayloads payloads(device(), model_, 6000);
   int total = 0;
   const auto cases = crackCases();
-  for (const double tolerance : {0.0, 2.0})
+  for (const auto& [tolerance, roughness] : {std::pair{0.0, false}, {2.0, false}, {2.0, true}})
     for (const CrackCase& c : std::span(cases).first(4)) {
       payloads.clear();
-      LodSelector selector = makeSelector(tolerance);
+      LodSelector selector = makeSelector(tolerance, roughness);
       const glm::dvec2 ll = latLonFromPosition(c.direction);
       const Camera camera = cameraAt(ll.x, ll.y, c.height_m, c.heading_deg, c.pitch_deg);
       Frame f = render(renderer, payloads, selector, camera);
@@ -345,7 +350,7 @@ TEST_F(TerrainRenderTest, WithoutSkirtsMorphedEdgesStillMeet) {
       total += holes;
       EXPECT_LE(holes, 3) << c.name << " tolerance " << tolerance;
     }
-  std::printf("[ info ] without skirts: %d background pixel(s) inside silhouettes over 8 views\n", total);
+  std::printf("[ info ] without skirts: %d background pixel(s) inside silhouettes over 12 views\n", total);
 }
 
 // A flat square payload facing the camera: side_m wide, centred on the node centre.
@@ -439,7 +444,7 @@ TEST_P(TerrainRenderShapeTest, VerticesDoNotJitterOneCentimetreAboveEarth) {
   const double lat = 46.5, lon = 7.5;
   const NodeId id = nodeAt(RhombusFaceMapping::get().locate(directionFromLatLon(lat, lon)), 20);
   const CpuPayloads::Entry& e = payloads.entry(id);
-  const DrawNode node{id, e.slot, ranges->morph(20), false, e.centre_m};
+  const DrawNode node{id, e.slot, ranges->morphFor(id, false), false, e.centre_m};
   const auto positions = payloads.slot(e.slot);
   const glm::dvec3 east = glm::normalize(glm::cross(glm::dvec3(0, 0, 1), directionFromLatLon(lat, lon)));
   double worst_px = 0.0;

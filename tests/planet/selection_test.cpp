@@ -20,7 +20,9 @@ using testing::PartlyResident;
 using testing::SyntheticTerrain;
 
 // tolerance_px > 0: tolerance-driven ranges (from SyntheticTerrain::errorOf), else distance ranges.
-LodSelector makeSelector(int maxDepth = 20, bool horizon = true, double tolerance_px = 0.0, double flattening = 0.0) {
+// roughness: with tolerance ranges, follow syntheticRoughnessMap (the rough octant of errorOf).
+LodSelector makeSelector(int maxDepth = 20, bool horizon = true, double tolerance_px = 0.0, double flattening = 0.0,
+                         bool roughness = false) {
   LodConfig c;
   if (flattening > 0.0) {
     c.radius_m = 6378137.0;
@@ -33,6 +35,8 @@ LodSelector makeSelector(int maxDepth = 20, bool horizon = true, double toleranc
   c.horizonCulling = horizon;
   auto s = LodSelector::create(c);
   EXPECT_TRUE(s.ok());
+  if (roughness)
+    s->ranges().setRoughness(testing::syntheticRoughnessMap(maxDepth, c.radius_m * (1 - c.flattening) - 8000.0));
   return std::move(s.value());
 }
 
@@ -108,16 +112,24 @@ std::vector<SeededCamera> seededCameras(uint64_t seed, size_t count, PlaceEye pl
   return cameras;
 }
 
-// The restriction and tiling tests run with distance ranges (0) and tolerance-driven ranges (px).
-class SelectionLod : public ::testing::TestWithParam<double> {};
-INSTANTIATE_TEST_SUITE_P(Ranges, SelectionLod, ::testing::Values(0.0, 1.0, 8.0),
-                         [](const ::testing::TestParamInfo<double>& p) {
-                           return p.param == 0.0 ? std::string("Distance")
-                                                 : "Tolerance" + std::to_string(int(p.param)) + "px";
+// The restriction and tiling tests run with distance ranges (0) and tolerance-driven ranges (px), per
+// depth and following the synthetic roughness.
+struct RangeCase {
+  double tolerance_px;
+  bool roughness;
+};
+class SelectionLod : public ::testing::TestWithParam<RangeCase> {};
+INSTANTIATE_TEST_SUITE_P(Ranges, SelectionLod,
+                         ::testing::Values(RangeCase{0.0, false}, RangeCase{1.0, false}, RangeCase{8.0, false},
+                                           RangeCase{1.0, true}, RangeCase{8.0, true}),
+                         [](const ::testing::TestParamInfo<RangeCase>& p) {
+                           if (p.param.tolerance_px == 0.0) return std::string("Distance");
+                           return "Tolerance" + std::to_string(int(p.param.tolerance_px)) + "px" +
+                                  (p.param.roughness ? "Roughness" : "");
                          });
 
 TEST_P(SelectionLod, RestrictedQuadtreeOverRandomCameras) {
-  LodSelector selector = makeSelector(20, true, GetParam());
+  LodSelector selector = makeSelector(20, true, GetParam().tolerance_px, 0.0, GetParam().roughness);
   AllResident residency{SyntheticTerrain{}};
   Selection out;
   const std::vector<SeededCamera> cameras =
@@ -133,11 +145,11 @@ TEST_P(SelectionLod, RestrictedQuadtreeOverRandomCameras) {
       total += out.nodes.size();
     }
   }
-  EXPECT_GT(total, GetParam() > 4.0 ? 3000u : 10000u);
+  EXPECT_GT(total, GetParam().tolerance_px > 4.0 || GetParam().roughness ? 3000u : 10000u);
 }
 
 TEST_P(SelectionLod, TilesTheSphereWithoutCulling) {
-  LodSelector selector = makeSelector(20, false, GetParam());
+  LodSelector selector = makeSelector(20, false, GetParam().tolerance_px, 0.0, GetParam().roughness);
   AllResident residency{SyntheticTerrain{}};
   Selection out;
   for (const glm::dvec3& d : specialDirections()) {
@@ -376,19 +388,20 @@ TEST(Selection, PartialNodesQuadrantsAndMorphBands) {
     EXPECT_EQ(n.quadrant, n.id.level > 0 ? n.id.quadrant() : 0);
     const int band = n.partial ? n.id.level - 1 : n.id.level;
     const MorphRange expected = selector.ranges().morph(band);
+    const MorphRange morph = n.morph.at(0.5, 0.5);  // uniform without roughness
     if (band == 0) {
-      EXPECT_TRUE(std::isinf(n.morph.start_m));
+      EXPECT_TRUE(std::isinf(morph.start_m));
       continue;
     }
-    EXPECT_EQ(n.morph.start_m, expected.start_m);
-    EXPECT_EQ(n.morph.end_m, expected.end_m);
-    EXPECT_LT(n.morph.start_m, n.morph.end_m);
+    EXPECT_EQ(morph.start_m, expected.start_m);
+    EXPECT_EQ(morph.end_m, expected.end_m);
+    EXPECT_LT(morph.start_m, morph.end_m);
     // Morphing over at most the last half (default) of the band, and never before R(d) + D(d), where
     // a finer neighbour may meet the node (crack-freedom).
     const double bandStart = band < 20 ? selector.ranges().refineRange(band) : 0.0;
-    EXPECT_LE(n.morph.end_m - n.morph.start_m, 0.5 * (n.morph.end_m - bandStart) * (1 + 1e-9));
+    EXPECT_LE(morph.end_m - morph.start_m, 0.5 * (morph.end_m - bandStart) * (1 + 1e-9));
     if (band < 20 && selector.ranges().maxDiagonal(band) > 0) {
-      EXPECT_GE(n.morph.start_m, bandStart + selector.ranges().maxDiagonal(band));
+      EXPECT_GE(morph.start_m, bandStart + selector.ranges().maxDiagonal(band));
     }
     if (n.partial) {
       EXPECT_GT(n.id.level, 0);

@@ -17,6 +17,7 @@
 #include "planet/geometry/triacontahedron.h"
 #include "planet/lod/lod_ranges.h"
 #include "planet/lod/node_residency.h"
+#include "planet/lod/roughness_map.h"
 
 namespace globe::testing {
 
@@ -117,6 +118,15 @@ struct SyntheticTerrain {
     return roughness * (r.max_m - r.min_m);
   }
 };
+
+// A roughness map matching SyntheticTerrain::errorOf: rough (0.25) where z > 0 and y < 0, flat
+// (0.01) elsewhere, at every depth — a step the map's grid and slopes must carry without cracks.
+inline std::shared_ptr<const RoughnessMap> syntheticRoughnessMap(int maxDepth, double minRadius_m) {
+  static const RoughnessMap::Model model = [](const glm::dvec3& d, std::span<double> out) {
+    for (double& v : out) v = d.z > 0.0 && d.y < 0.0 ? 0.25 : 0.01;
+  };
+  return std::make_shared<const RoughnessMap>(RoughnessMap::build(maxDepth, minRadius_m, model));
+}
 
 // Every node resident; known ranges from a synthetic terrain (or a smooth sphere when relief = 0).
 class AllResident : public NodeResidency {
