@@ -2,14 +2,15 @@
 # Distance vs tolerance LOD from a `globe trade --lod-sweep` trade.csv (docs/tradeoffs.md, "Tolerance vs
 # distance ranges"): per standard camera, the triangles the distance multipliers need for the p95 error
 # a tolerance row reaches (log-log interpolation along the distance rows), summed over the cameras.
-# Usage: scripts/trade_lod_compare.py DIR/trade.csv
+# Tolerance rows are `tolerance` (ranges following the relief's roughness) and `tolerance-depth` (one
+# range per depth). Usage: scripts/trade_lod_compare.py DIR/trade.csv [MORE.csv ...] (rows of all files)
 import csv, math, sys
-rows=list(csv.DictReader(open(sys.argv[1])))
+rows=[r for f in sys.argv[1:] for r in csv.DictReader(open(f))]
 cams=['orbit','100km','10km','1km','2m']
 get=lambda cfg,c:[x for x in rows if x['config']==cfg and x['camera']==c][0]
 cfgs=list(dict.fromkeys(r['config'] for r in rows))
 dist=[c for c in cfgs if get(c,'2m')['lod']=='distance']
-tol=[c for c in cfgs if get(c,'2m')['lod']=='tolerance']
+tol=[c for c in cfgs if get(c,'2m')['lod'].startswith('tolerance')]
 def distTris(cam, err):
     pts=sorted(((float(get(c,cam)['err_p95_px']),int(get(c,cam)['triangles'])) for c in dist), key=lambda p:-p[0])
     # frontier: error falls as triangles rise; interpolate log-log between neighbours
@@ -20,8 +21,8 @@ def distTris(cam, err):
             return math.exp(math.log(t1)+f*(math.log(t2)-math.log(t1)))
     if err>=pts[0][0]: return min(t for e,t in pts if e>=err*0.999) if any(e>=err*0.999 for e,t in pts) else pts[0][1]
     return None  # beyond the sweep
-print("| tolerance config | " + " | ".join(cams) + " | sum, tolerance | sum, distance at equal p95 | fewer |")
-print("| --- |" + " ---: |"*(len(cams)+3))
+print("| tolerance config | lod | " + " | ".join(cams) + " | sum, tolerance | sum, distance at equal p95 | fewer |")
+print("| --- | --- |" + " ---: |"*(len(cams)+3))
 for t in tol:
     st=sd=0; cells=[]; ok=True
     for c in cams:
@@ -29,4 +30,4 @@ for t in tol:
         d=distTris(c,e)
         if d is None: ok=False; cells.append(f"{tt/1e3:.0f}k @ {e:.2f} px (beyond)"); continue
         st+=tt; sd+=d; cells.append(f"{tt/1e3:.0f}k vs {d/1e3:.0f}k @ {e:.2f} px")
-    print(f"| {t} | "+" | ".join(cells)+(f" | {st/1e3:.0f}k | {sd/1e3:.0f}k | {100*(1-st/sd):.0f} % |" if ok else " | – | – | – |"))
+    print(f"| {t} | {get(t,'2m')['lod']} | "+" | ".join(cells)+(f" | {st/1e3:.0f}k | {sd/1e3:.0f}k | {100*(1-st/sd):.0f} % |" if ok else " | – | – | – |"))

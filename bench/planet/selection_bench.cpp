@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "planet/lod/roughness_map.h"
 #include "planet/lod/selection.h"
 
 namespace globe {
@@ -35,12 +36,27 @@ class ResidentTerrain final : public NodeResidency {
     const double slope = shape_.flattening() * width;
     return RadiusRange{r - a - slope, r + a + slope};
   }
+  // Geometric error (tolerance-driven ranges): 0.2 % of the node width, 25x that in one octant.
+  std::optional<double> knownGeometricError(const NodeId& id) const override {
+    const glm::dvec3 c = nodeCentreDirection(RhombusFaceMapping::get(), id);
+    return (c.z > 0.0 && c.y < 0.0 ? 0.05 : 0.002) * nominalNodeWidth(id.level, shape_.equatorialRadius_m());
+  }
 
  private:
   Ellipsoid shape_;
 };
 
-void selection(benchmark::State& state, double altitude_m, bool withFrustum, double flattening) {
+// The rough octant of ResidentTerrain::knownGeometricError as a roughness map.
+std::shared_ptr<const RoughnessMap> octantRoughness(int maxDepth) {
+  static const RoughnessMap::Model model = [](const glm::dvec3& d, std::span<double> out) {
+    for (double& v : out) v = d.z > 0.0 && d.y < 0.0 ? 0.05 : 0.002;
+  };
+  return std::make_shared<const RoughnessMap>(RoughnessMap::build(maxDepth, kRadius_m - 8000.0, model));
+}
+
+enum class Ranges { kDistance, kTolerance, kRoughness };  // the last two: 2 px, per depth / per place
+
+void selection(benchmark::State& state, double altitude_m, bool withFrustum, double flattening, Ranges ranges) {
   const Ellipsoid shape =
       flattening == 0.0 ? Ellipsoid::sphere(kRadius_m) : Ellipsoid::create(6378137.0, flattening).value();
   LodConfig config;
@@ -49,11 +65,13 @@ void selection(benchmark::State& state, double altitude_m, bool withFrustum, dou
   config.minElevation_m = -8000.0;
   config.maxElevation_m = 8000.0;
   config.ranges.maxDepth = 20;
+  config.ranges.tolerance_px = ranges == Ranges::kDistance ? 0.0 : 2.0;
   auto selector = LodSelector::create(config);
   if (!selector) {
     state.SkipWithError(selector.error().format().c_str());
     return;
   }
+  if (ranges == Ranges::kRoughness) selector->ranges().setRoughness(octantRoughness(config.ranges.maxDepth));
   const double lat = 46.5 * std::numbers::pi / 180.0;
   const double lon = 7.5 * std::numbers::pi / 180.0;
   const glm::dvec3 up(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
@@ -96,11 +114,32 @@ void registerAll() {
                                                  : (altitude == 1e4   ? "1e4"
                                                     : altitude == 1e6 ? "1e6"
                                                                       : "1e8"));
-        benchmark::RegisterBenchmark(name.c_str(), selection, altitude, frustum, flattening)
+        benchmark::RegisterBenchmark(name.c_str(), selection, altitude, frustum, flattening, Ranges::kDistance)
             ->Unit(benchmark::kMicrosecond);
       }
     }
   }
+  for (const auto& [prefix, ranges] : {std::pair{"SelectionTolerance/Frustum/altitude_m:", Ranges::kTolerance},
+                                       {"SelectionRoughness/Frustum/altitude_m:", Ranges::kRoughness}}) {
+    for (const auto& [label, altitude] : {std::pair{"1", 1.0}, {"1e4", 1e4}, {"1e6", 1e6}}) {
+      benchmark::RegisterBenchmark((std::string(prefix) + label).c_str(), selection, altitude, true, 0.0, ranges)
+          ->Unit(benchmark::kMicrosecond);
+    }
+  }
+  // Recomputing the roughness range fields (once per selection pass after an observation grew).
+  benchmark::RegisterBenchmark("RoughnessFieldRecompute", [](benchmark::State& state) {
+    LodRangeConfig config;
+    config.maxDepth = 24;
+    config.tolerance_px = 2.0;
+    LodRanges ranges = LodRanges::create(config, kRadius_m).value();
+    ranges.setRoughness(octantRoughness(config.maxDepth));
+    for (int d = 1; d < config.maxDepth; ++d) ranges.observeError(d, 1e4 * std::pow(0.5, d));
+    double lambda = 600.0;
+    for (auto _ : state) {
+      ranges.setPixelsPerRadian(lambda += 1.0);  // every field changes
+      ranges.refresh();
+    }
+  })->Unit(benchmark::kMillisecond);
 }
 
 const int kRegistered = (registerAll(), 0);

@@ -11,6 +11,10 @@ namespace {
 
 constexpr double kRestrictionSlack = 1e-9;  // relative, covers rounding in the distance tests
 constexpr double kRestrictionPad_m = 1e-3;  // absolute, likewise
+// A range field steeper than this (metres of range per metre of ground) is flattened to its largest
+// value: the growth rule pads by the finer field's slope times a diagonal, which for ranges as wide
+// as the map's cells (coarse depths) would cost more than the field saves.
+constexpr double kMaxFieldSlope = 0.25;
 
 }  // namespace
 
@@ -56,6 +60,7 @@ Result<LodRanges> LodRanges::create(const LodRangeConfig& c, double radius_m) {
   LodRanges r;
   r.config_ = c;
   r.maxError_.fill(-1.0);
+  r.maxCalibrated_.fill(-1.0);
   r.pixelsPerRadian_ = pixelsPerRadian(720.0, 1.0471975511965976);  // until the view sets its own
   const double base =
       (c.baseRange_m > 0.0 ? c.baseRange_m : kAutoBaseRangeInNodeWidths * nominalNodeWidth(c.maxDepth, radius_m)) *
@@ -69,14 +74,21 @@ Result<LodRanges> LodRanges::create(const LodRangeConfig& c, double radius_m) {
   return r;
 }
 
-double LodRanges::estimatedError(int depth) const {
-  // The deepest observed payload depth k <= depth + 1, its error scaled by 1 / ratio per level.
+namespace {
+
+// The deepest observed payload depth k <= depth + 1, its value scaled by 1 / ratio per level; 0 when
+// nothing was observed.
+double extrapolated(const std::array<double, kMaxNodeLevel + 1>& perPayloadDepth, int depth, double ratio) {
   for (int k = std::min(depth + 1, kMaxNodeLevel); k >= 0; --k) {
-    const double e = maxError_[static_cast<size_t>(k)];
-    if (e >= 0.0) return e * std::pow(config_.rangeRatio, -(depth + 1 - k));
+    const double e = perPayloadDepth[static_cast<size_t>(k)];
+    if (e >= 0.0) return e * std::pow(ratio, -(depth + 1 - k));
   }
   return 0.0;
 }
+
+}  // namespace
+
+double LodRanges::estimatedError(int depth) const { return extrapolated(maxError_, depth, config_.rangeRatio); }
 
 bool LodRanges::observeError(int depth, double error_m) {
   if (!toleranceDriven() || !(error_m > maxError_[static_cast<size_t>(depth)])) return false;
@@ -92,10 +104,15 @@ bool LodRanges::setPixelsPerRadian(double lambda) {
 
 bool LodRanges::observeError(const NodeId& node, double error_m) {
   if (!toleranceDriven()) return false;
+  bool changed = observeError(node.level, error_m);
   const int depth = node.level - 1;  // a payload measures what drawing its parent's depth costs
-  if (depth < 0) return false;
-  if (!fieldDepth(depth)) return observeError(node.level, error_m);
-  return observeError(node.level, error_m / map_->maxOver(map_->relative(depth), node));
+  if (depth < 0 || !fieldDepth(depth)) return changed;
+  const double calibrated = error_m / map_->maxOver(map_->relative(depth), node);
+  if (calibrated > maxCalibrated_[node.level]) {
+    maxCalibrated_[node.level] = calibrated;
+    changed = recompute() || changed;
+  }
+  return changed;
 }
 
 void LodRanges::setRoughness(std::shared_ptr<const RoughnessMap> map) {
@@ -152,27 +169,35 @@ bool LodRanges::recomputeFields() {
   double finerSlope = 0.0;
   for (int d = config_.maxDepth - 1; d >= 0; --d) {
     const size_t i = static_cast<size_t>(d);
-    const double scale = pixelsPerRadian_ * estimatedError(d) / config_.tolerance_px;
+    const double perDepth = estimatedError(d);
+    const double scale = pixelsPerRadian_ / config_.tolerance_px;
     const bool grows = d + 1 <= config_.maxDepth - 1;
     const double diagonal = grows ? maxDiagonal_[i + 1] : 0.0;
     double largest = 0.0;
     if (fieldDepth(d)) {
       std::vector<double>& table = field_[i];
       table.resize(points, -1.0);
+      // The error the map predicts, K * w, never above the largest one observed at this depth.
+      const double k = extrapolated(maxCalibrated_, d, config_.rangeRatio);
+      const double calibration = k > 0.0 ? k : perDepth;
       const std::span<const float> w = map_->relative(d);
       const double pad = diagonal * (1.0 + finerSlope);
       for (size_t p = 0; p < points; ++p) {
-        double value = scale * w[p];
+        double value = scale * std::min(calibration * w[p], perDepth);
         if (grows) value = std::max(value, ((*finer)[p] + pad) * (1.0 + kRestrictionSlack) + kRestrictionPad_m);
         changed = changed || value != table[p];
         table[p] = value;
         largest = std::max(largest, value);
       }
-      fieldSlope_[i] = std::max(scale * map_->slope(d), finerSlope * (1.0 + kRestrictionSlack));
+      fieldSlope_[i] = map_->slopeBound(table);
+      if (fieldSlope_[i] > kMaxFieldSlope) {
+        std::fill(table.begin(), table.end(), largest);
+        fieldSlope_[i] = 0.0;
+      }
       finer = &table;
       finerSlope = fieldSlope_[i];
     } else {
-      largest = scale;
+      largest = scale * perDepth;
       if (grows) largest = std::max(largest, (finerMax + diagonal) * (1.0 + kRestrictionSlack) + kRestrictionPad_m);
       changed = changed || largest != range_[i];
       finer = nullptr;
@@ -229,6 +254,7 @@ void LodRanges::recomputeBands() {
 void LodRanges::resetObservedDiagonals() {
   maxDiagonal_.fill(0.0);
   maxError_.fill(-1.0);
+  maxCalibrated_.fill(-1.0);
   recompute();
 }
 

@@ -19,9 +19,10 @@
 //
 // Roughness (tolerance mode with a RoughnessMap, docs/lod.md "Roughness"): from depth
 // RoughnessMap::firstDepth() on, the range is a field over the sphere instead of one number,
-// R_d(x) = max(lambda * K(d) * w_d(x) / tolerance, growth), with w_d the map's relative roughness and
-// K(d) = max over observed payloads of E / max_node w_d (so the rough places seen set the scale and a
-// plain is refined as far as its own error needs). Stored at the map's grid points, bilinear between
+// R_d(x) = max(lambda * min(K(d) * w_d(x), E(d)) / tolerance, growth), with w_d the map's relative
+// roughness and K(d) = max over observed payloads of E / max_node w_d: the map's error scale, which
+// every payload seen stays below. So a plain is refined only as far as its own error needs, and no
+// place further than with one range per depth. Stored at the map's grid points, bilinear between
 // them; the growth rule holds point by point with the field's slope S:
 // R_d(g) >= (R_{d+1}(g) + D(d+1) * (1 + S_{d+1})) * (1 + 1e-9) + 1 mm, which keeps the quadtree
 // restricted; a node is refined when its bounds meet the ball of its largest R_d, and its morph band
@@ -141,7 +142,8 @@ class LodRanges {
   std::array<double, kMaxNodeLevel + 1> nominal_{};
   std::array<double, kMaxNodeLevel + 1> range_{};
   std::array<double, kMaxNodeLevel + 1> maxDiagonal_{};
-  std::array<double, kMaxNodeLevel + 1> maxError_{};  // per payload depth; < 0: none observed
+  std::array<double, kMaxNodeLevel + 1> maxError_{};       // per payload depth; < 0: none observed
+  std::array<double, kMaxNodeLevel + 1> maxCalibrated_{};  // K: max error / max_node w, likewise
   double pixelsPerRadian_ = 0.0;
   std::array<MorphRange, kMaxNodeLevel + 1> morph_{};  // per drawn depth, derived from range_
   // Roughness: the map, and per depth with a field the range at each grid point and its slope.

@@ -49,21 +49,21 @@ RoughnessMap RoughnessMap::build(int maxDepth, double minRadius_m, const Model& 
       }
     }
   }
-  const std::size_t depths = static_cast<std::size_t>(maxDepth) + 1;
-  std::vector<double> values(map.directions_.size() * depths);
-  for (std::size_t p = 0; p < map.directions_.size(); ++p) model(map.directions_[p], {&values[p * depths], depths});
-  std::vector<double> centre(depths);
   for (int f = 0; f < kFaceCount; ++f) {
     for (int cj = 0; cj < kCells; ++cj) {
       for (int ci = 0; ci < kCells; ++ci) {
-        model(mapping.unitPoint(f, (ci + 0.5) * kInverseCells, (cj + 0.5) * kInverseCells), centre);
-        for (const auto& [di, dj] : {std::pair{0, 0}, {1, 0}, {0, 1}, {1, 1}}) {
-          double* v = &values[map.point(f, ci + di, cj + dj) * depths];
-          for (std::size_t d = 0; d < depths; ++d) v[d] = std::max(v[d], centre[d]);
+        const std::array<std::uint32_t, 4> p{map.point(f, ci, cj), map.point(f, ci + 1, cj), map.point(f, ci, cj + 1),
+                                             map.point(f, ci + 1, cj + 1)};
+        for (const auto& [a, b] : {std::pair{0, 1}, {0, 2}, {1, 3}, {2, 3}, {0, 3}, {1, 2}}) {
+          const double gap = glm::length(map.directions_[p[a]] - map.directions_[p[b]]) * minRadius_m;
+          map.pairs_.push_back({p[a], p[b], static_cast<float>(1.0 / gap)});
         }
       }
     }
   }
+  const std::size_t depths = static_cast<std::size_t>(maxDepth) + 1;
+  std::vector<double> values(map.directions_.size() * depths);
+  for (std::size_t p = 0; p < map.directions_.size(); ++p) model(map.directions_[p], {&values[p * depths], depths});
   map.relative_.assign(depths, std::vector<float>(map.directions_.size()));
   map.slope_.assign(depths, 0.0);
   std::vector<double> w(map.directions_.size());
@@ -121,18 +121,7 @@ double RoughnessMap::maxOver(std::span<const T> table, const NodeId& node) const
 
 double RoughnessMap::slopeBound(std::span<const double> table) const {
   double worst = 0.0;
-  for (int f = 0; f < kFaceCount; ++f) {
-    for (int cj = 0; cj < kCells; ++cj) {
-      for (int ci = 0; ci < kCells; ++ci) {
-        const std::array<std::uint32_t, 4> p{point(f, ci, cj), point(f, ci + 1, cj), point(f, ci, cj + 1),
-                                             point(f, ci + 1, cj + 1)};
-        for (const auto& [a, b] : {std::pair{0, 1}, {0, 2}, {1, 3}, {2, 3}, {0, 3}, {1, 2}}) {
-          const double gap = glm::length(directions_[p[a]] - directions_[p[b]]) * minRadius_m_;
-          worst = std::max(worst, std::abs(table[p[a]] - table[p[b]]) / gap);
-        }
-      }
-    }
-  }
+  for (const PointPair& p : pairs_) worst = std::max(worst, std::abs(table[p.a] - table[p.b]) * p.inverseGap);
   return worst * kCellGradientFactor;
 }
 

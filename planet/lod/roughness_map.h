@@ -29,8 +29,8 @@ class RoughnessMap {
   // Unnormalised roughness (>= 0, finite) at a unit direction for every depth 0..maxDepth.
   using Model = std::function<void(const glm::dvec3& direction, std::span<double> perDepth)>;
 
-  // Evaluates `model` at every grid point and cell centre; a point keeps the largest value of its
-  // own and its cells' centres (so a bump between points is not lost), then each depth is divided by
+  // Evaluates `model` at every grid point (what it misses between points, LodRanges' calibration
+  // against the payloads' errors makes up for), then each depth is divided by
   // its largest value. minRadius_m: the lowest terrain radius (metres), for the slopes.
   static RoughnessMap build(int maxDepth, double minRadius_m, const Model& model,
                             const FaceMapping& mapping = RhombusFaceMapping::get());
@@ -62,6 +62,12 @@ class RoughnessMap {
   double slopeBound(std::span<const double> table) const;
 
  private:
+  // Every cell's edges and diagonals: the two points and 1 / their distance at minRadius_m.
+  struct PointPair {
+    std::uint32_t a, b;
+    float inverseGap;  // per metre
+  };
+  std::vector<PointPair> pairs_;
   int maxDepth_ = 0;
   double minRadius_m_ = 0.0;
   std::vector<std::uint32_t> index_;          // (face, j, i) -> point

@@ -162,25 +162,28 @@ TEST_P(SelectionLod, TilesTheSphereWithoutCulling) {
 }
 
 // The same restriction and tiling checks on ellipsoids (WGS84 and an extreme flattening of 0.1), with
-// distance ranges and a 2 px tolerance, cameras placed at ellipsoidal heights 1 mm .. 1e8 m.
+// distance ranges and a 2 px tolerance (also following a roughness map), cameras placed at ellipsoidal heights 1 mm ..
+// 1e8 m.
 struct EllipsoidCase {
   const char* name;
   double flattening;
   double tolerance_px;
+  bool roughness = false;
 };
 class EllipsoidSelectionLod : public ::testing::TestWithParam<EllipsoidCase> {};
 INSTANTIATE_TEST_SUITE_P(Shapes, EllipsoidSelectionLod,
                          ::testing::Values(EllipsoidCase{"WGS84", 1.0 / 298.257223563, 0.0},
                                            EllipsoidCase{"WGS84Tolerance2px", 1.0 / 298.257223563, 2.0},
                                            EllipsoidCase{"Flattening0p1", 0.1, 0.0},
-                                           EllipsoidCase{"Flattening0p1Tolerance2px", 0.1, 2.0}),
+                                           EllipsoidCase{"Flattening0p1Tolerance2px", 0.1, 2.0},
+                                           EllipsoidCase{"Flattening0p1Tolerance2pxRoughness", 0.1, 2.0, true}),
                          [](const ::testing::TestParamInfo<EllipsoidCase>& p) { return std::string(p.param.name); });
 
 TEST_P(EllipsoidSelectionLod, RestrictedAndTilingOverCameras) {
   const EllipsoidCase& param = GetParam();
   const Ellipsoid shape = Ellipsoid::create(6378137.0, param.flattening).value();
-  LodSelector culled = makeSelector(20, true, param.tolerance_px, param.flattening);
-  LodSelector unculled = makeSelector(20, false, param.tolerance_px, param.flattening);
+  LodSelector culled = makeSelector(20, true, param.tolerance_px, param.flattening, param.roughness);
+  LodSelector unculled = makeSelector(20, false, param.tolerance_px, param.flattening, param.roughness);
   SyntheticTerrain terrain;
   terrain.radius_m = 6378137.0;
   terrain.flattening = param.flattening;
