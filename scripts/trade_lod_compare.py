@@ -2,11 +2,11 @@
 # Distance vs tolerance LOD from a `globe trade --lod-sweep` trade.csv (docs/tradeoffs.md, "Tolerance vs
 # distance ranges"): per standard camera, the triangles the distance multipliers need for the p95 error
 # a tolerance row reaches (log-log interpolation along the distance rows), summed over the cameras.
-# Tolerance rows are `tolerance` (ranges following the relief's roughness) and `tolerance-depth` (one
-# range per depth). Usage: scripts/trade_lod_compare.py DIR/trade.csv [MORE.csv ...] (rows of all files)
+# Tolerance rows are `tolerance` (one range per depth) and `tolerance-roughness` (ranges following the
+# relief's roughness). Usage: scripts/trade_lod_compare.py DIR/trade.csv [MORE.csv ...] (rows of all files)
 import csv, math, sys
 rows=[r for f in sys.argv[1:] for r in csv.DictReader(open(f))]
-cams=['orbit','100km','10km','1km','2m']
+cams=[c for c in ['orbit','100km','10km','1km','2m','path@7s','path@12s'] if any(r['camera']==c for r in rows)]
 get=lambda cfg,c:[x for x in rows if x['config']==cfg and x['camera']==c][0]
 cfgs=list(dict.fromkeys(r['config'] for r in rows))
 dist=[c for c in cfgs if get(c,'2m')['lod']=='distance']

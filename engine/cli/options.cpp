@@ -121,7 +121,7 @@ void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid) {
           "PX"));
   cmd.add_option("--roughness", options.roughness,
                  "With tolerance-driven ranges: on (refine rough relief further than plains and sea) or off "
-                 "(one range per depth) (docs/lod.md, \"Roughness\"; default: on)")
+                 "(one range per depth) (docs/lod.md, \"Roughness\"; default: off)")
       ->check(CLI::IsMember({"on", "off"}));
   cmd.add_option("--normal-map-scale", options.normalMapScale,
                  "Normal map cells per grid cell: 1, 2 or 4; 0 = none, light per vertex (docs/rendering.md, "

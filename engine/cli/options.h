@@ -55,7 +55,7 @@ struct QualityOptions {
   std::string antialiasing;                         // --aa; empty: the preset's
   uint32_t normalMapScale = kPresetNormalMapScale;  // --normal-map-scale
   std::string atmosphere;                           // --atmosphere; empty: the preset's
-  std::string roughness;                            // --roughness on|off; empty: on
+  std::string roughness;                            // --roughness on|off; empty: off
 };
 // --quality, --tolerance, --roughness, --aa, --normal-map-scale, --atmosphere and, when withGrid, --grid, with the same
 // help and checks on every rendering command; read them back with terrainSettingsFromOptions.

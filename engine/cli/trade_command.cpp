@@ -55,7 +55,7 @@ struct TradeCamera {
 std::string knobName(const TerrainSettings& s) {
   char lod[32];  // tolerance ranges ignore the multiplier: name the tolerance instead
   if (s.ranges.tolerance_px > 0)
-    std::snprintf(lod, sizeof(lod), "t%gpx%s", s.ranges.tolerance_px, s.ranges.roughness ? "" : " per-depth");
+    std::snprintf(lod, sizeof(lod), "t%gpx%s", s.ranges.tolerance_px, s.ranges.roughness ? " roughness" : "");
   else
     std::snprintf(lod, sizeof(lod), "x%g", s.ranges.distanceMultiplier);
   char text[128];
@@ -100,10 +100,10 @@ std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::st
     s.ranges.tolerance_px = v;
     s.ranges.distanceMultiplier = 1;
   };
-  // The same with one range per depth (no roughness term): what the roughness buys.
-  auto perDepthTolerance = [&](TerrainSettings& s, double v) {
+  // The same following the relief's roughness (docs/lod.md, "Roughness"): what the roughness buys.
+  auto roughTolerance = [&](TerrainSettings& s, double v) {
     tolerance(s, v);
-    s.ranges.roughness = false;
+    s.ranges.roughness = true;
   };
   auto depth = [](TerrainSettings& s, double v) { s.ranges.maxDepth = int(v); };
   // Normal map cells per grid cell (docs/rendering.md, "Normal maps"): shading detail vs generation.
@@ -120,7 +120,7 @@ std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::st
   if (lodSweep) {  // distance ranges vs tolerance-driven ranges at the baseline's grid and depth
     vary(mult, {0.25, 0.5, 0.75, 1, 1.5, 2, 4});
     vary(tolerance, {0.5, 1, 2, 3, 4, 6, 8, 16});
-    vary(perDepthTolerance, {2, 3, 4, 6, 8, 16});
+    vary(roughTolerance, {2, 3, 4, 6, 8, 16});
     return list;
   }
   if (quick) {  // the cheap knobs only: a minute or two on lavapipe
@@ -283,8 +283,8 @@ TradeRow tradeRow(const TradeConfig& config, const TradeCamera& camera, const Te
   row.generation = settings.generation == GenerationPrecision::kFloat ? "float" : "double";
   row.positions = settings.vertexPositions == VertexPositions::kReprojected ? "reprojected" : "stored";
   row.lod = settings.ranges.tolerance_px <= 0 ? "distance"
-            : settings.ranges.roughness       ? "tolerance"
-                                              : "tolerance-depth";
+            : settings.ranges.roughness       ? "tolerance-roughness"
+                                              : "tolerance";
   row.tolerance_px = settings.ranges.tolerance_px;
   row.width = in.size.width;
   row.height = in.size.height;

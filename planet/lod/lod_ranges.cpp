@@ -160,8 +160,7 @@ void LodRanges::refresh() {
   recomputeFields();
 }
 
-bool LodRanges::recomputeFields() {
-  bool changed = false;
+void LodRanges::recomputeFields() {
   const std::size_t points = map_->pointCount();
   field_.resize(static_cast<size_t>(config_.maxDepth));
   const std::vector<double>* finer = nullptr;  // R_{d+1} per point, when d+1 has a field
@@ -175,31 +174,34 @@ bool LodRanges::recomputeFields() {
     const double diagonal = grows ? maxDiagonal_[i + 1] : 0.0;
     double largest = 0.0;
     if (fieldDepth(d)) {
-      std::vector<double>& table = field_[i];
-      table.resize(points, -1.0);
-      // The error the map predicts, K * w, never above the largest one observed at this depth.
+      // The error the map predicts, K * w, never above the largest one observed at this depth; its
+      // largest value is at w = 1, and min(K w, E) changes no faster than K w.
       const double k = extrapolated(maxCalibrated_, d, config_.rangeRatio);
       const double calibration = k > 0.0 ? k : perDepth;
-      const std::span<const float> w = map_->relative(d);
       const double pad = diagonal * (1.0 + finerSlope);
-      for (size_t p = 0; p < points; ++p) {
-        double value = scale * std::min(calibration * w[p], perDepth);
-        if (grows) value = std::max(value, ((*finer)[p] + pad) * (1.0 + kRestrictionSlack) + kRestrictionPad_m);
-        changed = changed || value != table[p];
-        table[p] = value;
-        largest = std::max(largest, value);
-      }
-      fieldSlope_[i] = map_->slopeBound(table);
+      const double growth = 1.0 + kRestrictionSlack;
+      largest = scale * std::min(calibration, perDepth);
+      if (grows) largest = std::max(largest, (finerMax + pad) * growth + kRestrictionPad_m);
+      fieldSlope_[i] = std::max(scale * calibration * map_->slope(d), finerSlope * growth);
+      std::vector<double>& table = field_[i];
+      table.resize(points);
       if (fieldSlope_[i] > kMaxFieldSlope) {
         std::fill(table.begin(), table.end(), largest);
         fieldSlope_[i] = 0.0;
+      } else {
+        const std::span<const float> w = map_->relative(d);
+        const double cap = scale * perDepth, k2 = scale * calibration;
+        for (size_t p = 0; p < points; ++p) table[p] = std::min(k2 * w[p], cap);
+        if (grows) {
+          const std::vector<double>& f = *finer;
+          for (size_t p = 0; p < points; ++p) table[p] = std::max(table[p], (f[p] + pad) * growth + kRestrictionPad_m);
+        }
       }
       finer = &table;
       finerSlope = fieldSlope_[i];
     } else {
       largest = scale * perDepth;
       if (grows) largest = std::max(largest, (finerMax + diagonal) * (1.0 + kRestrictionSlack) + kRestrictionPad_m);
-      changed = changed || largest != range_[i];
       finer = nullptr;
       finerSlope = 0.0;
     }
@@ -207,7 +209,6 @@ bool LodRanges::recomputeFields() {
     finerMax = largest;
   }
   recomputeBands();
-  return changed;
 }
 
 bool LodRanges::recompute() {

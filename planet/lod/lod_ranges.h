@@ -51,8 +51,9 @@ struct LodRangeConfig {
   // (distanceMultiplier and baseRange_m are then unused); 0: distance ranges.
   double tolerance_px = 0.0;
   // Tolerance mode: ranges also follow where the relief is rough (a RoughnessMap the terrain builds
-  // from its planet, LodRanges::setRoughness); false: one range per depth.
-  bool roughness = true;
+  // from its planet, LodRanges::setRoughness); false: one range per depth. Off by default: on
+  // earthlike it buys no triangles at equal screen error (docs/tradeoffs.md).
+  bool roughness = false;
 };
 
 // Pixels per radian of a view `height_px` tall with vertical field of view `verticalFov_rad`:
@@ -150,7 +151,7 @@ class LodRanges {
   bool fieldDepth(int depth) const {
     return map_ && toleranceDriven() && depth >= RoughnessMap::firstDepth() && depth < config_.maxDepth;
   }
-  bool recomputeFields();
+  void recomputeFields();
   std::shared_ptr<const RoughnessMap> map_;
   std::vector<std::vector<double>> field_;              // [depth][point], metres
   std::array<double, kMaxNodeLevel + 1> fieldSlope_{};  // per metre

@@ -21,6 +21,13 @@ constexpr double kInverseCells = 1.0 / RoughnessMap::kCells;
 constexpr double kCellGradientFactor = 2.5;
 constexpr float kSmallestRelative = 1.0e-4F;  // keeps w > 0 (LodRanges divides by it)
 
+double slopeBound(const std::vector<RoughnessMap::PointPair>& pairs, std::span<const float> table) {
+  double worst = 0.0;
+  for (const RoughnessMap::PointPair& p : pairs)
+    worst = std::max(worst, std::abs(double(table[p.a]) - double(table[p.b])) * p.inverseGap);
+  return worst * kCellGradientFactor;
+}
+
 struct DirectionKey {
   std::size_t operator()(const glm::dvec3& d) const {
     const auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
@@ -49,35 +56,39 @@ RoughnessMap RoughnessMap::build(int maxDepth, double minRadius_m, const Model& 
       }
     }
   }
-  for (int f = 0; f < kFaceCount; ++f) {
-    for (int cj = 0; cj < kCells; ++cj) {
-      for (int ci = 0; ci < kCells; ++ci) {
-        const std::array<std::uint32_t, 4> p{map.point(f, ci, cj), map.point(f, ci + 1, cj), map.point(f, ci, cj + 1),
-                                             map.point(f, ci + 1, cj + 1)};
-        for (const auto& [a, b] : {std::pair{0, 1}, {0, 2}, {1, 3}, {2, 3}, {0, 3}, {1, 2}}) {
-          const double gap = glm::length(map.directions_[p[a]] - map.directions_[p[b]]) * minRadius_m;
-          map.pairs_.push_back({p[a], p[b], static_cast<float>(1.0 / gap)});
-        }
-      }
-    }
-  }
+  const std::vector<PointPair> pairs = map.cellPairs();
   const std::size_t depths = static_cast<std::size_t>(maxDepth) + 1;
   std::vector<double> values(map.directions_.size() * depths);
   for (std::size_t p = 0; p < map.directions_.size(); ++p) model(map.directions_[p], {&values[p * depths], depths});
   map.relative_.assign(depths, std::vector<float>(map.directions_.size()));
   map.slope_.assign(depths, 0.0);
-  std::vector<double> w(map.directions_.size());
   for (std::size_t d = 0; d < depths; ++d) {
     double largest = 0.0;
-    for (std::size_t p = 0; p < w.size(); ++p) largest = std::max(largest, values[p * depths + d]);
-    for (std::size_t p = 0; p < w.size(); ++p) {
+    for (std::size_t p = 0; p < map.directions_.size(); ++p) largest = std::max(largest, values[p * depths + d]);
+    for (std::size_t p = 0; p < map.directions_.size(); ++p) {
       const float r = largest > 0.0 ? static_cast<float>(values[p * depths + d] / largest) : 1.0F;
       map.relative_[d][p] = std::clamp(r, kSmallestRelative, 1.0F);
-      w[p] = map.relative_[d][p];
     }
-    map.slope_[d] = map.slopeBound(w);
+    map.slope_[d] = slopeBound(pairs, map.relative_[d]);
   }
   return map;
+}
+
+std::vector<RoughnessMap::PointPair> RoughnessMap::cellPairs() const {
+  std::vector<PointPair> pairs;
+  for (int f = 0; f < kFaceCount; ++f) {
+    for (int cj = 0; cj < kCells; ++cj) {
+      for (int ci = 0; ci < kCells; ++ci) {
+        const std::array<std::uint32_t, 4> p{point(f, ci, cj), point(f, ci + 1, cj), point(f, ci, cj + 1),
+                                             point(f, ci + 1, cj + 1)};
+        for (const auto& [a, b] : {std::pair{0, 1}, {0, 2}, {1, 3}, {2, 3}, {0, 3}, {1, 2}}) {
+          const double gap = glm::length(directions_[p[a]] - directions_[p[b]]) * minRadius_m_;
+          pairs.push_back({p[a], p[b], 1.0 / gap});
+        }
+      }
+    }
+  }
+  return pairs;
 }
 
 template <class T>
@@ -117,12 +128,6 @@ double RoughnessMap::maxOver(std::span<const T> table, const NodeId& node) const
     for (int i = i0; i <= i0 + step; ++i) best = std::max(best, static_cast<double>(table[point(node.face, i, j)]));
   }
   return best;
-}
-
-double RoughnessMap::slopeBound(std::span<const double> table) const {
-  double worst = 0.0;
-  for (const PointPair& p : pairs_) worst = std::max(worst, std::abs(table[p.a] - table[p.b]) * p.inverseGap);
-  return worst * kCellGradientFactor;
 }
 
 template double RoughnessMap::interpolate(std::span<const float>, int, double, double) const;

@@ -8,7 +8,9 @@
 //     at its corners and the vertex shader interpolates it exactly from the four corner values;
 //   - a node at depth kGridLevel - 1 covers 2 x 2 cells: its maximum is at its 9 grid points;
 //   - |w(x) - w(y)| <= slope * |x - y| (metres, at any radius >= minRadius_m): how fast a range
-//     may change between neighbouring nodes (the restriction argument).
+//     may change between neighbouring nodes (the restriction argument). The slope is the largest
+//     difference between grid neighbours (edges and diagonals of every cell) per metre at
+//     minRadius_m, times the factor that bounds a bilinear cell's gradient by its edge slopes.
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -57,17 +59,14 @@ class RoughnessMap {
   double maxOver(std::span<const T> table, const NodeId& node) const;
   template <class T>
   std::array<double, 4> corners(std::span<const T> table, const NodeId& node) const;
-  // The largest difference between grid neighbours (edges and diagonals of every cell) per metre
-  // at minRadius_m, times the factor that bounds a bilinear cell's gradient by its edge slopes.
-  double slopeBound(std::span<const double> table) const;
-
- private:
   // Every cell's edges and diagonals: the two points and 1 / their distance at minRadius_m.
   struct PointPair {
     std::uint32_t a, b;
-    float inverseGap;  // per metre
+    double inverseGap;  // per metre
   };
-  std::vector<PointPair> pairs_;
+
+ private:
+  std::vector<PointPair> cellPairs() const;
   int maxDepth_ = 0;
   double minRadius_m_ = 0.0;
   std::vector<std::uint32_t> index_;          // (face, j, i) -> point

@@ -29,10 +29,12 @@ TEST_P(NoPopsTest, OneMillimetreStepChangesDepthSmoothly) {
   } cases[] = {{"2 m", {22.1, -98.3, 2.0, 60, -10, 0}},
                {"1 km", {22.05, -98.4, 1000.0, 60, -10, 0}},
                {"100 km", {22.0, -99.0, 1.0e5, 60, -30, 0}}};
-  // Distance ranges, then tolerance-driven ranges from the generated payloads' errors (docs/lod.md).
-  for (const double tolerance : {0.0, 2.0})
+  // Distance ranges, then tolerance-driven ranges from the generated payloads' errors, per depth and
+  // following the relief's roughness (docs/lod.md).
+  for (const auto& [tolerance, roughness] : {std::pair{0.0, false}, {2.0, false}, {2.0, true}})
     for (const Case& c : cases) {
       settings.ranges.tolerance_px = tolerance;
+      settings.ranges.roughness = roughness;
       settings.viewHeight_px = h;
       auto terrain = Terrain::create(device(), model, settings);
       ASSERT_TRUE(terrain.ok()) << terrain.error().format();
@@ -62,18 +64,19 @@ TEST_P(NoPopsTest, OneMillimetreStepChangesDepthSmoothly) {
         // More than 1 cm + 0.1 % of the distance: an occlusion edge moved under this pixel, or a pop.
         if (d > 0.01 + 1e-3 * double(ia.z[i])) ++jumps;
       }
-      ASSERT_GT(hits, int(w * h / 4)) << c.name << " tolerance " << tolerance;
+      ASSERT_GT(hits, int(w * h / 4)) << c.name << " tolerance " << tolerance << " roughness " << roughness;
       std::sort(diffs.begin(), diffs.end());
       double p99 = diffs[diffs.size() * 99 / 100];
       std::printf(
-          "[ info ] %s %s, tolerance %.0f px: depth change for a 1 mm step: p50 %.3g m, p99 %.3g m; %d edge "
+          "[ info ] %s %s, tolerance %.0f px%s: depth change for a 1 mm step: p50 %.3g m, p99 %.3g m; %d edge "
           "pixels of %d, %d changed colour by > 12 steps\n",
-          GetParam().name, c.name, tolerance, diffs[diffs.size() / 2], p99, jumps, hits, colourJumps);
-      EXPECT_LT(p99, 0.01 + 1e-4 * double(ia.z[ia.z.size() / 2])) << c.name << " tolerance " << tolerance;
-      EXPECT_LT(jumps, int(w * h / 100)) << c.name << " tolerance " << tolerance
-                                         << ": more than 1 % of the pixels jumped";
-      EXPECT_LT(colourJumps, int(w * h / 100))
-          << c.name << " tolerance " << tolerance << ": more than 1 % of the pixels changed colour";
+          GetParam().name, c.name, tolerance, roughness ? " with roughness" : "", diffs[diffs.size() / 2], p99, jumps,
+          hits, colourJumps);
+      const std::string label =
+          std::string(c.name) + " tolerance " + std::to_string(tolerance) + (roughness ? " with roughness" : "");
+      EXPECT_LT(p99, 0.01 + 1e-4 * double(ia.z[ia.z.size() / 2])) << label;
+      EXPECT_LT(jumps, int(w * h / 100)) << label << ": more than 1 % of the pixels jumped";
+      EXPECT_LT(colourJumps, int(w * h / 100)) << label << ": more than 1 % of the pixels changed colour";
     }
 }
 
