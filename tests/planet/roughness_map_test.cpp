@@ -29,18 +29,10 @@ const ElevationModel& earthlike() {
   return model;
 }
 
-// (u, v) of the point at parameter t along face edge e (corner e -> corner e + 1).
+// (u, v) of parameter t along face edge e (testing::onEdge) as a vector.
 glm::dvec2 onEdge(int e, double t) {
-  switch (e) {
-    case 0:
-      return {t, 0.0};
-    case 1:
-      return {1.0, t};
-    case 2:
-      return {1.0 - t, 1.0};
-    default:
-      return {0.0, 1.0 - t};
-  }
+  const auto [u, v] = testing::onEdge(e, t);
+  return {u, v};
 }
 
 TEST(RoughnessMap, SeamPointsAreStoredOnce) {
