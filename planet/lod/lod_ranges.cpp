@@ -11,6 +11,11 @@ namespace {
 
 constexpr double kRestrictionSlack = 1e-9;  // relative, covers rounding in the distance tests
 constexpr double kRestrictionPad_m = 1e-3;  // absolute, likewise
+
+// The growth rule's step: base plus a gap, with the slack above (so rounding only widens ranges).
+inline double grown(double base_m, double gap_m) {
+  return (base_m + gap_m) * (1.0 + kRestrictionSlack) + kRestrictionPad_m;
+}
 // A range field steeper than this (metres of range per metre of ground) is flattened to its largest
 // value: the growth rule pads by the finer field's slope times a diagonal, which for ranges as wide
 // as the map's cells (coarse depths) would cost more than the field saves.
@@ -149,7 +154,7 @@ NodeMorph LodRanges::morphFor(const NodeId& node, bool partial) const {
   const double diagonal = maxDiagonal_[static_cast<size_t>(depth)];
   const double slope = fieldDepth(depth) ? fieldSlope_[static_cast<size_t>(depth)] : 0.0;
   if (diagonal > 0.0) {
-    m.startFloor_m = (m.ownRange_m + diagonal * (1.0 + slope)) * (1.0 + kRestrictionSlack) + kRestrictionPad_m;
+    m.startFloor_m = grown(m.ownRange_m, diagonal * (1.0 + slope));
   }
   return m;
 }
@@ -179,10 +184,9 @@ void LodRanges::recomputeFields() {
       const double k = extrapolated(maxCalibrated_, d, config_.rangeRatio);
       const double calibration = k > 0.0 ? k : perDepth;
       const double pad = diagonal * (1.0 + finerSlope);
-      const double growth = 1.0 + kRestrictionSlack;
       largest = scale * std::min(calibration, perDepth);
-      if (grows) largest = std::max(largest, (finerMax + pad) * growth + kRestrictionPad_m);
-      fieldSlope_[i] = std::max(scale * calibration * map_->slope(d), finerSlope * growth);
+      if (grows) largest = std::max(largest, grown(finerMax, pad));
+      fieldSlope_[i] = std::max(scale * calibration * map_->slope(d), finerSlope * (1.0 + kRestrictionSlack));
       std::vector<double>& table = field_[i];
       table.resize(points);
       if (fieldSlope_[i] > kMaxFieldSlope) {
@@ -194,14 +198,14 @@ void LodRanges::recomputeFields() {
         for (size_t p = 0; p < points; ++p) table[p] = std::min(k2 * w[p], cap);
         if (grows) {
           const std::vector<double>& f = *finer;
-          for (size_t p = 0; p < points; ++p) table[p] = std::max(table[p], (f[p] + pad) * growth + kRestrictionPad_m);
+          for (size_t p = 0; p < points; ++p) table[p] = std::max(table[p], grown(f[p], pad));
         }
       }
       finer = &table;
       finerSlope = fieldSlope_[i];
     } else {
       largest = scale * perDepth;
-      if (grows) largest = std::max(largest, (finerMax + diagonal) * (1.0 + kRestrictionSlack) + kRestrictionPad_m);
+      if (grows) largest = std::max(largest, grown(finerMax, diagonal));
       finer = nullptr;
       finerSlope = 0.0;
     }
@@ -222,7 +226,7 @@ bool LodRanges::recompute() {
     const size_t i = static_cast<size_t>(d);
     double value = toleranceDriven() ? pixelsPerRadian_ * estimatedError(d) / config_.tolerance_px : nominal_[i];
     if (d + 1 <= config_.maxDepth - 1) {
-      value = std::max(value, (finer + maxDiagonal_[i + 1]) * (1.0 + kRestrictionSlack) + kRestrictionPad_m);
+      value = std::max(value, grown(finer, maxDiagonal_[i + 1]));
     }
     changed = changed || value != range_[i];
     range_[i] = value;
@@ -245,7 +249,7 @@ void LodRanges::recomputeBands() {
     // edge would leave the finer node's unmorphed vertices. The band may narrow, never invert.
     const double diagonal = d < config_.maxDepth ? maxDiagonal_[static_cast<size_t>(d)] : 0.0;
     if (diagonal > 0.0) {
-      const double unmorphedUntil = (start + diagonal) * (1.0 + kRestrictionSlack) + kRestrictionPad_m;
+      const double unmorphedUntil = grown(start, diagonal);
       band.start_m = std::min(band.end_m, std::max(band.start_m, unmorphedUntil));
     }
     morph_[static_cast<size_t>(d)] = band;
