@@ -19,18 +19,20 @@
 namespace globe {
 namespace {
 
-// The elevation kernel's constants, then the water-surface switch (GLOBE_PAYLOAD_SPEC_WATER_SURFACE)
-// and the normal map's scale (GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE).
-std::array<uint32_t, GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE + 1> payloadSpecialization(const ElevationModel& model,
-                                                                                    bool waterSurface,
-                                                                                    uint32_t normalMapScale) {
+// The elevation kernel's constants, then the water-surface switch (GLOBE_PAYLOAD_SPEC_WATER_SURFACE),
+// the normal map's scale (GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE) and the land cover switch.
+std::array<uint32_t, GLOBE_PAYLOAD_SPEC_LAND_COVER + 1> payloadSpecialization(const ElevationModel& model,
+                                                                              bool waterSurface,
+                                                                              uint32_t normalMapScale) {
   static_assert(GLOBE_PAYLOAD_SPEC_WATER_SURFACE == GLOBE_ELEVATION_SPEC_COUNT);
   static_assert(GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE == GLOBE_PAYLOAD_SPEC_WATER_SURFACE + 1);
-  std::array<uint32_t, GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE + 1> values{};
+  static_assert(GLOBE_PAYLOAD_SPEC_LAND_COVER == GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE + 1);
+  std::array<uint32_t, GLOBE_PAYLOAD_SPEC_LAND_COVER + 1> values{};
   const ElevationSpecialization elevation = elevationSpecialization(model.params());
   std::copy(elevation.begin(), elevation.end(), values.begin());
   values[GLOBE_PAYLOAD_SPEC_WATER_SURFACE] = waterSurface && model.drawsWater() ? 1u : 0u;
   values[GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE] = normalMapScale;
+  values[GLOBE_PAYLOAD_SPEC_LAND_COVER] = model.landCover().class_count > 0 ? 1u : 0u;
   return values;
 }
 
@@ -45,13 +47,15 @@ GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationMode
       normalMapScale_(normalMapScale),
       maxJobs_(std::min<uint32_t>(maxJobsPerSubmit, GLOBE_PAYLOAD_MAX_BATCH)),
       pipeline_(device,
-                precision == GenerationPrecision::kFloat ? "payload_generate_float.comp" : "payload_generate.comp", 8,
-                2 * sizeof(uint32_t), /*uniformMask=*/(1u << 0) | (1u << 7),
+                precision == GenerationPrecision::kFloat ? "payload_generate_float.comp" : "payload_generate.comp", 9,
+                2 * sizeof(uint32_t), /*uniformMask=*/(1u << 0) | (1u << 7) | (1u << 8),
                 payloadSpecialization(model, waterSurface, normalMapScale)),
       elevation_(device, sizeof(gpu::ElevationParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::HostVisible,
                  "elevation params"),
       colourRamp_(device, sizeof(gpu::ColourRampParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::HostVisible,
                   "colour ramp"),
+      landCover_(device, sizeof(gpu::LandCoverParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::HostVisible,
+                 "land cover"),
       faces_(device, 30 * sizeof(FaceCornersGpu), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::HostVisible,
              "face corners") {
   if (cells < 16 || cells > 256 || (cells & (cells - 1)) != 0)
@@ -60,6 +64,7 @@ GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationMode
     throw std::runtime_error("normal map scale must be 0, 1, 2 or 4, got " + std::to_string(normalMapScale));
   std::memcpy(elevation_.mapped(), &model.params(), sizeof(gpu::ElevationParams));
   std::memcpy(colourRamp_.mapped(), &model.colourRamp(), sizeof(gpu::ColourRampParams));
+  std::memcpy(landCover_.mapped(), &model.landCover(), sizeof(gpu::LandCoverParams));
   waterSurface_ = waterSurface && model.drawsWater();
   auto* faces = static_cast<FaceCornersGpu*>(faces_.mapped());
   for (int f = 0; f < 30; ++f) faces[f] = RhombusFaceMapping::get().gpuCorners(f);
@@ -213,7 +218,7 @@ void GpuPayloadGenerator::record(Batch& batch, std::span<PreparedRequest> reques
     pipeline_.bind(batch.cmd,
                    {elevation_.descriptor(), faces_.descriptor(), batch.jobs.descriptor(), pages_.window(page),
                     batch.scratch.descriptor(), batch.results.descriptor(), batch.sourceTerms.descriptor(),
-                    colourRamp_.descriptor()},
+                    colourRamp_.descriptor(), landCover_.descriptor()},
                    push, sizeof(push));
     vkCmdDispatchBase(batch.cmd, uint32_t(run), 0, 0, uint32_t(end - run), 1, 1);
     run = end;

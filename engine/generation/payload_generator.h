@@ -51,7 +51,7 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   void collect(std::vector<GenerationResult>& finished) override;
   size_t slotBytes() const override { return slotBytesFor(cells_, normalMapScale_); }
   std::string lastFailure() const override { return lastFailure_; }
-  // Bytes of one slot: the mesh (payload_layout.h), then the normal map if normalMapScale > 0.
+  // Bytes of one slot: the mesh (payload_layout.h), the normal map if normalMapScale > 0, the land cover masks.
   static size_t slotBytesFor(uint32_t cells, uint32_t normalMapScale = 0) {
     return size_t(GLOBE_PAYLOAD_SLOT_VEC4(cells, normalMapScale)) * 16u;
   }
@@ -116,6 +116,7 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   vk::ComputePipeline pipeline_;
   vk::Buffer elevation_;
   vk::Buffer colourRamp_;
+  vk::Buffer landCover_;  // the planet's land cover (gpu::LandCoverParams), binding 8
   vk::Buffer faces_;
   vk::Buffer payloads_;
   PayloadPages pages_;

@@ -144,6 +144,9 @@ Real evaluateElevation(const gpu::ElevationParams& p, Real dx, Real dy, Real dz)
 ElevationModel::ElevationModel(const PlanetDescription& planet)
     : params_(packElevationParams(planet)),
       colourRamp_(packColourRamp(planet.colour_ramp)),
+      landCover_(packLandCover(planet.land_cover, planet.radius_m, planet.seed, planet.sea_level_m)),
+      landCoverDescription_(planet.land_cover),
+      seed_(planet.seed),
       water_(planet.water),
       bounds_(elevationBounds(planet)),
       shape_(planetShape(planet)),
@@ -209,6 +212,12 @@ LayerModulation ElevationModel::layerModulation(const glm::dvec3& d) const {
     out.value[l] = values[l];
   }
   return out;
+}
+
+double ElevationModel::firstLayer_m(const glm::dvec3& d) const {
+  const gpu::ElevationLayerParams& layer = params_.layers[0];
+  const double radius = params_.radius_m;
+  return octaveSum(layer, layer.octaves, d.x * radius, d.y * radius, d.z * radius) + layer.offset_m;
 }
 
 float ElevationModel::elevationFloat_m(const glm::vec3& unit_direction) const {

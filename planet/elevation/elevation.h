@@ -76,6 +76,9 @@ class ElevationModel {
   // The procedural layers' modulation at a direction; evaluates only the modulating layers' octaves
   // (where the terrain is rough: planet/elevation/relief_roughness.h).
   LayerModulation layerModulation(const glm::dvec3& unit_direction) const;
+  // The value of the planet's first (continental) layer at a direction, metres: what the land
+  // cover's climate reads as the distance inland (planet/surface/land_cover.h).
+  double firstLayer_m(const glm::dvec3& unit_direction) const;
   // The same evaluation carried out entirely in float (radius, point, frequencies, noise): only to
   // measure what double buys (docs/elevation.md); never use it for geometry.
   float elevationFloat_m(const glm::vec3& unit_direction) const;
@@ -97,12 +100,20 @@ class ElevationModel {
   // The surface colour by elevation and slope (the planet's colour ramp), as the payload kernel
   // reads it: each payload sample carries its albedo (shaders/include/payload_layout.h).
   const gpu::ColourRampParams& colourRamp() const { return colourRamp_; }
+  // The land cover as the payload kernel reads it (class_count 0: none, the colour ramp colours).
+  const gpu::LandCoverParams& landCover() const { return landCover_; }
+  // The planet file's land cover (for its detail textures) and seed.
+  const LandCover& landCoverDescription() const { return landCoverDescription_; }
+  std::uint64_t seed() const { return seed_; }
   // Conservative range of elevation_m (see elevationBounds).
   ElevationRange bounds() const { return bounds_; }
 
  private:
   gpu::ElevationParams params_{};
   gpu::ColourRampParams colourRamp_{};
+  gpu::LandCoverParams landCover_{};
+  LandCover landCoverDescription_;
+  std::uint64_t seed_ = 0;
   Water water_;
   ElevationRange bounds_{};
   Ellipsoid shape_;

@@ -176,6 +176,7 @@ std::vector<Error> validatePlanetAll(const PlanetDescription& planet) {
   }
   appendColourRampErrors(planet.colour_ramp, errors);
   appendWaterErrors(planet.water, errors);
+  appendLandCoverErrors(planet.land_cover, errors);
   if (planet.atmosphere) {
     std::vector<Error> atmosphere = validateAtmosphere(*planet.atmosphere, radius_ok ? planet.radius_m : 1e6);
     errors.insert(errors.end(), std::make_move_iterator(atmosphere.begin()), std::make_move_iterator(atmosphere.end()));

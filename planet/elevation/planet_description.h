@@ -18,6 +18,7 @@
 #include "planet/elevation/colour_ramp.h"
 #include "planet/geometry/ellipsoid.h"
 #include "planet/sources/source_description.h"
+#include "planet/surface/land_cover.h"
 
 namespace globe {
 
@@ -84,6 +85,8 @@ struct PlanetDescription {
   QualityPreset default_quality = QualityPreset::kBalanced;
   ColourRamp colour_ramp;  // surface colour by elevation and slope
   Water water;             // the sea drawn at sea_level_m ([water]); disabled = a dry planet
+  // [climate] and [[land_cover]]: classes that colour the ground instead of the ramp (planet/surface/).
+  LandCover land_cover;
   // Real elevation rasters mosaicked over the layers ([[sources]], planet/sources/); empty = procedural only.
   std::vector<ElevationSource> sources;
   // [atmosphere]: precomputed scattering (docs/rendering.md, "Atmosphere"); none = black sky.

@@ -16,12 +16,15 @@ std::vector<NormalMapTexel> normalMapReference(const ElevationModel& model, cons
   const int m = int(cells * scale), w = m + 5;
   // Positions and drawn elevations of the map grid and its two-texel ring, as the kernel's scratch.
   std::vector<glm::dvec4> grid(size_t(w) * size_t(w));
+  std::vector<double> firstLayers(size_t(w) * size_t(w));
+  const bool cover = model.landCover().class_count > 0;
   for (int b = -2; b <= m + 2; ++b) {
     for (int a = -2; a <= m + 2; ++a) {
       const glm::dvec3 dir = payloadSampleDirection(job, uint32_t(m), a, b);
       const double h = model.proceduralElevation_m(dir);
       const double drawn = sea ? std::max(h, model.seaLevel_m()) : h;
       grid[size_t(b + 2) * size_t(w) + size_t(a + 2)] = glm::dvec4(model.shape().position(dir, drawn), drawn);
+      firstLayers[size_t(b + 2) * size_t(w) + size_t(a + 2)] = cover ? model.firstLayer_m(dir) : 0.0;
     }
   }
   const gpu::ElevationParams& e = model.params();
@@ -43,7 +46,9 @@ std::vector<NormalMapTexel> normalMapReference(const ElevationModel& model, cons
               : glm::normalize(glm::dvec3(p.x / (e.radius_m * e.radius_m), p.y / (e.radius_m * e.radius_m),
                                           p.z / (e.polar_radius_m * e.polar_radius_m)));
       const double cosSlope = std::clamp(glm::dot(normal, up), 0.0, 1.0);
-      texels.push_back({normal, rampColour(model.colourRamp(), float(grid[at].w), float(cosSlope))});
+      LandCoverMasks masks;
+      const glm::dvec3 dir = payloadSampleDirection(job, uint32_t(m), t % side * step, t / side * step);
+      texels.push_back({normal, payloadSampleAlbedo(model, dir, grid[at].w, firstLayers[at], cosSlope, masks)});
     }
   }
   return texels;

@@ -173,6 +173,13 @@ PayloadSurface unpackPayloadSurface(float word) {
 
 namespace {
 
+// Sample `index`'s masks as the kernel's two RGBA8 words, in the cover region from vec4 `offset`.
+void writeCoverMasks(std::span<glm::vec4> slot, uint32_t offset, size_t index, const LandCoverMasks& masks) {
+  uint32_t words[2] = {};
+  for (int k = 0; k < kMaxLandCoverClasses; ++k) words[k / 4] |= uint32_t(masks[size_t(k)]) << (8 * (k % 4));
+  std::memcpy(reinterpret_cast<unsigned char*>(slot.data() + offset) + index * sizeof(words), words, sizeof(words));
+}
+
 // The shader's globeEllipsoidGradient: the unit vector (x / a^2, y / a^2, z / b^2) at p.
 glm::dvec3 ellipsoidGradientOf(const gpu::ElevationParams& e, const glm::dvec3& p) {
   const double a2 = e.radius_m * e.radius_m, b2 = e.polar_radius_m * e.polar_radius_m;
@@ -181,12 +188,23 @@ glm::dvec3 ellipsoidGradientOf(const gpu::ElevationParams& e, const glm::dvec3& 
 
 }  // namespace
 
+glm::vec3 payloadSampleAlbedo(const ElevationModel& model, const glm::dvec3& dir, double drawn_m, double firstLayer_m,
+                              double cosSlope, LandCoverMasks& masks) {
+  masks = {};
+  if (model.landCover().class_count == 0) return rampColour(model.colourRamp(), float(drawn_m), float(cosSlope));
+  // The kernel hands the climate floats: the same roundings here.
+  const LandCoverSite site{dir, double(float(drawn_m)), double(float(firstLayer_m)), double(float(cosSlope))};
+  masks = landCoverMasks(model.landCover(), site);
+  return landCoverAlbedo(model.landCover(), masks);
+}
+
 RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
                                  std::span<glm::vec4> slot, bool waterSurface, uint32_t normalMapScale) {
   const bool sea = waterSurface && model.drawsWater();
   const int n = int(cells);
   const int s = n + 3;
-  assert(slot.size() >= size_t(GLOBE_PAYLOAD_SLOT_VEC4(cells, normalMapScale)));
+  // Slots for meshes only (collision, tests) may end before the land cover masks, which are then not written.
+  assert(slot.size() >= size_t(GLOBE_PAYLOAD_COVER_OFFSET(cells, normalMapScale)));
   if (normalMapScale > 0) {
     const std::vector<NormalMapTexel> texels = normalMapReference(model, job, cells, normalMapScale, waterSurface);
     std::vector<glm::uvec2> packed(texels.size());
@@ -199,6 +217,9 @@ RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::Payload
   std::vector<glm::dvec3> positions(size_t(s) * size_t(s));
   std::vector<double> holes(size_t(s) * size_t(s));
   std::vector<double> elevations(size_t(s) * size_t(s));
+  std::vector<double> firstLayers(size_t(s) * size_t(s));
+  const bool cover = model.landCover().class_count > 0;
+  const bool writeCover = cover && slot.size() >= size_t(GLOBE_PAYLOAD_SLOT_VEC4(cells, normalMapScale));
   RadiusRange range{std::numeric_limits<double>::infinity(), 0.0};
   const double spacing_m = payloadSampleSpacing_m(job, cells, model.radius_m());
   for (int j = -1; j <= n + 1; ++j) {
@@ -214,6 +235,7 @@ RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::Payload
       positions[index] = p;
       holes[index] = term.hole;
       elevations[index] = drawn;
+      firstLayers[index] = cover ? model.firstLayer_m(dir) : 0.0;
       glm::dvec3 rel = p - centre;
       glm::dvec3 quantised{std::floor(rel.x / q + 0.5) * q, std::floor(rel.y / q + 0.5) * q,
                            std::floor(rel.z / q + 0.5) * q};
@@ -240,8 +262,11 @@ RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::Payload
       const glm::dvec3 up = model.shape().isSphere() ? normalised(positions[vertex])
                                                      : ellipsoidGradientOf(model.params(), positions[vertex]);
       const double cosSlope = std::clamp(glm::dot(nrm, up), 0.0, 1.0);
-      const glm::vec3 albedo = rampColour(model.colourRamp(), float(elevations[vertex]), float(cosSlope));
+      LandCoverMasks masks;
+      const glm::vec3 albedo = payloadSampleAlbedo(model, payloadSampleDirection(job, cells, vi, vj),
+                                                   elevations[vertex], firstLayers[vertex], cosSlope, masks);
       const size_t index = size_t(j + 1) * size_t(s) + size_t(i + 1);
+      if (writeCover) writeCoverMasks(slot, GLOBE_PAYLOAD_COVER_OFFSET(cells, normalMapScale), index, masks);
       slot[normals + index] =
           glm::vec4(float(nrm.x), float(nrm.y), float(nrm.z), packPayloadSurface(albedo, holes[index]));
     }

@@ -50,6 +50,12 @@ double unresolvedRelief_m(const gpu::ElevationParams& params, double sampleSpaci
 RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
                                  std::span<glm::vec4> slot, bool waterSurface = false, uint32_t normalMapScale = 0);
 
+// = surfaceAlbedo (payload_generate.glsl): a sample's albedo from the colour ramp at its drawn
+// elevation and slope, or on a planet with land cover the blend of its masks (also returned; all
+// zero without land cover). `dir`: the sample's unit direction; `firstLayer_m`: the planet's first
+// layer there (only read with land cover).
+glm::vec3 payloadSampleAlbedo(const ElevationModel& model, const glm::dvec3& dir, double drawn_m, double firstLayer_m,
+                              double cosSlope, LandCoverMasks& masks);
 // A payload sample's surface word (normal.w, shaders/include/payload_surface.glsl): the square root
 // of the linear albedo in bytes 0-2 and the hole mask in byte 3, as the bits of a float.
 float packPayloadSurface(const glm::vec3& albedo, double hole);

@@ -181,8 +181,9 @@ void GLOBE_FN(globeElevationLayer)(uint l, GLOBE_REAL px, GLOBE_REAL py, GLOBE_R
   total = total + value;
 }
 
-// = globe::ElevationModel::elevation_m: elevation above radius_m at a unit direction, metres.
-GLOBE_REAL GLOBE_FN(globeElevation)(GLOBE_REAL3 unit_direction) {
+// = globe::ElevationModel::elevation_m: elevation above radius_m at a unit direction, metres; and
+// the first layer's value (= ElevationModel::firstLayer_m), which the land cover's climate reads.
+GLOBE_REAL GLOBE_FN(globeElevationWithFirstLayer)(GLOBE_REAL3 unit_direction, out GLOBE_REAL firstLayer) {
   precise GLOBE_REAL radius = GLOBE_REAL(GLOBE_ELEVATION_PARAMS.radius_m);
   precise GLOBE_REAL px = unit_direction.x * radius;
   precise GLOBE_REAL py = unit_direction.y * radius;
@@ -198,6 +199,12 @@ GLOBE_REAL GLOBE_FN(globeElevation)(GLOBE_REAL3 unit_direction) {
   if (kGlobeLayerCount > 5u) GLOBE_FN(globeElevationLayer)(5u, px, py, pz, values, total);
   if (kGlobeLayerCount > 6u) GLOBE_FN(globeElevationLayer)(6u, px, py, pz, values, total);
   if (kGlobeLayerCount > 7u) GLOBE_FN(globeElevationLayer)(7u, px, py, pz, values, total);
+  firstLayer = values[0];
   return total;
+}
+
+GLOBE_REAL GLOBE_FN(globeElevation)(GLOBE_REAL3 unit_direction) {
+  GLOBE_REAL firstLayer;
+  return GLOBE_FN(globeElevationWithFirstLayer)(unit_direction, firstLayer);
 }
 

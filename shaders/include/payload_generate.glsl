@@ -3,12 +3,14 @@
 // node. Pass 1 evaluates every sample (vertices and the extra ring) in double — face mapping, then elevation — and
 // stores positions relative to the node centre, quantised, as floats, plus the double positions in a scratch buffer;
 // pass 2 derives normals from those double positions by central differences, and each sample's albedo from the planet's
-// colour ramp at its elevation and slope (payload_surface.glsl); a shared-memory reduction gives the node's
+// colour ramp at its elevation and slope, or with land cover the blend of its masks (land_cover.glsl, written after
+// the normal map) (payload_surface.glsl); a shared-memory reduction gives the node's
 // min/max vertex radius and its geometric error (the largest distance a vertex moves when the node morphs to its
 // parent's mesh); pass 3 (with a normal map, kNormalMapScale > 0) evaluates the map's grid in double and writes its
 // texels (fillNormalMap, payload_layout.h). Mirrors planet/streaming/payload_reference.cpp operation for operation (the double kernel).
 #include "colour_ramp.h"
 #include "elevation_params.h"
+#include "land_cover.h"
 #include "face_mapping.glsl"
 #include "payload_layout.h"
 
@@ -24,6 +26,8 @@ layout(std430, binding = 3) writeonly buffer PayloadTexels { uvec2 payloadTexels
 layout(std430, binding = 4) buffer Scratch { dvec4 scratch[]; };
 layout(std430, binding = 5) writeonly buffer Results { PayloadResult results[]; };
 layout(std140, binding = 7) uniform ColourRamp { ColourRampParams colourRamp; };
+// The planet's land cover (class_count 0 and kLandCover 0 without); its masks go to payloadTexels.
+layout(std140, binding = 8) uniform LandCover { LandCoverParams landCover; };
 
 layout(push_constant) uniform Push {
   uint cells;     // grid cells per side (power of two)
@@ -32,9 +36,8 @@ layout(push_constant) uniform Push {
 push;
 
 #define GLOBE_ELEVATION_PARAMS elevation
-#ifdef GLOBE_PAYLOAD_FLOAT
+// The float evaluation: the float kernel's elevation, and the land cover's climate noise.
 #define GLOBE_ELEVATION_FLOAT
-#endif
 #include "elevation.glsl"
 #include "elevation_sources.glsl"
 #include "payload_surface.glsl"
@@ -42,6 +45,8 @@ push;
 #include "colour_ramp.glsl"
 #define GLOBE_NORMAL_MAP_PACK
 #include "normal_map.glsl"
+#define GLOBE_LAND_COVER landCover
+#include "land_cover.glsl"
 
 shared double sharedMin[GLOBE_PAYLOAD_WORKGROUP];
 shared double sharedMax[GLOBE_PAYLOAD_WORKGROUP];
@@ -52,6 +57,24 @@ shared double sharedLowest[GLOBE_PAYLOAD_WORKGROUP];
 layout(constant_id = GLOBE_PAYLOAD_SPEC_WATER_SURFACE) const uint kWaterSurface = 0u;
 // Normal map cells per grid cell (0: no normal map: collision meshes, bakes).
 layout(constant_id = GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE) const uint kNormalMapScale = 0u;
+// 1: the planet has land cover (albedo from its masks, masks written); 0: the colour ramp.
+layout(constant_id = GLOBE_PAYLOAD_SPEC_LAND_COVER) const uint kLandCover = 0u;
+
+// What scratch.w holds for a sample: its drawn elevation (the colour ramp's input), or with land
+// cover the drawn elevation and the first layer's value as two floats (the climate's inputs).
+double scratchSurfaceWord(double drawn, double firstLayer) {
+  if (kLandCover == 0u) return drawn;
+  return packDouble2x32(uvec2(floatBitsToUint(float(drawn)), floatBitsToUint(float(firstLayer))));
+}
+
+// A sample's masks and albedo from what scratchSurfaceWord stored, its direction and slope.
+vec3 surfaceAlbedo(double word, dvec3 dir, double cosSlope, out uvec2 masks) {
+  masks = uvec2(0u);
+  if (kLandCover == 0u) return terrainRampColour(float(word), float(cosSlope));
+  vec2 inputs = uintBitsToFloat(unpackDouble2x32(word));
+  masks = landCoverMasks(landCoverClimate(vec3(dir), inputs.x, inputs.y), inputs.x, float(cosSlope));
+  return landCoverAlbedo(masks);
+}
 
 // How far the vertex at scratch index `at` moves when the node morphs to its parent's mesh: the
 // distance to the midpoint of the even neighbours the vertex shader slides it to (row, column, or
@@ -145,8 +168,8 @@ uint normalMapEvaluations(uint cells) {
 // The job's elevation at map grid point (a, b): the procedural layers plus, on a planet with
 // sources, the sample grid's terms interpolated bilinearly (the I/O thread resolves terms at the
 // mesh samples only; clamped to the ring).
-double normalMapElevation(PayloadJob job, dvec3 dir, int a, int b) {
-  double procedural = globeElevation(dir);
+double normalMapElevation(PayloadJob job, dvec3 dir, int a, int b, out double firstLayer) {
+  double procedural = globeElevationWithFirstLayer(dir, firstLayer);
   if (job.sourceBase == GLOBE_NO_SOURCE_TERMS) return procedural;
   int n = int(push.cells), s = n + 3;
   dvec2 at = clamp(dvec2(a, b) / double(kNormalMapScale), dvec2(-1.0lf), dvec2(double(n + 1)));
@@ -172,9 +195,10 @@ void fillNormalMap(PayloadJob job, uint mapBase, uint scratchBase) {
     int a = int(index % uint(w)) - 2;
     int b = int(index / uint(w)) - 2;
     dvec3 dir = sampleDirection(job, m, a, b);
-    double h = normalMapElevation(job, dir, a, b);
+    double firstLayer;
+    double h = normalMapElevation(job, dir, a, b, firstLayer);
     double drawn = kWaterSurface != 0u ? max(h, GLOBE_ELEVATION_PARAMS.sea_level_m) : h;
-    scratch[scratchBase + index] = dvec4(globePosition(dir, drawn), drawn);
+    scratch[scratchBase + index] = dvec4(globePosition(dir, drawn), scratchSurfaceWord(drawn, firstLayer));
   }
   memoryBarrierBuffer();
   barrier();
@@ -191,7 +215,10 @@ void fillNormalMap(PayloadJob job, uint mapBase, uint scratchBase) {
     dvec3 normal = normalised(c);
     dvec3 up = kGlobeEllipsoid != 0u ? globeEllipsoidGradient(scratch[at].xyz) : normalised(scratch[at].xyz);
     double cosSlope = clamp(dot(normal, up), 0.0lf, 1.0lf);
-    vec3 albedo = terrainRampColour(float(scratch[at].w), float(cosSlope));
+    uvec2 masks;
+    int a = int(local % side * step), b = int(local / side * step);
+    vec3 albedo = surfaceAlbedo(scratch[at].w, kLandCover != 0u ? sampleDirection(job, m, a, b) : dvec3(0.0lf),
+                                cosSlope, masks);
     payloadTexels[mapBase * 2u + t] = packNormalMapTexel(normal, albedo);
   }
 }
@@ -219,7 +246,9 @@ void main() {
     // What an all-float pipeline computes: the direction rounded to float, the elevation and the
     // planet-centred position in float (a 0.5 m grid at Earth radius), then made relative.
     vec3 dirFloat = vec3(dir);
-    float hFloat = globeApplySourcesFloat(globeElevationFloat(dirFloat), job.sourceBase, index);
+    float firstFloat;
+    float hFloat = globeApplySourcesFloat(globeElevationWithFirstLayerFloat(dirFloat, firstFloat), job.sourceBase, index);
+    double firstLayer = double(firstFloat);
     float drawnFloat = kWaterSurface != 0u ? max(hFloat, float(GLOBE_ELEVATION_PARAMS.sea_level_m)) : hFloat;
     vec3 pFloat = dirFloat * (float(GLOBE_ELEVATION_PARAMS.radius_m) + drawnFloat);
     if (kGlobeEllipsoid != 0u) {  // a specialization constant: no branch is left
@@ -232,13 +261,14 @@ void main() {
     dvec3 p = dvec3(pFloat);
 #else
     // The geodetic surface point plus the elevation along the normal (= globe::Ellipsoid::position).
-    double h = globeApplySources(globeElevation(dir), job.sourceBase, index);
+    double firstLayer;
+    double h = globeApplySources(globeElevationWithFirstLayer(dir, firstLayer), job.sourceBase, index);
     double drawn = kWaterSurface != 0u ? max(h, GLOBE_ELEVATION_PARAMS.sea_level_m) : h;
     precise dvec3 p = globePosition(dir, drawn);
 #endif
     // w: the drawn elevation, which the sample's colour is taken at (a sea floor is coloured as the
     // shore above it: the water's own colour is drawn over it).
-    scratch[scratchBase + index] = dvec4(p, drawn);
+    scratch[scratchBase + index] = dvec4(p, scratchSurfaceWord(drawn, firstLayer));
     precise dvec3 rel = p - centre;
     precise dvec3 quantised = floor(rel / q + 0.5lf) * q;
     payloads[slotBase + index] = vec4(vec3(quantised), float(h));
@@ -256,6 +286,7 @@ void main() {
   barrier();
 
   uint normalBase = slotBase + samples;
+  uint coverBase = slotBase + GLOBE_PAYLOAD_COVER_OFFSET(push.cells, kNormalMapScale);
   double localError = 0.0lf;
   for (uint index = gl_LocalInvocationID.x; index < samples; index += GLOBE_PAYLOAD_WORKGROUP) {
     int i = clamp(int(index % uint(s)) - 1, 0, n);
@@ -270,8 +301,11 @@ void main() {
     // ellipsoid (a specialization constant) its gradient at the point, the geodetic normal to ~h f / a.
     dvec3 up = kGlobeEllipsoid != 0u ? globeEllipsoidGradient(scratch[at].xyz) : normalised(scratch[at].xyz);
     double cosSlope = clamp(dot(normal, up), 0.0lf, 1.0lf);
-    vec3 albedo = terrainRampColour(float(scratch[at].w), float(cosSlope));
+    uvec2 masks;
+    vec3 albedo = surfaceAlbedo(scratch[at].w, kLandCover != 0u ? sampleDirection(job, push.cells, i, j) : dvec3(0.0lf),
+                                cosSlope, masks);
     payloads[normalBase + index] = vec4(vec3(normal), packPayloadSurface(albedo, globeSourceHole(job.sourceBase, index)));
+    if (kLandCover != 0u) payloadTexels[coverBase * 2u + index] = masks;
   }
   sharedError[gl_LocalInvocationID.x] = localError;
 

@@ -37,6 +37,10 @@
 // A texel holds the unit normal (octahedral, 2 x 20 bits: error < 3e-6) from double positions by
 // central differences (the positions two texels around the node come from the ring technique), and
 // the square root of the albedo (the colour ramp at the texel's elevation and slope) in 3 bytes.
+// Then, whatever the map: [cover offset, + (S*S + 1) / 2) the land cover masks, one uvec2 per sample
+// (index as the mesh's): 8 bytes, class i in byte i % 4 of word i / 4, summing to 255 (land_cover.h).
+// Ring samples hold the masks of their nearest vertex, like its normal. Without land cover
+// (GLOBE_PAYLOAD_SPEC_LAND_COVER 0) the region is left unwritten and nothing reads it.
 // Quantum: positions and node centres are multiples of q(level) = 2^(ceil(log2(node width)) - 18)
 // metres, so that centre + position is the same double from every node of a level that holds the
 // sample, and stays exact in float relative to a floating origin snapped to the coarsest quantum.
@@ -69,8 +73,14 @@ struct uvec4_ {
 // a slot with grid `cells` and map scale `scale` (0, 1, 2, 4), the map's texels rounded up to vec4.
 #define GLOBE_NORMAL_MAP_TEXELS(mapCells) \
   ((mapCells) == 0u ? 0u : ((mapCells) + 1u) * ((mapCells) + 1u) + ((mapCells) / 2u + 1u) * ((mapCells) / 2u + 1u))
-#define GLOBE_PAYLOAD_SLOT_VEC4(cells, scale) \
+// Land cover masks of a slot: one uvec2 per sample (two RGBA8 words, land_cover.h), in vec4 entries;
+// they follow the normal map, from vec4 GLOBE_PAYLOAD_COVER_OFFSET on.
+#define GLOBE_PAYLOAD_COVER_VEC4(cells) \
+  ((GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells) * GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells) + 1u) / 2u)
+#define GLOBE_PAYLOAD_COVER_OFFSET(cells, scale) \
   (GLOBE_PAYLOAD_VEC4_PER_SLOT(cells) + (GLOBE_NORMAL_MAP_TEXELS((cells) * (scale)) + 1u) / 2u)
+#define GLOBE_PAYLOAD_SLOT_VEC4(cells, scale) \
+  (GLOBE_PAYLOAD_COVER_OFFSET(cells, scale) + GLOBE_PAYLOAD_COVER_VEC4(cells))
 // Most jobs one generation dispatch takes.
 #define GLOBE_PAYLOAD_MAX_BATCH 64u
 // PayloadJob.sourceBase of a job without source terms.
@@ -83,6 +93,9 @@ struct uvec4_ {
 #define GLOBE_PAYLOAD_SPEC_WATER_SURFACE 26
 // Specialization constant: the normal map's scale s (map cells = s * grid cells), 0 = no map.
 #define GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE 27
+// Specialization constant: 1 = the planet has land cover (land_cover.h): the samples' albedo is the
+// masks' blend of the class colours and the masks are written; 0 = the colour ramp, no masks.
+#define GLOBE_PAYLOAD_SPEC_LAND_COVER 28
 
 // One node to generate (std430, 96 bytes).
 struct PayloadJob {

@@ -171,14 +171,15 @@ TEST_F(NormalMapTest, ChildParentLevelEqualsParentMap) {
   }
 }
 
-// The pool's slot count comes from the whole slot: mesh plus normal map.
+// The pool's slot count comes from the whole slot: mesh, normal map and land cover masks.
 TEST(NormalMapBudgetTest, PoolBudgetCountsTheNormalMap) {
-  const size_t mesh = 2 * 19 * 19 * 16;  // 16 cells: 19 x 19 samples, position + normal vec4
-  EXPECT_EQ(GpuPayloadGenerator::slotBytesFor(kCells, 0), mesh);
+  const size_t mesh = 2 * 19 * 19 * 16;         // 16 cells: 19 x 19 samples, position + normal vec4
+  const size_t cover = (19 * 19 + 1) / 2 * 16;  // 8 mask bytes a sample
+  EXPECT_EQ(GpuPayloadGenerator::slotBytesFor(kCells, 0), mesh + cover);
   for (uint32_t scale : {1u, 2u, 4u}) {
     const size_t m = kCells * scale, texels = (m + 1) * (m + 1) + (m / 2 + 1) * (m / 2 + 1);
     const size_t slot = GpuPayloadGenerator::slotBytesFor(kCells, scale);
-    EXPECT_EQ(slot, mesh + (texels + 1) / 2 * 16) << scale;
+    EXPECT_EQ(slot, mesh + (texels + 1) / 2 * 16 + cover) << scale;
     EXPECT_EQ(slot % 16, 0u);
     FakePayloadGenerator generator(slot, 6371000.0, {6.36e6, 6.38e6});
     StreamingConfig config;
