@@ -71,6 +71,11 @@ Result<std::unique_ptr<Terrain>> Terrain::create(vk::Device& device, const Eleva
   if (lod.ranges.tolerance_px > 0.0 && lod.ranges.roughness)
     selector->ranges().setRoughness(reliefRoughnessMap(model, int(settings.gridCells), lod.ranges.maxDepth));
   std::unique_ptr<Terrain> terrain(new Terrain(device, model, settings, std::move(*selector)));
+  if (model.landCover().class_count > 0) {
+    Result<DetailTextureSet> textures = loadDetailTextures(model.landCoverDescription(), model.seed());
+    if (!textures) return textures.error();
+    terrain->detail_ = std::make_unique<DetailTextureArray>(device, *textures);
+  }
   // The payload buffer is bound in pages of at most maxStorageBufferRange bytes (PayloadPages), so
   // only the VRAM budget bounds the pool.
   auto pool = PayloadPool::create(settings.streaming, *terrain->generator_, model.radius_m());
@@ -105,6 +110,7 @@ void Terrain::attachPool(std::unique_ptr<PayloadPool> pool) {
   style.water = model_.water();
   style.seaLevel_m = model_.seaLevel_m();
   style.normalMapScale = settings_.normalMapScale;
+  if (detail_) style.detailTextures = detail_->descriptor();
   if (settings_.atmosphere != AtmosphereDetail::kOff && model_.atmosphere())
     atmosphere_ = std::make_unique<AtmosphereLuts>(device_, *model_.atmosphere(), model_.radius_m());
   style.atmosphere = atmosphere_.get();

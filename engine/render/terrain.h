@@ -4,6 +4,7 @@
 // chain camera -> selection -> requests -> generation -> payloads -> draw -> stats, so the viewer,
 // the headless renderer and the benchmark run exactly the same frame.
 #include "engine/generation/payload_generator.h"
+#include "engine/render/detail_texture_array.h"
 #include "engine/render/terrain_renderer.h"
 #include "engine/vk/antialiasing.h"
 #include "planet/analysis/frame_stats.h"
@@ -141,6 +142,7 @@ class Terrain {
   std::unique_ptr<GpuPayloadGenerator> generator_;
   std::unique_ptr<PayloadPool> pool_;
   std::unique_ptr<AtmosphereLuts> atmosphere_;
+  std::unique_ptr<DetailTextureArray> detail_;  // the land cover's detail textures (none without)
   std::unique_ptr<TerrainRenderer> renderer_;
   Selection selection_;
   std::vector<DrawNode> drawNodes_;

@@ -61,17 +61,18 @@ struct TerrainShading {
   bool atmosphere = false;
   bool water = false;
   bool holes = false;
+  bool cover = false;
 };
 
-// The surface pipelines' shading (the wireframe's has neither water nor holes).
+// The surface pipelines' shading (the wireframe's has neither water nor holes nor land cover).
 TerrainShading surfaceShading(const TerrainStyle& style, bool atmosphere, bool water) {
-  return {style.normalMapScale > 0, atmosphere, water, style.holes};
+  return {style.normalMapScale > 0, atmosphere, water, style.holes, style.landCover()};
 }
 
-// terrain[_atmosphere][_maps][_water][_holes].frag: the variants of shaders/CMakeLists.txt.
+// terrain[_atmosphere][_maps][_water][_holes][_cover].frag: the variants of shaders/CMakeLists.txt.
 std::string terrainFragmentShader(const TerrainShading& s) {
   return std::string("terrain") + (s.atmosphere ? "_atmosphere" : "") + (s.normalMaps ? "_maps" : "") +
-         (s.water ? "_water" : "") + (s.holes ? "_holes" : "") + ".frag";
+         (s.water ? "_water" : "") + (s.holes ? "_holes" : "") + (s.cover ? "_cover" : "") + ".frag";
 }
 
 vk::GraphicsPipelineDesc terrainDesc(TargetFormat target, bool wireframe, VkCullModeFlags cull,
@@ -91,6 +92,10 @@ vk::GraphicsPipelineDesc terrainDesc(TargetFormat target, bool wireframe, VkCull
   d.samples = target.samples;
   d.wireframe = wireframe;
   d.cull = cull;
+  if (shading.cover) {
+    d.sampledImageBinding = GLOBE_TERRAIN_DETAIL_BINDING;
+    d.vertexSpecialization = {1u};  // GLOBE_TERRAIN_SPEC_LAND_COVER
+  }
   return d;
 }
 
@@ -137,6 +142,7 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
     : device_(device),
       cells_(gridCells),
       style_(style),
+      detailTiling_(detailTilingFor(style.radius_m)),
       // The surface is seen from above only (the camera never goes under it): its back faces are
       // always hidden behind front faces, and culling them halves the rasteriser's work. Skirts
       // fill gaps seen from either side. A planet with kept holes draws both faces, so that the
@@ -386,6 +392,7 @@ TerrainDebugView TerrainRenderer::writeFrameConstants(unsigned char* bytes, cons
   frame.skyZenith = toGpu(style_.zenithColour, 0.0f);
   frame.skyHorizon = toGpu(style_.horizonColour, 0.0f);
   frame.centreFromCamera = toGpu(glm::vec3(-camera.position_m), 0.0f);  // once per frame, in double
+  frame.detailLevels = {float(detailTiling_.fineLevel), float(detailTiling_.coarseLevel), 0.0f, 0.0f};
   std::memcpy(bytes, &frame, sizeof(frame));
   return view;
 }
@@ -438,6 +445,8 @@ uint32_t TerrainRenderer::writeInstances(unsigned char* bytes, const glm::dvec3&
                      morphDistance(n.morph.end_m[3])};
     inst.info = {payloads.localSlot(n.slot) * slotVec4, n.partial ? 2u : 1u,
                  uint32_t(n.id.level) - (n.partial ? 1u : 0u), 0u};
+    const glm::vec4 detail = detailTileOffsets(n.id, detailTiling_);
+    inst.detail = {detail.x, detail.y, detail.z, detail.w};
     partial += n.partial ? 1u : 0u;
     const uint32_t page = payloads.page(n.slot);
     const size_t grid = size_t(drawGroup(n, 0)) * pageCount + page, skirt = size_t(drawGroup(n, 2)) * pageCount + page;
@@ -473,20 +482,23 @@ DrawStats TerrainRenderer::recordDraws(VkCommandBuffer cmd, const PayloadPages& 
                                              : r < 2 ? solid_
                                                      : skirts_;
       const gpu::TerrainDrawPush push{r % 2 == 0 ? cells_ : cells_ / 2, 0};
+      // The detail textures, for the land cover pipelines (the wireframe's has none).
+      const vk::SampledImage detail{GLOBE_TERRAIN_DETAIL_BINDING, style_.detailTextures};
+      const vk::SampledImage* image = style_.landCover() && !wireframe ? &detail : nullptr;
       if (reprojected) {
         pipeline.bind(cmd,
                       {instanceDescriptor(frameIndex), payloads.window(page), constantsDescriptor(frameIndex),
                        reprojection_[frameIndex].descriptor(), faces_.descriptor()},
-                      &push, sizeof(push));
+                      &push, sizeof(push), image);
       } else if (atmosphere_) {
         pipeline.bind(cmd,
                       {instanceDescriptor(frameIndex), payloads.window(page), constantsDescriptor(frameIndex),
                        atmosphere_->parameters(), atmosphere_->transmittance(), atmosphere_->irradiance(),
                        atmosphere_->scattering(), view_->camera(frameIndex), view_->table(frameIndex)},
-                      &push, sizeof(push));
+                      &push, sizeof(push), image);
       } else {
         pipeline.bind(cmd, {instanceDescriptor(frameIndex), payloads.window(page), constantsDescriptor(frameIndex)},
-                      &push, sizeof(push));
+                      &push, sizeof(push), image);
       }
       vkCmdDrawIndexed(cmd, count_[r], instancesOf_[g], first_[r], 0, firstInstance_[g]);
       ++stats.drawCalls;

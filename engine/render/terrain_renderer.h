@@ -14,6 +14,7 @@
 #include "engine/atmosphere/atmosphere_luts.h"
 #include "engine/atmosphere/atmosphere_view.h"
 #include "engine/generation/payload_pages.h"
+#include "engine/render/terrain_detail.h"
 #include "engine/vk/frame_ring.h"
 #include "engine/vk/graphics_pipeline.h"
 #include "planet/camera/camera.h"
@@ -83,6 +84,11 @@ struct TerrainStyle {
   // fragment stages shade from them, and slots are GpuPayloadGenerator::slotBytesFor(cells, this).
   // 0: payloads without maps, lit per vertex from the mesh's normals and albedo.
   uint32_t normalMapScale = 1;
+  // The planet's land cover: the classes' detail textures (DetailTextureArray::descriptor(), owned
+  // by the caller, alive as long as the renderer). With an image view the payloads' masks are read
+  // and the fragment stages splat the textures (terrain_fragment.glsl); null: no land cover.
+  VkDescriptorImageInfo detailTextures{};
+  bool landCover() const { return detailTextures.imageView != VK_NULL_HANDLE; }
 };
 
 // One node to draw; the caller builds these from the selection and the payload pool.
@@ -186,6 +192,7 @@ class TerrainRenderer {
   vk::Device& device_;
   uint32_t cells_;
   TerrainStyle style_;
+  TerrainDetailTiling detailTiling_;
   PassTimestamps timestamps_;
   // Writes the pass marks from `next` up to and including `mark` (none without a query pool).
   void writeMarks(VkCommandBuffer cmd, uint32_t& next, uint32_t mark) const;

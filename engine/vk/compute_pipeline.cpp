@@ -14,12 +14,14 @@ VkDescriptorType bufferType(uint32_t binding, uint32_t uniformMask) {
 }  // namespace
 
 UniqueDescriptorSetLayout storageBufferSetLayout(Device& device, uint32_t count, VkShaderStageFlags stages,
-                                                 uint32_t uniformMask) {
+                                                 uint32_t uniformMask, uint32_t sampledImageBinding) {
   std::vector<VkDescriptorSetLayoutBinding> bindings(count);
   for (uint32_t i = 0; i < count; ++i) bindings[i] = {i, bufferType(i, uniformMask), 1, stages, nullptr};
+  if (sampledImageBinding != kNoSampledImage)
+    bindings.push_back({sampledImageBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, nullptr});
   VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   info.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
-  info.bindingCount = count;
+  info.bindingCount = uint32_t(bindings.size());
   info.pBindings = bindings.data();
   VkDescriptorSetLayout layout;
   GLOBE_VK_CHECK(vkCreateDescriptorSetLayout(device.device(), &info, nullptr, &layout));
@@ -28,9 +30,9 @@ UniqueDescriptorSetLayout storageBufferSetLayout(Device& device, uint32_t count,
 
 void pushStorageBuffers(PFN_vkCmdPushDescriptorSetKHR push, VkCommandBuffer cmd, VkPipelineBindPoint bindPoint,
                         VkPipelineLayout layout, std::initializer_list<VkDescriptorBufferInfo> buffers,
-                        uint32_t uniformMask) {
+                        uint32_t uniformMask, const SampledImage* image) {
   std::vector<VkWriteDescriptorSet> writes;
-  writes.reserve(buffers.size());
+  writes.reserve(buffers.size() + 1);
   uint32_t binding = 0;
   for (const auto& b : buffers) {
     VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -38,6 +40,14 @@ void pushStorageBuffers(PFN_vkCmdPushDescriptorSetKHR push, VkCommandBuffer cmd,
     w.descriptorCount = 1;
     w.descriptorType = bufferType(w.dstBinding, uniformMask);
     w.pBufferInfo = &b;
+    writes.push_back(w);
+  }
+  if (image) {
+    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    w.dstBinding = image->binding;
+    w.descriptorCount = 1;
+    w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    w.pImageInfo = &image->info;
     writes.push_back(w);
   }
   push(cmd, bindPoint, layout, 0, static_cast<uint32_t>(writes.size()), writes.data());

@@ -35,16 +35,24 @@ class ComputePipeline {
   uint32_t uniformMask_ = 0;
 };
 
+// A combined image sampler pushed with the buffers, at its own binding (past the buffers').
+inline constexpr uint32_t kNoSampledImage = ~0u;
+struct SampledImage {
+  uint32_t binding = kNoSampledImage;
+  VkDescriptorImageInfo info{};
+};
+
 // Pushes `buffers` as bindings 0..n-1 of set 0 (shared by compute and graphics); bindings in
-// `uniformMask` are uniform buffers, the others storage buffers.
+// `uniformMask` are uniform buffers, the others storage buffers; and `image` if not null.
 void pushStorageBuffers(PFN_vkCmdPushDescriptorSetKHR push, VkCommandBuffer cmd, VkPipelineBindPoint bindPoint,
                         VkPipelineLayout layout, std::initializer_list<VkDescriptorBufferInfo> buffers,
-                        uint32_t uniformMask = 0);
+                        uint32_t uniformMask = 0, const SampledImage* image = nullptr);
 
 // A push-descriptor set layout with `count` buffers visible to `stages` (uniform where `uniformMask`
-// has the binding's bit, storage otherwise).
+// has the binding's bit, storage otherwise), and a combined image sampler at `sampledImageBinding`.
 UniqueDescriptorSetLayout storageBufferSetLayout(Device& device, uint32_t count, VkShaderStageFlags stages,
-                                                 uint32_t uniformMask = 0);
+                                                 uint32_t uniformMask = 0,
+                                                 uint32_t sampledImageBinding = kNoSampledImage);
 
 // vkCmdPushDescriptorSetKHR of `device` (throws when the extension's entry point is missing).
 PFN_vkCmdPushDescriptorSetKHR pushDescriptorSetFunction(Device& device);

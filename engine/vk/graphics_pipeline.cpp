@@ -83,7 +83,7 @@ struct FixedFunctionState {
 GraphicsPipeline::GraphicsPipeline(Device& device, const GraphicsPipelineDesc& desc) {
   pushDescriptorSet_ = pushDescriptorSetFunction(device);
   uniformMask_ = desc.uniformMask;
-  setLayout_ = storageBufferSetLayout(device, desc.storageBuffers, stages_, desc.uniformMask);
+  setLayout_ = storageBufferSetLayout(device, desc.storageBuffers, stages_, desc.uniformMask, desc.sampledImageBinding);
   layout_ = pushDescriptorPipelineLayout(device, setLayout_, stages_, desc.pushConstantBytes);
 
   UniqueShaderModule vert = loadShaderModule(device, desc.vertexShader);
@@ -121,10 +121,10 @@ GraphicsPipeline::GraphicsPipeline(Device& device, const GraphicsPipelineDesc& d
 }
 
 void GraphicsPipeline::bind(VkCommandBuffer cmd, std::initializer_list<VkDescriptorBufferInfo> buffers,
-                            const void* pushConstants, uint32_t pushConstantBytes) const {
+                            const void* pushConstants, uint32_t pushConstantBytes, const SampledImage* image) const {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
-  if (buffers.size())
-    pushStorageBuffers(pushDescriptorSet_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, buffers, uniformMask_);
+  if (buffers.size() || image)
+    pushStorageBuffers(pushDescriptorSet_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, buffers, uniformMask_, image);
   if (pushConstantBytes) vkCmdPushConstants(cmd, layout_, stages_, 0, pushConstantBytes, pushConstants);
 }
 

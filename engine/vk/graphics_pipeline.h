@@ -2,6 +2,7 @@
 // A graphics pipeline for dynamic rendering into the offscreen (or swapchain) formats: no vertex
 // input (vertex shaders pull from storage buffers), reversed-Z depth test, push constants and
 // storage buffers pushed per draw.
+#include "engine/vk/compute_pipeline.h"
 #include "engine/vk/resources.h"
 
 #include <initializer_list>
@@ -32,14 +33,17 @@ struct GraphicsPipelineDesc {
   // Specialization constants of the fragment shader: constant_id k takes fragmentSpecialization[k].
   std::vector<uint32_t> fragmentSpecialization;
   std::vector<uint32_t> vertexSpecialization;  // the same for the vertex shader
+  // Binding of a combined image sampler after the buffers (kNoSampledImage: none); bind() pushes it.
+  uint32_t sampledImageBinding = kNoSampledImage;
 };
 
 class GraphicsPipeline {
  public:
   GraphicsPipeline(Device& device, const GraphicsPipelineDesc& desc);
 
+  // `image`: the sampled image of sampledImageBinding (binding set), or nullptr.
   void bind(VkCommandBuffer cmd, std::initializer_list<VkDescriptorBufferInfo> buffers, const void* pushConstants,
-            uint32_t pushConstantBytes) const;
+            uint32_t pushConstantBytes, const SampledImage* image = nullptr) const;
 
   VkPipeline pipeline() const { return pipeline_; }
   VkPipelineLayout layout() const { return layout_; }

@@ -11,9 +11,6 @@
 
 namespace globe::vk {
 
-namespace {
-
-// One allocation of a memory type that has `properties`, sized for `req`.
 UniqueMemory allocateMemory(Device& device, const VkMemoryRequirements& req, VkMemoryPropertyFlags properties) {
   VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
   alloc.allocationSize = req.size;
@@ -22,8 +19,6 @@ UniqueMemory allocateMemory(Device& device, const VkMemoryRequirements& req, VkM
   GLOBE_VK_CHECK(vkAllocateMemory(device.device(), &alloc, nullptr, &mem));
   return UniqueMemory(device.device(), mem);
 }
-
-}  // namespace
 
 Buffer::Buffer(Device& device, VkDeviceSize sizeBytes, VkBufferUsageFlags usage, MemoryUse memory, const char* name)
     : size_(sizeBytes) {
@@ -95,6 +90,11 @@ UniqueShaderModule loadShaderModule(Device& device, const std::string& name) {
 
 void transitionImage(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
                      VkImageLayout to) {
+  transitionImage(cmd, image, VkImageSubresourceRange{aspect, 0, 1, 0, 1}, from, to);
+}
+
+void transitionImage(VkCommandBuffer cmd, VkImage image, const VkImageSubresourceRange& range, VkImageLayout from,
+                     VkImageLayout to) {
   VkImageMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
   barrier.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
   barrier.srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT;
@@ -105,7 +105,7 @@ void transitionImage(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspe
   barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.image = image;
-  barrier.subresourceRange = {aspect, 0, 1, 0, 1};
+  barrier.subresourceRange = range;
   VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
   dep.imageMemoryBarrierCount = 1;
   dep.pImageMemoryBarriers = &barrier;

@@ -64,8 +64,15 @@ std::string shaderDirectory();
 // naming the file when it is missing or not SPIR-V.
 UniqueShaderModule loadShaderModule(Device& device, const std::string& name);
 
+// One allocation of a memory type with all `properties`, sized for `req` (for owners whose
+// image or buffer the classes above do not cover, e.g. mipmapped texture arrays).
+UniqueMemory allocateMemory(Device& device, const VkMemoryRequirements& req, VkMemoryPropertyFlags properties);
+
 // A full pipeline barrier for images in the common transitions of this engine (layout change).
 void transitionImage(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
+                     VkImageLayout to);
+// The same over `range` (several mips or layers); the one above covers mip 0 of layer 0.
+void transitionImage(VkCommandBuffer cmd, VkImage image, const VkImageSubresourceRange& range, VkImageLayout from,
                      VkImageLayout to);
 
 // Makes device writes by `srcStage` (e.g. a transfer into a readback buffer) visible to host reads

@@ -14,6 +14,10 @@
 // - GLOBE_TERRAIN_WATER (nodes that have sea): the fragments below sea level shaded as water
 //   (water_shading.glsl).
 // - GLOBE_TERRAIN_HOLES (planets with kept no-data holes): discard inside them, a rim at the border.
+// - GLOBE_TERRAIN_COVER (planets with land cover): the albedo modulated by the classes' tiled detail
+//   textures, blended by the vertex-interpolated masks (splat texturing), at a fine and a coarse
+//   scale (terrain_detail.h). The textures' mean is 0.5, so far away (coarse mips) the modulation is
+//   1 and the colour is the payload's: no pop between distances.
 #include "display_encoding.glsl"
 #include "terrain_layout.h"
 
@@ -51,12 +55,38 @@ layout(location = 10) flat in vec3 inSkyHorizon;
 #include "water_shading.glsl"
 #endif
 
+#ifdef GLOBE_TERRAIN_COVER
+#extension GL_EXT_control_flow_attributes : require
+layout(set = 0, binding = GLOBE_TERRAIN_DETAIL_BINDING) uniform sampler2DArray detailTextures;
+layout(location = 14) in vec4 inCover0;
+layout(location = 15) in vec4 inCover1;
+layout(location = 16) in vec4 inDetailUv;
+
+// The splat's modulation of the albedo: sum over the classes present of mask * fine * coarse * 4.
+// Gradients are taken once, outside the per-class branches (which depend on interpolated masks).
+vec3 detailModulation() {
+  vec4 dx = dFdx(inDetailUv), dy = dFdy(inDetailUv);
+  vec3 sum = vec3(0.0);
+  float total = 0.0;
+  [[unroll]] for (uint i = 0u; i < 8u; ++i) {
+    float w = i < 4u ? inCover0[i] : inCover1[i - 4u];
+    if (w > 0.02) {
+      vec3 fine = textureGrad(detailTextures, vec3(inDetailUv.xy, float(i)), dx.xy, dy.xy).rgb;
+      vec3 coarse = textureGrad(detailTextures, vec3(inDetailUv.zw, float(i)), dx.zw, dy.zw).rgb;
+      sum += w * fine * coarse;
+      total += w;
+    }
+  }
+  return total > 0.0 ? sum * (4.0 / total) : vec3(1.0);
+}
+#endif
+
 // Width (in mask units) of the dark rim drawn on the kept side of a hole's border.
 const float kHoleRim = 0.12;
 
 #ifdef GLOBE_TERRAIN_NORMAL_MAPS
 // The lit, display-encoded colour from the normal map.
-vec3 mappedColour() {
+vec3 mappedColour(vec3 modulation) {
   uint cells = frame.options.w;
   vec3 normal, root;
   sampleNormalMap(inMapBase, cells + 1u, inMapUv * float(cells), normal, root);
@@ -68,7 +98,7 @@ vec3 mappedColour() {
     root = mix(root, parentRoot, inMapBlend);
   }
   vec3 n = normalize(normal);
-  vec3 albedo = root * root;
+  vec3 albedo = root * root * modulation;
 #ifdef GLOBE_TERRAIN_ATMOSPHERE
   // The vertex stage's light through the air, applied to the mapped normal and colour
   // (terrain_atmosphere.glsl, TerrainAerial).
@@ -82,11 +112,18 @@ vec3 mappedColour() {
 #endif
 
 void main() {
-  vec3 colour = inColour;
+  bool debug = frame.options.y != GLOBE_TERRAIN_SHADED;
+  vec3 modulation = vec3(1.0);
+#ifdef GLOBE_TERRAIN_COVER
+  modulation = mix(detailModulation(), vec3(1.0), bvec3(debug));
+#endif
+  // The vertex colour is lit and display-encoded, ~ the square root of linear (display_encoding.h):
+  // the square root of the modulation scales it as the albedo's would.
+  vec3 colour = inColour * sqrt(modulation);
 #ifdef GLOBE_TERRAIN_NORMAL_MAPS
   // A select, not an if, on the debug view (a uniform value: an if would make lavapipe compile the
   // shader again at draw time, docs/rendering.md).
-  colour = mix(mappedColour(), inColour, bvec3(frame.options.y != GLOBE_TERRAIN_SHADED));
+  colour = mix(mappedColour(modulation), inColour, bvec3(debug));
 #endif
 #ifdef GLOBE_TERRAIN_WATER
   // The coast is where the interpolated depth changes sign: crisp at every distance, whatever the

@@ -41,7 +41,13 @@ struct TerrainDvec4 {
 #define GLOBE_TERRAIN_LOD_COLOURS 1u
 #define GLOBE_TERRAIN_WIREFRAME 2u
 
-// Constants of one frame (std430, 240 bytes).
+// Binding of the land cover's detail textures (a sampler2DArray, one layer per class) in the terrain
+// pipelines with land cover (terrain_fragment.glsl), past every buffer binding.
+#define GLOBE_TERRAIN_DETAIL_BINDING 10
+// Specialization constant of the terrain vertex stages: 1 = read the payloads' land cover masks.
+#define GLOBE_TERRAIN_SPEC_LAND_COVER 0
+
+// Constants of one frame (std430, 256 bytes).
 struct TerrainFrame {
   GLOBE_MAT4 clipFromCamera;  //   0: projection * view rotation: camera-centred planet-fixed axes -> clip
   GLOBE_VEC4 cameraHigh;      //  64: xyz = float(camera - origin), metres
@@ -56,9 +62,11 @@ struct TerrainFrame {
   GLOBE_VEC4 skyZenith;       // 192: rgb = the sky overhead (linear), reflected by the sea
   GLOBE_VEC4 skyHorizon;      // 208: rgb = the sky at the horizon (linear)
   GLOBE_VEC4 centreFromCamera;  // 224: xyz = float(planet centre - camera), metres (a direction for the sea's normal)
+  GLOBE_VEC4 detailLevels;      // 240: x, y = quadtree levels whose node is one tile of the fine, coarse detail
+                                //      texture (TerrainDetailTiling); zw unused
 };
 
-// One drawn node (std430, 64 bytes). Morph band (metres from the camera, LodRanges / NodeMorph): the
+// One drawn node (std430, 80 bytes). Morph band (metres from the camera, LodRanges / NodeMorph): the
 // end is bilinear between morphEnd's corner values at the vertex's place in the node's (u, v) square,
 // start = min(end, max(end - morph.z * (end - morph.y), morph.x)); morphEnd.x = FLT_MAX: never morphs.
 struct TerrainInstance {
@@ -68,6 +76,8 @@ struct TerrainInstance {
                         //     z = level the node is drawn at (id.level - partial),
                         //     w = node edge of a skirt instance (NodeEdge), 0 for the grid
   GLOBE_VEC4 morphEnd;  // 48: morph end at the node's corners u0 v0, u1 v0, u0 v1, u1 v1
+  GLOBE_VEC4 detail;    // 64: where the node's (u, v) corner falls in the fine (xy) and coarse (zw)
+                        //     detail tiles, [0, 1): the tiles' coordinates go on across nodes
 };
 
 // Positions re-projected every frame (VertexPositions::kReprojected, measured by globe trade): one
@@ -88,8 +98,8 @@ struct TerrainDrawPush {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(TerrainFrame) == 240);
-static_assert(sizeof(TerrainInstance) == 64);
+static_assert(sizeof(TerrainFrame) == 256);
+static_assert(sizeof(TerrainInstance) == 80);
 static_assert(sizeof(TerrainReprojectionFrame) == 32 && sizeof(TerrainReprojectionNode) == 32);
 }  // namespace globe::gpu
 #endif

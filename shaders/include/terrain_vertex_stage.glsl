@@ -30,6 +30,10 @@ layout(location = 3) out vec3 outRelative;
 layout(location = 4) out vec2 outMapUv;
 layout(location = 5) flat out uint outMapBase;
 layout(location = 6) out float outMapBlend;
+// Land cover (TerrainVertex.cover0, cover1, detailUv): only the _cover fragment stages read them.
+layout(location = 14) out vec4 outCover0;
+layout(location = 15) out vec4 outCover1;
+layout(location = 16) out vec4 outDetailUv;
 #ifdef GLOBE_TERRAIN_ATMOSPHERE
 // Only with the atmosphere (its fragment stages, terrain_atmosphere*.frag, read them): for the
 // water, the air between the camera and the vertex (terrain_atmosphere.glsl) and the sky the sea
@@ -74,4 +78,7 @@ void main() {
   outMapUv = v.mapUv;
   outMapBase = v.mapBase;
   outMapBlend = v.mapBlend;
+  outCover0 = v.cover0;
+  outCover1 = v.cover1;
+  outDetailUv = v.detailUv;
 }
