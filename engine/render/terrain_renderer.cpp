@@ -378,9 +378,11 @@ TerrainDebugView TerrainRenderer::writeFrameConstants(unsigned char* bytes, cons
   frame.sun = toGpu(glm::vec3(glm::normalize(style_.sunDirection)), style_.ambient);
   TerrainDebugView view = style_.debug;
   if (view == TerrainDebugView::kWireframe && !wireframe_) view = TerrainDebugView::kLodColours;
+  if (view == TerrainDebugView::kLandCover && !style_.landCover()) view = TerrainDebugView::kShaded;
   frame.options = {cells_,
                    view == TerrainDebugView::kShaded       ? GLOBE_TERRAIN_SHADED
                    : view == TerrainDebugView::kLodColours ? GLOBE_TERRAIN_LOD_COLOURS
+                   : view == TerrainDebugView::kLandCover  ? GLOBE_TERRAIN_LAND_COVER
                                                            : GLOBE_TERRAIN_WIREFRAME,
                    skirts ? 1u : 0u, cells_ * style_.normalMapScale};
   frame.skirt = {style_.skirtOutward, style_.skirtDrop, 0.0f, 0.0f};

@@ -39,6 +39,7 @@ enum class TerrainDebugView {
   kShaded,      // lit colour ramp (normal use)
   kLodColours,  // one flat colour per drawn level
   kWireframe,   // LOD-coloured lines (falls back to kLodColours without fillModeNonSolid)
+  kLandCover,   // one flat key colour per land cover class, the vertex's dominant one (shaded without land cover)
 };
 
 // Where the vertex shader takes a vertex's position from. kStored: the payload's float position

@@ -135,6 +135,9 @@ void ViewerScene::cycleDebugView() {
       debug_ = TerrainDebugView::kWireframe;
       break;
     case TerrainDebugView::kWireframe:
+      debug_ = terrain_->renderer().style().landCover() ? TerrainDebugView::kLandCover : TerrainDebugView::kShaded;
+      break;
+    case TerrainDebugView::kLandCover:
       debug_ = TerrainDebugView::kShaded;
       break;
   }
@@ -150,6 +153,8 @@ std::string ViewerScene::debugViewName() const {
       return "LOD colours";
     case TerrainDebugView::kWireframe:
       return terrain_->renderer().wireframeSupported() ? "wireframe" : "wireframe (unsupported: LOD colours)";
+    case TerrainDebugView::kLandCover:
+      return "land cover classes";
   }
   return "";
 }

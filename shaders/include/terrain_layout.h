@@ -40,6 +40,7 @@ struct TerrainDvec4 {
 #define GLOBE_TERRAIN_SHADED 0u
 #define GLOBE_TERRAIN_LOD_COLOURS 1u
 #define GLOBE_TERRAIN_WIREFRAME 2u
+#define GLOBE_TERRAIN_LAND_COVER 3u  // the dominant land cover class per vertex, in its key colour
 
 // Binding of the land cover's detail textures (a sampler2DArray, one layer per class) in the terrain
 // pipelines with land cover (terrain_fragment.glsl), past every buffer binding.

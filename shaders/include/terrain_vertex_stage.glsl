@@ -55,7 +55,8 @@ void main() {
   // Both colours, then a select (mix with a bool): an if on the debug view (a uniform value) would
   // make lavapipe compile the shader again at draw time (docs/rendering.md).
   bool debug = frame.options.y != GLOBE_TERRAIN_SHADED;
-  vec3 level = terrainLevelColour(v.level);
+  vec3 level = mix(terrainLevelColour(v.level), terrainLandCoverColour(v.cover0, v.cover1),
+                   bvec3(frame.options.y == GLOBE_TERRAIN_LAND_COVER));
   vec3 albedo = mix(v.albedo, level, bvec3(debug));
   vec4 sun = mix(frame.sun, vec4(0.0, 0.0, 0.0, 1.0), bvec4(debug));  // debug colours are unlit
   float light = sun.w + (1.0 - sun.w) * max(dot(n, sun.xyz), 0.0);
