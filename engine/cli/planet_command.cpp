@@ -6,6 +6,7 @@
 #include "planet/elevation/planet_file.h"
 #include "planet/elevation/sphere_sampling.h"
 #include "planet/sources/source_report.h"
+#include "planet/surface/surface_sample.h"
 #include "planet_commands.h"
 #include "progress_bar.h"
 
@@ -68,6 +69,28 @@ struct StatsOptions {
   unsigned threads = 1;
 };
 
+// One line per land cover class, `land_cover NAME PERCENT` (of the planet's area), after
+// `land_cover sea PERCENT` on a planet with [water]; nothing without land cover.
+std::string landCoverLines(const ElevationModel& model, const PlanetDescription& planet, const StatsOptions& o) {
+  if (!planet.land_cover.enabled()) return {};
+  const auto start = std::chrono::steady_clock::now();
+  LandCoverShares shares;
+  {
+    ProgressBar bar("land cover");
+    shares = computeLandCoverShares(model, o.samples, o.threads, [&bar](double f) { bar.update(f); });
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::string out;
+  auto line = std::back_inserter(out);
+  fmt::format_to(line, "land cover (% of the planet's area, same samples, slopes over {} m): {:.2f} s\n",
+                 kLandCoverSlopeSpacing_m, seconds);
+  if (model.drawsWater()) fmt::format_to(line, "land_cover sea {:.1f}\n", 100.0 * shares.sea_fraction);
+  for (std::size_t i = 0; i < shares.class_fraction.size(); ++i) {
+    fmt::format_to(line, "land_cover {} {:.1f}\n", planet.land_cover.classes[i].name, 100.0 * shares.class_fraction[i]);
+  }
+  return out;
+}
+
 int runStats(const StatsOptions& o) {
   const auto planet = loadPlanetForCommand(o.file);
   if (!planet) return kExitUsage;
@@ -104,6 +127,7 @@ int runStats(const StatsOptions& o) {
                    100.0 * std::max(above, 0.0), std::string(bar, '#'));
     above -= f;
   }
+  out += landCoverLines(model, *planet, o);
   std::fputs(out.c_str(), stdout);
   return kExitOk;
 }
@@ -130,7 +154,9 @@ void addPlanetCommand(CLI::App& app, Runner& run) {
 
   auto stats = std::make_shared<StatsOptions>();
   CLI::App* stats_cmd = planet->add_subcommand(
-      "stats", "Elevation statistics over uniform directions: min/max/mean, percentiles, hypsometry, area below sea");
+      "stats",
+      "Elevation statistics over uniform directions: min/max/mean, percentiles, hypsometry, area below sea, "
+      "land cover shares");
   addPlanetFileArgument(*stats_cmd, stats->file);
   stats_cmd->add_option("--samples", stats->samples, "Directions sampled (Fibonacci sphere)")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{100000000}))

@@ -1,6 +1,8 @@
-// globe planet export: an equirectangular float32 elevation map (OpenEXR, channel Y, metres) and an
-// optional shaded, ramp-coloured PNG preview. Written atomically: a failed or interrupted export
-// leaves no target file (see engine/io/elevation_exr.h and signal_cleanup.h).
+// globe planet export: an equirectangular float32 elevation map (OpenEXR, channel Y, metres), an
+// optional shaded PNG preview (coloured by the ramp, or by the land cover when the planet has one)
+// and an optional land cover map (the albedo of each pixel's masks, the sea by depth). Written
+// atomically: a failed or interrupted export leaves no target file (see engine/io/elevation_exr.h
+// and signal_cleanup.h).
 #include "commands.h"
 #include "engine/io/elevation_exr.h"
 #include "engine/io/image_io.h"
@@ -9,6 +11,7 @@
 #include "planet/elevation/colour_ramp.h"
 #include "planet/elevation/elevation.h"
 #include "planet/elevation/equirect_preview.h"
+#include "planet/surface/surface_sample.h"
 #include "planet_commands.h"
 #include "progress_bar.h"
 #include "signal_cleanup.h"
@@ -27,6 +30,7 @@ struct ExportOptions {
   std::uint32_t width = 0;
   std::string out;
   std::string png;
+  std::string land_cover;       // the land cover map (.png), at png_width
   std::uint32_t png_width = 0;  // 0: min(width, 4096)
   unsigned threads = 1;
 };
@@ -49,31 +53,29 @@ Status checkOptions(ExportOptions& o) {
   if (auto s = checkWidth(o.width, "--width"); !s) return s;
   if (!hasExtension(o.out, ".exr")) return Error::inField("--out", "'" + o.out + "' must end in .exr");
   if (auto s = checkWritable(o.out, "--out"); !s) return s;
-  if (!o.png.empty()) {
-    if (!hasExtension(o.png, ".png")) return Error::inField("--png", "'" + o.png + "' must end in .png");
-    if (auto s = checkWritable(o.png, "--png"); !s) return s;
+  for (const auto& [path, field] : {std::pair{&o.png, "--png"}, std::pair{&o.land_cover, "--land-cover"}}) {
+    if (path->empty()) continue;
+    if (!hasExtension(*path, ".png")) return Error::inField(field, "'" + *path + "' must end in .png");
+    if (auto s = checkWritable(*path, field); !s) return s;
+    if (std::filesystem::absolute(*path) == std::filesystem::absolute(o.out)) {
+      return Error::inField(field, "must differ from --out");
+    }
+  }
+  if (!o.png.empty() && !o.land_cover.empty() &&
+      std::filesystem::absolute(o.png) == std::filesystem::absolute(o.land_cover)) {
+    return Error::inField("--land-cover", "must differ from --png");
+  }
+  if (!o.png.empty() || !o.land_cover.empty()) {
     if (o.png_width == 0) o.png_width = std::min<std::uint32_t>(o.width, 4096);
     if (auto s = checkWidth(o.png_width, "--png-width"); !s) return s;
-    if (std::filesystem::absolute(o.png) == std::filesystem::absolute(o.out)) {
-      return Error::inField("--png", "must differ from --out");
-    }
   }
   return Ok{};
 }
 
-Status writePreview(const ElevationModel& model, const PlanetDescription& planet, const ExportOptions& o,
-                    std::vector<float> elevation) {
-  const std::uint32_t w = o.png_width;
-  const std::uint32_t h = w / 2;
-  if (elevation.empty()) {  // a smaller preview than the map: sample it at its own size
-    elevation.resize(static_cast<std::size_t>(w) * h);
-    ProgressBar bar("preview");
-    sampleEquirectRows(model, w, h, 0, elevation, o.threads, [&bar](double f) { bar.update(f); });
-  }
-  const std::vector<glm::vec3> rgb = shadeEquirect(elevation, w, h, planet);
+Status writeRgbPng(const std::string& path, std::uint32_t width, std::span<const glm::vec3> rgb) {
   ImageRgba image;
-  image.width = w;
-  image.height = h;
+  image.width = width;
+  image.height = static_cast<std::uint32_t>(rgb.size() / width);
   image.rgba.resize(rgb.size() * 4);
   for (std::size_t i = 0; i < rgb.size(); ++i) {
     image.rgba[i * 4 + 0] = rgb[i].x;
@@ -81,13 +83,44 @@ Status writePreview(const ElevationModel& model, const PlanetDescription& planet
     image.rgba[i * 4 + 2] = rgb[i].z;
     image.rgba[i * 4 + 3] = 1.0f;
   }
-  return writePng(o.png, image);
+  return writePng(path, image);
+}
+
+// The PNGs, at --png-width: the land cover map (computed once; also the preview's ground colour on a
+// planet with land cover) and the shaded preview. Each file is written atomically.
+Status writePreviews(const ElevationModel& model, const PlanetDescription& planet, const ExportOptions& o,
+                     std::vector<float> elevation) {
+  if (o.png.empty() && o.land_cover.empty()) return Ok{};
+  const std::uint32_t w = o.png_width;
+  const std::uint32_t h = w / 2;
+  std::vector<glm::vec3> albedo;
+  if (planet.land_cover.enabled()) {
+    albedo.resize(static_cast<std::size_t>(w) * h);
+    ProgressBar bar("land cover");
+    landCoverEquirectRows(model, w, h, 0, albedo, o.threads, [&bar](double f) { bar.update(f); });
+  }
+  if (!o.land_cover.empty()) {
+    if (Status s = writeRgbPng(o.land_cover, w, albedo); !s) return s;
+    std::printf("wrote %s (%ux%u land cover map)\n", o.land_cover.c_str(), w, h);
+  }
+  if (o.png.empty()) return Ok{};
+  if (elevation.empty()) {  // a smaller preview than the map: sample it at its own size
+    elevation.resize(static_cast<std::size_t>(w) * h);
+    ProgressBar bar("preview");
+    sampleEquirectRows(model, w, h, 0, elevation, o.threads, [&bar](double f) { bar.update(f); });
+  }
+  if (Status s = writeRgbPng(o.png, w, shadeEquirect(elevation, w, h, planet, albedo)); !s) return s;
+  std::printf("wrote %s (%ux%u preview)\n", o.png.c_str(), w, h);
+  return Ok{};
 }
 
 int runExport(ExportOptions o) {
   if (auto s = checkOptions(o); !s) return usageError(s.error());
   const auto planet = loadPlanetForCommand(o.file);
   if (!planet) return kExitUsage;
+  if (!o.land_cover.empty() && !planet->land_cover.enabled()) {
+    return usageError(Error::inField("--land-cover", "the planet has no [[land_cover]] classes"));
+  }
   const ElevationModel model(*planet);
 
   const auto start = std::chrono::steady_clock::now();
@@ -114,12 +147,9 @@ int runExport(ExportOptions o) {
   const double samples = static_cast<double>(o.width) * (o.width / 2);
   std::printf("wrote %s (%ux%u, float elevation in metres, channel Y; %.2f s, %.2f M samples/s, %u threads)\n",
               o.out.c_str(), o.width, o.width / 2, seconds, samples / seconds * 1e-6, o.threads);
-  if (!o.png.empty()) {
-    if (Status s = writePreview(model, *planet, o, std::move(keep)); !s) {
-      printError(s.error().format());
-      return kExitFailure;
-    }
-    std::printf("wrote %s (%ux%u preview)\n", o.png.c_str(), o.png_width, o.png_width / 2);
+  if (Status s = writePreviews(model, *planet, o, std::move(keep)); !s) {
+    printError(s.error().format());
+    return kExitFailure;
   }
   std::fflush(stdout);
   return kExitOk;
@@ -135,8 +165,10 @@ void addPlanetExportCommand(CLI::App& planet, std::function<int()>& run) {
   cmd->add_option("FILE", o->file, "Planet file (default: the earthlike preset)");
   cmd->add_option("--width", o->width, "Map width W in pixels, even, [2, 65536]; the height is W/2")->required();
   cmd->add_option("--out", o->out, "Output .exr file (written atomically)")->required();
-  cmd->add_option("--png", o->png, "Also write a shaded, ramp-coloured preview .png");
-  cmd->add_option("--png-width", o->png_width, "Preview width in pixels (default: min(W, 4096))")
+  cmd->add_option("--png", o->png, "Also write a shaded preview .png (ramp or land cover colours)");
+  cmd->add_option("--land-cover", o->land_cover,
+                  "Also write the land cover map .png (albedo of the masks, the sea by depth), --png-width wide");
+  cmd->add_option("--png-width", o->png_width, "Width of the preview and land cover map (default: min(W, 4096))")
       ->check(CLI::Range(2U, 65536U));
   addThreadsOption(*cmd, o->threads);
   cmd->callback([o, &run] { run = [o] { return runExport(*o); }; });

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <glm/common.hpp>
+
 namespace globe {
 
 std::vector<ColourRampStop> defaultColourRampStops() {
@@ -81,6 +83,11 @@ void appendWaterErrors(const Water& water, std::vector<Error>& errors) {
   checkColour(water.deep_colour, "water.deep_colour", errors);
   if (!(inRange(water.depth_scale_m, 0.0, 1e5) && water.depth_scale_m > 0.0))
     errors.push_back(Error::inField("water.depth_scale_m", "must be within (0, 1e5] m"));
+}
+
+glm::vec3 seaColour(const Water& water, double depth_m) {
+  const float murk = static_cast<float>(1.0 - std::exp(-depth_m / water.depth_scale_m));
+  return glm::mix(water.shallow_colour, water.deep_colour, murk);
 }
 
 gpu::ColourRampParams packColourRamp(const ColourRamp& ramp) {

@@ -57,6 +57,10 @@ struct Water {
   bool operator==(const Water&) const = default;
 };
 
+// The colour of the sea over ground depth_m below sea level (> 0): the renderer's tint,
+// mix(shallow_colour, deep_colour, 1 - exp(-depth_m / depth_scale_m)), unlit.
+glm::vec3 seaColour(const Water& water, double depth_m);
+
 // Every problem with the ramp, each an Error with `field` set (e.g. "colour_ramp[2].elevation_m").
 void appendColourRampErrors(const ColourRamp& ramp, std::vector<Error>& errors);
 // Every problem with the water ("water.depth_scale_m", ...); nothing when it is not enabled.

@@ -13,8 +13,9 @@
 namespace globe {
 
 std::vector<glm::vec3> shadeEquirect(std::span<const float> elevation_m, std::uint32_t width, std::uint32_t height,
-                                     const PlanetDescription& planet) {
+                                     const PlanetDescription& planet, std::span<const glm::vec3> albedo) {
   assert(elevation_m.size() == static_cast<std::size_t>(width) * height);
+  assert(albedo.empty() || albedo.size() == elevation_m.size());
   const double radius_m = planet.radius_m;
   const gpu::ColourRampParams ramp = packColourRamp(planet.colour_ramp);
   const Water& water = planet.water;
@@ -36,8 +37,7 @@ std::vector<glm::vec3> shadeEquirect(std::span<const float> elevation_m, std::ui
       const auto yi = static_cast<std::int64_t>(y);
       const double depth_m = planet.sea_level_m - at(xi, yi);
       if (water.enabled && depth_m > 0.0) {
-        const float murk = static_cast<float>(1.0 - std::exp(-depth_m / water.depth_scale_m));
-        rgb[static_cast<std::size_t>(y) * width + x] = glm::mix(water.shallow_colour, water.deep_colour, murk);
+        rgb[static_cast<std::size_t>(y) * width + x] = seaColour(water, depth_m);
         continue;
       }
       const double gx = (at(xi + 1, yi) - at(xi - 1, yi)) / (2.0 * dx_m);  // rise per metre eastwards
@@ -45,7 +45,8 @@ std::vector<glm::vec3> shadeEquirect(std::span<const float> elevation_m, std::ui
       const double cos_slope = 1.0 / std::sqrt(1.0 + gx * gx + gy * gy);
       const glm::dvec3 n = glm::normalize(glm::dvec3(-gx * exaggeration, -gy * exaggeration, 1.0));
       const double light = 0.35 + 0.65 * std::max(0.0, glm::dot(n, sun)) / sun.z;
-      const glm::vec3 c = rampColour(ramp, at(xi, yi), cos_slope);
+      const glm::vec3 c =
+          albedo.empty() ? rampColour(ramp, at(xi, yi), cos_slope) : albedo[static_cast<std::size_t>(y) * width + x];
       rgb[static_cast<std::size_t>(y) * width + x] = c * static_cast<float>(std::min(light, 1.5));
     }
   }

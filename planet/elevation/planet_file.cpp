@@ -4,6 +4,7 @@
 #include "planet/atmosphere/atmosphere_toml.h"
 #include "planet/elevation/planet_toml_reader.h"
 #include "planet/sources/source_toml.h"
+#include "planet/surface/land_cover_toml.h"
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
@@ -32,7 +33,9 @@ constexpr std::string_view kTopKeys[] = {"name",
                                          "snow",
                                          "water",
                                          "sources",
-                                         "atmosphere"};
+                                         "atmosphere",
+                                         "climate",
+                                         "land_cover"};
 constexpr std::string_view kShapeKeys[] = {"equatorial_radius_m", "flattening"};
 constexpr std::string_view kStopKeys[] = {"elevation_m", "colour"};
 constexpr std::string_view kRockKeys[] = {"slope_deg", "blend_deg", "colour"};
@@ -355,6 +358,7 @@ PlanetFileCheck readPlanet(const toml::table& root, std::string_view source_name
   PlanetFileCheck check;
   PlanetDescription& planet = check.planet;
   planet.name = std::filesystem::path(source_name).stem().string();
+  const std::string directory = std::filesystem::path(source_name).parent_path().string();
   const toml::node* radius = nullptr;
   const toml::node* shape = nullptr;
   bool have_layers = false;
@@ -371,7 +375,11 @@ PlanetFileCheck readPlanet(const toml::table& root, std::string_view source_name
     if (k == "atmosphere") {
       readAtmosphere(r, node, planet.atmosphere.emplace());
     } else if (k == "sources") {
-      readSources(r, node, std::filesystem::path(source_name).parent_path().string(), planet.sources);
+      readSources(r, node, directory, planet.sources);
+    } else if (k == "climate") {
+      readClimate(r, node, planet.land_cover.climate);
+    } else if (k == "land_cover") {
+      readLandCoverClasses(r, node, directory, planet.land_cover.classes);
     } else {
       readTopLevel(r, k, node, planet);
     }
@@ -381,6 +389,7 @@ PlanetFileCheck readPlanet(const toml::table& root, std::string_view source_name
     r.fail(shape->source(), "shape", "give radius_m (a sphere) or shape (an ellipsoid), not both");
   }
   if (!have_layers) r.fail(root.source(), "layers", "missing (required, at least one [[layers]])");
+  checkLandCoverTables(r, root);
 
   // Ranges and cross-field rules live in one place; each error points at the value that was read.
   std::vector<Error> invalid = validatePlanetAll(planet);

@@ -13,6 +13,9 @@
 //   [[colour_ramp]]             elevation_m = 0.0         colour = [0.45, 0.40, 0.28]   # 2 to 16 stops
 //   [rock]                      slope_deg = 35.0          blend_deg = 10.0         colour = [...]
 //   [snow]                      elevation_m = 4000.0      blend_m = 500.0          max_slope_deg = 50.0
+//   [climate]                   equator_temperature_c = 27.0   lapse_rate_c_per_km = 6.5   ...
+//   [[land_cover]]              name = "forest"  colour = [...]  temperature_c = [0.0, 25.0]   # 1 to 8
+//                               moisture = [0.5, 1e30]  elevation_m = [...]  slope_deg = [0.0, 35.0]
 //
 // Nothing throws out of these functions: every problem (syntax, unknown key, wrong type, NaN/Inf,
 // out of range, radius <= 0, too many octaves for double precision) is an Error with the file, the

@@ -1,6 +1,8 @@
 #include "planet/elevation/planet_file_writer.h"
 
 #include "planet/atmosphere/atmosphere_toml.h"
+#include "planet/elevation/planet_toml_reader.h"
+#include "planet/surface/land_cover_toml.h"
 
 #include <fmt/format.h>
 #include <cassert>
@@ -8,22 +10,6 @@
 
 namespace globe {
 namespace {
-
-// TOML basic string: escape what TOML requires (quote, backslash, control characters).
-std::string quoted(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
-      out += fmt::format("\\u{:04x}", static_cast<unsigned>(static_cast<unsigned char>(c)));
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
 
 // fmt's "{}" is the shortest text that parses back to the same double ("6371000", "0.64", "1e+30").
 std::string number(double v) { return fmt::format("{}", v); }
@@ -43,25 +29,25 @@ std::string formatPlanetToml(const PlanetDescription& planet) {
   fmt::format_to(line,
                  "name = {}\n{}\nseed = {}\nsea_level_m = {}\nsurface_gravity_m_s2 = {}\n"
                  "default_quality = \"{}\"\n",
-                 quoted(planet.name), shape, planet.seed, number(planet.sea_level_m),
+                 tomlQuoted(planet.name), shape, planet.seed, number(planet.sea_level_m),
                  number(planet.surface_gravity_m_s2), qualityPresetName(planet.default_quality));
   for (const ElevationLayer& l : planet.layers) {
     fmt::format_to(line,
                    "\n[[layers]]\nname = {}\nkind = \"{}\"\noctaves = {}\nwavelength_m = {}\nlacunarity = {}\n"
                    "gain = {}\namplitude_m = {}\noffset_m = {}\n",
-                   quoted(l.name), layerKindName(l.kind), l.octaves, number(l.wavelength_m), number(l.lacunarity),
+                   tomlQuoted(l.name), layerKindName(l.kind), l.octaves, number(l.wavelength_m), number(l.lacunarity),
                    number(l.gain), number(l.amplitude_m), number(l.offset_m));
     if (l.modulated_by >= 0) {
       fmt::format_to(line, "modulated_by = {}\nmodulation_low_m = {}\nmodulation_high_m = {}\nmodulation_floor = {}\n",
-                     quoted(planet.layers[static_cast<std::size_t>(l.modulated_by)].name), number(l.modulation_low_m),
-                     number(l.modulation_high_m), number(l.modulation_floor));
+                     tomlQuoted(planet.layers[static_cast<std::size_t>(l.modulated_by)].name),
+                     number(l.modulation_low_m), number(l.modulation_high_m), number(l.modulation_floor));
     }
   }
   for (const ElevationSource& src : planet.sources) {
     fmt::format_to(line,
                    "\n[[sources]]\npath = {}\nnodata = \"{}\"\namplify = {}\npriority = {}\nvertical_scale = {}\n"
                    "vertical_offset_m = {}\n",
-                   quoted(src.path), noDataModeName(src.nodata), src.amplify ? "true" : "false", src.priority,
+                   tomlQuoted(src.path), noDataModeName(src.nodata), src.amplify ? "true" : "false", src.priority,
                    number(src.vertical_scale), number(src.vertical_offset_m));
     if (src.blend_m >= 0.0) fmt::format_to(line, "blend_m = {}\n", number(src.blend_m));
   }
@@ -81,6 +67,7 @@ std::string formatPlanetToml(const PlanetDescription& planet) {
                    colour(planet.water.shallow_colour), colour(planet.water.deep_colour),
                    number(planet.water.depth_scale_m));
   }
+  out += formatLandCoverToml(planet.land_cover);
   if (planet.atmosphere) out += formatAtmosphereToml(*planet.atmosphere);
   return out;
 }

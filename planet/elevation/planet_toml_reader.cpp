@@ -55,6 +55,21 @@ bool isKnownKey(std::string_view key, std::span<const std::string_view> known) {
   return std::find(known.begin(), known.end(), key) != known.end();
 }
 
+std::string tomlQuoted(std::string_view s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+      out += fmt::format("\\u{:04x}", static_cast<unsigned>(static_cast<unsigned char>(c)));
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
 std::string unknownKeyMessage(std::string_view key, std::span<const std::string_view> known) {
   std::string_view best;
   std::size_t best_distance = 4;  // suggest only close matches

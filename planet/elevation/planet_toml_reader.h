@@ -23,6 +23,10 @@ std::string_view tomlTypeName(toml::node_type t);
 
 bool isKnownKey(std::string_view key, std::span<const std::string_view> known);
 
+// A TOML basic string for `s`, quotes included, escaping what TOML requires (quote, backslash,
+// control characters): what the planet file writer writes for names and paths.
+std::string tomlQuoted(std::string_view s);
+
 // "unknown key", with a suggestion when a known key is close ("did you mean 'radius_m'?").
 std::string unknownKeyMessage(std::string_view key, std::span<const std::string_view> known);
 

@@ -90,6 +90,31 @@ else
   echo "FAIL: planet check error list not capped:"; head -30 "$WORK/stderr"; failures=$((failures + 1))
 fi
 rm -f "$WORK/many.toml"
+# Bad land cover ([climate], [[land_cover]]): the first problem on one line, file:line:column and
+# field, exit 2 and nothing written.
+LAND='radius_m = 5e6
+[[layers]]
+octaves = 2
+wavelength_m = 1e6
+amplitude_m = 100
+'
+CLASS='[[land_cover]]
+name = "grass"
+colour = [0.1, 0.3, 0.05]
+'
+printf '%s%smoisture = [0.8, 0.2]\n' "$LAND" "$CLASS" >"$WORK/lc_moisture.toml"
+expect 2 "lc_moisture.toml:9:12: land_cover\[0\].moisture: the first value must be below the second" "$WORK/lc.exr" -- "$GLOBE" planet export "$WORK/lc_moisture.toml" --width 64 --out "$WORK/lc.exr"
+printf '%s%scolor = [1, 1, 1]\n' "$LAND" "$CLASS" >"$WORK/lc_key.toml"
+expect 2 "lc_key.toml:9:1: land_cover\[0\].color: unknown key \(did you mean 'colour'\?\)" "$WORK/lc.exr" -- "$GLOBE" planet export "$WORK/lc_key.toml" --width 64 --out "$WORK/lc.exr"
+{ printf '%s' "$LAND"; for i in 0 1 2 3 4 5 6 7 8; do printf '[[land_cover]]\nname = "c%s"\ncolour = [0, 0, 0]\n' "$i"; done; } >"$WORK/lc_nine.toml"
+expect 2 "lc_nine.toml:30:1: land_cover: at most 8 classes" "" -- "$GLOBE" planet stats "$WORK/lc_nine.toml" --samples 10
+printf '%s[climate]\nmoisture_base = 0.5\n' "$LAND" >"$WORK/lc_climate.toml"
+expect 2 "lc_climate.toml:6:1: climate: \[climate\] needs at least one \[\[land_cover\]\] class" "" -- "$GLOBE" planet stats "$WORK/lc_climate.toml" --samples 10
+printf '%s' "$LAND" >"$WORK/lc_none.toml"
+expect 2 "--land-cover: the planet has no \[\[land_cover\]\] classes" "$WORK/lc.png" -- "$GLOBE" planet export "$WORK/lc_none.toml" --width 64 --out "$WORK/lc.exr" --land-cover "$WORK/lc.png"
+expect 2 "--land-cover: '.*lc.jpg' must end in .png" "$WORK/lc.exr" -- "$GLOBE" planet export --width 64 --out "$WORK/lc.exr" --land-cover "$WORK/lc.jpg"
+[[ -e "$WORK/lc.exr" ]] && { echo "FAIL: a refused land cover export left lc.exr"; failures=$((failures + 1)); }
+rm -f "$WORK"/lc_*.toml
 # A write that fails keeps the earlier file: a file size limit (EFBIG, SIGXFSZ ignored) stands in
 # for a full disk (ENOSPC); both go through the same checked writer.
 limited() { bash -c 'trap "" XFSZ; ulimit -f "$0"; exec "$@"' "$@"; }

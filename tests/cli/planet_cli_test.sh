@@ -60,6 +60,12 @@ for want in "elevation: min -[0-9.]* m, max [0-9.]* m, mean" "below sea level: [
   grep -q "$want" "$WORK/stats" || fail "stats output lacks '$want'"
 done
 [[ $(grep -c ' m .* % .* %' "$WORK/stats") -eq 8 ]] || fail "stats: expected 8 hypsometry bands"
+# Land cover shares: one line per class, percent of the planet's area, summing to 100.
+[[ $(grep -c '^land_cover ' "$WORK/stats") -eq 3 ]] || fail "stats: expected 3 land_cover lines: $(cat "$WORK/stats")"
+grep -qE '^land_cover highland [0-9]+\.[0-9]$' "$WORK/stats" || fail "stats: no 'land_cover highland PERCENT' line"
+awk '/^land_cover / { s += $3 } END { exit !(s > 99.8 && s < 100.2) }' "$WORK/stats" || fail "stats: land cover shares do not sum to 100"
+"$GLOBE" planet stats "$SRC/assets/planets/earthlike.toml" --samples 20000 >"$WORK/stats" 2>&1 || fail "earthlike stats"
+grep -qE '^land_cover sea [0-9.]+$' "$WORK/stats" || fail "stats: a planet with [water] has no land_cover sea line"
 a=$("$GLOBE" planet sample "$SRC/assets/planets/asteroid.toml" --at 10,20 --threads 1 2>/dev/null)
 [[ -z "$a" ]] || fail "sample accepted --threads"
 a=$("$GLOBE" planet sample "$SRC/assets/planets/asteroid.toml" --at 10,20 --at=-45,170)
@@ -71,6 +77,18 @@ a=$("$GLOBE" planet sample "$SRC/assets/planets/asteroid.toml" --at 10,20 --at=-
 [[ -s "$WORK/mars.exr" && -s "$WORK/mars.png" ]] || fail "export did not write both files"
 [[ $(head -c 4 "$WORK/mars.exr" | od -An -tx1 | tr -d ' ') == "762f3101" ]] || fail "mars.exr is not OpenEXR"
 ls -A "$WORK" | grep -q '\.tmp' && fail "export left a temporary file"
+# -- export of the map alone (a planet with land cover, no PNG asked for).
+"$GLOBE" planet export "$SRC/assets/planets/earthlike.toml" --width 64 --out "$WORK/plain.exr" >/dev/null 2>"$WORK/stderr" \
+  && [[ -s "$WORK/plain.exr" ]] || fail "export without previews: $(cat "$WORK/stderr")"
+# -- export with land cover: the map and the preview at --png-width, PNGs of the right size.
+png_size() { od -An -tu1 -j16 -N8 "$1" | awk '{ printf "%dx%d", $3 * 256 + $4, $7 * 256 + $8 }'; }
+"$GLOBE" planet export "$SRC/assets/planets/earthlike.toml" --width 128 --out "$WORK/earth.exr" --png "$WORK/earth.png" \
+  --land-cover "$WORK/earth-land.png" --png-width 96 >"$WORK/stdout" 2>"$WORK/stderr" || fail "land cover export: $(cat "$WORK/stderr")"
+for f in earth.png earth-land.png; do
+  [[ "$(png_size "$WORK/$f")" == "96x48" ]] || fail "$f is $(png_size "$WORK/$f"), expected 96x48"
+done
+grep -q "wrote .*earth-land.png (96x48 land cover map)" "$WORK/stdout" || fail "land cover export printed '$(cat "$WORK/stdout")'"
+ls -A "$WORK" | grep -q '\.tmp' && fail "land cover export left a temporary file"
 
 # -- bad inputs: one line, exit 2, nothing written.
 expect_usage() {

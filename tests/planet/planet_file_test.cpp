@@ -389,6 +389,9 @@ TEST(PlanetPresets, EveryPresetLoadsAndRoundTrips) {
     const gpu::ColourRampParams ca = packColourRamp(p.colour_ramp);
     const gpu::ColourRampParams cb = packColourRamp(again->colour_ramp);
     EXPECT_EQ(std::memcmp(&ca, &cb, sizeof ca), 0);
+    const gpu::LandCoverParams la = packLandCover(p.land_cover, p.radius_m, p.seed, p.sea_level_m);
+    const gpu::LandCoverParams lb = packLandCover(again->land_cover, again->radius_m, again->seed, again->sea_level_m);
+    EXPECT_EQ(std::memcmp(&la, &lb, sizeof la), 0);
     EXPECT_EQ(formatPlanetToml(*again), text);
   }
 }
