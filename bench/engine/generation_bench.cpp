@@ -33,6 +33,16 @@ const ElevationModel& wgs84Model() {
   return m;
 }
 
+// Earthlike without its land cover: the colour ramp's albedo, no masks (docs/rendering.md, "Land cover").
+const ElevationModel& noLandCoverModel() {
+  static const ElevationModel m = [] {
+    PlanetDescription p = bench::earthlike();
+    p.land_cover = {};
+    return ElevationModel(p);
+  }();
+  return m;
+}
+
 // The same 4096 directions as bench/planet/elevation_bench.cpp, repeated to fill a dispatch.
 std::vector<glm::dvec3> directions(size_t count) {
   std::mt19937_64 rng(42);
@@ -73,13 +83,16 @@ std::vector<NodeId> benchNodes(size_t count) {
 }
 
 // Warm: ms per node payload, `batch` nodes per submit (the pool's budget is 8 per frame); third
-// argument 0 on earthlike's sphere, 1 on WGS84; fourth the normal map's scale (0: none, as collision
-// meshes; 1, 2, 4: the renderer's payloads, docs/rendering.md "Normal maps").
+// argument 0 on earthlike's sphere, 1 on WGS84, 2 on earthlike without land cover; fourth the normal map's scale (0:
+// none, as collision meshes; 1, 2, 4: the renderer's payloads, docs/rendering.md "Normal maps").
 void BM_GpuPayload(benchmark::State& state) {
   const uint32_t cells = uint32_t(state.range(0));
   const uint32_t batch = uint32_t(state.range(1));
-  GpuPayloadGenerator gen(device(), state.range(2) == 0 ? model() : wgs84Model(), cells, batch, 1,
-                          GenerationPrecision::kDouble, false, uint32_t(state.range(3)));
+  const ElevationModel& planet = state.range(2) == 0   ? model()
+                                 : state.range(2) == 1 ? wgs84Model()
+                                                       : noLandCoverModel();
+  GpuPayloadGenerator gen(device(), planet, cells, batch, 1, GenerationPrecision::kDouble, false,
+                          uint32_t(state.range(3)));
   gen.reserveSlots(batch);
   auto nodes = benchNodes(batch);
   std::vector<GenerationJob> jobs;
@@ -106,6 +119,7 @@ void BM_GpuPayload(benchmark::State& state) {
 BENCHMARK(BM_GpuPayload)
     ->ArgsProduct({{16, 32, 64, 128}, {8, 32}, {0}, {0}})
     ->ArgsProduct({{16}, {8}, {0}, {1, 2, 4}})
+    ->ArgsProduct({{16}, {8, 32}, {2}, {0, 1}})
     ->Args({64, 32, 1, 0})
     ->Args({128, 32, 1, 0})
     ->UseManualTime()

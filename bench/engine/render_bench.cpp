@@ -3,7 +3,9 @@
 //
 //   build/release/bin/engine_bench --benchmark_filter=TerrainFrame
 // Knobs: GLOBE_BENCH_QUALITY (fast|balanced|exact, default balanced), then overrides
-// GLOBE_BENCH_GRID (cells per node side) and GLOBE_BENCH_RANGE (LOD distance multiplier).
+// GLOBE_BENCH_GRID (cells per node side) and GLOBE_BENCH_RANGE (LOD distance multiplier);
+// GLOBE_BENCH_LAND_COVER=off drops the planet's land cover (the colour ramp instead);
+// GLOBE_BENCH_DETAIL=on|off overrides the preset's detail textures (TerrainSettings::detailTextures).
 #include "bench_support.h"
 #include "engine/render/headless_renderer.h"
 #include "engine/render/quality.h"
@@ -15,12 +17,21 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 
 namespace globe {
 namespace {
 
 using bench::device;
-const PlanetDescription& planet() { return bench::earthlike(); }
+const PlanetDescription& planet() {
+  static const PlanetDescription p = [] {
+    PlanetDescription d = bench::earthlike();
+    if (const char* cover = std::getenv("GLOBE_BENCH_LAND_COVER"); cover && std::string(cover) == "off")
+      d.land_cover = {};
+    return d;
+  }();
+  return p;
+}
 
 void BM_TerrainFrame(benchmark::State& state) {
   const int index = int(state.range(0));
@@ -37,6 +48,7 @@ void BM_TerrainFrame(benchmark::State& state) {
   TerrainSettings settings = terrainSettingsFor(quality);
   if (const char* g = std::getenv("GLOBE_BENCH_GRID")) settings.gridCells = uint32_t(std::atoi(g));
   if (const char* r = std::getenv("GLOBE_BENCH_RANGE")) settings.ranges.distanceMultiplier = std::atof(r);
+  if (const char* d = std::getenv("GLOBE_BENCH_DETAIL")) settings.detailTextures = std::string(d) == "on";
   GeodeticPose pose = standardCameraPose(index);
   glm::dvec3 down = directionFromLatLon(pose.latitude_deg, pose.longitude_deg);
   Camera camera = cameraFromPose(pose, model.radius_m() + model.elevation_m(down), model.shape(), 1280.0 / 720.0);

@@ -123,6 +123,10 @@ void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid) {
                  "With tolerance-driven ranges: on (refine rough relief further than plains and sea) or off "
                  "(one range per depth) (docs/lod.md, \"Roughness\"; default: off)")
       ->check(CLI::IsMember({"on", "off"}));
+  cmd.add_option("--detail-textures", options.detailTextures,
+                 "On a planet with land cover: on (splat the classes' detail textures per fragment) or off (the "
+                 "classes' colours per vertex) (docs/rendering.md, \"Land cover\"; default: the preset's)")
+      ->check(CLI::IsMember({"on", "off"}));
   cmd.add_option("--normal-map-scale", options.normalMapScale,
                  "Normal map cells per grid cell: 1, 2 or 4; 0 = none, light per vertex (docs/rendering.md, "
                  "\"Normal maps\"; default: the preset's)")
@@ -146,6 +150,7 @@ Result<TerrainSettings> terrainSettingsFromOptions(const QualityOptions& options
   if (options.gridCells) settings.gridCells = options.gridCells;
   if (options.tolerance_px > 0) settings.ranges.tolerance_px = options.tolerance_px;
   if (!options.roughness.empty()) settings.ranges.roughness = options.roughness == "on";
+  if (!options.detailTextures.empty()) settings.detailTextures = options.detailTextures == "on";
   if (!options.antialiasing.empty()) {
     auto aa = vk::parseAntialiasing(options.antialiasing, "--aa");
     if (!aa) return aa.error();

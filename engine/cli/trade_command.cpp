@@ -70,7 +70,7 @@ bool sameKnobs(const TerrainSettings& a, const TerrainSettings& b) {
          a.ranges.maxDepth == b.ranges.maxDepth && a.ranges.morphFraction == b.ranges.morphFraction &&
          a.generation == b.generation && a.vertexPositions == b.vertexPositions &&
          a.ranges.tolerance_px == b.ranges.tolerance_px && a.ranges.roughness == b.ranges.roughness &&
-         a.normalMapScale == b.normalMapScale;
+         a.normalMapScale == b.normalMapScale && a.detailTextures == b.detailTextures;
 }
 
 // One knob at a time around the baseline, then the presets and a few combinations.

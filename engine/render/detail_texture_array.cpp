@@ -3,6 +3,7 @@
 #include "engine/io/image_io.h"
 #include "engine/vk/resources.h"
 #include "engine/vk/vk_check.h"
+#include "shaders/include/terrain_layout.h"
 
 #include <fmt/format.h>
 
@@ -109,7 +110,7 @@ void DetailTextureArray::upload(vk::Device& device, const DetailTextureSet& text
 }
 
 Result<DetailTextureSet> loadDetailTextures(const LandCover& cover, std::uint64_t seed) {
-  DetailTextureSet textures = proceduralDetailTextures(cover, seed);
+  DetailTextureSet textures = proceduralDetailTextures(cover, seed, GLOBE_DETAIL_TEXTURE_SIZE);
   bool replaced = false;
   for (size_t i = 0; i < cover.classes.size(); ++i) {
     const std::string& path = cover.classes[i].texture;

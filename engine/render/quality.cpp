@@ -9,7 +9,8 @@ TerrainSettings terrainSettingsFor(QualityPreset preset) {
     case QualityPreset::kFast:  // ~75k triangles at the 1 km camera: the cheapest useful view
       s.gridCells = 16;
       s.ranges.distanceMultiplier = 0.25;
-      s.normalMapScale = 0;  // light per vertex, as balanced
+      s.normalMapScale = 0;      // light per vertex, as balanced
+      s.detailTextures = false;  // as balanced
       s.atmosphere = AtmosphereDetail::kSky;
       break;
     case QualityPreset::kBalanced:  // ~80k triangles at 1 km: 26 ms at 1280x720 on lavapipe (goal 33)
@@ -21,6 +22,9 @@ TerrainSettings terrainSettingsFor(QualityPreset preset) {
       // Light per vertex: with normal maps (scale 1) the flight's CPU doubles on lavapipe and its
       // median would pass 33 ms (docs/rendering.md, "Normal maps").
       s.normalMapScale = 0;
+      // Land cover colours per vertex: the splat's detail textures took the flight's median from 21
+      // to 33 ms on lavapipe (docs/rendering.md, "Land cover").
+      s.detailTextures = false;
       // The sky only: light and aerial perspective through the atmosphere cost +75-95 % of the
       // flight's CPU on lavapipe (docs/rendering.md, "Atmosphere").
       s.atmosphere = AtmosphereDetail::kSky;

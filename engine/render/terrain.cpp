@@ -71,7 +71,7 @@ Result<std::unique_ptr<Terrain>> Terrain::create(vk::Device& device, const Eleva
   if (lod.ranges.tolerance_px > 0.0 && lod.ranges.roughness)
     selector->ranges().setRoughness(reliefRoughnessMap(model, int(settings.gridCells), lod.ranges.maxDepth));
   std::unique_ptr<Terrain> terrain(new Terrain(device, model, settings, std::move(*selector)));
-  if (model.landCover().class_count > 0) {
+  if (model.landCover().class_count > 0 && settings.detailTextures) {
     Result<DetailTextureSet> textures = loadDetailTextures(model.landCoverDescription(), model.seed());
     if (!textures) return textures.error();
     terrain->detail_ = std::make_unique<DetailTextureArray>(device, *textures);

@@ -35,6 +35,9 @@ struct TerrainSettings {
   // normalMapScale * gridCells cells per side (docs/rendering.md, "Normal maps"). 0: no maps, the
   // light and colour per vertex (cheaper per fragment on lavapipe).
   uint32_t normalMapScale = 1;
+  // On a planet with land cover: splat the classes' detail textures per fragment (the _cover
+  // pipelines); off, the payloads' land cover colours per vertex only (docs/rendering.md, "Land cover").
+  bool detailTextures = true;
   LodRangeConfig ranges;  // view ranges, max depth, morph region
   // Height (pixels) of the image the view is drawn in: tolerance-driven ranges (ranges.tolerance_px)
   // keep the screen error within the tolerance in pixels of this height. The commands set it.

@@ -17,6 +17,7 @@
 #include <cstring>
 #include <limits>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace globe {
@@ -94,7 +95,7 @@ vk::GraphicsPipelineDesc terrainDesc(TargetFormat target, bool wireframe, VkCull
   d.cull = cull;
   if (shading.cover) {
     d.sampledImageBinding = GLOBE_TERRAIN_DETAIL_BINDING;
-    d.vertexSpecialization = {1u};  // GLOBE_TERRAIN_SPEC_LAND_COVER
+    d.vertexShader.insert(d.vertexShader.size() - std::string_view(".vert").size(), "_cover");
   }
   return d;
 }

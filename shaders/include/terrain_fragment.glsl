@@ -14,10 +14,11 @@
 // - GLOBE_TERRAIN_WATER (nodes that have sea): the fragments below sea level shaded as water
 //   (water_shading.glsl).
 // - GLOBE_TERRAIN_HOLES (planets with kept no-data holes): discard inside them, a rim at the border.
-// - GLOBE_TERRAIN_COVER (planets with land cover): the albedo modulated by the classes' tiled detail
-//   textures, blended by the vertex-interpolated masks (splat texturing), at a fine and a coarse
-//   scale (terrain_detail.h). The textures' mean is 0.5, so far away (coarse mips) the modulation is
-//   1 and the colour is the payload's: no pop between distances.
+// - GLOBE_TERRAIN_COVER (planets with land cover, detail textures on): the albedo modulated by the
+//   classes' tiled detail textures (splat texturing): the fine tile of the dominant class per
+//   fragment, the coarse tile from the vertex stage (terrain_cover*.vert; terrain_detail.h). The
+//   textures' mean is 0.5, so far away (coarse mips) the modulation is 1 and the colour is the
+//   payload's: no pop between distances.
 #include "display_encoding.glsl"
 #include "terrain_layout.h"
 
@@ -60,24 +61,32 @@ layout(location = 10) flat in vec3 inSkyHorizon;
 layout(set = 0, binding = GLOBE_TERRAIN_DETAIL_BINDING) uniform sampler2DArray detailTextures;
 layout(location = 14) in vec4 inCover0;
 layout(location = 15) in vec4 inCover1;
-layout(location = 16) in vec4 inDetailUv;
+layout(location = 16) in vec2 inDetailUv;
+layout(location = 17) in vec3 inCoarseDetail;
 
-// The splat's modulation of the albedo: sum over the classes present of mask * fine * coarse * 4.
-// Gradients are taken once, outside the per-class branches (which depend on interpolated masks).
+// The splat's modulation of the albedo: the fine detail texture of one class times the vertex stage's
+// coarse modulation. The class is the dominant one, or where a second one holds a share of the two
+// largest masks, that one on that share of the pixels (an ordered dither: the patterns interleave
+// across the transition instead of switching at a line). One fetch per fragment, branch-free, the mip
+// from the coordinates' derivatives: each textureLod cost lavapipe ~4 ms a frame at 1280x720, and
+// per-fragment branches around them ~6 ms more (docs/rendering.md, "Land cover").
 vec3 detailModulation() {
-  vec4 dx = dFdx(inDetailUv), dy = dFdy(inDetailUv);
-  vec3 sum = vec3(0.0);
-  float total = 0.0;
+  uint first = 0u, second = 0u;
+  float w1 = -1.0, w2 = -1.0;
   [[unroll]] for (uint i = 0u; i < 8u; ++i) {
     float w = i < 4u ? inCover0[i] : inCover1[i - 4u];
-    if (w > 0.02) {
-      vec3 fine = textureGrad(detailTextures, vec3(inDetailUv.xy, float(i)), dx.xy, dy.xy).rgb;
-      vec3 coarse = textureGrad(detailTextures, vec3(inDetailUv.zw, float(i)), dx.zw, dy.zw).rgb;
-      sum += w * fine * coarse;
-      total += w;
-    }
+    bool top = w > w1;
+    second = top ? first : (w > w2 ? i : second);
+    w2 = top ? w1 : max(w2, w);
+    first = top ? i : first;
+    w1 = max(w1, w);
   }
-  return total > 0.0 ? sum * (4.0 / total) : vec3(1.0);
+  // Interleaved gradient noise [Jimenez 2014]: a threshold in [0, 1) per pixel.
+  float threshold = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+  float layer = float(threshold * (w1 + w2) < w2 ? second : first);
+  vec2 dx = dFdx(inDetailUv), dy = dFdy(inDetailUv);
+  float lod = 0.5 * log2(max(dot(dx, dx), dot(dy, dy)) * float(GLOBE_DETAIL_TEXTURE_SIZE * GLOBE_DETAIL_TEXTURE_SIZE));
+  return 2.0 * textureLod(detailTextures, vec3(inDetailUv, layer), lod).rgb * inCoarseDetail;
 }
 #endif
 

@@ -45,8 +45,8 @@ struct TerrainDvec4 {
 // Binding of the land cover's detail textures (a sampler2DArray, one layer per class) in the terrain
 // pipelines with land cover (terrain_fragment.glsl), past every buffer binding.
 #define GLOBE_TERRAIN_DETAIL_BINDING 10
-// Specialization constant of the terrain vertex stages: 1 = read the payloads' land cover masks.
-#define GLOBE_TERRAIN_SPEC_LAND_COVER 0
+// Texels per side of a detail texture's level 0 (planet/surface/detail_texture.h, kDetailTextureSize).
+#define GLOBE_DETAIL_TEXTURE_SIZE 256
 
 // Constants of one frame (std430, 256 bytes).
 struct TerrainFrame {

@@ -57,10 +57,6 @@ vec3 terrainReprojected(dvec4 uv, uint cells, int i, int j, float elevation_m) {
 }
 #endif
 
-// 1: the planet has land cover: the vertex carries its sample's masks and detail texture coordinates
-// (a specialization constant, so without it nothing of this is left in the shader).
-layout(constant_id = GLOBE_TERRAIN_SPEC_LAND_COVER) const uint kTerrainLandCover = 0u;
-
 // Finishes the morph a little inside both ends of the band so that float rounding of the distance
 // cannot leave k just below 1 where a coarser neighbour needs it exactly 1 (or just above 0).
 const float kMorphMargin = 1.0e-3;
@@ -80,11 +76,12 @@ struct TerrainVertex {
   vec2 mapUv;
   uint mapBase;
   float mapBlend;
-  // Land cover (kTerrainLandCover): the 8 class masks in [0, 1] (morphed like the colour), and the
+  // Land cover (GLOBE_TERRAIN_COVER): the 8 class masks in [0, 1] (morphed like the colour), and the
   // fine (xy) and coarse (zw) detail texture coordinates (TerrainInstance.detail, terrain_detail.h).
   vec4 cover0;
   vec4 cover1;
   vec4 detailUv;
+  uint nodeLevel;  // the node's own level
 };
 
 // The land cover masks of the slot's mesh sample `sampleIndex` (payload_layout.h) as weights.
@@ -154,7 +151,9 @@ TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCell
   vec4 surface = unpackPayloadSurface(normal0.w);
   vec2 mapUv = vec2(si, sj) / float(cells);
   vec4 cover0 = vec4(0.0), cover1 = vec4(0.0);
-  if (kTerrainLandCover != 0u) terrainCoverMasks(base, terrainSample(0u, cells, si, sj), cover0, cover1);
+#ifdef GLOBE_TERRAIN_COVER
+  terrainCoverMasks(base, terrainSample(0u, cells, si, sj), cover0, cover1);
+#endif
   bool oddI = (gi & 1u) != 0u, oddJ = (gj & 1u) != 0u;
   if (k > 0.0 && (oddI || oddJ)) {
     // Even neighbours whose midpoint the vertex slides to (never outside the drawn grid: the
@@ -181,13 +180,13 @@ TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCell
     // parent's triangle interpolates there.
     surface = mix(surface, 0.5 * (unpackPayloadSurface(na.w) + unpackPayloadSurface(nb.w)), k);
     mapUv = mix(mapUv, vec2((a + b) * stride) / (2.0 * float(cells)), k);
-    if (kTerrainLandCover != 0u) {
-      vec4 a0, a1, b0, b1;
-      terrainCoverMasks(base, ia - base, a0, a1);
-      terrainCoverMasks(base, ib - base, b0, b1);
-      cover0 = mix(cover0, 0.5 * (a0 + b0), k);
-      cover1 = mix(cover1, 0.5 * (a1 + b1), k);
-    }
+#ifdef GLOBE_TERRAIN_COVER
+    vec4 a0, a1, b0, b1;
+    terrainCoverMasks(base, ia - base, a0, a1);
+    terrainCoverMasks(base, ib - base, b0, b1);
+    cover0 = mix(cover0, 0.5 * (a0 + b0), k);
+    cover1 = mix(cover1, 0.5 * (a1 + b1), k);
+#endif
   }
 
   if (skirt) {
@@ -226,11 +225,11 @@ TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCell
   v.cover0 = cover0;
   v.cover1 = cover1;
   v.detailUv = vec4(0.0);
-  if (kTerrainLandCover != 0u) {
-    // The node's own level (a partial node is drawn one level up but spans its own square).
-    float level = float(inst.info.z + stride - 1u);
-    v.detailUv = inst.detail + vec4(mapUv * exp2(frame.detailLevels.x - level), mapUv * exp2(frame.detailLevels.y - level));
-  }
+  v.nodeLevel = inst.info.z + stride - 1u;  // a partial node is drawn one level up but spans its own square
+#ifdef GLOBE_TERRAIN_COVER
+  float level = float(v.nodeLevel);
+  v.detailUv = inst.detail + vec4(mapUv * exp2(frame.detailLevels.x - level), mapUv * exp2(frame.detailLevels.y - level));
+#endif
   return v;
 }
 

@@ -30,10 +30,31 @@ layout(location = 3) out vec3 outRelative;
 layout(location = 4) out vec2 outMapUv;
 layout(location = 5) flat out uint outMapBase;
 layout(location = 6) out float outMapBlend;
-// Land cover (TerrainVertex.cover0, cover1, detailUv): only the _cover fragment stages read them.
+#ifdef GLOBE_TERRAIN_COVER
+// Land cover (terrain_cover*.vert, for the _cover fragment stages): the masks, the fine detail
+// texture's coordinates, and the coarse detail texture's modulation, sampled here per vertex (the
+// coarse tile is 32 fine tiles wide, so vertices resolve it; one texture fetch per fragment less).
+layout(set = 0, binding = GLOBE_TERRAIN_DETAIL_BINDING) uniform sampler2DArray detailTextures;
 layout(location = 14) out vec4 outCover0;
 layout(location = 15) out vec4 outCover1;
-layout(location = 16) out vec4 outDetailUv;
+layout(location = 16) out vec2 outDetailUv;
+layout(location = 17) out vec3 outCoarseDetail;
+
+// The coarse detail texture of the vertex's dominant class, x2 (mean 1), at the mip whose texels
+// are as far apart as the node's vertices.
+vec3 coarseDetail(TerrainVertex v) {
+  uint best = 0u;
+  float most = -1.0;
+  for (uint i = 0u; i < 8u; ++i) {
+    float w = i < 4u ? v.cover0[i] : v.cover1[i - 4u];
+    best = w > most ? i : best;
+    most = max(most, w);
+  }
+  float lod = float(textureQueryLevels(detailTextures) - 1) + frame.detailLevels.y - float(v.nodeLevel) -
+              log2(float(frame.options.x));
+  return 2.0 * textureLod(detailTextures, vec3(v.detailUv.zw, float(best)), max(lod, 0.0)).rgb;
+}
+#endif
 #ifdef GLOBE_TERRAIN_ATMOSPHERE
 // Only with the atmosphere (its fragment stages, terrain_atmosphere*.frag, read them): for the
 // water, the air between the camera and the vertex (terrain_atmosphere.glsl) and the sky the sea
@@ -79,7 +100,10 @@ void main() {
   outMapUv = v.mapUv;
   outMapBase = v.mapBase;
   outMapBlend = v.mapBlend;
+#ifdef GLOBE_TERRAIN_COVER
   outCover0 = v.cover0;
   outCover1 = v.cover1;
-  outDetailUv = v.detailUv;
+  outDetailUv = v.detailUv.xy;
+  outCoarseDetail = coarseDetail(v);
+#endif
 }
