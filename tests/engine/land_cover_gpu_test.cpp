@@ -3,6 +3,7 @@
 #include "engine/generation/payload_generator.h"
 #include "planet/elevation/planet_file.h"
 #include "planet/streaming/payload_reference.h"
+#include "tests/engine/source_payload_check.h"
 #include "tests/support/gpu_test.h"
 
 #include <algorithm>
@@ -72,14 +73,7 @@ class LandCoverGpuTest : public GpuTest {
     gen.waitIdle();
     std::vector<GenerationResult> results;
     gen.collect(results);
-    vk::Buffer readback(device(), gen.payloads().size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::HostVisible,
-                        "payload readback");
-    device().submitAndWait([&](VkCommandBuffer cmd) {
-      VkBufferCopy copy{0, 0, gen.payloads().size()};
-      vkCmdCopyBuffer(cmd, gen.payloads().handle(), readback.handle(), 1, &copy);
-    });
-    auto data = readback.as<glm::vec4>();
-    return {data.begin(), data.end()};
+    return readPayloadBuffer(device(), gen);
   }
 };
 

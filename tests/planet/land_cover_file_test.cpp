@@ -9,10 +9,14 @@
 #include "planet/elevation/elevation.h"
 #include "planet/elevation/planet_file.h"
 #include "planet/elevation/planet_file_writer.h"
+#include "tests/support/planet_file_cases.h"
 #include "tests/support/temp_dir.h"
 
 namespace globe {
 namespace {
+
+using testing::BadPlanetCase;
+using testing::expectBadPlanetCase;
 
 // A valid planet (lines 1-6) and a valid class (lines 7-9), appended where a case needs them.
 #define LAYER "[[layers]]\nname = \"base\"\noctaves = 4\nwavelength_m = 1e6\namplitude_m = 1000\n"
@@ -84,14 +88,7 @@ TEST(LandCoverFile, ClassesWithoutClimateTakeItsDefaults) {
   EXPECT_EQ(ElevationModel(*none).landCover().class_count, 0U);
 }
 
-struct BadCase {
-  const char* what;
-  std::string text;
-  int line;
-  int column;
-  const char* field;
-  const char* message_part;
-};
+using BadCase = BadPlanetCase;
 
 std::string nineClasses() {
   std::string text = BASE;
@@ -142,17 +139,7 @@ const BadCase kBadCases[] = {
 };
 
 TEST(LandCoverFile, EveryErrorHasFileLineColumnAndField) {
-  for (const BadCase& c : kBadCases) {
-    SCOPED_TRACE(c.what);
-    const Result<PlanetDescription> r = parsePlanetToml(c.text, "bad.toml");
-    ASSERT_FALSE(r.ok());
-    const Error& e = r.error();
-    EXPECT_EQ(e.file, "bad.toml");
-    EXPECT_EQ(e.line, c.line) << e.format();
-    EXPECT_EQ(e.column, c.column) << e.format();
-    EXPECT_EQ(e.field, c.field) << e.format();
-    EXPECT_NE(e.message.find(c.message_part), std::string::npos) << e.format();
-  }
+  for (const BadCase& c : kBadCases) expectBadPlanetCase(c);
 }
 
 TEST(LandCoverFile, TextureMustBeAPng) {

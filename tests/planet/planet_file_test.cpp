@@ -9,9 +9,13 @@
 #include "planet/elevation/elevation.h"
 #include "planet/elevation/planet_file.h"
 #include "planet/elevation/planet_file_writer.h"
+#include "tests/support/planet_file_cases.h"
 
 namespace globe {
 namespace {
+
+using testing::BadPlanetCase;
+using testing::expectBadPlanetCase;
 
 const std::string kEarthlike = std::string(GLOBE_SOURCE_DIR) + "/" + std::string(kDefaultPlanetFile);
 
@@ -64,14 +68,7 @@ TEST(PlanetFile, MissingFileIsAnError) {
   EXPECT_NE(r.error().message.find("cannot open"), std::string::npos);
 }
 
-struct BadCase {
-  const char* what;
-  const char* text;
-  int line;
-  int column;
-  const char* field;
-  const char* message_part;
-};
+using BadCase = BadPlanetCase;
 
 // A valid layer, appended where a case needs one (lines 1-5 of the layer part).
 #define LAYER "[[layers]]\nname = \"base\"\noctaves = 4\nwavelength_m = 1e6\namplitude_m = 1000\n"
@@ -207,18 +204,7 @@ const BadCase kBadCases[] = {
 };
 
 TEST(PlanetFile, EveryErrorHasFileLineColumnAndKey) {
-  for (const BadCase& c : kBadCases) {
-    SCOPED_TRACE(c.what);
-    const Result<PlanetDescription> r = parsePlanetToml(c.text, "bad.toml");
-    ASSERT_FALSE(r.ok());
-    const Error& e = r.error();
-    EXPECT_EQ(e.file, "bad.toml");
-    EXPECT_EQ(e.line, c.line) << e.format();
-    EXPECT_EQ(e.column, c.column) << e.format();
-    EXPECT_EQ(e.field, c.field) << e.format();
-    EXPECT_NE(e.message.find(c.message_part), std::string::npos) << e.format();
-    EXPECT_EQ(e.format().find('\n'), std::string::npos);
-  }
+  for (const BadCase& c : kBadCases) expectBadPlanetCase(c);
 }
 
 TEST(PlanetFile, EveryProblemIsReportedAtOnce) {
