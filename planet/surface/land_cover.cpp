@@ -90,6 +90,9 @@ void appendLandCoverErrors(const LandCover& cover, std::vector<Error>& errors) {
     const std::string p = fmt::format("land_cover[{}].", i);
     if (!validName(c.name)) {
       errors.push_back(Error::inField(p + "name", "must be 1 to 32 characters of a-z, 0-9, _ and -"));
+    } else if (c.name == "sea") {
+      // `globe planet stats` prints the area under the sea as "land_cover sea".
+      errors.push_back(Error::inField(p + "name", "'sea' is reserved (the area under the water in planet stats)"));
     } else if (!names.insert(c.name).second) {
       errors.push_back(Error::inField(p + "name", "'" + c.name + "' is already the name of an earlier class"));
     }

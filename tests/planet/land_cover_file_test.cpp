@@ -115,6 +115,8 @@ const BadCase kBadCases[] = {
     {"bad name", BASE "[[land_cover]]\nname = \"Grass\"\ncolour = [0, 0, 0]\n", 8, 8, "land_cover[0].name",
      "must be 1 to 32 characters of a-z, 0-9, _ and -"},
     {"duplicate name", BASE CLASS CLASS, 11, 8, "land_cover[1].name", "'grass' is already the name"},
+    {"reserved name", BASE "[[land_cover]]\nname = \"sea\"\ncolour = [0, 0, 1]\n", 8, 8, "land_cover[0].name",
+     "'sea' is reserved"},
     {"missing name", BASE "[[land_cover]]\ncolour = [0, 0, 0]\n", 7, 1, "land_cover[0].name", "missing (required)"},
     {"missing colour", BASE "[[land_cover]]\nname = \"grass\"\n", 7, 1, "land_cover[0].colour", "missing (required)"},
     {"colour out of range", BASE "[[land_cover]]\nname = \"grass\"\ncolour = [0.1, 1.5, 0]\n", 9, 10,
