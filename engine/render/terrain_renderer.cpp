@@ -3,6 +3,7 @@
 #include <meshoptimizer.h>
 
 #include "engine/render/render_output.h"
+#include "engine/render/terrain_pipelines.h"
 #include "engine/vk/vk_check.h"
 #include "planet/geometry/face_mapping.h"
 #include "shaders/include/payload_layout.h"
@@ -47,57 +48,6 @@ constexpr std::array<uint32_t, kDrawGroups> kGroupOrder{0, 1, 4, 5, 2, 3, 6, 7};
 // The group of a node's grid (range 0) or skirts (range 2).
 uint32_t drawGroup(const DrawNode& n, uint32_t range) {
   return range + (n.partial ? 1u : 0u) + (n.water ? kWaterGroups : 0u);
-}
-
-// The target's colour format and samples per pixel.
-struct TargetFormat {
-  VkFormat colour;
-  VkSampleCountFlagBits samples;
-};
-
-// What a terrain pipeline's shaders compute besides the grid: shading from the payloads' normal
-// maps, light and aerial perspective through the atmosphere, the sea, the holes' discard.
-struct TerrainShading {
-  bool normalMaps = false;
-  bool atmosphere = false;
-  bool water = false;
-  bool holes = false;
-  bool cover = false;
-};
-
-// The surface pipelines' shading (the wireframe's has neither water nor holes nor land cover).
-TerrainShading surfaceShading(const TerrainStyle& style, bool atmosphere, bool water) {
-  return {style.normalMapScale > 0, atmosphere, water, style.holes, style.landCover()};
-}
-
-// terrain[_atmosphere][_maps][_water][_holes][_cover].frag: the variants of shaders/CMakeLists.txt.
-std::string terrainFragmentShader(const TerrainShading& s) {
-  return std::string("terrain") + (s.atmosphere ? "_atmosphere" : "") + (s.normalMaps ? "_maps" : "") +
-         (s.water ? "_water" : "") + (s.holes ? "_holes" : "") + (s.cover ? "_cover" : "") + ".frag";
-}
-
-vk::GraphicsPipelineDesc terrainDesc(TargetFormat target, bool wireframe, VkCullModeFlags cull,
-                                     VertexPositions positions, const TerrainShading& shading) {
-  vk::GraphicsPipelineDesc d;
-  const bool reprojected = positions == VertexPositions::kReprojected;
-  const bool atmosphere = shading.atmosphere;
-  d.vertexShader = reprojected ? "terrain_reprojected.vert" : atmosphere ? "terrain_atmosphere.vert" : "terrain.vert";
-  d.fragmentShader = terrainFragmentShader(shading);
-  // 0: instances, 1: payloads, 2: frame constants (uniform); reprojected: 3 nodes' (u, v), 4 faces;
-  // atmosphere: 3 its parameters (uniform), 4-6 its tables, 7 the frame's camera (uniform), 8 its
-  // aerial perspective table (AtmosphereView).
-  d.storageBuffers = reprojected ? 5 : atmosphere ? 9 : 3;
-  d.uniformMask = atmosphere ? (1u << 2) | (1u << 3) | (1u << 7) : 1u << 2;
-  d.pushConstantBytes = sizeof(gpu::TerrainDrawPush);
-  d.colourFormat = target.colour;
-  d.samples = target.samples;
-  d.wireframe = wireframe;
-  d.cull = cull;
-  if (shading.cover) {
-    d.sampledImageBinding = GLOBE_TERRAIN_DETAIL_BINDING;
-    d.vertexShader.insert(d.vertexShader.size() - std::string_view(".vert").size(), "_cover");
-  }
-  return d;
 }
 
 // Triangles of an n x n grid (vertex i + j (n+1)), every cell split along (i, j)-(i+1, j+1).

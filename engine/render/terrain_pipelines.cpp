@@ -1,0 +1,42 @@
+#include "engine/render/terrain_pipelines.h"
+
+#include "shaders/include/terrain_layout.h"
+
+#include <string_view>
+
+namespace globe {
+
+TerrainShading surfaceShading(const TerrainStyle& style, bool atmosphere, bool water) {
+  return {style.normalMapScale > 0, atmosphere, water, style.holes, style.landCover()};
+}
+
+std::string terrainFragmentShader(const TerrainShading& s) {
+  return std::string("terrain") + (s.atmosphere ? "_atmosphere" : "") + (s.normalMaps ? "_maps" : "") +
+         (s.water ? "_water" : "") + (s.holes ? "_holes" : "") + (s.cover ? "_cover" : "") + ".frag";
+}
+
+vk::GraphicsPipelineDesc terrainDesc(TargetFormat target, bool wireframe, VkCullModeFlags cull,
+                                     VertexPositions positions, const TerrainShading& shading) {
+  vk::GraphicsPipelineDesc d;
+  const bool reprojected = positions == VertexPositions::kReprojected;
+  const bool atmosphere = shading.atmosphere;
+  d.vertexShader = reprojected ? "terrain_reprojected.vert" : atmosphere ? "terrain_atmosphere.vert" : "terrain.vert";
+  d.fragmentShader = terrainFragmentShader(shading);
+  // 0: instances, 1: payloads, 2: frame constants (uniform); reprojected: 3 nodes' (u, v), 4 faces;
+  // atmosphere: 3 its parameters (uniform), 4-6 its tables, 7 the frame's camera (uniform), 8 its
+  // aerial perspective table (AtmosphereView).
+  d.storageBuffers = reprojected ? 5 : atmosphere ? 9 : 3;
+  d.uniformMask = atmosphere ? (1u << 2) | (1u << 3) | (1u << 7) : 1u << 2;
+  d.pushConstantBytes = sizeof(gpu::TerrainDrawPush);
+  d.colourFormat = target.colour;
+  d.samples = target.samples;
+  d.wireframe = wireframe;
+  d.cull = cull;
+  if (shading.cover) {
+    d.sampledImageBinding = GLOBE_TERRAIN_DETAIL_BINDING;
+    d.vertexShader.insert(d.vertexShader.size() - std::string_view(".vert").size(), "_cover");
+  }
+  return d;
+}
+
+}  // namespace globe

@@ -1,0 +1,40 @@
+#pragma once
+// The terrain renderer's pipelines: which vertex and fragment stages (shaders/CMakeLists.txt's
+// variants) and which bindings a terrain draw uses, from the planet's and the preset's features.
+// Internal to engine/render (TerrainRenderer builds its pipelines from these).
+#include "engine/render/terrain_renderer.h"
+#include "engine/vk/graphics_pipeline.h"
+
+#include <string>
+
+namespace globe {
+
+// The target's colour format and samples per pixel.
+struct TargetFormat {
+  VkFormat colour;
+  VkSampleCountFlagBits samples;
+};
+
+// What a terrain pipeline's shaders compute besides the grid: shading from the payloads' normal
+// maps, light and aerial perspective through the atmosphere, the sea, the holes' discard, the land
+// cover's detail textures.
+struct TerrainShading {
+  bool normalMaps = false;
+  bool atmosphere = false;
+  bool water = false;
+  bool holes = false;
+  bool cover = false;
+};
+
+// The surface pipelines' shading (the wireframe's has neither water nor holes nor land cover).
+TerrainShading surfaceShading(const TerrainStyle& style, bool atmosphere, bool water);
+
+// terrain[_atmosphere][_maps][_water][_holes][_cover].frag: the variants of shaders/CMakeLists.txt.
+std::string terrainFragmentShader(const TerrainShading& s);
+
+// The pipeline of a terrain draw: its stages (terrain[_atmosphere|_reprojected][_cover].vert and the
+// fragment variant), bindings, push constants and fixed-function state.
+vk::GraphicsPipelineDesc terrainDesc(TargetFormat target, bool wireframe, VkCullModeFlags cull,
+                                     VertexPositions positions, const TerrainShading& shading);
+
+}  // namespace globe
