@@ -35,7 +35,7 @@ TerrainSettings terrainSettingsFor(QualityPreset preset) {
       // FXAA's fixed ~16 ms of CPU a 1280x720 frame is ~1 % of this preset's frame; on fast and
       // balanced it is +40 % (MSAA x4 +160 %) of the flyover's CPU: docs/rendering.md, "Anti-aliasing".
       s.antialiasing = vk::Antialiasing::kFxaa;
-      s.normalMapScale = 1;  // 64 map cells a node; scale 2 would fit only 1728 slots in 512 MiB
+      s.normalMapScale = 1;  // 64 map cells a node; scale 2 would fit only 1549 slots in 512 MiB
       // The complete atmosphere (light and aerial perspective per vertex): 2.4x the frame at 1 km,
       // 1.65x at 2 m (docs/rendering.md, "Atmosphere"); the reference-quality preset keeps it.
       s.atmosphere = AtmosphereDetail::kFull;
