@@ -398,8 +398,10 @@ uint32_t TerrainRenderer::writeInstances(unsigned char* bytes, const glm::dvec3&
                      morphDistance(n.morph.end_m[3])};
     inst.info = {payloads.localSlot(n.slot) * slotVec4, n.partial ? 2u : 1u,
                  uint32_t(n.id.level) - (n.partial ? 1u : 0u), 0u};
-    const glm::vec4 detail = detailTileOffsets(n.id, detailTiling_);
-    inst.detail = {detail.x, detail.y, detail.z, detail.w};
+    if (style_.landCover()) {  // only the _cover vertex stages read it
+      const glm::vec4 detail = detailTileOffsets(n.id, detailTiling_);
+      inst.detail = {detail.x, detail.y, detail.z, detail.w};
+    }
     partial += n.partial ? 1u : 0u;
     const uint32_t page = payloads.page(n.slot);
     const size_t grid = size_t(drawGroup(n, 0)) * pageCount + page, skirt = size_t(drawGroup(n, 2)) * pageCount + page;

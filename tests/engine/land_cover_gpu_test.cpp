@@ -67,12 +67,7 @@ class LandCoverGpuTest : public GpuTest {
   std::vector<glm::vec4> generate(const std::vector<NodeId>& nodes) {
     GpuPayloadGenerator gen(device(), coveredModel(), kCells, GLOBE_PAYLOAD_MAX_BATCH, 4);
     gen.reserveSlots(uint32_t(nodes.size()));
-    std::vector<GenerationJob> jobs;
-    for (uint32_t k = 0; k < nodes.size(); ++k) jobs.push_back({nodes[k], k});
-    gen.generate(jobs);
-    gen.waitIdle();
-    std::vector<GenerationResult> results;
-    gen.collect(results);
+    EXPECT_EQ(generateIntoSlots(gen, nodes).size(), nodes.size());
     return readPayloadBuffer(device(), gen);
   }
 };

@@ -5,6 +5,7 @@
 #include "planet/streaming/normal_map_reference.h"
 #include "planet/streaming/payload_pool.h"
 #include "planet/streaming/payload_reference.h"
+#include "tests/engine/source_payload_check.h"
 #include "tests/support/fake_payload_generator.h"
 #include "tests/support/gpu_test.h"
 
@@ -24,13 +25,7 @@ std::vector<std::vector<glm::uvec2>> generateMaps(vk::Device& device, const Elev
   GpuPayloadGenerator gen(device, model, kCells, GLOBE_PAYLOAD_MAX_BATCH, 1, GenerationPrecision::kDouble, false,
                           scale);
   gen.reserveSlots(uint32_t(nodes.size()));
-  std::vector<GenerationJob> jobs;
-  for (uint32_t k = 0; k < nodes.size(); ++k) jobs.push_back({nodes[k], k});
-  gen.generate(jobs);
-  gen.waitIdle();
-  std::vector<GenerationResult> results;
-  gen.collect(results);
-  EXPECT_EQ(results.size(), nodes.size());
+  EXPECT_EQ(generateIntoSlots(gen, nodes).size(), nodes.size());
   vk::Buffer readback(device, gen.payloads().size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::HostVisible,
                       "normal map readback");
   device.submitAndWait([&](VkCommandBuffer cmd) {

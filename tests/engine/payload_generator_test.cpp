@@ -6,6 +6,7 @@
 #include "planet/lod/selection.h"
 #include "planet/streaming/payload_pool.h"
 #include "planet/streaming/payload_reference.h"
+#include "tests/engine/source_payload_check.h"
 #include "tests/support/gpu_test.h"
 #include "tests/support/payload_surface_check.h"
 
@@ -25,20 +26,8 @@ class PayloadGeneratorTest : public GpuTest {
   // Generates `nodes` into slots 0..n-1 and reads the slots back.
   std::vector<glm::vec4> generate(GpuPayloadGenerator& gen, const std::vector<NodeId>& nodes,
                                   std::vector<GenerationResult>& results) {
-    std::vector<GenerationJob> jobs;
-    for (uint32_t k = 0; k < nodes.size(); ++k) jobs.push_back({nodes[k], k});
-    gen.generate(jobs);
-    gen.waitIdle();
-    results.clear();
-    gen.collect(results);
-    vk::Buffer readback(device(), gen.payloads().size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::HostVisible,
-                        "payload readback");
-    device().submitAndWait([&](VkCommandBuffer cmd) {
-      VkBufferCopy copy{0, 0, gen.payloads().size()};
-      vkCmdCopyBuffer(cmd, gen.payloads().handle(), readback.handle(), 1, &copy);
-    });
-    auto data = readback.as<glm::vec4>();
-    return {data.begin(), data.end()};
+    results = generateIntoSlots(gen, nodes);
+    return readPayloadBuffer(device(), gen);
   }
 
   const ElevationModel* model_ = &earthlikeModel();

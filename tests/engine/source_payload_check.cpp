@@ -14,6 +14,16 @@
 
 namespace globe::testing {
 
+std::vector<GenerationResult> generateIntoSlots(GpuPayloadGenerator& gen, const std::vector<NodeId>& nodes) {
+  std::vector<GenerationJob> jobs;
+  for (uint32_t k = 0; k < nodes.size(); ++k) jobs.push_back({nodes[k], k});
+  gen.generate(jobs);
+  gen.waitIdle();
+  std::vector<GenerationResult> results;
+  gen.collect(results);
+  return results;
+}
+
 std::vector<glm::vec4> readPayloadBuffer(vk::Device& device, const GpuPayloadGenerator& gen) {
   vk::Buffer readback(device, gen.payloads().size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::HostVisible,
                       "payload readback");
@@ -30,12 +40,7 @@ void compareSourcePayloads(vk::Device& device, const ElevationModel& model, cons
   GpuPayloadGenerator gen(device, model, cells, GLOBE_PAYLOAD_MAX_BATCH, 1);
   ASSERT_NE(gen.sourcePreparer(), nullptr);
   gen.reserveSlots(uint32_t(nodes.size()));
-  std::vector<GenerationJob> jobs;
-  for (uint32_t k = 0; k < nodes.size(); ++k) jobs.push_back({nodes[k], k});
-  gen.generate(jobs);
-  gen.waitIdle();
-  std::vector<GenerationResult> results;
-  gen.collect(results);
+  const std::vector<GenerationResult> results = generateIntoSlots(gen, nodes);
   ASSERT_EQ(results.size(), nodes.size());
   const std::vector<glm::vec4> gpu = readPayloadBuffer(device, gen);
   const size_t perSlot = GLOBE_PAYLOAD_SLOT_VEC4(cells, 0), samples = GLOBE_PAYLOAD_VEC4_PER_SLOT(cells) / 2;

@@ -17,6 +17,9 @@ namespace globe::testing {
 // The generator's whole payload buffer, copied back to the host.
 std::vector<glm::vec4> readPayloadBuffer(vk::Device& device, const GpuPayloadGenerator& gen);
 
+// Generates nodes[k] into slot k (reserved by the caller), waits for them, and returns the results.
+std::vector<GenerationResult> generateIntoSlots(GpuPayloadGenerator& gen, const std::vector<NodeId>& nodes);
+
 struct SourcePayloadComparison {
   std::size_t nodes = 0;
   double worstRadius_m = 0.0, worstElevation_m = 0.0;
