@@ -127,6 +127,11 @@ void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid) {
                  "On a planet with land cover: on (splat the classes' detail textures per fragment) or off (the "
                  "classes' colours per vertex) (docs/rendering.md, \"Land cover\"; default: the preset's)")
       ->check(CLI::IsMember({"on", "off"}));
+  cmd.add_option("--imagery", options.imagery,
+                 "on (normal and colour maps from imagery tiles of their own LOD: each texel covers at most 1.5 "
+                 "pixels, whatever the mesh's level) or off (each node's own map, --normal-map-scale) "
+                 "(docs/rendering.md, \"Imagery LOD\"; default: the preset's)")
+      ->check(CLI::IsMember({"on", "off"}));
   cmd.add_option("--normal-map-scale", options.normalMapScale,
                  "Normal map cells per grid cell: 1, 2 or 4; 0 = none, light per vertex (docs/rendering.md, "
                  "\"Normal maps\"; default: the preset's)")
@@ -151,6 +156,7 @@ Result<TerrainSettings> terrainSettingsFromOptions(const QualityOptions& options
   if (options.tolerance_px > 0) settings.ranges.tolerance_px = options.tolerance_px;
   if (!options.roughness.empty()) settings.ranges.roughness = options.roughness == "on";
   if (!options.detailTextures.empty()) settings.detailTextures = options.detailTextures == "on";
+  if (!options.imagery.empty()) settings.imagery = options.imagery == "on";
   if (!options.antialiasing.empty()) {
     auto aa = vk::parseAntialiasing(options.antialiasing, "--aa");
     if (!aa) return aa.error();

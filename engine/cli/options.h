@@ -57,8 +57,10 @@ struct QualityOptions {
   std::string atmosphere;                           // --atmosphere; empty: the preset's
   std::string roughness;                            // --roughness on|off; empty: off
   std::string detailTextures;                       // --detail-textures on|off; empty: the preset's
+  std::string imagery;                              // --imagery on|off; empty: the preset's
 };
-// --quality, --tolerance, --roughness, --detail-textures, --aa, --normal-map-scale, --atmosphere and, when withGrid,
+// --quality, --tolerance, --roughness, --detail-textures, --imagery, --aa, --normal-map-scale, --atmosphere and, when
+// withGrid,
 // --grid, with the same help and checks on every rendering command; read them back with terrainSettingsFromOptions.
 void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid = true);
 vk::DeviceOptions deviceOptions(const DeviceFlags& flags);

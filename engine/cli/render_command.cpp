@@ -32,6 +32,10 @@ Result<ImageRgba> renderTerrain(vk::Device& device, const Camera& camera, const 
   std::printf("%u nodes (%u partial), %llu triangles, %u payloads resident (%.1f MiB), frame %.1f ms (GPU %.1f ms)\n",
               stats.nodes_selected, stats.nodes_partial, (unsigned long long)stats.triangles,
               (*terrain)->pool().stats().residentNodes, stats.resident_mib, stats.frame_ms, stats.gpu_ms);
+  if (stats.texel_magnification_px > 0)
+    std::printf("texels: at most %.2f px (p95 %.2f px)%s\n", stats.texel_magnification_px,
+                stats.texel_magnification_p95_px,
+                (*terrain)->imagery() ? (", " + std::to_string(stats.imagery_tiles) + " imagery tiles").c_str() : "");
   if (const AtmosphereLuts* a = (*terrain)->atmosphere())
     std::printf("atmosphere tables: %s in %.0f ms\n", a->fromCache() ? "read from the cache" : "computed",
                 a->build_ms());

@@ -80,6 +80,14 @@ Result<std::unique_ptr<Terrain>> Terrain::create(vk::Device& device, const Eleva
   // only the VRAM budget bounds the pool.
   auto pool = PayloadPool::create(settings.streaming, *terrain->generator_, model.radius_m());
   if (!pool) return pool.error();
+  if (terrain->imageryOn()) {
+    // Tiles may lie two levels below the deepest mesh nodes (the cells of their tables).
+    const int maxLevel = std::min(settings.ranges.maxDepth + kImageryCellLevels, kMaxNodeLevel);
+    auto imagery = ImageryTiles::create(device, model, settings.imagerySettings, settings.streaming,
+                                        settings.generation, maxLevel);
+    if (!imagery) return imagery.error();
+    terrain->imagery_ = std::move(*imagery);
+  }
   terrain->attachPool(std::move(*pool));
   return terrain;
 }
@@ -98,7 +106,7 @@ Terrain::Terrain(vk::Device& device, const ElevationModel& model, const TerrainS
   uint32_t batches = settings.streaming.maxInFlight;
   generator_ =
       std::make_unique<GpuPayloadGenerator>(device, model, settings.gridCells, budget, batches, settings.generation,
-                                            /*waterSurface=*/true, settings.normalMapScale);
+                                            /*waterSurface=*/true, imageryOn() ? 0u : settings.normalMapScale);
 }
 
 void Terrain::attachPool(std::unique_ptr<PayloadPool> pool) {
@@ -109,7 +117,10 @@ void Terrain::attachPool(std::unique_ptr<PayloadPool> pool) {
   style.holes = model_.sources() != nullptr && model_.sources()->hasHoles();
   style.water = model_.water();
   style.seaLevel_m = model_.seaLevel_m();
-  style.normalMapScale = settings_.normalMapScale;
+  style.normalMapScale = imageryOn() ? 0u : settings_.normalMapScale;
+  style.imagery = imagery_ != nullptr;
+  if (!imagery_ && settings_.normalMapScale > 0)
+    meshMaps_.emplace(ImageryConfig{}, model_.radius_m(), model_.bounds().min_m, model_.bounds().max_m, model_.shape());
   if (detail_) style.detailTextures = detail_->descriptor();
   if (settings_.atmosphere != AtmosphereDetail::kOff && model_.atmosphere())
     atmosphere_ = std::make_unique<AtmosphereLuts>(device_, *model_.atmosphere(), model_.radius_m());
@@ -160,6 +171,7 @@ void Terrain::prime(uint64_t firstFrame, const Camera& camera) {
     primedRounds_ = round + 1;
     if (converged()) break;
     generator_->waitIdle();
+    if (imagery_) imagery_->waitIdle();
   }
   primeWall_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -188,7 +200,6 @@ void Terrain::updateAt(uint64_t poolFrame, const Camera& camera, uint64_t poolCo
   }
   pool_->markUsed(selection_.nodes);
   pool_->dispatch();
-  gatherWarnings();
 
   const StreamingStats& s = pool_->stats();
   stats_.nodes_selected = uint32_t(selection_.nodes.size());
@@ -199,16 +210,48 @@ void Terrain::updateAt(uint64_t poolFrame, const Camera& camera, uint64_t poolCo
   stats_.evicted = s.evicted;
   stats_.resident_mib = s.residentMiB;
   stats_.queue_length = s.queueLength;
+  updateImagery(poolFrame, poolCompletedFrame, camera, requestAllRoots);
+  gatherWarnings();
 
   origin_.update(camera.position_m);
 
   drawNodes_.clear();
-  for (const SelectedNode& n : selection_.nodes) {
+  for (size_t k = 0; k < selection_.nodes.size(); ++k) {
+    const SelectedNode& n = selection_.nodes[k];
     auto slot = pool_->slotOf(n.id);
     if (!slot) continue;  // the selection only draws resident nodes; guard anyway
-    drawNodes_.push_back(
-        {n.id, *slot, n.morph, n.partial, generator_->slotCentre(*slot), generator_->slotHasWater(*slot)});
+    drawNodes_.push_back({n.id, *slot, n.morph, n.partial, generator_->slotCentre(*slot),
+                          generator_->slotHasWater(*slot), uint32_t(k * kImageryCellsPerNode)});
   }
+}
+
+void Terrain::updateImagery(uint64_t poolFrame, uint64_t poolCompletedFrame, const Camera& camera,
+                            bool requestAllRoots) {
+  if (!imagery_ && !meshMaps_) return;  // no maps
+  const double lambda = pixelsPerRadian(settings_.viewHeight_px, camera.verticalFov_rad);
+  const double altitude_m = glm::length(camera.position_m) - groundRadius(glm::normalize(camera.position_m));
+  if (!imagery_) {
+    const ImageryStats s = meshMaps_->meshMapStats(camera.position_m, altitude_m, lambda, selection_.nodes,
+                                                   settings_.gridCells * settings_.normalMapScale, *pool_);
+    stats_.texel_magnification_px = s.maxMagnification_px;
+    stats_.texel_magnification_p95_px = s.p95Magnification_px;
+    return;
+  }
+  const double before_ms = imagery_->gpuTime_ms();
+  imagery_->update(poolFrame, poolCompletedFrame, camera, altitude_m, lambda, selection_.nodes, *pool_,
+                   requestAllRoots);
+  stats_.gpu_generation_ms += imagery_->gpuTime_ms() - before_ms;
+  const ImageryStats& s = imagery_->stats();
+  stats_.texel_magnification_px = s.maxMagnification_px;
+  stats_.texel_magnification_p95_px = s.p95Magnification_px;
+  stats_.imagery_tiles = s.tiles;
+  const StreamingStats& pool = imagery_->pool().stats();
+  stats_.gen_dispatched += pool.dispatched;
+  stats_.gen_in_flight += pool.inFlight;
+  stats_.gen_completed += pool.completed;
+  stats_.evicted += pool.evicted;
+  stats_.resident_mib += pool.residentMiB;
+  stats_.queue_length += pool.queueLength;
 }
 
 void Terrain::gatherWarnings() {
@@ -218,6 +261,11 @@ void Terrain::gatherWarnings() {
   }
   const std::span<const std::string> pool = pool_->warnings();
   for (; poolWarningsSeen_ < pool.size(); ++poolWarningsSeen_) warnings_.push_back(pool[poolWarningsSeen_]);
+  if (imagery_) {
+    const std::span<const std::string> tiles = imagery_->pool().warnings();
+    for (; imageryWarningsSeen_ < tiles.size(); ++imageryWarningsSeen_)
+      warnings_.push_back("imagery tiles: " + tiles[imageryWarningsSeen_]);
+  }
   // A failure now and then is retried (the view draws coarser meanwhile); failing on and on is not
   // going to get better, and a frame loop waiting for convergence would never end.
   if (pool_->consecutiveFailures() >= kGenerationFailuresBeforeGivingUp)
@@ -226,7 +274,10 @@ void Terrain::gatherWarnings() {
 }
 
 void Terrain::record(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex) {
-  DrawStats d = renderer_->record(cmd, camera, origin_.origin_m(), drawNodes_, generator_->pages(), frameIndex);
+  ImageryBinding imagery;
+  if (imagery_) imagery = imagery_->write(frameIndex);
+  DrawStats d = renderer_->record(cmd, camera, origin_.origin_m(), drawNodes_, generator_->pages(), frameIndex,
+                                  imagery_ ? &imagery : nullptr);
   stats_.triangles = d.triangles;
   stats_.draw_calls = d.drawCalls;
 }
@@ -245,7 +296,7 @@ bool Terrain::converged() const {
   // rounds once 11 618 slots were resident).
   const bool onlyDeclinedPrefetch = s.dispatched == 0 && s.queueLength <= s.prefetchRequested;
   return selection_.stats.fallbacks == 0 && selection_.stats.requests == 0 && s.inFlight == 0 && !budgeted_.rising() &&
-         (s.queueLength == 0 || onlyDeclinedPrefetch);
+         (s.queueLength == 0 || onlyDeclinedPrefetch) && (!imagery_ || imagery_->converged());
 }
 
 }  // namespace globe

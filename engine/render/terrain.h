@@ -5,6 +5,7 @@
 // the headless renderer and the benchmark run exactly the same frame.
 #include "engine/generation/payload_generator.h"
 #include "engine/render/detail_texture_array.h"
+#include "engine/render/imagery_tiles.h"
 #include "engine/render/terrain_renderer.h"
 #include "engine/vk/antialiasing.h"
 #include "planet/analysis/frame_stats.h"
@@ -15,6 +16,7 @@
 #include "planet/streaming/payload_pool.h"
 
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -38,6 +40,12 @@ struct TerrainSettings {
   // On a planet with land cover: splat the classes' detail textures per fragment (the _cover
   // pipelines); off, the payloads' land cover colours per vertex only (docs/rendering.md, "Land cover").
   bool detailTextures = true;
+  // Imagery LOD (engine/render/imagery_tiles.h): the normal and colour maps come from tiles of their
+  // own, refined by texel magnification apart from the mesh (normalMapScale is then ignored: mesh
+  // payloads carry no maps). Off: each payload's own map, at the mesh's level. Stored positions only
+  // (with kReprojected, a measurement, it is off).
+  bool imagery = false;
+  ImagerySettings imagerySettings;
   LodRangeConfig ranges;  // view ranges, max depth, morph region
   // Height (pixels) of the image the view is drawn in: tolerance-driven ranges (ranges.tolerance_px)
   // keep the screen error within the tolerance in pixels of this height. The commands set it.
@@ -93,11 +101,16 @@ class Terrain {
   // prefetch the full pool declined) or being generated: the view has fully converged.
   bool converged() const;
   // Blocks until every generation submitted so far has finished.
-  void waitForGeneration() { generator_->waitIdle(); }
+  void waitForGeneration() {
+    generator_->waitIdle();
+    if (imagery_) imagery_->waitIdle();
+  }
 
   const FrameStats& stats() const { return stats_; }
   const Selection& selection() const { return selection_; }
   const PayloadPool& pool() const { return *pool_; }
+  // The imagery tiles (nullptr without imagery LOD).
+  const ImageryTiles* imagery() const { return imagery_.get(); }
   const ElevationModel& model() const { return model_; }
   glm::dvec3 origin() const { return origin_.origin_m(); }
   TerrainRenderer& renderer() { return *renderer_; }
@@ -136,6 +149,10 @@ class Terrain {
   void prime(uint64_t firstFrame, const Camera& camera);
   // Copies warnings not seen yet from the budget and the pool; throws when generation keeps failing.
   void gatherWarnings();
+  // Imagery LOD's frame after the mesh's selection (texel magnification stats into stats_), and
+  // without it the texel magnification of the payloads' own maps.
+  void updateImagery(uint64_t poolFrame, uint64_t poolCompletedFrame, const Camera& camera, bool requestAllRoots);
+  bool imageryOn() const { return settings_.imagery && settings_.vertexPositions == VertexPositions::kStored; }
 
   vk::Device& device_;
   const ElevationModel& model_;
@@ -146,6 +163,8 @@ class Terrain {
   std::unique_ptr<PayloadPool> pool_;
   std::unique_ptr<AtmosphereLuts> atmosphere_;
   std::unique_ptr<DetailTextureArray> detail_;  // the land cover's detail textures (none without)
+  std::unique_ptr<ImageryTiles> imagery_;       // imagery LOD (TerrainSettings::imagery), or none
+  std::optional<ImagerySelector> meshMaps_;     // without it, the payloads' maps' texel magnification
   std::unique_ptr<TerrainRenderer> renderer_;
   Selection selection_;
   std::vector<DrawNode> drawNodes_;
@@ -153,6 +172,7 @@ class Terrain {
   FrameStats stats_;
   std::vector<std::string> warnings_;
   size_t poolWarningsSeen_ = 0;
+  size_t imageryWarningsSeen_ = 0;
   bool budgetWarningSeen_ = false;
   bool primed_ = false;
   uint32_t primedRounds_ = 0;  // added to the caller's frame numbers: the warm-up used pool frames too

@@ -2,17 +2,19 @@
 
 #include "shaders/include/terrain_layout.h"
 
+#include <cassert>
 #include <string_view>
 
 namespace globe {
 
 TerrainShading surfaceShading(const TerrainStyle& style, bool atmosphere, bool water) {
-  return {style.normalMapScale > 0, atmosphere, water, style.holes, style.landCover()};
+  return {style.normalMapScale > 0 || style.imagery, atmosphere, water, style.holes, style.landCover(), style.imagery};
 }
 
 std::string terrainFragmentShader(const TerrainShading& s) {
   return std::string("terrain") + (s.atmosphere ? "_atmosphere" : "") + (s.normalMaps ? "_maps" : "") +
-         (s.water ? "_water" : "") + (s.holes ? "_holes" : "") + (s.cover ? "_cover" : "") + ".frag";
+         (s.normalMaps && s.imagery ? "_imagery" : "") + (s.water ? "_water" : "") + (s.holes ? "_holes" : "") +
+         (s.cover ? "_cover" : "") + ".frag";
 }
 
 vk::GraphicsPipelineDesc terrainDesc(TargetFormat target, bool wireframe, VkCullModeFlags cull,
@@ -26,6 +28,9 @@ vk::GraphicsPipelineDesc terrainDesc(TargetFormat target, bool wireframe, VkCull
   // atmosphere: 3 its parameters (uniform), 4-6 its tables, 7 the frame's camera (uniform), 8 its
   // aerial perspective table (AtmosphereView).
   d.storageBuffers = reprojected ? 5 : atmosphere ? 9 : 3;
+  // Imagery: 3-4 or 9-10 the cell tables and the tiles (GLOBE_TERRAIN_IMAGERY_BINDING).
+  assert(!shading.imagery || !reprojected);
+  if (shading.imagery && shading.normalMaps) d.storageBuffers += 2;
   d.uniformMask = atmosphere ? (1u << 2) | (1u << 3) | (1u << 7) : 1u << 2;
   d.pushConstantBytes = sizeof(gpu::TerrainDrawPush);
   d.colourFormat = target.colour;

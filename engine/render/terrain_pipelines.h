@@ -24,12 +24,13 @@ struct TerrainShading {
   bool water = false;
   bool holes = false;
   bool cover = false;
+  bool imagery = false;  // the maps from the imagery tiles (with normalMaps)
 };
 
 // The surface pipelines' shading (the wireframe's has neither water nor holes nor land cover).
 TerrainShading surfaceShading(const TerrainStyle& style, bool atmosphere, bool water);
 
-// terrain[_atmosphere][_maps][_water][_holes][_cover].frag: the variants of shaders/CMakeLists.txt.
+// terrain[_atmosphere][_maps[_imagery]][_water][_holes][_cover].frag: the variants of shaders/CMakeLists.txt.
 std::string terrainFragmentShader(const TerrainShading& s);
 
 // The pipeline of a terrain draw: its stages (terrain[_atmosphere|_reprojected][_cover].vert and the

@@ -252,12 +252,14 @@ void TerrainRenderer::prepare(VkCommandBuffer cmd, const Camera& camera, uint32_
 }
 
 DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, const glm::dvec3& origin_m,
-                                  std::span<const DrawNode> nodes, const PayloadPages& payloads, uint32_t frameIndex) {
+                                  std::span<const DrawNode> nodes, const PayloadPages& payloads, uint32_t frameIndex,
+                                  const ImageryBinding* imagery) {
   assert(frameIndex < vk::kFramesInFlight);
+  assert((imagery != nullptr) == style_.imagery);
   DrawStats stats;
   uint32_t nextMark = kMarkGridsBegin;
   writeMarks(cmd, nextMark, kMarkGridsBegin);
-  if (!nodes.empty()) stats = recordTerrain(cmd, camera, origin_m, nodes, payloads, frameIndex, nextMark);
+  if (!nodes.empty()) stats = recordTerrain(cmd, camera, origin_m, nodes, payloads, frameIndex, imagery, nextMark);
   // The sky goes last, behind everything: its screen grid lies at the far plane (depth 0),
   // so the depth test keeps only the pixels no terrain covered, and those are the only ones shaded.
   writeMarks(cmd, nextMark, kMarkSkyBegin);
@@ -271,7 +273,7 @@ DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, con
 
 DrawStats TerrainRenderer::recordTerrain(VkCommandBuffer cmd, const Camera& camera, const glm::dvec3& origin_m,
                                          std::span<const DrawNode> nodes, const PayloadPages& payloads,
-                                         uint32_t frameIndex, uint32_t& nextMark) {
+                                         uint32_t frameIndex, const ImageryBinding* imagery, uint32_t& nextMark) {
   const bool skirts = style_.skirtOutward > 0.0f || style_.skirtDrop > 0.0f;
   const std::array<uint32_t, 2> skirtEdges = skirts ? markSkirtedEdges(nodes) : std::array<uint32_t, 2>{0, 0};
   ensureCapacity(frameIndex, uint32_t(nodes.size()) + skirtEdges[0] + skirtEdges[1]);
@@ -284,7 +286,7 @@ DrawStats TerrainRenderer::recordTerrain(VkCommandBuffer cmd, const Camera& came
   groupInstances(nodes, payloads, pageCount, skirts);
   orderNearFirst(nodes, camera.position_m);
   const uint32_t partial = writeInstances(bytes, origin_m, nodes, payloads, pageCount, skirts, reprojection);
-  DrawStats stats = recordDraws(cmd, payloads, pageCount, frameIndex, view, reprojection != nullptr, nextMark);
+  DrawStats stats = recordDraws(cmd, payloads, pageCount, frameIndex, view, reprojection != nullptr, imagery, nextMark);
   stats.nodes = uint32_t(nodes.size());
   stats.partialNodes = partial;
   stats.skirtEdges = skirtEdges[0] + skirtEdges[1];
@@ -398,6 +400,7 @@ uint32_t TerrainRenderer::writeInstances(unsigned char* bytes, const glm::dvec3&
                      morphDistance(n.morph.end_m[3])};
     inst.info = {payloads.localSlot(n.slot) * slotVec4, n.partial ? 2u : 1u,
                  uint32_t(n.id.level) - (n.partial ? 1u : 0u), 0u};
+    inst.imagery = {n.imageryCell, 0u, 0u, 0u};
     if (style_.landCover()) {  // only the _cover vertex stages read it
       const glm::vec4 detail = detailTileOffsets(n.id, detailTiling_);
       inst.detail = {detail.x, detail.y, detail.z, detail.w};
@@ -419,7 +422,7 @@ uint32_t TerrainRenderer::writeInstances(unsigned char* bytes, const glm::dvec3&
 
 DrawStats TerrainRenderer::recordDraws(VkCommandBuffer cmd, const PayloadPages& payloads, uint32_t pageCount,
                                        uint32_t frameIndex, TerrainDebugView view, bool reprojected,
-                                       uint32_t& nextMark) const {
+                                       const ImageryBinding* imagery, uint32_t& nextMark) const {
   DrawStats stats;
   const bool wireframe = view == TerrainDebugView::kWireframe, debugView = view != TerrainDebugView::kShaded;
   vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
@@ -440,21 +443,23 @@ DrawStats TerrainRenderer::recordDraws(VkCommandBuffer cmd, const PayloadPages& 
       // The detail textures, for the land cover pipelines (the wireframe's has none).
       const vk::SampledImage detail{GLOBE_TERRAIN_DETAIL_BINDING, style_.detailTextures};
       const vk::SampledImage* image = style_.landCover() && !wireframe ? &detail : nullptr;
+      std::array<VkDescriptorBufferInfo, 11> buffers{instanceDescriptor(frameIndex), payloads.window(page),
+                                                     constantsDescriptor(frameIndex)};
+      size_t count = 3;
       if (reprojected) {
-        pipeline.bind(cmd,
-                      {instanceDescriptor(frameIndex), payloads.window(page), constantsDescriptor(frameIndex),
-                       reprojection_[frameIndex].descriptor(), faces_.descriptor()},
-                      &push, sizeof(push), image);
+        for (const VkDescriptorBufferInfo& b : {reprojection_[frameIndex].descriptor(), faces_.descriptor()})
+          buffers[count++] = b;
       } else if (atmosphere_) {
-        pipeline.bind(cmd,
-                      {instanceDescriptor(frameIndex), payloads.window(page), constantsDescriptor(frameIndex),
-                       atmosphere_->parameters(), atmosphere_->transmittance(), atmosphere_->irradiance(),
-                       atmosphere_->scattering(), view_->camera(frameIndex), view_->table(frameIndex)},
-                      &push, sizeof(push), image);
-      } else {
-        pipeline.bind(cmd, {instanceDescriptor(frameIndex), payloads.window(page), constantsDescriptor(frameIndex)},
-                      &push, sizeof(push), image);
+        for (const VkDescriptorBufferInfo& b :
+             {atmosphere_->parameters(), atmosphere_->transmittance(), atmosphere_->irradiance(),
+              atmosphere_->scattering(), view_->camera(frameIndex), view_->table(frameIndex)})
+          buffers[count++] = b;
       }
+      if (imagery && !wireframe) {  // the wireframe's pipeline has no maps
+        buffers[count++] = imagery->cells;
+        buffers[count++] = imagery->tiles;
+      }
+      pipeline.bind(cmd, std::span(buffers.data(), count), &push, sizeof(push), image);
       vkCmdDrawIndexed(cmd, count_[r], instancesOf_[g], first_[r], 0, firstInstance_[g]);
       ++stats.drawCalls;
       stats.triangles += uint64_t(count_[r] / 3) * instancesOf_[g];

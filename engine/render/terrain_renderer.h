@@ -14,6 +14,7 @@
 #include "engine/atmosphere/atmosphere_luts.h"
 #include "engine/atmosphere/atmosphere_view.h"
 #include "engine/generation/payload_pages.h"
+#include "engine/render/imagery_tiles.h"
 #include "engine/render/terrain_detail.h"
 #include "engine/vk/frame_ring.h"
 #include "engine/vk/graphics_pipeline.h"
@@ -89,6 +90,10 @@ struct TerrainStyle {
   // by the caller, alive as long as the renderer). With an image view the payloads' masks are read
   // and the fragment stages splat the textures (terrain_fragment.glsl); null: no land cover.
   VkDescriptorImageInfo detailTextures{};
+  // Imagery LOD (engine/render/imagery_tiles.h): the fragment stages shade from the imagery tiles'
+  // maps (record() gets their binding) instead of the payloads' own (normalMapScale is then 0: the
+  // mesh payloads have no maps). Stored vertex positions only.
+  bool imagery = false;
   bool landCover() const { return detailTextures.imageView != VK_NULL_HANDLE; }
 };
 
@@ -100,6 +105,7 @@ struct DrawNode {
   bool partial = false;      // drawn at half resolution (the parent's LOD) over its own quadrant
   glm::dvec3 centre_m{0.0};  // node centre the payload was generated with (PayloadJob::centre)
   bool water = false;        // the payload has sea to draw (GpuPayloadGenerator::slotHasWater)
+  uint32_t imageryCell = 0;  // with imagery: the node's first cell in the frame's cell tables
 };
 
 // Timestamps written between the renderer's passes, at `firstQuery` + TerrainPassMark in `pool`
@@ -143,8 +149,10 @@ class TerrainRenderer {
   // scissor already set). `origin_m`: the floating origin (FloatingOrigin); `payloads`: the payload
   // pages, slot s starting at vec4 localSlot(s) * GLOBE_PAYLOAD_SLOT_VEC4(gridCells, normalMapScale) of page
   // page(s)'s window. frameIndex < vk::kFramesInFlight.
+  // `imagery`: the imagery tiles' binding when the style has imagery (else nullptr).
   DrawStats record(VkCommandBuffer cmd, const Camera& camera, const glm::dvec3& origin_m,
-                   std::span<const DrawNode> nodes, const PayloadPages& payloads, uint32_t frameIndex);
+                   std::span<const DrawNode> nodes, const PayloadPages& payloads, uint32_t frameIndex,
+                   const ImageryBinding* imagery = nullptr);
 
   const TerrainStyle& style() const { return style_; }
   void setStyle(const TerrainStyle& style) { style_ = style; }
@@ -177,7 +185,7 @@ class TerrainRenderer {
   // the debug view drawn), the instances grouped by draw and written, the draws themselves.
   DrawStats recordTerrain(VkCommandBuffer cmd, const Camera& camera, const glm::dvec3& origin_m,
                           std::span<const DrawNode> nodes, const PayloadPages& payloads, uint32_t frameIndex,
-                          uint32_t& nextMark);
+                          const ImageryBinding* imagery, uint32_t& nextMark);
   std::array<uint32_t, 2> markSkirtedEdges(std::span<const DrawNode> nodes);
   TerrainDebugView writeFrameConstants(unsigned char* bytes, const Camera& camera, const glm::dvec3& origin_m,
                                        bool skirts) const;
@@ -188,7 +196,8 @@ class TerrainRenderer {
                           const PayloadPages& payloads, uint32_t pageCount, bool skirts,
                           gpu::TerrainReprojectionNode* reprojection);
   DrawStats recordDraws(VkCommandBuffer cmd, const PayloadPages& payloads, uint32_t pageCount, uint32_t frameIndex,
-                        TerrainDebugView view, bool reprojected, uint32_t& nextMark) const;
+                        TerrainDebugView view, bool reprojected, const ImageryBinding* imagery,
+                        uint32_t& nextMark) const;
 
   vk::Device& device_;
   uint32_t cells_;

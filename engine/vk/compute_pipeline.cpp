@@ -29,8 +29,8 @@ UniqueDescriptorSetLayout storageBufferSetLayout(Device& device, uint32_t count,
 }
 
 void pushStorageBuffers(PFN_vkCmdPushDescriptorSetKHR push, VkCommandBuffer cmd, VkPipelineBindPoint bindPoint,
-                        VkPipelineLayout layout, std::initializer_list<VkDescriptorBufferInfo> buffers,
-                        uint32_t uniformMask, const SampledImage* image) {
+                        VkPipelineLayout layout, std::span<const VkDescriptorBufferInfo> buffers, uint32_t uniformMask,
+                        const SampledImage* image) {
   std::vector<VkWriteDescriptorSet> writes;
   writes.reserve(buffers.size() + 1);
   uint32_t binding = 0;
@@ -102,7 +102,8 @@ ComputePipeline::ComputePipeline(Device& device, const std::string& shader, uint
 void ComputePipeline::bind(VkCommandBuffer cmd, std::initializer_list<VkDescriptorBufferInfo> buffers,
                            const void* pushConstants, uint32_t pushConstantBytes) const {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
-  pushStorageBuffers(pushDescriptorSet_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, buffers, uniformMask_);
+  pushStorageBuffers(pushDescriptorSet_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_,
+                     std::span(buffers.begin(), buffers.size()), uniformMask_);
   if (pushConstantBytes)
     vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes, pushConstants);
 }

@@ -45,7 +45,7 @@ struct SampledImage {
 // Pushes `buffers` as bindings 0..n-1 of set 0 (shared by compute and graphics); bindings in
 // `uniformMask` are uniform buffers, the others storage buffers; and `image` if not null.
 void pushStorageBuffers(PFN_vkCmdPushDescriptorSetKHR push, VkCommandBuffer cmd, VkPipelineBindPoint bindPoint,
-                        VkPipelineLayout layout, std::initializer_list<VkDescriptorBufferInfo> buffers,
+                        VkPipelineLayout layout, std::span<const VkDescriptorBufferInfo> buffers,
                         uint32_t uniformMask = 0, const SampledImage* image = nullptr);
 
 // A push-descriptor set layout with `count` buffers visible to `stages` (uniform where `uniformMask`

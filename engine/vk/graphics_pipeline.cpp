@@ -120,7 +120,7 @@ GraphicsPipeline::GraphicsPipeline(Device& device, const GraphicsPipelineDesc& d
   pipeline_ = UniquePipeline(device.device(), pipeline);
 }
 
-void GraphicsPipeline::bind(VkCommandBuffer cmd, std::initializer_list<VkDescriptorBufferInfo> buffers,
+void GraphicsPipeline::bind(VkCommandBuffer cmd, std::span<const VkDescriptorBufferInfo> buffers,
                             const void* pushConstants, uint32_t pushConstantBytes, const SampledImage* image) const {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
   if (buffers.size() || image)

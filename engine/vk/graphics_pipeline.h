@@ -6,6 +6,7 @@
 #include "engine/vk/resources.h"
 
 #include <initializer_list>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,11 @@ class GraphicsPipeline {
 
   // `image`: the sampled image of sampledImageBinding (binding set), or nullptr.
   void bind(VkCommandBuffer cmd, std::initializer_list<VkDescriptorBufferInfo> buffers, const void* pushConstants,
+            uint32_t pushConstantBytes, const SampledImage* image = nullptr) const {
+    bind(cmd, std::span(buffers.begin(), buffers.size()), pushConstants, pushConstantBytes, image);
+  }
+  // The same with buffers 0..n-1 gathered at run time.
+  void bind(VkCommandBuffer cmd, std::span<const VkDescriptorBufferInfo> buffers, const void* pushConstants,
             uint32_t pushConstantBytes, const SampledImage* image = nullptr) const;
 
   VkPipeline pipeline() const { return pipeline_; }

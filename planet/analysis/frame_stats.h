@@ -28,6 +28,12 @@ struct FrameStats {
   double resident_mib = 0;      // payload memory resident on the GPU (MiB)
   uint32_t queue_length = 0;    // generation requests waiting
   bool converged = false;       // every node the view wants is drawn at its level (Terrain::converged)
+  // Normal/colour maps (0 without): the most screen pixels one drawn texel covers (an upper bound,
+  // lambda * texel width / distance, planet/imagery/imagery_selection.h), the largest and the 95th
+  // percentile over the drawn map cells; and with imagery LOD its tiles drawn this frame.
+  double texel_magnification_px = 0;
+  double texel_magnification_p95_px = 0;
+  uint32_t imagery_tiles = 0;
 };
 
 }  // namespace globe

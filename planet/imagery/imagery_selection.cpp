@@ -176,10 +176,37 @@ void ImagerySelector::select(const glm::dvec3& camera_m, double nearest_m, doubl
     }
   }
   out.stats.tiles = uint32_t(out.tiles.size());
+  summarise(out.stats);
+}
+
+void ImagerySelector::summarise(ImageryStats& stats) {
   if (magnifications_.empty()) return;
   std::sort(magnifications_.begin(), magnifications_.end());
-  out.stats.p95Magnification_px = nearestRankPercentile(magnifications_, 95);
-  out.stats.maxMagnification_px = magnifications_.back();
+  stats.p95Magnification_px = nearestRankPercentile(magnifications_, 95);
+  stats.maxMagnification_px = magnifications_.back();
+}
+
+ImageryStats ImagerySelector::meshMapStats(const glm::dvec3& camera_m, double nearest_m, double pixelsPerRadian,
+                                           std::span<const SelectedNode> nodes, uint32_t mapCells,
+                                           const NodeResidency& geometry) {
+  camera_m_ = camera_m;
+  nearest_m_ = std::max(nearest_m, 0.0);
+  lambda_ = pixelsPerRadian;
+  magnifications_.clear();
+  for (const SelectedNode& n : nodes) {
+    const NodeBounds bounds = NodeBounds::forNode(mapping_, n.id, rangeOf(n.id, geometry), shape_);
+    const double distance_m = distanceTo(bounds);
+    const double texel = levelWidth_m(n.id.level - (n.partial ? 1 : 0)) / double(mapCells);
+    double m = lambda_ * texel / distance_m;
+    // The parent's map shows from where the morph band may start on (never nearer than its floor).
+    const double morphFrom = n.morph.startFloor_m;
+    if (!n.partial && n.id.level > 0 && distance_m + bounds.diagonal() >= morphFrom)
+      m = std::max(m, lambda_ * 2.0 * texel / std::max(distance_m, morphFrom));
+    magnifications_.push_back(m);
+  }
+  ImageryStats stats;
+  summarise(stats);
+  return stats;
 }
 
 }  // namespace globe

@@ -83,6 +83,11 @@ class ImagerySelector {
   // the camera lies inside the bounds' radius range). `geometry` gives nodes' known radius ranges.
   void select(const glm::dvec3& camera_m, double nearest_m, double pixelsPerRadian, std::span<const SelectedNode> nodes,
               const NodeResidency& geometry, NodeResidency& imagery, ImagerySelection& out);
+  // The same bound for maps tied to the mesh, to compare: each drawn node's own map of `mapCells`
+  // cells a side (a partial node draws its parent's), blended to the parent's in its morph band.
+  // Fills the magnification fields only.
+  ImageryStats meshMapStats(const glm::dvec3& camera_m, double nearest_m, double pixelsPerRadian,
+                            std::span<const SelectedNode> nodes, uint32_t mapCells, const NodeResidency& geometry);
 
  private:
   struct Wanted {
@@ -104,6 +109,8 @@ class ImagerySelector {
   // next level towards the wanted tile is requested).
   ImageryCell resolve(const NodeId& wanted, double distance_m, NodeResidency& imagery, ImagerySelection& out);
   double magnification(const ImageryCell& cell, const Wanted& wanted) const;
+  // Sorts magnifications_ and writes their largest and 95th percentile.
+  void summarise(ImageryStats& stats);
 
   ImageryConfig config_;
   double minRadius_m_, maxRadius_m_;

@@ -1,5 +1,5 @@
 // Body of the terrain fragment stages: terrain.frag, compiled once per combination of the features
-// below as terrain[_atmosphere][_maps][_water][_holes].frag (shaders/CMakeLists.txt); each variant
+// below as terrain[_atmosphere][_maps[_imagery]][_water][_holes][_cover].frag (shaders/CMakeLists.txt); each variant
 // declares only the inputs it reads: lavapipe made the terrain pass up to 4x slower in some frames
 // of the flyover when unused inputs were declared (docs/rendering.md, "Atmosphere").
 // - GLOBE_TERRAIN_NORMAL_MAPS (TerrainStyle::normalMapScale > 0): shades per fragment from the
@@ -9,6 +9,8 @@
 //   per-fragment branch on an interpolated value). Without, and in the debug views, it writes the
 //   vertex stage's lit, display-encoded colour and reads no buffers, since per-fragment cost is what
 //   bounds lavapipe.
+// - GLOBE_TERRAIN_IMAGERY (with NORMAL_MAPS, TerrainStyle::imagery): the maps are the imagery
+//   tiles', chosen by texel magnification apart from the mesh (planet/imagery/imagery_selection.h).
 // - GLOBE_TERRAIN_ATMOSPHERE (for terrain_atmosphere.vert): mapped fragments lit by the vertex
 //   stage's sun and sky light through the air instead of Lambert + ambient, water seen through it.
 // - GLOBE_TERRAIN_WATER (nodes that have sea): the fragments below sea level shaded as water
@@ -29,8 +31,29 @@ layout(location = 1) in float inHole;
 layout(location = 0) out vec4 outColour;
 
 #ifdef GLOBE_TERRAIN_NORMAL_MAPS
+#ifdef GLOBE_TERRAIN_IMAGERY
+// The maps come from imagery tiles (planet/imagery/imagery_selection.h): the drawn node's cell table
+// says which tile covers each of its 4 x 4 cells, and where.
+#ifdef GLOBE_TERRAIN_ATMOSPHERE
+#define GLOBE_IMAGERY_FIRST_BINDING GLOBE_TERRAIN_IMAGERY_BINDING_ATMOSPHERE
+#else
+#define GLOBE_IMAGERY_FIRST_BINDING GLOBE_TERRAIN_IMAGERY_BINDING
+#endif
+layout(std430, set = 0, binding = GLOBE_IMAGERY_FIRST_BINDING) readonly buffer ImageryCells {
+  TerrainImageryCell imageryCells[];
+};
+layout(std430, set = 0, binding = GLOBE_IMAGERY_FIRST_BINDING + 1) readonly buffer ImageryTexels {
+  uvec2 imageryTexels[];
+};
+#define GLOBE_NORMAL_MAP_TEXELS imageryTexels
+layout(location = 18) flat in uint inImageryCell;
+#ifndef GLOBE_TERRAIN_WATER
+layout(location = 3) in vec3 inRelative;
+#endif
+#else
 // The payload page's slots seen as normal map texels (the vertex stage reads them as vec4).
 layout(std430, set = 0, binding = 1) readonly buffer PayloadTexels { uvec2 payloadTexels[]; };
+#endif
 #define GLOBE_NORMAL_MAP_SAMPLE
 #include "normal_map.glsl"
 layout(location = 4) in vec2 inMapUv;
@@ -94,17 +117,34 @@ vec3 detailModulation() {
 const float kHoleRim = 0.12;
 
 #ifdef GLOBE_TERRAIN_NORMAL_MAPS
-// The lit, display-encoded colour from the normal map.
+// Imagery LOD: no tile is resident over the fragment yet (its vertex colour is drawn).
+bool imageryMissing = false;
+
+// The lit, display-encoded colour from the normal map: the node's own (its level, blended to its
+// parent's by the mesh's morph), or with imagery LOD the tile over the fragment's cell (its level,
+// blended to its parent's by distance over [0.8, 1] x D of the parent level).
 vec3 mappedColour(vec3 modulation) {
-  uint cells = frame.options.w;
+#ifdef GLOBE_TERRAIN_IMAGERY
+  const uint side = GLOBE_IMAGERY_CELLS_PER_SIDE;
+  uvec2 at = min(uvec2(inMapUv * float(side)), uvec2(side - 1u));
+  TerrainImageryCell cell = imageryCells[inImageryCell + at.y * side + at.x];
+  imageryMissing = cell.tile.y == 0u;
+  uint cells = GLOBE_IMAGERY_TILE_CELLS, base = cell.tile.x;
+  vec2 uv = inMapUv * cell.map.x + cell.map.yz;
+  float blend = clamp((length(inRelative) * cell.map.w - 0.8) * 5.0, 0.0, 1.0);
+#else
+  uint cells = frame.options.w, base = inMapBase;
+  vec2 uv = inMapUv;
+  float blend = inMapBlend;
+#endif
   vec3 normal, root;
-  sampleNormalMap(inMapBase, cells + 1u, inMapUv * float(cells), normal, root);
-  if (inMapBlend > 0.0) {
+  sampleNormalMap(base, cells + 1u, uv * float(cells), normal, root);
+  if (blend > 0.0) {
     vec3 parentNormal, parentRoot;
-    sampleNormalMap(inMapBase + (cells + 1u) * (cells + 1u), cells / 2u + 1u, inMapUv * float(cells / 2u),
-                    parentNormal, parentRoot);
-    normal = mix(normal, parentNormal, inMapBlend);
-    root = mix(root, parentRoot, inMapBlend);
+    sampleNormalMap(base + (cells + 1u) * (cells + 1u), cells / 2u + 1u, uv * float(cells / 2u), parentNormal,
+                    parentRoot);
+    normal = mix(normal, parentNormal, blend);
+    root = mix(root, parentRoot, blend);
   }
   vec3 n = normalize(normal);
   vec3 albedo = root * root * modulation;
@@ -132,7 +172,8 @@ void main() {
 #ifdef GLOBE_TERRAIN_NORMAL_MAPS
   // A select, not an if, on the debug view (a uniform value: an if would make lavapipe compile the
   // shader again at draw time, docs/rendering.md).
-  colour = mix(mappedColour(modulation), inColour, bvec3(debug));
+  vec3 mapped = mappedColour(modulation);
+  colour = mix(mapped, inColour, bvec3(debug || imageryMissing));
 #endif
 #ifdef GLOBE_TERRAIN_WATER
   // The coast is where the interpolated depth changes sign: crisp at every distance, whatever the

@@ -44,7 +44,18 @@ struct TerrainDvec4 {
 
 // Binding of the land cover's detail textures (a sampler2DArray, one layer per class) in the terrain
 // pipelines with land cover (terrain_fragment.glsl), past every buffer binding.
-#define GLOBE_TERRAIN_DETAIL_BINDING 10
+#define GLOBE_TERRAIN_DETAIL_BINDING 11
+// Imagery LOD (planet/imagery/imagery_selection.h; the _imagery fragment stages): the drawn nodes'
+// cell tables (TerrainImageryCell) and the imagery tiles' payload buffer, after the other buffers:
+// at 3 and 4, or 9 and 10 with the atmosphere's.
+#define GLOBE_TERRAIN_IMAGERY_BINDING 3
+#define GLOBE_TERRAIN_IMAGERY_BINDING_ATMOSPHERE 9
+// An imagery tile is a payload of grid 32 with normal map scale 4 (payload_layout.h): 128 map cells
+// per side, its parent's 64 over its quadrant after them. Cells per side of a node's table.
+#define GLOBE_IMAGERY_TILE_GRID 32u
+#define GLOBE_IMAGERY_TILE_MAP_SCALE 4u
+#define GLOBE_IMAGERY_TILE_CELLS 128u
+#define GLOBE_IMAGERY_CELLS_PER_SIDE 4u
 // Texels per side of a detail texture's level 0 (planet/surface/detail_texture.h, kDetailTextureSize).
 #define GLOBE_DETAIL_TEXTURE_SIZE 256
 
@@ -67,7 +78,15 @@ struct TerrainFrame {
                                 //      texture (TerrainDetailTiling); zw unused
 };
 
-// One drawn node (std430, 80 bytes). Morph band (metres from the camera, LodRanges / NodeMorph): the
+// One cell of a drawn node's imagery table (std430, 32 bytes; the node's cells in rows along v).
+struct TerrainImageryCell {
+  GLOBE_UVEC4 tile;  // x = the tile's first map texel (uvec2 index in the imagery buffer), y = 1 when a
+                     // tile is drawn (0: none resident yet: the vertex colour), zw unused
+  GLOBE_VEC4 map;    // tile (u, v) = node (u, v) * x + (y, z); w = 1 / D of the tile's parent level (per
+                     // metre; 0 for roots): its texels blend to the parent's over [0.8, 1] x D
+};
+
+// One drawn node (std430, 96 bytes). Morph band (metres from the camera, LodRanges / NodeMorph): the
 // end is bilinear between morphEnd's corner values at the vertex's place in the node's (u, v) square,
 // start = min(end, max(end - morph.z * (end - morph.y), morph.x)); morphEnd.x = FLT_MAX: never morphs.
 struct TerrainInstance {
@@ -79,6 +98,7 @@ struct TerrainInstance {
   GLOBE_VEC4 morphEnd;  // 48: morph end at the node's corners u0 v0, u1 v0, u0 v1, u1 v1
   GLOBE_VEC4 detail;    // 64: where the node's (u, v) corner falls in the fine (xy) and coarse (zw)
                         //     detail tiles, [0, 1): the tiles' coordinates go on across nodes
+  GLOBE_UVEC4 imagery;  // 80: x = the node's first cell in the imagery table; yzw unused
 };
 
 // Positions re-projected every frame (VertexPositions::kReprojected, measured by globe trade): one
@@ -100,7 +120,9 @@ struct TerrainDrawPush {
 
 #ifdef __cplusplus
 static_assert(sizeof(TerrainFrame) == 256);
-static_assert(sizeof(TerrainInstance) == 80);
+static_assert(sizeof(TerrainInstance) == 96);
+static_assert(sizeof(TerrainImageryCell) == 32);
+static_assert(GLOBE_IMAGERY_TILE_CELLS == GLOBE_IMAGERY_TILE_GRID * GLOBE_IMAGERY_TILE_MAP_SCALE);
 static_assert(sizeof(TerrainReprojectionFrame) == 32 && sizeof(TerrainReprojectionNode) == 32);
 }  // namespace globe::gpu
 #endif

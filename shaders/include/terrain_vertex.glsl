@@ -76,6 +76,7 @@ struct TerrainVertex {
   vec2 mapUv;
   uint mapBase;
   float mapBlend;
+  uint imageryCell;  // the node's first cell in the imagery table (TerrainInstance.imagery.x)
   // Land cover (GLOBE_TERRAIN_COVER): the 8 class masks in [0, 1] (morphed like the colour), and the
   // fine (xy) and coarse (zw) detail texture coordinates (TerrainInstance.detail, terrain_detail.h).
   vec4 cover0;
@@ -222,6 +223,7 @@ TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCell
   v.mapUv = mapUv;
   v.mapBase = (base + 2u * normals) * 2u;
   v.mapBlend = stride == 2u ? 1.0 : k;
+  v.imageryCell = inst.imagery.x;
   v.cover0 = cover0;
   v.cover1 = cover1;
   v.detailUv = vec4(0.0);

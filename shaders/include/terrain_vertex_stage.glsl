@@ -30,6 +30,8 @@ layout(location = 3) out vec3 outRelative;
 layout(location = 4) out vec2 outMapUv;
 layout(location = 5) flat out uint outMapBase;
 layout(location = 6) out float outMapBlend;
+// Imagery LOD (the _imagery fragment stages read it with outRelative): the node's cell table.
+layout(location = 18) flat out uint outImageryCell;
 #ifdef GLOBE_TERRAIN_COVER
 // Land cover (terrain_cover*.vert, for the _cover fragment stages): the masks, the fine detail
 // texture's coordinates, and the coarse detail texture's modulation, sampled here per vertex (the
@@ -100,6 +102,7 @@ void main() {
   outMapUv = v.mapUv;
   outMapBase = v.mapBase;
   outMapBlend = v.mapBlend;
+  outImageryCell = v.imageryCell;
 #ifdef GLOBE_TERRAIN_COVER
   outCover0 = v.cover0;
   outCover1 = v.cover1;

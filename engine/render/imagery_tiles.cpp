@@ -1,0 +1,114 @@
+#include "engine/render/imagery_tiles.h"
+
+#include "engine/vk/vk_check.h"
+#include "planet/geometry/triacontahedron.h"
+#include "shaders/include/payload_layout.h"
+#include "shaders/include/terrain_layout.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace globe {
+
+namespace {
+// Tiles' slot layout: a grid-32 payload with normal map scale 4 (the mesh part is generated too:
+// its samples are the ring the map's border normals are differenced from).
+constexpr uint32_t kTileGrid = GLOBE_IMAGERY_TILE_GRID;
+constexpr uint32_t kTileMapScale = GLOBE_IMAGERY_TILE_MAP_SCALE;
+constexpr uint32_t kTileSamples = GLOBE_PAYLOAD_SAMPLES_PER_SIDE(kTileGrid);
+}  // namespace
+
+Result<std::unique_ptr<ImageryTiles>> ImageryTiles::create(vk::Device& device, const ElevationModel& model,
+                                                           const ImagerySettings& settings,
+                                                           const StreamingConfig& streaming,
+                                                           GenerationPrecision precision, int maxLevel) {
+  if (!(std::isfinite(settings.magnification_px) && settings.magnification_px > 0.0))
+    return Error::inField("texel_magnification", "must be a finite number of pixels > 0");
+  std::unique_ptr<ImageryTiles> tiles(new ImageryTiles(device, model, settings, streaming, precision, maxLevel));
+  StreamingConfig config = streaming;
+  config.vramBudget_MiB = settings.vramBudget_MiB;
+  config.ramBudget_MiB = 16.0;
+  // One binding holds every tile: the fragment stages bind one window.
+  const VkDeviceSize range = device.properties().limits.maxStorageBufferRange;
+  config.maxSlots = uint32_t(std::min<VkDeviceSize>(range / tiles->generator_->slotBytes(), 1u << 20));
+  auto pool = PayloadPool::create(config, *tiles->generator_, model.radius_m());
+  if (!pool) return pool.error();
+  tiles->pool_ = std::move(*pool);
+  tiles->generator_->reserveSlots(tiles->pool_->slotCapacity(), tiles->pool_->slotCapacity());
+  return tiles;
+}
+
+ImageryTiles::ImageryTiles(vk::Device& device, const ElevationModel& model, const ImagerySettings& settings,
+                           const StreamingConfig& streaming, GenerationPrecision precision, int maxLevel)
+    : device_(device),
+      selector_(ImageryConfig{GLOBE_IMAGERY_TILE_CELLS, settings.magnification_px, maxLevel}, model.radius_m(),
+                model.bounds().min_m, model.bounds().max_m, model.shape()) {
+  generator_ =
+      std::make_unique<GpuPayloadGenerator>(device, model, kTileGrid, streaming.dispatchBudget, streaming.maxInFlight,
+                                            precision, /*waterSurface=*/true, kTileMapScale);
+}
+
+ImageryTiles::~ImageryTiles() {
+  try {
+    if (generator_) generator_->waitIdle();
+  } catch (const vk::VulkanError&) {
+  }
+}
+
+void ImageryTiles::update(uint64_t frame, uint64_t completedFrame, const Camera& camera, double nearest_m,
+                          double pixelsPerRadian, std::span<const SelectedNode> nodes, const NodeResidency& geometry,
+                          bool requestAllRoots) {
+  pool_->beginFrame(frame, camera.position_m, completedFrame);
+  lambda_ = pixelsPerRadian;
+  selector_.select(camera.position_m, nearest_m, pixelsPerRadian, nodes, geometry, *pool_, selection_);
+  nodes_.resize(nodes.size());
+  for (size_t k = 0; k < nodes.size(); ++k) nodes_[k] = nodes[k].id;
+  if (requestAllRoots) {
+    for (int face = 0; face < kFaceCount; ++face) {
+      const NodeId root{uint8_t(face), 0, 0, 0};
+      if (!pool_->isResident(root)) pool_->request(root, RequestPriority::kRoot, glm::length(camera.position_m));
+    }
+  }
+  pool_->markUsed(selection_.tiles);
+  pool_->dispatch();
+}
+
+void ImageryTiles::cellRecord(const NodeId& node, const ImageryCell& cell, void* out) const {
+  gpu::TerrainImageryCell record{};
+  if (std::optional<uint32_t> slot = cell.resident ? pool_->slotOf(cell.tile) : std::nullopt) {
+    const uint32_t slotVec4 = GLOBE_PAYLOAD_SLOT_VEC4(kTileGrid, kTileMapScale);
+    // The map starts after the mesh's positions and normals; texels are uvec2, two per vec4.
+    record.tile = {(*slot * slotVec4 + 2u * kTileSamples * kTileSamples) * 2u, 1u, 0u, 0u};
+    // tile (u, v) = node (u, v) * s + offset, s = 2^(tile level - node level): exact in double.
+    const double s = std::ldexp(1.0, int(cell.tile.level) - int(node.level));
+    record.map = {float(s), float(double(node.x) * s - double(cell.tile.x)),
+                  float(double(node.y) * s - double(cell.tile.y)),
+                  cell.tile.level > 0 ? float(1.0 / selector_.adequateFrom_m(cell.tile.level - 1, lambda_)) : 0.0f};
+  }
+  std::memcpy(out, &record, sizeof(record));
+}
+
+ImageryBinding ImageryTiles::write(uint32_t frameIndex) {
+  const VkDeviceSize bytes = std::max<VkDeviceSize>(selection_.cells.size(), 1) * sizeof(gpu::TerrainImageryCell);
+  vk::Buffer& buffer = cells_[frameIndex];
+  if (buffer.size() < bytes) {
+    // The caller waited for this frame index: the old buffer is idle. Grown by half again at least.
+    buffer = vk::Buffer(device_, std::max(bytes, buffer.size() + buffer.size() / 2), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                        vk::MemoryUse::HostVisible, "imagery cells");
+  }
+  auto* out = static_cast<unsigned char*>(buffer.mapped());
+  for (size_t k = 0; k < nodes_.size(); ++k)
+    for (size_t c = 0; c < size_t(kImageryCellsPerNode); ++c) {
+      const size_t i = k * kImageryCellsPerNode + c;
+      cellRecord(nodes_[k], selection_.cells[i], out + i * sizeof(gpu::TerrainImageryCell));
+    }
+  return {buffer.descriptor(), generator_->pages().window(0)};
+}
+
+bool ImageryTiles::converged() const {
+  const StreamingStats& s = pool_->stats();
+  return selection_.stats.requests == 0 && s.inFlight == 0 && s.queueLength == 0;
+}
+
+}  // namespace globe

@@ -1,0 +1,75 @@
+#pragma once
+// Imagery LOD's engine side [Rodrigues 2016, §3.2]: the surface tiles (normal and colour maps of
+// GLOBE_IMAGERY_TILE_CELLS cells a side, payload_layout.h) have their own generator, their own pool
+// (budget, request queue, eviction) and their own selection by texel magnification
+// (planet/imagery/imagery_selection.h), run every frame after the mesh's. The drawn nodes' cell
+// tables go to the GPU in one host-visible buffer per frame in flight; the _imagery fragment stages
+// sample the tile of each fragment's cell (terrain_fragment.glsl).
+#include "engine/generation/payload_generator.h"
+#include "engine/vk/resources.h"
+#include "planet/camera/camera.h"
+#include "planet/elevation/elevation.h"
+#include "planet/imagery/imagery_selection.h"
+#include "planet/streaming/payload_pool.h"
+
+#include <array>
+#include <memory>
+#include <span>
+
+namespace globe {
+
+struct ImagerySettings {
+  double magnification_px = 1.5;  // most screen pixels one texel may cover
+  double vramBudget_MiB = 96.0;   // the tiles' payload slots (at most one storage-buffer binding's worth)
+};
+
+// What the terrain pipelines bind for imagery (GLOBE_TERRAIN_IMAGERY_BINDING): the frame's cell
+// tables and the tiles' payloads.
+struct ImageryBinding {
+  VkDescriptorBufferInfo cells{};
+  VkDescriptorBufferInfo tiles{};
+};
+
+class ImageryTiles {
+ public:
+  // Errors: a budget too small for the 30 roots and a working set.
+  static Result<std::unique_ptr<ImageryTiles>> create(vk::Device& device, const ElevationModel& model,
+                                                      const ImagerySettings& settings, const StreamingConfig& streaming,
+                                                      GenerationPrecision precision, int maxLevel);
+  ~ImageryTiles();
+
+  // One frame, after the mesh's selection (`nodes`, whose known radius ranges `geometry` gives):
+  // collects finished tiles, selects, requests, pins the drawn tiles, starts generations.
+  // `nearest_m`: the camera's height above the ground below it; `requestAllRoots`: the warm-up.
+  void update(uint64_t frame, uint64_t completedFrame, const Camera& camera, double nearest_m, double pixelsPerRadian,
+              std::span<const SelectedNode> nodes, const NodeResidency& geometry, bool requestAllRoots);
+  // Writes the last update's cell tables (kImageryCellsPerNode per node, in its order) into frame
+  // `frameIndex`'s buffer; the caller waited for that frame's previous use.
+  ImageryBinding write(uint32_t frameIndex);
+
+  // Nothing asked for, queued or being made.
+  bool converged() const;
+  void waitIdle() { generator_->waitIdle(); }
+  const ImageryStats& stats() const { return selection_.stats; }
+  const PayloadPool& pool() const { return *pool_; }
+  const GpuPayloadGenerator& generator() const { return *generator_; }
+  const ImagerySelector& selector() const { return selector_; }
+  double gpuTime_ms() const { return generator_->gpuTime_ms(); }
+
+ private:
+  ImageryTiles(vk::Device& device, const ElevationModel& model, const ImagerySettings& settings,
+               const StreamingConfig& streaming, GenerationPrecision precision, int maxLevel);
+  // The GPU record of a drawn node's cell.
+  void cellRecord(const NodeId& node, const ImageryCell& cell, void* out) const;
+
+  vk::Device& device_;
+  ImagerySelector selector_;
+  std::unique_ptr<GpuPayloadGenerator> generator_;
+  std::unique_ptr<PayloadPool> pool_;
+  ImagerySelection selection_;
+  std::vector<NodeId> nodes_;  // the last update's drawn nodes
+  double lambda_ = 0.0;
+  std::array<vk::Buffer, 2> cells_;  // per frame in flight
+};
+
+}  // namespace globe
