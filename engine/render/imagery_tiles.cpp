@@ -1,7 +1,6 @@
 #include "engine/render/imagery_tiles.h"
 
 #include "engine/vk/vk_check.h"
-#include "planet/geometry/triacontahedron.h"
 #include "shaders/include/payload_layout.h"
 #include "shaders/include/terrain_layout.h"
 
@@ -64,12 +63,7 @@ void ImageryTiles::update(uint64_t frame, uint64_t completedFrame, const Camera&
   selector_.select(camera.position_m, nearest_m, pixelsPerRadian, nodes, geometry, *pool_, selection_);
   nodes_.resize(nodes.size());
   for (size_t k = 0; k < nodes.size(); ++k) nodes_[k] = nodes[k].id;
-  if (requestAllRoots) {
-    for (int face = 0; face < kFaceCount; ++face) {
-      const NodeId root{uint8_t(face), 0, 0, 0};
-      if (!pool_->isResident(root)) pool_->request(root, RequestPriority::kRoot, glm::length(camera.position_m));
-    }
-  }
+  if (requestAllRoots) pool_->requestRoots(glm::length(camera.position_m));
   pool_->markUsed(selection_.tiles);
   pool_->dispatch();
 }

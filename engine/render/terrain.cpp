@@ -190,14 +190,9 @@ void Terrain::updateAt(uint64_t poolFrame, const Camera& camera, uint64_t poolCo
   stats_.select_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (!selected) selection_.nodes.clear();  // a non-finite camera draws nothing (the caller validated it)
 
-  if (requestAllRoots) {
-    // The selection asks only for the roots in view; the warm-up makes the whole planet resident so
-    // turning round never shows a hole (roots are never evicted).
-    for (int face = 0; face < kFaceCount; ++face) {
-      const NodeId root{uint8_t(face), 0, 0, 0};
-      if (!pool_->isResident(root)) pool_->request(root, RequestPriority::kRoot, glm::length(camera.position_m));
-    }
-  }
+  // The selection asks only for the roots in view; the warm-up makes the whole planet resident so
+  // turning round never shows a hole (roots are never evicted).
+  if (requestAllRoots) pool_->requestRoots(glm::length(camera.position_m));
   pool_->markUsed(selection_.nodes);
   pool_->dispatch();
 

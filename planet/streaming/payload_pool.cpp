@@ -1,5 +1,7 @@
 #include "planet/streaming/payload_pool.h"
 
+#include "planet/geometry/triacontahedron.h"
+
 #include "planet/core/hash.h"
 #include "planet/lod/lod_ranges.h"
 
@@ -166,6 +168,13 @@ std::optional<double> PayloadPool::knownGeometricError(const NodeId& node) const
   int64_t i = find(node.key());
   if (i < 0 || table_[size_t(i)].state != State::kResident) return std::nullopt;
   return table_[size_t(i)].geometricError_m;
+}
+
+void PayloadPool::requestRoots(double distance_m) {
+  for (int face = 0; face < kFaceCount; ++face) {
+    const NodeId root{uint8_t(face), 0, 0, 0};
+    if (!isResident(root)) request(root, RequestPriority::kRoot, distance_m);
+  }
 }
 
 void PayloadPool::request(const NodeId& node, RequestPriority priority, double distance_m) {

@@ -70,6 +70,8 @@ class PayloadPool final : public NodeResidency {
   std::optional<RadiusRange> knownRadiusRange(const NodeId& node) const override;
   std::optional<double> knownGeometricError(const NodeId& node) const override;
 
+  // Asks (kRoot) for every root not resident yet: the warm-up's whole planet.
+  void requestRoots(double distance_m);
   // Starts frame `frame` (strictly increasing). `completedFrame`: every frame <= it has finished on
   // the GPU, so slots only those frames used may be rewritten.
   void beginFrame(uint64_t frame, const glm::dvec3& camera_m, uint64_t completedFrame);
