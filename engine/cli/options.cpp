@@ -199,6 +199,11 @@ void addBudgetOptions(CLI::App& cmd, BudgetOptions& budget) {
   cmd.add_option("--vram-mib", budget.vram_MiB,
                  fmt::format("Payload pool budget in MiB (default {:g})", StreamingConfig{}.vramBudget_MiB))
       ->check(CLI::Range(1.0, 1048576.0));
+  cmd.add_option("--imagery-mib", budget.imagery_MiB,
+                 fmt::format("Imagery tiles' pool budget in MiB, with --imagery on (default {:g}; at most {} "
+                             "storage-buffer bindings' worth)",
+                             ImagerySettings{}.vramBudget_MiB, kImageryTilePages))
+      ->check(CLI::Range(1.0, 1048576.0));
 }
 
 Status applyBudgetOptions(const BudgetOptions& budget, TerrainSettings& settings) {
@@ -207,6 +212,7 @@ Status applyBudgetOptions(const BudgetOptions& budget, TerrainSettings& settings
   if (budget.maxTriangles) b.maxTriangles = budget.maxTriangles;
   if (budget.maxRequests) b.maxRequests = budget.maxRequests;
   if (budget.vram_MiB > 0) settings.streaming.vramBudget_MiB = budget.vram_MiB;
+  if (budget.imagery_MiB > 0) settings.imagerySettings.vramBudget_MiB = budget.imagery_MiB;
   if (auto s = validateTerrainSettings(settings); !s) return budgetOptionError(s.error());
   return Ok{};
 }
@@ -216,6 +222,7 @@ Error budgetOptionError(Error e) {
   if (e.field == "max_drawn_nodes") e.field = "--max-nodes";
   if (e.field == "max_requests") e.field = "--max-requests";
   if (e.field == "vram_budget_mib") e.field = "--vram-mib";
+  if (e.field == "imagery_vram_budget_mib") e.field = "--imagery-mib";
   return e;
 }
 

@@ -73,12 +73,13 @@ int validationExitCode(vk::Device& device);
 CLI::Validator nonEmptyValue();
 
 // --max-nodes, --max-triangles, --max-requests (the frame budget, planet/streaming/frame_budget.h)
-// and --vram-mib (the payload pool): 0 or absent keeps the default.
+// --vram-mib (the payload pool) and --imagery-mib (the imagery tiles' pool): 0 or absent keeps the default.
 struct BudgetOptions {
   uint32_t maxNodes = 0;
   uint64_t maxTriangles = 0;
   uint32_t maxRequests = 0;
   double vram_MiB = 0;
+  double imagery_MiB = 0;
 };
 void addBudgetOptions(CLI::App& cmd, BudgetOptions& budget);
 // --height-ref: what --at's HEIGHT is measured from (parseHeightReference checks the value).

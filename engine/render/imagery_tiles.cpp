@@ -5,6 +5,7 @@
 #include "shaders/include/terrain_layout.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstring>
 
@@ -16,6 +17,7 @@ namespace {
 constexpr uint32_t kTileGrid = GLOBE_IMAGERY_TILE_GRID;
 constexpr uint32_t kTileMapScale = GLOBE_IMAGERY_TILE_MAP_SCALE;
 constexpr uint32_t kTileSamples = GLOBE_PAYLOAD_SAMPLES_PER_SIDE(kTileGrid);
+static_assert(kImageryTilePages == GLOBE_IMAGERY_TILE_PAGES);
 }  // namespace
 
 Result<std::unique_ptr<ImageryTiles>> ImageryTiles::create(vk::Device& device, const ElevationModel& model,
@@ -28,13 +30,22 @@ Result<std::unique_ptr<ImageryTiles>> ImageryTiles::create(vk::Device& device, c
   StreamingConfig config = streaming;
   config.vramBudget_MiB = settings.vramBudget_MiB;
   config.ramBudget_MiB = 16.0;
-  // One binding holds every tile: the fragment stages bind one window.
+  // The fragment stages bind kImageryTilePages windows of one binding each.
   const VkDeviceSize range = device.properties().limits.maxStorageBufferRange;
-  config.maxSlots = uint32_t(std::min<VkDeviceSize>(range / tiles->generator_->slotBytes(), 1u << 20));
+  // Pages of a multiple of 16 slots start at an aligned offset (GpuPayloadGenerator::reserveSlots).
+  VkDeviceSize perBinding = std::min<VkDeviceSize>(range / tiles->generator_->slotBytes(), 1u << 20);
+  if (settings.slotsPerPage > 0) perBinding = std::min<VkDeviceSize>(perBinding, settings.slotsPerPage);
+  const uint32_t perPage = std::max(uint32_t(perBinding) / 16u * 16u, 16u);
+  config.maxSlots = perPage * kImageryTilePages;
   auto pool = PayloadPool::create(config, *tiles->generator_, model.radius_m());
-  if (!pool) return pool.error();
+  if (!pool) {  // named apart from the mesh pool's budget
+    Error e = pool.error();
+    if (e.field == "vram_budget_mib") e.field = "imagery_vram_budget_mib";
+    return e;
+  }
   tiles->pool_ = std::move(*pool);
-  tiles->generator_->reserveSlots(tiles->pool_->slotCapacity(), tiles->pool_->slotCapacity());
+  tiles->generator_->reserveSlots(tiles->pool_->slotCapacity(), perPage);
+  assert(tiles->generator_->pages().pageCount() <= kImageryTilePages);
   return tiles;
 }
 
@@ -59,7 +70,6 @@ void ImageryTiles::update(uint64_t frame, uint64_t completedFrame, const Camera&
                           double pixelsPerRadian, std::span<const SelectedNode> nodes, const NodeResidency& geometry,
                           bool requestAllRoots) {
   pool_->beginFrame(frame, camera.position_m, completedFrame);
-  lambda_ = pixelsPerRadian;
   selector_.select(camera.position_m, nearest_m, pixelsPerRadian, nodes, geometry, *pool_, selection_);
   nodes_.resize(nodes.size());
   for (size_t k = 0; k < nodes.size(); ++k) nodes_[k] = nodes[k].id;
@@ -73,12 +83,15 @@ void ImageryTiles::cellRecord(const NodeId& node, const ImageryCell& cell, void*
   if (std::optional<uint32_t> slot = cell.resident ? pool_->slotOf(cell.tile) : std::nullopt) {
     const uint32_t slotVec4 = GLOBE_PAYLOAD_SLOT_VEC4(kTileGrid, kTileMapScale);
     // The map starts after the mesh's positions and normals; texels are uvec2, two per vec4.
-    record.tile = {(*slot * slotVec4 + 2u * kTileSamples * kTileSamples) * 2u, 1u, 0u, 0u};
+    const PayloadPages& pages = generator_->pages();
+    record.tile = {(pages.localSlot(*slot) * slotVec4 + 2u * kTileSamples * kTileSamples) * 2u, 1u, pages.page(*slot),
+                   0u};
     // tile (u, v) = node (u, v) * s + offset, s = 2^(tile level - node level): exact in double.
     const double s = std::ldexp(1.0, int(cell.tile.level) - int(node.level));
-    record.map = {float(s), float(double(node.x) * s - double(cell.tile.x)),
-                  float(double(node.y) * s - double(cell.tile.y)),
-                  cell.tile.level > 0 ? float(1.0 / selector_.adequateFrom_m(cell.tile.level - 1, lambda_)) : 0.0f};
+    record.map = {
+        float(s), float(double(node.x) * s - double(cell.tile.x)), float(double(node.y) * s - double(cell.tile.y)),
+        cell.tile.level > 0 ? float(1.0 / selector_.adequateFrom_m(cell.tile.level - 1, selector_.pixelsPerRadian()))
+                            : 0.0f};
   }
   std::memcpy(out, &record, sizeof(record));
 }
@@ -97,7 +110,10 @@ ImageryBinding ImageryTiles::write(uint32_t frameIndex) {
       const size_t i = k * kImageryCellsPerNode + c;
       cellRecord(nodes_[k], selection_.cells[i], out + i * sizeof(gpu::TerrainImageryCell));
     }
-  return {buffer.descriptor(), generator_->pages().window(0)};
+  ImageryBinding binding{buffer.descriptor(), {}};
+  const PayloadPages& pages = generator_->pages();
+  for (uint32_t p = 0; p < kImageryTilePages; ++p) binding.pages[p] = pages.window(p < pages.pageCount() ? p : 0u);
+  return binding;
 }
 
 bool ImageryTiles::converged() const {

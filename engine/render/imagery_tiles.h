@@ -18,16 +18,25 @@
 
 namespace globe {
 
+// Windows of at most one storage-buffer binding each that the fragment stages bind over the tiles'
+// payload buffer (GLOBE_IMAGERY_TILE_PAGES): 512 MiB on lavapipe (128 MiB bindings), ~16 GiB on GPUs.
+inline constexpr uint32_t kImageryTilePages = 4;
+
 struct ImagerySettings {
   double magnification_px = 1.5;  // most screen pixels one texel may cover
-  double vramBudget_MiB = 96.0;   // the tiles' payload slots (at most one storage-buffer binding's worth)
+  // The tiles' payload slots (capped at kImageryTilePages bindings' worth). The 2 m camera at 1280x720
+  // draws 1311 tiles (211 KiB each) and converges in 512 MiB, not in 384 (docs/rendering.md).
+  double vramBudget_MiB = 512.0;
+  // Slots per page (binding window), rounded down to a multiple of 16; 0: as many as one binding
+  // holds. Fewer spread a small pool over every page (the tests).
+  uint32_t slotsPerPage = 0;
 };
 
 // What the terrain pipelines bind for imagery (GLOBE_TERRAIN_IMAGERY_BINDING): the frame's cell
-// tables and the tiles' payloads.
+// tables and the tiles' payload pages (unused pages repeat the first window).
 struct ImageryBinding {
   VkDescriptorBufferInfo cells{};
-  VkDescriptorBufferInfo tiles{};
+  std::array<VkDescriptorBufferInfo, kImageryTilePages> pages{};
 };
 
 class ImageryTiles {
@@ -67,8 +76,7 @@ class ImageryTiles {
   std::unique_ptr<GpuPayloadGenerator> generator_;
   std::unique_ptr<PayloadPool> pool_;
   ImagerySelection selection_;
-  std::vector<NodeId> nodes_;  // the last update's drawn nodes
-  double lambda_ = 0.0;
+  std::vector<NodeId> nodes_;        // the last update's drawn nodes
   std::array<vk::Buffer, 2> cells_;  // per frame in flight
 };
 

@@ -36,6 +36,10 @@ TerrainSettings terrainSettingsFor(QualityPreset preset) {
       // balanced it is +40 % (MSAA x4 +160 %) of the flyover's CPU: docs/rendering.md, "Anti-aliasing".
       s.antialiasing = vk::Antialiasing::kFxaa;
       s.normalMapScale = 1;  // 64 map cells a node; scale 2 would fit only 1549 slots in 512 MiB
+      // The maps from imagery tiles of their own LOD: each texel <= 1.5 px at 1280x720 from 100 km to
+      // 1 km where the mesh's own maps reach 2.9 px, and 2.8 px instead of 45 px at 2 m
+      // (docs/rendering.md, "Imagery LOD"); --imagery off falls back to the mesh's maps above.
+      s.imagery = true;
       // The complete atmosphere (light and aerial perspective per vertex): 2.4x the frame at 1 km,
       // 1.65x at 2 m (docs/rendering.md, "Atmosphere"); the reference-quality preset keeps it.
       s.atmosphere = AtmosphereDetail::kFull;

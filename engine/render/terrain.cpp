@@ -185,7 +185,8 @@ void Terrain::updateAt(uint64_t poolFrame, const Camera& camera, uint64_t poolCo
   auto start = std::chrono::steady_clock::now();
   auto frustum = Frustum::fromViewProjection(camera.projection() * camera.viewFromWorld(glm::dvec3(0.0)));
   SelectionCamera sc{camera.position_m, frustum ? &*frustum : nullptr};
-  selector_.ranges().setPixelsPerRadian(pixelsPerRadian(settings_.viewHeight_px, camera.verticalFov_rad));
+  const double lambda = pixelsPerRadian(settings_.viewHeight_px, camera.verticalFov_rad);
+  selector_.ranges().setPixelsPerRadian(lambda);
   Status selected = budgeted_.select(selector_, sc, *pool_, selection_);
   stats_.select_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (!selected) selection_.nodes.clear();  // a non-finite camera draws nothing (the caller validated it)
@@ -205,7 +206,7 @@ void Terrain::updateAt(uint64_t poolFrame, const Camera& camera, uint64_t poolCo
   stats_.evicted = s.evicted;
   stats_.resident_mib = s.residentMiB;
   stats_.queue_length = s.queueLength;
-  updateImagery(poolFrame, poolCompletedFrame, camera, requestAllRoots);
+  updateImagery(poolFrame, poolCompletedFrame, camera, lambda, requestAllRoots);
   gatherWarnings();
 
   origin_.update(camera.position_m);
@@ -220,10 +221,9 @@ void Terrain::updateAt(uint64_t poolFrame, const Camera& camera, uint64_t poolCo
   }
 }
 
-void Terrain::updateImagery(uint64_t poolFrame, uint64_t poolCompletedFrame, const Camera& camera,
+void Terrain::updateImagery(uint64_t poolFrame, uint64_t poolCompletedFrame, const Camera& camera, double lambda,
                             bool requestAllRoots) {
   if (!imagery_ && !meshMaps_) return;  // no maps
-  const double lambda = pixelsPerRadian(settings_.viewHeight_px, camera.verticalFov_rad);
   const double altitude_m = glm::length(camera.position_m) - groundRadius(glm::normalize(camera.position_m));
   if (!imagery_) {
     const ImageryStats s = meshMaps_->meshMapStats(camera.position_m, altitude_m, lambda, selection_.nodes,
@@ -258,8 +258,13 @@ void Terrain::gatherWarnings() {
   for (; poolWarningsSeen_ < pool.size(); ++poolWarningsSeen_) warnings_.push_back(pool[poolWarningsSeen_]);
   if (imagery_) {
     const std::span<const std::string> tiles = imagery_->pool().warnings();
-    for (; imageryWarningsSeen_ < tiles.size(); ++imageryWarningsSeen_)
-      warnings_.push_back("imagery tiles: " + tiles[imageryWarningsSeen_]);
+    for (; imageryWarningsSeen_ < tiles.size(); ++imageryWarningsSeen_) {
+      std::string w = "imagery tiles: " + tiles[imageryWarningsSeen_];
+      // The tiles' pool has its own budget (ImagerySettings, --imagery-mib on the command line).
+      if (size_t at = w.find("the VRAM budget"); at != std::string::npos)
+        w.replace(at, 15, "the imagery budget (at most " + std::to_string(kImageryTilePages) + " bindings' worth)");
+      warnings_.push_back(std::move(w));
+    }
   }
   // A failure now and then is retried (the view draws coarser meanwhile); failing on and on is not
   // going to get better, and a frame loop waiting for convergence would never end.

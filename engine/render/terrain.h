@@ -151,7 +151,9 @@ class Terrain {
   void gatherWarnings();
   // Imagery LOD's frame after the mesh's selection (texel magnification stats into stats_), and
   // without it the texel magnification of the payloads' own maps.
-  void updateImagery(uint64_t poolFrame, uint64_t poolCompletedFrame, const Camera& camera, bool requestAllRoots);
+  // lambda: the view's pixels per radian.
+  void updateImagery(uint64_t poolFrame, uint64_t poolCompletedFrame, const Camera& camera, double lambda,
+                     bool requestAllRoots);
   bool imageryOn() const { return settings_.imagery && settings_.vertexPositions == VertexPositions::kStored; }
 
   vk::Device& device_;

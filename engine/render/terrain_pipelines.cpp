@@ -28,9 +28,9 @@ vk::GraphicsPipelineDesc terrainDesc(TargetFormat target, bool wireframe, VkCull
   // atmosphere: 3 its parameters (uniform), 4-6 its tables, 7 the frame's camera (uniform), 8 its
   // aerial perspective table (AtmosphereView).
   d.storageBuffers = reprojected ? 5 : atmosphere ? 9 : 3;
-  // Imagery: 3-4 or 9-10 the cell tables and the tiles (GLOBE_TERRAIN_IMAGERY_BINDING).
+  // Imagery: 3-7 or 9-13 the cell tables and the tiles' pages (GLOBE_TERRAIN_IMAGERY_BINDING).
   assert(!shading.imagery || !reprojected);
-  if (shading.imagery && shading.normalMaps) d.storageBuffers += 2;
+  if (shading.imagery && shading.normalMaps) d.storageBuffers += 1 + GLOBE_IMAGERY_TILE_PAGES;
   d.uniformMask = atmosphere ? (1u << 2) | (1u << 3) | (1u << 7) : 1u << 2;
   d.pushConstantBytes = sizeof(gpu::TerrainDrawPush);
   d.colourFormat = target.colour;

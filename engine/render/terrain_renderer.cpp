@@ -443,8 +443,8 @@ DrawStats TerrainRenderer::recordDraws(VkCommandBuffer cmd, const PayloadPages& 
       // The detail textures, for the land cover pipelines (the wireframe's has none).
       const vk::SampledImage detail{GLOBE_TERRAIN_DETAIL_BINDING, style_.detailTextures};
       const vk::SampledImage* image = style_.landCover() && !wireframe ? &detail : nullptr;
-      std::array<VkDescriptorBufferInfo, 11> buffers{instanceDescriptor(frameIndex), payloads.window(page),
-                                                     constantsDescriptor(frameIndex)};
+      std::array<VkDescriptorBufferInfo, 9 + 1 + kImageryTilePages> buffers{
+          instanceDescriptor(frameIndex), payloads.window(page), constantsDescriptor(frameIndex)};
       size_t count = 3;
       if (reprojected) {
         for (const VkDescriptorBufferInfo& b : {reprojection_[frameIndex].descriptor(), faces_.descriptor()})
@@ -457,7 +457,7 @@ DrawStats TerrainRenderer::recordDraws(VkCommandBuffer cmd, const PayloadPages& 
       }
       if (imagery && !wireframe) {  // the wireframe's pipeline has no maps
         buffers[count++] = imagery->cells;
-        buffers[count++] = imagery->tiles;
+        for (const VkDescriptorBufferInfo& window : imagery->pages) buffers[count++] = window;
       }
       pipeline.bind(cmd, std::span(buffers.data(), count), &push, sizeof(push), image);
       vkCmdDrawIndexed(cmd, count_[r], instancesOf_[g], first_[r], 0, firstInstance_[g]);

@@ -74,6 +74,8 @@ class ImagerySelector {
 
   // Metres from which a level-L tile is fine enough (D(L)) at `pixelsPerRadian`.
   double adequateFrom_m(int level, double pixelsPerRadian) const;
+  // The last select()'s pixels per radian.
+  double pixelsPerRadian() const { return lambda_; }
   // W(L): no level-L node is wider (metres, any edge, at the highest ground).
   double levelWidth_m(int level) const;
   const ImageryConfig& config() const { return config_; }

@@ -30,19 +30,19 @@ vec3 normalMapNormal(uvec2 texel) {
 }
 
 #ifdef GLOBE_NORMAL_MAP_SAMPLE
-#ifndef GLOBE_NORMAL_MAP_TEXELS
-#define GLOBE_NORMAL_MAP_TEXELS payloadTexels
+#ifndef GLOBE_NORMAL_MAP_TEXEL
+#define GLOBE_NORMAL_MAP_TEXEL(i) payloadTexels[i]
 #endif
 // Bilinear sample of one map level whose texels (side x side) start at `base` in
-// GLOBE_NORMAL_MAP_TEXELS (payloadTexels unless the includer names another array it declares), at
+// GLOBE_NORMAL_MAP_TEXEL(i) (payloadTexels[i] unless the includer defines another source), at
 // `at` in texel units: the normal (not renormalised) and sqrt(albedo).
 void sampleNormalMap(uint base, uint side, vec2 at, out vec3 normal, out vec3 rootAlbedo) {
   vec2 c = clamp(at, vec2(0.0), vec2(float(side - 1u)));
   uvec2 corner = min(uvec2(c), uvec2(side - 2u));
   vec2 f = c - vec2(corner);
   uint i = base + corner.y * side + corner.x;
-  uvec2 t00 = GLOBE_NORMAL_MAP_TEXELS[i], t10 = GLOBE_NORMAL_MAP_TEXELS[i + 1u];
-  uvec2 t01 = GLOBE_NORMAL_MAP_TEXELS[i + side], t11 = GLOBE_NORMAL_MAP_TEXELS[i + side + 1u];
+  uvec2 t00 = GLOBE_NORMAL_MAP_TEXEL(i), t10 = GLOBE_NORMAL_MAP_TEXEL(i + 1u);
+  uvec2 t01 = GLOBE_NORMAL_MAP_TEXEL(i + side), t11 = GLOBE_NORMAL_MAP_TEXEL(i + side + 1u);
   normal = mix(mix(normalMapNormal(t00), normalMapNormal(t10), f.x), mix(normalMapNormal(t01), normalMapNormal(t11), f.x),
                f.y);
   rootAlbedo = mix(mix(unpackUnorm4x8(t00.y).rgb, unpackUnorm4x8(t10.y).rgb, f.x),

@@ -42,10 +42,22 @@ layout(location = 0) out vec4 outColour;
 layout(std430, set = 0, binding = GLOBE_IMAGERY_FIRST_BINDING) readonly buffer ImageryCells {
   TerrainImageryCell imageryCells[];
 };
-layout(std430, set = 0, binding = GLOBE_IMAGERY_FIRST_BINDING + 1) readonly buffer ImageryTexels {
-  uvec2 imageryTexels[];
-};
-#define GLOBE_NORMAL_MAP_TEXELS imageryTexels
+// The tiles' payload buffer in windows (pages) of at most one binding each; a cell names its page.
+layout(std430, set = 0, binding = GLOBE_IMAGERY_FIRST_BINDING + 1) readonly buffer ImageryPage0 { uvec2 imageryPage0[]; };
+layout(std430, set = 0, binding = GLOBE_IMAGERY_FIRST_BINDING + 2) readonly buffer ImageryPage1 { uvec2 imageryPage1[]; };
+layout(std430, set = 0, binding = GLOBE_IMAGERY_FIRST_BINDING + 3) readonly buffer ImageryPage2 { uvec2 imageryPage2[]; };
+layout(std430, set = 0, binding = GLOBE_IMAGERY_FIRST_BINDING + 4) readonly buffer ImageryPage3 { uvec2 imageryPage3[]; };
+uint imageryPage = 0u;  // the page of the tile being sampled (mappedColour)
+uvec2 imageryTexel(uint i) {
+  // Constant indices into separate bindings: no descriptor indexing needed for a per-fragment page.
+  switch (imageryPage) {
+    case 0u: return imageryPage0[i];
+    case 1u: return imageryPage1[i];
+    case 2u: return imageryPage2[i];
+    default: return imageryPage3[i];
+  }
+}
+#define GLOBE_NORMAL_MAP_TEXEL(i) imageryTexel(i)
 layout(location = 18) flat in uint inImageryCell;
 #ifndef GLOBE_TERRAIN_WATER
 layout(location = 3) in vec3 inRelative;
@@ -130,6 +142,7 @@ vec3 mappedColour(vec3 modulation) {
   TerrainImageryCell cell = imageryCells[inImageryCell + at.y * side + at.x];
   imageryMissing = cell.tile.y == 0u;
   uint cells = GLOBE_IMAGERY_TILE_CELLS, base = cell.tile.x;
+  imageryPage = cell.tile.z;
   vec2 uv = inMapUv * cell.map.x + cell.map.yz;
   float blend = clamp((length(inRelative) * cell.map.w - 0.8) * 5.0, 0.0, 1.0);
 #else

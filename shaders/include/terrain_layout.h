@@ -44,12 +44,15 @@ struct TerrainDvec4 {
 
 // Binding of the land cover's detail textures (a sampler2DArray, one layer per class) in the terrain
 // pipelines with land cover (terrain_fragment.glsl), past every buffer binding.
-#define GLOBE_TERRAIN_DETAIL_BINDING 11
+#define GLOBE_TERRAIN_DETAIL_BINDING 14
 // Imagery LOD (planet/imagery/imagery_selection.h; the _imagery fragment stages): the drawn nodes'
-// cell tables (TerrainImageryCell) and the imagery tiles' payload buffer, after the other buffers:
-// at 3 and 4, or 9 and 10 with the atmosphere's.
+// cell tables (TerrainImageryCell), then the imagery tiles' payload buffer in GLOBE_IMAGERY_TILE_PAGES
+// windows of at most one storage-buffer binding each (engine/generation/payload_pages.h), after the
+// other buffers: at 3-7, or 9-13 with the atmosphere's.
 #define GLOBE_TERRAIN_IMAGERY_BINDING 3
 #define GLOBE_TERRAIN_IMAGERY_BINDING_ATMOSPHERE 9
+// Windows of the tiles' buffer the fragment stages bind: 4 x 128 MiB on lavapipe.
+#define GLOBE_IMAGERY_TILE_PAGES 4u
 // An imagery tile is a payload of grid 32 with normal map scale 4 (payload_layout.h): 128 map cells
 // per side, its parent's 64 over its quadrant after them. Cells per side of a node's table.
 #define GLOBE_IMAGERY_TILE_GRID 32u
@@ -80,8 +83,8 @@ struct TerrainFrame {
 
 // One cell of a drawn node's imagery table (std430, 32 bytes; the node's cells in rows along v).
 struct TerrainImageryCell {
-  GLOBE_UVEC4 tile;  // x = the tile's first map texel (uvec2 index in the imagery buffer), y = 1 when a
-                     // tile is drawn (0: none resident yet: the vertex colour), zw unused
+  GLOBE_UVEC4 tile;  // x = the tile's first map texel (uvec2 index in its page's window), y = 1 when a
+                     // tile is drawn (0: none resident yet: the vertex colour), z = the page, w unused
   GLOBE_VEC4 map;    // tile (u, v) = node (u, v) * x + (y, z); w = 1 / D of the tile's parent level (per
                      // metre; 0 for roots): its texels blend to the parent's over [0.8, 1] x D
 };
@@ -123,6 +126,8 @@ static_assert(sizeof(TerrainFrame) == 256);
 static_assert(sizeof(TerrainInstance) == 96);
 static_assert(sizeof(TerrainImageryCell) == 32);
 static_assert(GLOBE_IMAGERY_TILE_CELLS == GLOBE_IMAGERY_TILE_GRID * GLOBE_IMAGERY_TILE_MAP_SCALE);
+static_assert(GLOBE_IMAGERY_TILE_PAGES == 4, "terrain_fragment.glsl declares four page bindings");
+static_assert(GLOBE_TERRAIN_DETAIL_BINDING == GLOBE_TERRAIN_IMAGERY_BINDING_ATMOSPHERE + 1 + GLOBE_IMAGERY_TILE_PAGES);
 static_assert(sizeof(TerrainReprojectionFrame) == 32 && sizeof(TerrainReprojectionNode) == 32);
 }  // namespace globe::gpu
 #endif

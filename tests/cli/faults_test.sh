@@ -43,6 +43,10 @@ else echo "ok: small pool: $(cat "$WORK/stderr")"; fi
 run "$GLOBE" render --size 64x64 --grid 64 --vram-mib 1 --out "$WORK/tiny_pool.png"
 if [[ $? -ne 2 || ! -s "$WORK/stderr" ]] || ! grep -q "^globe: error: --vram-mib: too small" "$WORK/stderr" || [[ -e "$WORK/tiny_pool.png" ]]; then
   fail "tiny pool:"; cat "$WORK/stderr"; else echo "ok: tiny pool: $(cat "$WORK/stderr")"; fi
+# The imagery tiles' own pool: too small for their 30 roots names its own option.
+run "$GLOBE" render --size 64x64 --imagery on --imagery-mib 1 --out "$WORK/tiny_imagery.png"
+if [[ $? -ne 2 || ! -s "$WORK/stderr" ]] || ! grep -q "^globe: error: --imagery-mib: too small" "$WORK/stderr" || [[ -e "$WORK/tiny_imagery.png" ]]; then
+  fail "tiny imagery pool:"; cat "$WORK/stderr"; else echo "ok: tiny imagery pool: $(cat "$WORK/stderr")"; fi
 
 # 3. A failed generation dispatch: coarser meanwhile, asked for again, the frame completes.
 run env GLOBE_FAULT=generation@3 "$GLOBE" render --size 64x64 --out "$WORK/gen_fail.png"

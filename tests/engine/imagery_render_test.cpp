@@ -18,8 +18,9 @@ class ImageryRenderTest : public GpuTest {
     ImageRgba image;
     FrameStats stats;
     uint32_t tilesResident = 0;
+    uint32_t pages = 0;  // binding windows of the tiles' buffer
   };
-  Rendered render(const GeodeticPose& pose, bool imagery, uint32_t normalMapScale = 4) {
+  Rendered render(const GeodeticPose& pose, bool imagery, uint32_t normalMapScale = 4, uint32_t slotsPerPage = 0) {
     const ElevationModel& model = earthlikeModel();
     TerrainSettings settings;
     settings.gridCells = 16;
@@ -27,6 +28,7 @@ class ImageryRenderTest : public GpuTest {
     settings.imagery = imagery;
     settings.viewHeight_px = kHeight;
     settings.streaming.vramBudget_MiB = 128.0;
+    settings.imagerySettings.slotsPerPage = slotsPerPage;
     const glm::dvec3 down = directionFromLatLon(pose.latitude_deg, pose.longitude_deg);
     // A low sun over the camera's ground: the relief's light shows.
     settings.style.sunDirection = glm::normalize(down + glm::dvec3(0.0, 0.0, 1.5));
@@ -38,7 +40,10 @@ class ImageryRenderTest : public GpuTest {
     Rendered r;
     r.stats = renderer.renderFrame(**terrain, camera, true);
     r.image = toImage(renderer.readback(), camera);
-    if (const ImageryTiles* tiles = (*terrain)->imagery()) r.tilesResident = tiles->pool().stats().residentNodes;
+    if (const ImageryTiles* tiles = (*terrain)->imagery()) {
+      r.tilesResident = tiles->pool().stats().residentNodes;
+      r.pages = tiles->generator().pages().pageCount();
+    }
     return r;
   }
   static constexpr uint32_t kWidth = 320, kHeight = 180;
@@ -87,6 +92,20 @@ TEST_F(ImageryRenderTest, ImageryGivesMapsToAPresetWithout) {
   EXPECT_LE(mapped.stats.texel_magnification_px, 1.5 + 1e-6);
   EXPECT_GT(meanDifference(perVertex.image, mapped.image), 0.002);
   EXPECT_GT(mapped.tilesResident, 30u);
+}
+
+TEST_F(ImageryRenderTest, TilesSpreadOverEveryPageDrawTheSamePicture) {
+  // Pages of one binding (~600 slots on lavapipe): slots are handed out from 0, so every tile lives
+  // in the first page. 48 slots a page: the 192-slot pool fills all four windows the fragment
+  // stages bind, and every cell reads its tile through its own page's binding.
+  const GeodeticPose pose{22.0, -99.0, 1.0e5, 60, -30, 0};
+  const Rendered onePage = render(pose, true);
+  const Rendered paged = render(pose, true, 4, 48);
+  EXPECT_EQ(paged.pages, 4u);
+  EXPECT_TRUE(paged.stats.converged);
+  EXPECT_GT(paged.tilesResident, 96u);  // more than two pages hold
+  EXPECT_EQ(paged.stats.imagery_tiles, onePage.stats.imagery_tiles);
+  EXPECT_EQ(meanDifference(onePage.image, paged.image), 0.0);
 }
 
 }  // namespace

@@ -18,16 +18,6 @@ using testing::kEarthRadius_m;
 
 constexpr double kFov_rad = std::numbers::pi / 3.0;
 
-LodSelector makeSelector(int maxDepth) {
-  LodConfig c;
-  c.ranges.maxDepth = maxDepth;
-  c.minElevation_m = -8000.0;
-  c.maxElevation_m = 8000.0;
-  auto s = LodSelector::create(c);
-  EXPECT_TRUE(s.ok());
-  return std::move(s.value());
-}
-
 ImagerySelector makeImagery(int maxLevel = kMaxNodeLevel, double magnification_px = 1.5) {
   ImageryConfig config;
   config.maxLevel = maxLevel;
@@ -50,7 +40,7 @@ struct Scene {
 Scene select(double altitude_m, NodeResidency& tiles, int maxLevel = kMaxNodeLevel, double magnification_px = 1.5) {
   Scene s;
   testing::AllResident geometry;
-  LodSelector selector = makeSelector(20);
+  LodSelector selector = testing::earthSelector(20);
   s.eye = testing::fromLatLon(20.0, 30.0) * (kEarthRadius_m + altitude_m);
   EXPECT_TRUE(selector.select({s.eye, nullptr}, geometry, s.mesh).ok());
   ImagerySelector imagery = makeImagery(maxLevel, magnification_px);

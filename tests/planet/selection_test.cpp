@@ -19,27 +19,6 @@ using testing::kEarthRadius_m;
 using testing::PartlyResident;
 using testing::SyntheticTerrain;
 
-// tolerance_px > 0: tolerance-driven ranges (from SyntheticTerrain::errorOf), else distance ranges.
-// roughness: with tolerance ranges, follow syntheticRoughnessMap (the rough octant of errorOf).
-LodSelector makeSelector(int maxDepth = 20, bool horizon = true, double tolerance_px = 0.0, double flattening = 0.0,
-                         bool roughness = false) {
-  LodConfig c;
-  if (flattening > 0.0) {
-    c.radius_m = 6378137.0;
-    c.flattening = flattening;
-  }
-  c.ranges.maxDepth = maxDepth;
-  c.ranges.tolerance_px = tolerance_px;
-  c.minElevation_m = -8000.0;
-  c.maxElevation_m = 8000.0;
-  c.horizonCulling = horizon;
-  auto s = LodSelector::create(c);
-  EXPECT_TRUE(s.ok());
-  if (roughness)
-    s->ranges().setRoughness(testing::syntheticRoughnessMap(maxDepth, c.radius_m * (1 - c.flattening) - 8000.0));
-  return std::move(s.value());
-}
-
 // Every pair of edge-adjacent selected nodes differs by at most one level (across seams too): from
 // each node, look across each edge for the selected node covering the same-level neighbour.
 int countRestrictionViolations(const Selection& s) {
@@ -129,7 +108,7 @@ INSTANTIATE_TEST_SUITE_P(Ranges, SelectionLod,
                          });
 
 TEST_P(SelectionLod, RestrictedQuadtreeOverRandomCameras) {
-  LodSelector selector = makeSelector(20, true, GetParam().tolerance_px, 0.0, GetParam().roughness);
+  LodSelector selector = testing::earthSelector(20, true, GetParam().tolerance_px, 0.0, GetParam().roughness);
   AllResident residency{SyntheticTerrain{}};
   Selection out;
   const std::vector<SeededCamera> cameras =
@@ -149,7 +128,7 @@ TEST_P(SelectionLod, RestrictedQuadtreeOverRandomCameras) {
 }
 
 TEST_P(SelectionLod, TilesTheSphereWithoutCulling) {
-  LodSelector selector = makeSelector(20, false, GetParam().tolerance_px, 0.0, GetParam().roughness);
+  LodSelector selector = testing::earthSelector(20, false, GetParam().tolerance_px, 0.0, GetParam().roughness);
   AllResident residency{SyntheticTerrain{}};
   Selection out;
   for (const glm::dvec3& d : specialDirections()) {
@@ -182,8 +161,8 @@ INSTANTIATE_TEST_SUITE_P(Shapes, EllipsoidSelectionLod,
 TEST_P(EllipsoidSelectionLod, RestrictedAndTilingOverCameras) {
   const EllipsoidCase& param = GetParam();
   const Ellipsoid shape = Ellipsoid::create(6378137.0, param.flattening).value();
-  LodSelector culled = makeSelector(20, true, param.tolerance_px, param.flattening, param.roughness);
-  LodSelector unculled = makeSelector(20, false, param.tolerance_px, param.flattening, param.roughness);
+  LodSelector culled = testing::earthSelector(20, true, param.tolerance_px, param.flattening, param.roughness);
+  LodSelector unculled = testing::earthSelector(20, false, param.tolerance_px, param.flattening, param.roughness);
   SyntheticTerrain terrain;
   terrain.radius_m = 6378137.0;
   terrain.flattening = param.flattening;
@@ -207,7 +186,7 @@ TEST_P(EllipsoidSelectionLod, RestrictedAndTilingOverCameras) {
 
 TEST(Selection, SmoothSphereReachesMaxDepthNearTheGround) {
   for (int maxDepth : {20, 24}) {
-    LodSelector selector = makeSelector(maxDepth, false);
+    LodSelector selector = testing::earthSelector(maxDepth, false);
     AllResident residency{SyntheticTerrain{kEarthRadius_m, 0.0, 0.0}};
     Selection out;
     const glm::dvec3 eye = testing::fromLatLon(12.5, -60) * (kEarthRadius_m + 1e-3);
@@ -221,7 +200,7 @@ TEST(Selection, SmoothSphereReachesMaxDepthNearTheGround) {
 }
 
 TEST(Selection, PartialResidencyDrawsParentsAndRequestsChildren) {
-  LodSelector selector = makeSelector(20, true);
+  LodSelector selector = testing::earthSelector(20, true);
   PartlyResident residency(6, SyntheticTerrain{});
   Selection out;
   const glm::dvec3 eye = testing::fromLatLon(-33, 151) * (kEarthRadius_m + 300.0);
@@ -268,7 +247,7 @@ TEST(Selection, PrefetchNeverChangesTheSelectionNorMarksNodesWanted) {
   // Prefetch on and off over random cameras: identical selections, identical isResident() queries
   // (what the pool keeps), identical visible requests; prefetch only adds kPrefetch requests.
   std::mt19937_64 rng(7);
-  LodConfig on = makeSelector().config();
+  LodConfig on = testing::earthSelector().config();
   LodConfig off = on;
   off.prefetch.enabled = false;
   auto withPrefetch = LodSelector::create(on);
@@ -309,7 +288,7 @@ TEST(Selection, NextLevelIsPrefetchedBeforeTheCameraArrives) {
   // Everything resident: a node drawn just outside its refine range has its (resident) children
   // looked at via isResidentForPrefetch; with nothing below level 8 resident, the next level of the
   // nodes within 1.25 R(d) is requested as prefetch, none of them beyond that.
-  LodSelector selector = makeSelector(20, false);
+  LodSelector selector = testing::earthSelector(20, false);
   const glm::dvec3 eye = testing::fromLatLon(10, 20) * (kEarthRadius_m + 1000.0);
   RecordingResidency residency(8);
   Selection out;
@@ -331,7 +310,7 @@ TEST(Selection, RingPrefetchesBehindTheCamera) {
   // Looking straight up from 100 m: the ground is frustum-culled (only coarse nodes, whose bounds
   // reach 8 km up, meet the frustum), so what is asked for near the camera is a ring prefetch, about
   // one level coarser than a downward view would draw (ring factor 0.5), and never marked wanted.
-  LodSelector selector = makeSelector(20, true);
+  LodSelector selector = testing::earthSelector(20, true);
   const glm::dvec3 up = testing::fromLatLon(-20, 60);
   const glm::dvec3 eye = up * (kEarthRadius_m + 100.0);
   const auto frustum = Frustum::fromViewProjection(lookingAt(eye, up));
@@ -373,7 +352,7 @@ TEST(Selection, NonResidentRootsAreRequestedNotDrawn) {
     }
     int count = 0;
   } residency;
-  LodSelector selector = makeSelector(20, false);
+  LodSelector selector = testing::earthSelector(20, false);
   Selection out;
   ASSERT_TRUE(selector.select({glm::dvec3(1e8, 0, 0), nullptr}, residency, out).ok());
   EXPECT_TRUE(out.nodes.empty());
@@ -381,7 +360,7 @@ TEST(Selection, NonResidentRootsAreRequestedNotDrawn) {
 }
 
 TEST(Selection, PartialNodesQuadrantsAndMorphBands) {
-  LodSelector selector = makeSelector();
+  LodSelector selector = testing::earthSelector();
   AllResident residency{SyntheticTerrain{}};
   Selection out;
   const glm::dvec3 eye = testing::fromLatLon(27, 86.9) * (kEarthRadius_m + 8000.0);
@@ -413,7 +392,7 @@ TEST(Selection, PartialNodesQuadrantsAndMorphBands) {
 }
 
 TEST(Selection, ExtremeAndInvalidCameras) {
-  LodSelector selector = makeSelector();
+  LodSelector selector = testing::earthSelector();
   AllResident residency{SyntheticTerrain{}};
   Selection out;
   const double nan = std::nan("");
@@ -435,7 +414,7 @@ TEST(Selection, ExtremeAndInvalidCameras) {
 }
 
 TEST(Selection, NoAllocationAfterWarmUp) {
-  LodSelector selector = makeSelector();
+  LodSelector selector = testing::earthSelector();
   AllResident residency{SyntheticTerrain{}};
   Selection out;
   const glm::dvec3 eye = testing::fromLatLon(46, 7) * (kEarthRadius_m + 2.0);

@@ -17,14 +17,7 @@ using testing::kEarthRadius_m;
 using testing::SyntheticTerrain;
 
 LodSelector toleranceSelector(double tolerance_px, int maxDepth = 22) {
-  LodConfig c;
-  c.ranges.maxDepth = maxDepth;
-  c.ranges.tolerance_px = tolerance_px;
-  c.minElevation_m = -8000.0;
-  c.maxElevation_m = 8000.0;
-  auto s = LodSelector::create(c);
-  EXPECT_TRUE(s.ok());
-  return std::move(s.value());
+  return testing::earthSelector(maxDepth, true, tolerance_px);
 }
 
 // Triangles drawn: a partial node draws a quarter of a full one's.

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <numbers>
 #include <random>
+#include <stdexcept>
 #include <unordered_set>
 #include <utility>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "planet/lod/lod_ranges.h"
 #include "planet/lod/node_residency.h"
 #include "planet/lod/roughness_map.h"
+#include "planet/lod/selection.h"
 
 namespace globe::testing {
 
@@ -166,5 +168,26 @@ class PartlyResident : public NodeResidency {
   int fullLevel_;
   SyntheticTerrain terrain_;
 };
+
+// An Earth-sized selector (elevations within +-8 km). tolerance_px > 0: tolerance-driven ranges (from
+// SyntheticTerrain::errorOf), else distance ranges; flattening > 0: on that ellipsoid (WGS84's equatorial
+// radius); roughness: with tolerance ranges, following syntheticRoughnessMap (the rough octant of errorOf).
+inline LodSelector earthSelector(int maxDepth = 20, bool horizon = true, double tolerance_px = 0.0,
+                                 double flattening = 0.0, bool roughness = false) {
+  LodConfig c;
+  if (flattening > 0.0) {
+    c.radius_m = 6378137.0;
+    c.flattening = flattening;
+  }
+  c.ranges.maxDepth = maxDepth;
+  c.ranges.tolerance_px = tolerance_px;
+  c.minElevation_m = -8000.0;
+  c.maxElevation_m = 8000.0;
+  c.horizonCulling = horizon;
+  auto s = LodSelector::create(c);
+  if (!s) throw std::runtime_error(s.error().format());
+  if (roughness) s->ranges().setRoughness(syntheticRoughnessMap(maxDepth, c.radius_m * (1 - c.flattening) - 8000.0));
+  return std::move(s.value());
+}
 
 }  // namespace globe::testing
