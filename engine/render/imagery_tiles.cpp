@@ -18,6 +18,7 @@ constexpr uint32_t kTileGrid = GLOBE_IMAGERY_TILE_GRID;
 constexpr uint32_t kTileMapScale = GLOBE_IMAGERY_TILE_MAP_SCALE;
 constexpr uint32_t kTileSamples = GLOBE_PAYLOAD_SAMPLES_PER_SIDE(kTileGrid);
 static_assert(kImageryTilePages == GLOBE_IMAGERY_TILE_PAGES);
+static_assert(kImageryCellsPerSide == int(GLOBE_IMAGERY_CELLS_PER_SIDE));
 }  // namespace
 
 Result<std::unique_ptr<ImageryTiles>> ImageryTiles::create(vk::Device& device, const ElevationModel& model,

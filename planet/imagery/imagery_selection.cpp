@@ -77,34 +77,32 @@ NodeId ImagerySelector::coarsestAdequate(const NodeId& node, const NodeResidency
   return tile;
 }
 
-void ImagerySelector::wantedTiles(const SelectedNode& node, const NodeResidency& geometry,
-                                  std::array<Wanted, kImageryCellsPerNode>& out) {
+void ImagerySelector::wantedTiles(const SelectedNode& node, const NodeResidency& geometry) {
+  blocks_.clear();
   const NodeId id = node.id;
   const RadiusRange range = rangeOf(id, geometry);
   const NodeBounds bounds = NodeBounds::forNode(mapping_, id, range, shape_);
   if (id.level >= config_.maxLevel || adequate(bounds, id.level)) {
-    const NodeId tile = adequate(bounds, id.level) ? coarsestAdequate(id, geometry) : id;
-    if (tile.level > config_.maxLevel) {
-      out.fill({tile.ancestor(config_.maxLevel), distanceTo(bounds), bounds.diagonal()});
-      return;
-    }
-    out.fill({tile, distanceTo(bounds), bounds.diagonal()});
+    NodeId tile = adequate(bounds, id.level) ? coarsestAdequate(id, geometry) : id;
+    if (tile.level > config_.maxLevel) tile = tile.ancestor(config_.maxLevel);
+    blocks_.push_back({tile, distanceTo(bounds), bounds.diagonal(), 0, 0, kImageryCellsPerSide});
     return;
   }
-  const std::array<RadiusRange, 4> ranges{range, range, range, range};
-  const std::array<NodeBounds, 4> children = childBounds(mapping_, id, bounds, ranges, shape_);
-  for (int q = 0; q < 4; ++q) {
-    const NodeId child = id.child(q);
-    const bool childEnough = child.level >= config_.maxLevel || adequate(children[q], child.level);
-    std::array<NodeBounds, 4> grand{};
-    if (!childEnough) grand = childBounds(mapping_, child, children[q], ranges, shape_);
-    for (int r = 0; r < 4; ++r) {
-      const int cx = (q & 1) * 2 + (r & 1), cy = (q >> 1) * 2 + (r >> 1);
-      Wanted& w = out[size_t(cy * kImageryCellsPerSide + cx)];
-      w = childEnough ? Wanted{child, distanceTo(children[q]), children[q].diagonal()}
-                      : Wanted{child.child(r), distanceTo(grand[size_t(r)]), grand[size_t(r)].diagonal()};
-    }
+  descend(id, bounds, range, kImageryCellLevels, 0, 0, kImageryCellsPerSide);
+}
+
+void ImagerySelector::descend(const NodeId& tile, const NodeBounds& bounds, const RadiusRange& range, int levelsLeft,
+                              int x0, int y0, int size) {
+  if (levelsLeft == 0 || tile.level >= config_.maxLevel || adequate(bounds, tile.level)) {
+    blocks_.push_back({tile, distanceTo(bounds), bounds.diagonal(), x0, y0, size});
+    return;
   }
+  // The node's radius range bounds its descendants' too.
+  const std::array<RadiusRange, 4> ranges{range, range, range, range};
+  const std::array<NodeBounds, 4> children = childBounds(mapping_, tile, bounds, ranges, shape_);
+  const int half = size / 2;
+  for (int q = 0; q < 4; ++q)
+    descend(tile.child(q), children[size_t(q)], range, levelsLeft - 1, x0 + (q & 1) * half, y0 + (q >> 1) * half, half);
 }
 
 ImageryCell ImagerySelector::resolve(const NodeId& wanted, double distance_m, NodeResidency& imagery,
@@ -161,18 +159,21 @@ void ImagerySelector::select(const glm::dvec3& camera_m, double nearest_m, doubl
   out.cells.assign(nodes.size() * kImageryCellsPerNode, ImageryCell{});
   out.tiles.clear();
   out.stats = ImageryStats{};
-  std::array<Wanted, kImageryCellsPerNode> wanted{};
   for (size_t k = 0; k < nodes.size(); ++k) {
-    wantedTiles(nodes[k], geometry, wanted);
-    for (size_t c = 0; c < wanted.size(); ++c) {
-      const Wanted& w = wanted[c];
-      // Wanted tiles are adequate unless two levels below the node or maxLevel stopped them.
-      if (w.distance_m < adequateFrom_m(w.tile.level, lambda_)) ++out.stats.capped;
+    wantedTiles(nodes[k], geometry);
+    for (const Wanted& w : blocks_) {
       const ImageryCell cell = resolve(w.tile, w.distance_m, imagery, out);
-      out.cells[k * kImageryCellsPerNode + c] = cell;
-      if (!cell.resident) continue;
-      if (cell.tile.key() != w.tile.key()) ++out.stats.fallbacks;
-      magnifications_.push_back(magnification(cell, w));
+      const double m = cell.resident ? magnification(cell, w) : 0.0;
+      // Wanted tiles are adequate unless the table's depth or maxLevel stopped them.
+      const bool capped = w.distance_m < adequateFrom_m(w.tile.level, lambda_);
+      for (int y = w.y0; y < w.y0 + w.size; ++y)
+        for (int x = w.x0; x < w.x0 + w.size; ++x) {
+          out.cells[k * kImageryCellsPerNode + size_t(y * kImageryCellsPerSide + x)] = cell;
+          out.stats.capped += capped ? 1 : 0;
+          if (!cell.resident) continue;
+          if (cell.tile.key() != w.tile.key()) ++out.stats.fallbacks;
+          magnifications_.push_back(m);
+        }
     }
   }
   out.stats.tiles = uint32_t(out.tiles.size());

@@ -2,8 +2,8 @@
 // Imagery LOD separate from geometry [Rodrigues 2016, §3.2]: the surface textures (normal, colour) live in tiles
 // of their own quadtree over the 30 faces — a tile has the id of the node with the same square, and
 // T x T map cells — refined by texel magnification instead of the mesh's screen error. Each drawn
-// node is covered by a 4 x 4 table of cells two levels below it; a cell shows the tile over it
-// (an ancestor, the node itself, or a descendant), so imagery can be up to two levels finer than
+// node is covered by an 8 x 8 table of cells three levels below it; a cell shows the tile over it
+// (an ancestor, the node itself, or a descendant), so imagery can be up to three levels finer than
 // the mesh, or any number of levels coarser.
 //
 // The rule, a CDLOD for textures [Strugar 2009]: a level-L tile is fine enough from the distance
@@ -32,7 +32,7 @@
 namespace globe {
 
 // Cells per side of a drawn node's imagery table, and how many levels below the node they lie.
-inline constexpr int kImageryCellLevels = 2;
+inline constexpr int kImageryCellLevels = 3;
 inline constexpr int kImageryCellsPerSide = 1 << kImageryCellLevels;
 inline constexpr int kImageryCellsPerNode = kImageryCellsPerSide * kImageryCellsPerSide;
 
@@ -52,7 +52,7 @@ struct ImageryStats {
   uint32_t tiles = 0;      // distinct tiles drawn
   uint32_t requests = 0;   // tiles asked of the imagery pool this frame
   uint32_t fallbacks = 0;  // cells drawing a coarser tile than wanted (its tile is being made)
-  uint32_t capped = 0;     // cells wanting a tile deeper than two levels below their node or maxLevel
+  uint32_t capped = 0;     // cells wanting a tile deeper than their table (kImageryCellLevels) or maxLevel
   uint32_t deepest = 0;    // deepest level drawn
   // Upper bound of the screen pixels one drawn texel covers (lambda * texel width / distance, the
   // blend towards the parent included), over all cells: the largest, and the 95th percentile.
@@ -92,14 +92,19 @@ class ImagerySelector {
                             std::span<const SelectedNode> nodes, uint32_t mapCells, const NodeResidency& geometry);
 
  private:
+  // The wanted tile of a square block of a node's cells.
   struct Wanted {
     NodeId tile;
-    double distance_m;  // from the camera to the smallest bounds computed around the cell
+    double distance_m;  // from the camera to the smallest bounds computed around the block
     double diagonal_m;  // those bounds' diagonal
+    int x0, y0, size;   // the block: cells [x0, x0 + size) x [y0, y0 + size) of the table
   };
-  // The wanted tile of each of `node`'s cells.
-  void wantedTiles(const SelectedNode& node, const NodeResidency& geometry,
-                   std::array<Wanted, kImageryCellsPerNode>& out);
+  // blocks_ = the wanted tiles covering `node`'s table.
+  void wantedTiles(const SelectedNode& node, const NodeResidency& geometry);
+  // Splits `tile`'s block (its table cells from (x0, y0), size a side) until its quarters are
+  // adequate or cells; the node's radius range bounds them all.
+  void descend(const NodeId& tile, const NodeBounds& bounds, const RadiusRange& range, int levelsLeft, int x0, int y0,
+               int size);
   // The coarsest adequate ancestor-or-self of `node`, whose own bounds are adequate.
   NodeId coarsestAdequate(const NodeId& node, const NodeResidency& geometry);
   double distanceTo(const NodeBounds& bounds) const;
@@ -127,6 +132,7 @@ class ImagerySelector {
   std::unordered_map<uint64_t, ImageryCell> resolved_;
   std::unordered_set<uint64_t> drawnTiles_;
   std::vector<double> magnifications_;
+  std::vector<Wanted> blocks_;  // wantedTiles()'s
 };
 
 }  // namespace globe

@@ -33,7 +33,7 @@ layout(location = 0) out vec4 outColour;
 #ifdef GLOBE_TERRAIN_NORMAL_MAPS
 #ifdef GLOBE_TERRAIN_IMAGERY
 // The maps come from imagery tiles (planet/imagery/imagery_selection.h): the drawn node's cell table
-// says which tile covers each of its 4 x 4 cells, and where.
+// says which tile covers each of its 8 x 8 cells, and where.
 #ifdef GLOBE_TERRAIN_ATMOSPHERE
 #define GLOBE_IMAGERY_FIRST_BINDING GLOBE_TERRAIN_IMAGERY_BINDING_ATMOSPHERE
 #else

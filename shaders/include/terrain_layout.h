@@ -58,7 +58,7 @@ struct TerrainDvec4 {
 #define GLOBE_IMAGERY_TILE_GRID 32u
 #define GLOBE_IMAGERY_TILE_MAP_SCALE 4u
 #define GLOBE_IMAGERY_TILE_CELLS 128u
-#define GLOBE_IMAGERY_CELLS_PER_SIDE 4u
+#define GLOBE_IMAGERY_CELLS_PER_SIDE 8u
 // Texels per side of a detail texture's level 0 (planet/surface/detail_texture.h, kDetailTextureSize).
 #define GLOBE_DETAIL_TEXTURE_SIZE 256
 

@@ -48,7 +48,7 @@ Scene select(double altitude_m, NodeResidency& tiles, int maxLevel = kMaxNodeLev
   return s;
 }
 
-// The cell of drawn node `n`'s table entry c, as a node id two levels below n.
+// The cell of drawn node `n`'s table entry c, as a node id kImageryCellLevels below n.
 NodeId cellId(const SelectedNode& n, int c) {
   const uint32_t cx = uint32_t(c % kImageryCellsPerSide), cy = uint32_t(c / kImageryCellsPerSide);
   return {n.id.face, uint8_t(n.id.level + kImageryCellLevels), n.id.x * kImageryCellsPerSide + cx,
@@ -142,7 +142,7 @@ TEST(ImagerySelection, MissingTilesFallBackToResidentAncestorsAndAreAskedForOneL
   EXPECT_GT(s.imagery.stats.maxMagnification_px, 1.5);
 }
 
-TEST(ImagerySelection, CellsTwoLevelsBelowTheMeshOrTheDeepestLevelAreCounted) {
+TEST(ImagerySelection, CellsBeyondTheTableOrTheDeepestLevelAreCounted) {
   testing::AllResident tiles;
   const Scene capped = select(1.0e3, tiles, 12);
   EXPECT_GT(capped.imagery.stats.capped, 0u);
