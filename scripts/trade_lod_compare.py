@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # Distance vs tolerance LOD from a `globe trade --lod-sweep` trade.csv (docs/tradeoffs.md, "Tolerance vs
 # distance ranges"): per standard camera, the triangles the distance multipliers need for the p95 error
-# a tolerance row reaches (log-log interpolation along the distance rows), summed over the cameras.
+# a tolerance row reaches (log-log interpolation along the distance rows' frontier), summed over the cameras.
 # Tolerance rows are `tolerance` (one range per depth) and `tolerance-roughness` (ranges following the
 # relief's roughness). Usage: scripts/trade_lod_compare.py DIR/trade.csv [MORE.csv ...] (rows of all files)
 import csv, math, sys
@@ -11,8 +11,14 @@ get=lambda cfg,c:[x for x in rows if x['config']==cfg and x['camera']==c][0]
 cfgs=list(dict.fromkeys(r['config'] for r in rows))
 dist=[c for c in cfgs if get(c,'2m')['lod']=='distance']
 tol=[c for c in cfgs if get(c,'2m')['lod'].startswith('tolerance')]
+def frontier(cam):
+    # Distance rows that no other distance row beats on both triangles and error: a row held back by
+    # the frame budget (millions of triangles, hundreds of px) is dominated and left out.
+    pts=[(float(get(c,cam)['err_p95_px']),int(get(c,cam)['triangles'])) for c in dist]
+    keep=[p for p in pts if not any(q!=p and q[0]<=p[0] and q[1]<=p[1] for q in pts)]
+    return sorted(keep, key=lambda p:-p[0])
 def distTris(cam, err):
-    pts=sorted(((float(get(c,cam)['err_p95_px']),int(get(c,cam)['triangles'])) for c in dist), key=lambda p:-p[0])
+    pts=frontier(cam)
     # frontier: error falls as triangles rise; interpolate log-log between neighbours
     best=None
     for (e1,t1),(e2,t2) in zip(pts,pts[1:]):

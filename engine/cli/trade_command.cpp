@@ -118,8 +118,8 @@ std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::st
     s.vertexPositions = v != 0.0 ? VertexPositions::kReprojected : VertexPositions::kStored;
   };
   if (lodSweep && base.gridCells >= 32) {  // around exact: sub-pixel errors, where tolerance ranges save most
-    vary(mult, {1, 1.5, 2, 3, 4});
-    vary(tolerance, {0.25, 0.35, 0.5, 0.75, 1, 1.5});
+    vary(mult, {0.5, 0.75, 1, 1.5, 2, 3, 4});
+    vary(tolerance, {0.5, 0.75, 1, 1.5, 2, 3});
     return list;
   }
   if (lodSweep) {  // distance ranges vs tolerance-driven ranges at the baseline's grid and depth
@@ -448,7 +448,7 @@ void addTradeCommand(CLI::App& app, Runner& run) {
   addQualityOptions(*cmd, opts->quality, /*withGrid=*/false);  // the baseline configuration
   cmd->add_flag("--lod-sweep", opts->lodSweep,
                 "Only the LOD comparison: the baseline with distance multipliers 0.25-4 and tolerances 0.5-16 px "
-                "(grid >= 32: multipliers 1-4, tolerances 0.25-1.5 px)");
+                "(grid >= 32: multipliers 0.5-4, tolerances 0.5-3 px)");
   cmd->add_option("--lod", opts->lod, "LOD rules to sweep: distance, tolerance or both")->capture_default_str();
   cmd->add_option("--size", opts->size, "Image size WxH (default 1280x720, --quick 320x180)");
   cmd->add_option("--frames", opts->frames,

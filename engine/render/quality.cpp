@@ -8,14 +8,19 @@ TerrainSettings terrainSettingsFor(QualityPreset preset) {
   switch (preset) {
     case QualityPreset::kFast:  // ~75k triangles at the 1 km camera: the cheapest useful view
       s.gridCells = 16;
-      s.ranges.distanceMultiplier = 0.25;
+      // Tolerance-driven ranges: 11 % fewer triangles over the seven trade cameras than the distance
+      // multiplier 0.25 it replaces, worst p95 12.0 px instead of 12.5 (docs/tradeoffs.md, "Presets").
+      s.ranges.tolerance_px = 32.0;
       s.normalMapScale = 0;      // light per vertex, as balanced
       s.detailTextures = false;  // as balanced
       s.atmosphere = AtmosphereDetail::kSky;
       break;
     case QualityPreset::kBalanced:  // ~80k triangles at 1 km: 26 ms at 1280x720 on lavapipe (goal 33)
       s.gridCells = 16;
-      s.ranges.distanceMultiplier = 0.5;
+      // Tolerance-driven ranges (docs/lod.md): over the seven trade cameras 11 % fewer triangles than
+      // the distance multiplier 0.5 it replaces, worst p95 screen error 5.2 px instead of 6.1, and the
+      // flyover's median frame the same (docs/tradeoffs.md, "Tolerance vs distance ranges").
+      s.ranges.tolerance_px = 16.0;
       // Depth 24 instead of 20: the same nodes above ~100 m, and at the 2 m camera p95 6.1 px
       // instead of 10.5 px for the same frame time (globe trade, 2026-11-22).
       s.ranges.maxDepth = 24;

@@ -96,6 +96,9 @@ class Terrain {
   // Remakes the renderer's pipelines for another anti-aliasing (the payloads stay): `globe trade`
   // times the frame with the preset's and measures depth single-sampled, at the pixel centres.
   void setAntialiasing(vk::Antialiasing antialiasing);
+  // The image height the screen-space rules (tolerance ranges, imagery) count pixels in: a resized
+  // window keeps its tolerance in its own pixels. Takes effect at the next update.
+  void setViewHeight(double height_px) { settings_.viewHeight_px = height_px; }
 
   // True when the last selection drew every node at its wanted level and nothing is queued (except
   // prefetch the full pool declined) or being generated: the view has fully converged.

@@ -267,6 +267,7 @@ bool Viewer::State::recreateSwapchain() {
     const vk::Antialiasing aa = target->antialiasing();
     releases.retire(frame, std::move(target));
     target = std::make_unique<vk::OffscreenTarget>(device, size, aa);
+    scene->setViewHeight(double(size.height));
   }
   swapchainStale = false;
   return true;

@@ -42,6 +42,11 @@ ViewerScene::~ViewerScene() {
   (void)vkDeviceWaitIdle(device_.device());
 }
 
+void ViewerScene::setViewHeight(double height_px) {
+  options_.terrain.viewHeight_px = height_px;
+  if (terrain_) terrain_->setViewHeight(height_px);
+}
+
 Status ViewerScene::buildTerrain() {
   TerrainSettings settings = options_.terrain;
   settings.style.sunDirection = options_.sunDirection;

@@ -64,6 +64,9 @@ class ViewerScene {
   void moveSun(const glm::dvec3& position_m, double azimuth_deg, double elevation_deg);
   const glm::dvec3& sunDirection() const { return options_.sunDirection; }
 
+  // The window's height in pixels (Terrain::setViewHeight), kept for terrains a reload builds.
+  void setViewHeight(double height_px);
+
   // F1/L: terrain cycles shaded -> LOD colours -> wireframe; the sphere toggles its grid.
   void cycleDebugView();
   std::string debugViewName() const;
