@@ -55,6 +55,7 @@ PhysicsSimulation::PhysicsSimulation(const ElevationModel& model, CollisionMeshS
       minSurfaceRadius_m_(std::max(1.0, model.shape().polarRadius_m() + model.bounds().min_m)),
       slopeBound_(elevationSlopeBound(model.params())) {
   settings_.physics.planetRadius_m = model.radius_m();
+  settings_.physics.flattening = model.shape().flattening();
   world_ = std::make_unique<PhysicsWorld>(settings_.physics);
   pool_ = std::make_unique<CollisionMeshPool>(settings_.pool, source, *world_);
   worker_ = std::make_unique<CollisionSelectionWorker>(RhombusFaceMapping::get(), minSurfaceRadius_m_, settings_.level);

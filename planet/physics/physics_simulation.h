@@ -7,7 +7,7 @@
 //   predicted contacts             per awake body: will its swept bounding sphere reach the surface
 //    └─ pool.requireNow (kContact) within the look-ahead? Missing nodes under it are generated now
 //   CollisionMeshPool::dispatch    start asynchronous generations under the per-step budget
-//   PhysicsWorld::step             radial gravity, Bullet, contacts
+//   PhysicsWorld::step             gravity along the vertical, Bullet, contacts
 //   pool.pin                       the nodes bodies touch are never evicted
 //   worker.submit                  the bodies' new positions, selected while the next step runs
 #include "planet/elevation/elevation.h"

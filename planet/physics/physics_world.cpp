@@ -146,7 +146,7 @@ PhysicsWorld::PhysicsWorld(const PhysicsSettings& settings)
     : settings_(settings), impl_(std::make_unique<Impl>(settings.threads)) {
   for (uint32_t w = 0; w < std::max(settings_.worlds, 1u); ++w) {
     auto shard = std::make_unique<Shard>();
-    shard->world.setGravity(btVector3(0, 0, 0));  // radial, per body (step())
+    shard->world.setGravity(btVector3(0, 0, 0));  // along the local vertical, per body (step())
     // Terrain meshes never move: only active bodies' bounds are updated each step (Bullet's default
     // recomputes every object's, ~10 % of a step with 1 600 meshes resident).
     shard->world.setForceUpdateAllAabbs(false);
@@ -304,13 +304,18 @@ void PhysicsWorld::Impl::regroup(double step_s) {
 
 void PhysicsWorld::Impl::stepShard(Shard& shard, const PhysicsSettings& settings) {
   const double g0 = settings.surfaceGravity_m_s2, r0 = settings.planetRadius_m;
+  // The ellipsoid's gradient (x, y, z (a/b)^2): its normal at the surface, and within h f / a of it
+  // at height h (bodies are metres above the ground).
+  const double polarStretch = 1.0 / ((1.0 - settings.flattening) * (1.0 - settings.flattening));
   for (uint32_t id : shard.bodies) {
     Body& b = bodies[id];
     b.contacts.clear();
     if (!b.rigid->isActive()) continue;
     const glm::dvec3 p = fromBt(b.rigid->getCenterOfMassPosition());
     const double r = glm::length(p);
-    b.rigid->setGravity(toBt(p * (-g0 * (r0 / r) * (r0 / r) / r)));
+    const double g = g0 * (r0 / r) * (r0 / r);
+    b.rigid->setGravity(toBt(
+        settings.flattening == 0.0 ? p * (-g / r) : -glm::normalize(glm::dvec3(p.x, p.y, p.z * polarStretch)) * g));
   }
   shard.world.stepSimulation(settings.step_s, 0);  // 0 substeps: exactly one step of step_s
   const int manifolds = shard.dispatcher.getNumManifolds();

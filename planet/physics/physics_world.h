@@ -37,8 +37,11 @@ struct BodySpec {
 };
 
 struct PhysicsSettings {
-  double planetRadius_m = 6371000.0;
+  double planetRadius_m = 6371000.0;  // the equatorial radius on an ellipsoid
   double surfaceGravity_m_s2 = 9.81;  // at planetRadius_m
+  // Of the planet's ellipsoid: gravity pulls along its normal (the plumb line), not at the centre,
+  // so a body at rest on level ground stays there; 0: a sphere, radial.
+  double flattening = 0.0;
   double step_s = 1.0 / 120.0;
   // Bullet multiplies the two objects' coefficients; the terrain's are 1, so these are the pair's.
   double friction = 1.0;  // holds a box on slopes up to 45 degrees
@@ -82,7 +85,8 @@ class PhysicsWorld final : public CollisionMeshListener {
   // of a sphere's or capsule's surface. The lowest of them above the terrain is the body's clearance.
   std::vector<glm::dvec3> surfacePoints(uint32_t id) const;
 
-  // One fixed step: radial gravity, integration, collisions, then the contacts per body.
+  // One fixed step: gravity (along the ellipsoid's normal, radial on a sphere), integration,
+  // collisions, then the contacts per body.
   void step();
   // Collision meshes (nodes) the body touched at the last step.
   std::span<const NodeId> contactNodes(uint32_t id) const;

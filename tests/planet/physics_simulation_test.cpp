@@ -4,12 +4,14 @@
 // a predicted contact, and the same seed gives the same run bit for bit.
 #include "planet/camera/camera.h"
 #include "planet/elevation/planet_file.h"
+#include "planet/geometry/ellipsoid.h"
 #include "planet/physics/mesh_error.h"
 #include "planet/physics/physics_scenario.h"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include <cmath>
 #include <cstring>
 #include <set>
 
@@ -170,6 +172,34 @@ TEST(PhysicsSimulation, DeterministicForASeed) {
   const auto a = positions(), b = positions();
   ASSERT_EQ(a.size(), b.size());
   EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::dvec3)), 0);
+}
+
+// A body falling in open air on an ellipsoid (f = 0.1, far flatter than any planet) falls along the
+// geodetic normal of the ground below it, not at the centre (6 degrees apart at 45 degrees), so a body
+// at rest on level ground is not pulled sideways; on a sphere, radially.
+TEST(PhysicsWorld, GravityFollowsTheEllipsoidsNormal) {
+  for (const double flattening : {0.0, 0.1}) {
+    const Ellipsoid shape = *Ellipsoid::create(6378137.0, flattening);
+    PhysicsSettings settings;
+    settings.planetRadius_m = shape.equatorialRadius_m();
+    settings.flattening = flattening;
+    PhysicsWorld world(settings);
+    BodySpec body;
+    body.position_m = shape.geocentricFromGeodetic({45.0, 30.0, 1000.0});
+    world.addBody(body);
+    for (int s = 0; s < 120; ++s) world.step();  // 1 s, no meshes: free fall
+    const glm::dvec3 fall = glm::normalize(world.state(0).velocity_m_s);
+    const glm::dvec3 normal = shape.normalBelow(body.position_m);
+    const glm::dvec3 radial = glm::normalize(body.position_m);
+    EXPECT_GT(glm::dot(fall, -normal), std::cos(1e-4)) << "f = " << flattening;
+    if (flattening > 0.0) {
+      EXPECT_LT(glm::dot(fall, -radial), std::cos(0.05));
+    }
+    // g (a / r)^2 for 1 s, less up to 5 % of linear damping (0.05 per second).
+    const double g =
+        settings.surfaceGravity_m_s2 * std::pow(shape.equatorialRadius_m() / glm::length(body.position_m), 2);
+    EXPECT_NEAR(glm::length(world.state(0).velocity_m_s), 0.975 * g, 0.03 * g);
+  }
 }
 
 }  // namespace
