@@ -61,10 +61,10 @@ GenerationLatency generationLatency(const PayloadPool& pool) {
   return latency;
 }
 
-// Horizontal speed between two camera positions `dt_s` apart (metres per second).
-double groundSpeed_mps(const glm::dvec3& from_m, const glm::dvec3& to_m, double dt_s) {
+// Horizontal speed between two camera positions `dt_s` apart (metres per second), across the
+// local vertical `up` (unit; the ellipsoid's normal below the camera).
+double groundSpeed_mps(const glm::dvec3& from_m, const glm::dvec3& to_m, const glm::dvec3& up, double dt_s) {
   const glm::dvec3 step = to_m - from_m;
-  const glm::dvec3 up = glm::normalize(to_m);
   return glm::length(step - glm::dot(step, up) * up) / dt_s;
 }
 
@@ -166,7 +166,7 @@ Result<BenchFlight> flyPath(const BenchOptions& o, const BenchInputs& in, const 
     const glm::dvec3 below =
         model.shape().isSphere() ? glm::normalize(camera.position_m) : model.shape().normalBelow(camera.position_m);
     const double altitude = poseFromCamera(camera, ground(below), model.shape()).height_m;
-    const double speed = k > 0 ? groundSpeed_mps(previousPosition_m, camera.position_m, 1.0 / o.rate_hz) : 0.0;
+    const double speed = k > 0 ? groundSpeed_mps(previousPosition_m, camera.position_m, below, 1.0 / o.rate_hz) : 0.0;
     previousPosition_m = camera.position_m;
     if (auto s = rows.append({k, t, altitude, speed, stats}); !s) return s.error();
     if (k == 0) {
