@@ -31,6 +31,9 @@ Result<std::unique_ptr<ImageryTiles>> ImageryTiles::create(vk::Device& device, c
   StreamingConfig config = streaming;
   config.vramBudget_MiB = settings.vramBudget_MiB;
   config.ramBudget_MiB = 16.0;
+  // Its own budget (--imagery-mib on the command line), named apart from the mesh pool's.
+  config.vramBudgetField = "imagery_vram_budget_mib";
+  config.vramBudgetName = "the imagery budget (at most " + std::to_string(kImageryTilePages) + " bindings' worth)";
   // The fragment stages bind kImageryTilePages windows of one binding each.
   const VkDeviceSize range = device.properties().limits.maxStorageBufferRange;
   // Pages of a multiple of 16 slots start at an aligned offset (GpuPayloadGenerator::reserveSlots).
@@ -39,11 +42,7 @@ Result<std::unique_ptr<ImageryTiles>> ImageryTiles::create(vk::Device& device, c
   const uint32_t perPage = std::max(uint32_t(perBinding) / 16u * 16u, 16u);
   config.maxSlots = perPage * kImageryTilePages;
   auto pool = PayloadPool::create(config, *tiles->generator_, model.radius_m());
-  if (!pool) {  // named apart from the mesh pool's budget
-    Error e = pool.error();
-    if (e.field == "vram_budget_mib") e.field = "imagery_vram_budget_mib";
-    return e;
-  }
+  if (!pool) return pool.error();
   tiles->pool_ = std::move(*pool);
   tiles->generator_->reserveSlots(tiles->pool_->slotCapacity(), perPage);
   assert(tiles->generator_->pages().pageCount() <= kImageryTilePages);
@@ -106,10 +105,16 @@ ImageryBinding ImageryTiles::write(uint32_t frameIndex) {
                         vk::MemoryUse::HostVisible, "imagery cells");
   }
   auto* out = static_cast<unsigned char*>(buffer.mapped());
+  gpu::TerrainImageryCell record{};  // built here, not read back from the (write-combined) mapping
   for (size_t k = 0; k < nodes_.size(); ++k)
     for (size_t c = 0; c < size_t(kImageryCellsPerNode); ++c) {
       const size_t i = k * kImageryCellsPerNode + c;
-      cellRecord(nodes_[k], selection_.cells[i], out + i * sizeof(gpu::TerrainImageryCell));
+      const ImageryCell& cell = selection_.cells[i];
+      const ImageryCell* previous = c > 0 ? &selection_.cells[i - 1] : nullptr;
+      // A record depends only on the node and the cell's tile: most cells of a node share one.
+      if (!previous || previous->resident != cell.resident || previous->tile.key() != cell.tile.key())
+        cellRecord(nodes_[k], cell, &record);
+      std::memcpy(out + i * sizeof(record), &record, sizeof(record));
     }
   ImageryBinding binding{buffer.descriptor(), {}};
   const PayloadPages& pages = generator_->pages();

@@ -81,7 +81,7 @@ Result<std::unique_ptr<Terrain>> Terrain::create(vk::Device& device, const Eleva
   auto pool = PayloadPool::create(settings.streaming, *terrain->generator_, model.radius_m());
   if (!pool) return pool.error();
   if (terrain->imageryOn()) {
-    // Tiles may lie two levels below the deepest mesh nodes (the cells of their tables).
+    // Tiles may lie kImageryCellLevels below the deepest mesh nodes (the cells of their tables).
     const int maxLevel = std::min(settings.ranges.maxDepth + kImageryCellLevels, kMaxNodeLevel);
     auto imagery = ImageryTiles::create(device, model, settings.imagerySettings, settings.streaming,
                                         settings.generation, maxLevel);
@@ -258,13 +258,8 @@ void Terrain::gatherWarnings() {
   for (; poolWarningsSeen_ < pool.size(); ++poolWarningsSeen_) warnings_.push_back(pool[poolWarningsSeen_]);
   if (imagery_) {
     const std::span<const std::string> tiles = imagery_->pool().warnings();
-    for (; imageryWarningsSeen_ < tiles.size(); ++imageryWarningsSeen_) {
-      std::string w = "imagery tiles: " + tiles[imageryWarningsSeen_];
-      // The tiles' pool has its own budget (ImagerySettings, --imagery-mib on the command line).
-      if (size_t at = w.find("the VRAM budget"); at != std::string::npos)
-        w.replace(at, 15, "the imagery budget (at most " + std::to_string(kImageryTilePages) + " bindings' worth)");
-      warnings_.push_back(std::move(w));
-    }
+    for (; imageryWarningsSeen_ < tiles.size(); ++imageryWarningsSeen_)
+      warnings_.push_back("imagery tiles: " + tiles[imageryWarningsSeen_]);
   }
   // A failure now and then is retried (the view draws coarser meanwhile); failing on and on is not
   // going to get better, and a frame loop waiting for convergence would never end.

@@ -314,6 +314,7 @@ void PhysicsWorld::Impl::stepShard(Shard& shard, const PhysicsSettings& settings
     const glm::dvec3 p = fromBt(b.rigid->getCenterOfMassPosition());
     const double r = glm::length(p);
     const double g = g0 * (r0 / r) * (r0 / r);
+    // On a sphere the radial form, so spherical runs stay bit for bit what they were.
     b.rigid->setGravity(toBt(
         settings.flattening == 0.0 ? p * (-g / r) : -glm::normalize(glm::dvec3(p.x, p.y, p.z * polarStretch)) * g));
   }

@@ -21,7 +21,7 @@ Status validateStreamingConfig(const StreamingConfig& c) {
   if (!(c.ramBudget_MiB > 0) || !std::isfinite(c.ramBudget_MiB))
     return Error::inField("ram_budget_mib", "must be a finite number > 0");
   if (!(c.vramBudget_MiB > 0) || !std::isfinite(c.vramBudget_MiB))
-    return Error::inField("vram_budget_mib", "must be a finite number > 0");
+    return Error::inField(c.vramBudgetField, "must be a finite number > 0");
   if (c.dispatchBudget < 1) return Error::inField("dispatch_budget", "must be >= 1");
   if (c.maxInFlight < 1) return Error::inField("max_in_flight", "must be >= 1");
   return Ok{};
@@ -36,8 +36,9 @@ Result<std::unique_ptr<PayloadPool>> PayloadPool::create(const StreamingConfig& 
   if (config.maxSlots > 0) slots = std::min(slots, double(config.maxSlots));
   // The 30 roots are pinned; below that plus one refinement of each there is no working set.
   if (slots < 30 + 4)
-    return Error::inField("vram_budget_mib", "too small: " + std::to_string(int64_t(slots)) + " payload slots of " +
-                                                 std::to_string(slotBytes) + " bytes fit, at least 34 are needed");
+    return Error::inField(config.vramBudgetField, "too small: " + std::to_string(int64_t(slots)) +
+                                                      " payload slots of " + std::to_string(slotBytes) +
+                                                      " bytes fit, at least 34 are needed");
   // The hash table is twice the node capacity (load <= 0.5) and counts against the RAM budget.
   double nodes = std::floor(config.ramBudget_MiB * kMiB / (2.0 * sizeof(NodeRecord)));
   if (nodes < slots + 256)
@@ -402,8 +403,8 @@ size_t PayloadPool::startJobs(size_t nextVictim) {
     } else if (freeSlots_.empty()) {
       ++stats_.starvedByPool;
       warnOnce(PoolWarning::kSlotsExhausted, [&] {
-        return "payload pool exhausted (" + std::to_string(slotCapacity_) +
-               " slots): drawing coarser terrain; raise the VRAM budget";
+        return "payload pool exhausted (" + std::to_string(slotCapacity_) + " slots): drawing coarser terrain; raise " +
+               config_.vramBudgetName;
       });
       break;
     }

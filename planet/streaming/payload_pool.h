@@ -48,7 +48,11 @@ struct StreamingConfig {
   uint32_t dispatchBudget = 8;    // generations started per frame (source: 8); >= 1
   uint32_t maxInFlight = 32;      // generations in flight at once (source: 32); >= 1
   uint32_t maxSlots = 0;          // optional cap on payload slots below the VRAM budget (0 = none)
-  FrameBudget budget;             // per-frame nodes, triangles and requests (frame_budget.h)
+  // How errors (field) and the exhaustion warning (words) name the VRAM budget: a second pool with a
+  // budget of its own (the imagery tiles') names that one.
+  std::string vramBudgetField = "vram_budget_mib";
+  std::string vramBudgetName = "the VRAM budget";
+  FrameBudget budget;  // per-frame nodes, triangles and requests (frame_budget.h)
 };
 
 // Validates a config; errors name the field.
