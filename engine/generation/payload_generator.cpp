@@ -36,6 +36,11 @@ std::array<uint32_t, GLOBE_PAYLOAD_SPEC_LAND_COVER + 1> payloadSpecialization(co
   return values;
 }
 
+// The surface textures' storage images (payload_layout.h's bindings).
+constexpr std::array<vk::ImageSlot, 2> kSurfaceStorageSlots{
+    vk::ImageSlot{GLOBE_PAYLOAD_NORMALS_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+    vk::ImageSlot{GLOBE_PAYLOAD_ALBEDO_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}};
+
 }  // namespace
 
 GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationModel& model, uint32_t cells,
@@ -49,7 +54,7 @@ GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationMode
       pipeline_(device,
                 precision == GenerationPrecision::kFloat ? "payload_generate_float.comp" : "payload_generate.comp", 9,
                 2 * sizeof(uint32_t), /*uniformMask=*/(1u << 0) | (1u << 7) | (1u << 8),
-                payloadSpecialization(model, waterSurface, normalMapScale)),
+                payloadSpecialization(model, waterSurface, normalMapScale), kSurfaceStorageSlots),
       elevation_(device, sizeof(gpu::ElevationParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::HostVisible,
                  "elevation params"),
       colourRamp_(device, sizeof(gpu::ColourRampParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::HostVisible,
@@ -112,19 +117,24 @@ GpuPayloadGenerator::~GpuPayloadGenerator() {
 
 void GpuPayloadGenerator::reserveSlots(uint32_t slots, uint32_t maxSlotsPerPage) {
   assert(payloads_.size() == 0);
-  payloads_ = vk::Buffer(device_, VkDeviceSize(slots) * slotBytes(),
+  const VkDeviceSize bytesPerSlot = bufferSlotBytes(cells_);
+  payloads_ = vk::Buffer(device_, VkDeviceSize(slots) * bytesPerSlot,
                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                          vk::MemoryUse::DeviceLocal, "payload slots");
   const VkPhysicalDeviceLimits& limits = device_.properties().limits;
-  uint32_t perPage = std::max<uint32_t>(1, uint32_t(limits.maxStorageBufferRange / slotBytes()));
+  uint32_t perPage = std::max<uint32_t>(1, uint32_t(limits.maxStorageBufferRange / bytesPerSlot));
+  // A page's surface textures are one array image: a layer per slot.
+  if (normalMapScale_ > 0) perPage = std::min(perPage, limits.maxImageArrayLayers);
   if (maxSlotsPerPage > 0) perPage = std::min(perPage, maxSlotsPerPage);
   // Every window must start at a multiple of the storage-buffer offset alignment (slot bytes are a
   // multiple of 16 and the alignment a power of two <= 256, so 16 slots always align).
-  while (perPage > 1 && (VkDeviceSize(perPage) * slotBytes()) % limits.minStorageBufferOffsetAlignment != 0) --perPage;
-  if (slots > perPage && (VkDeviceSize(perPage) * slotBytes()) % limits.minStorageBufferOffsetAlignment != 0)
+  while (perPage > 1 && (VkDeviceSize(perPage) * bytesPerSlot) % limits.minStorageBufferOffsetAlignment != 0) --perPage;
+  if (slots > perPage && (VkDeviceSize(perPage) * bytesPerSlot) % limits.minStorageBufferOffsetAlignment != 0)
     throw std::runtime_error("payload pages of " + std::to_string(perPage) +
                              " slots break the storage-buffer offset alignment");
-  pages_ = {payloads_.handle(), payloads_.size(), VkDeviceSize(perPage) * slotBytes(), perPage};
+  textures_ = SurfaceTextures(device_, cells_ * normalMapScale_, slots, perPage);
+  pages_ = {payloads_.handle(), payloads_.size(), VkDeviceSize(perPage) * bytesPerSlot, perPage,
+            normalMapScale_ > 0 ? &textures_ : nullptr};
   slotCentres_.assign(slots, glm::dvec3(0.0));
   slotWater_.assign(slots, 0);
 }
@@ -219,7 +229,7 @@ void GpuPayloadGenerator::record(Batch& batch, std::span<PreparedRequest> reques
                    {elevation_.descriptor(), faces_.descriptor(), batch.jobs.descriptor(), pages_.window(page),
                     batch.scratch.descriptor(), batch.results.descriptor(), batch.sourceTerms.descriptor(),
                     colourRamp_.descriptor(), landCover_.descriptor()},
-                   push, sizeof(push));
+                   push, sizeof(push), textures_.storage(normalMapScale_ > 0 ? page : 0));
     vkCmdDispatchBase(batch.cmd, uint32_t(run), 0, 0, uint32_t(end - run), 1, 1);
     run = end;
   }
@@ -229,7 +239,7 @@ void GpuPayloadGenerator::record(Batch& batch, std::span<PreparedRequest> reques
     std::vector<VkBufferCopy> regions;
     for (const GenerationJob& job : batch.submitted)
       regions.push_back(
-          {VkDeviceSize(job.slot) * slotBytes(), VkDeviceSize(job.slot) * hostCopyBytes_, hostCopyBytes_});
+          {VkDeviceSize(job.slot) * bufferSlotBytes(cells_), VkDeviceSize(job.slot) * hostCopyBytes_, hostCopyBytes_});
     vkCmdCopyBuffer(batch.cmd, pages_.buffer, hostCopy_->handle(), uint32_t(regions.size()), regions.data());
     vk::hostReadBarrier(batch.cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
   }
@@ -238,7 +248,7 @@ void GpuPayloadGenerator::record(Batch& batch, std::span<PreparedRequest> reques
 }
 
 void GpuPayloadGenerator::copyToHost(const vk::Buffer& destination, VkDeviceSize bytes) {
-  assert(bytes <= slotBytes() && destination.size() >= VkDeviceSize(slotCentres_.size()) * bytes);
+  assert(bytes <= bufferSlotBytes(cells_) && destination.size() >= VkDeviceSize(slotCentres_.size()) * bytes);
   hostCopy_ = &destination;
   hostCopyBytes_ = bytes;
 }

@@ -9,6 +9,7 @@
 // (planet/sources/request_preparer.h): generate() only queues there, and the prepared jobs are
 // submitted, with their source terms, by later generate()/collect() calls while a batch is free.
 #include "engine/generation/payload_pages.h"
+#include "engine/generation/surface_textures.h"
 #include "engine/vk/compute_pipeline.h"
 #include "planet/elevation/elevation.h"
 #include "planet/sources/request_preparer.h"
@@ -43,17 +44,20 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   ~GpuPayloadGenerator() override;
 
   // Allocates the payload buffer for `slots` slots (once, before the first generate()), bound in
-  // pages of as many slots as one storage-buffer binding holds, or `maxSlotsPerPage` if smaller
-  // (0 = no extra cap; tests use it to exercise paging).
+  // pages of as many slots as one storage-buffer binding holds (and with maps, as one image array
+  // has layers), or `maxSlotsPerPage` if smaller (0 = no extra cap; tests use it to exercise paging),
+  // and with normal maps the pages' surface textures.
   void reserveSlots(uint32_t slots, uint32_t maxSlotsPerPage = 0);
 
   void generate(std::span<const GenerationJob> jobs) override;
   void collect(std::vector<GenerationResult>& finished) override;
   size_t slotBytes() const override { return slotBytesFor(cells_, normalMapScale_); }
   std::string lastFailure() const override { return lastFailure_; }
-  // Bytes of one slot: the mesh (payload_layout.h), the normal map if normalMapScale > 0, the land cover masks.
+  // Bytes of one slot in the payload buffer: the mesh (payload_layout.h) and the land cover masks.
+  static size_t bufferSlotBytes(uint32_t cells) { return size_t(GLOBE_PAYLOAD_SLOT_VEC4(cells)) * 16u; }
+  // Bytes of one slot in all: its buffer part and, if normalMapScale > 0, its surface texture layers.
   static size_t slotBytesFor(uint32_t cells, uint32_t normalMapScale = 0) {
-    return size_t(GLOBE_PAYLOAD_SLOT_VEC4(cells, normalMapScale)) * 16u;
+    return bufferSlotBytes(cells) + SurfaceTextures::bytesPerSlot(cells * normalMapScale);
   }
 
   // Blocks until every submitted batch has finished (converged mode, shutdown, tests).
@@ -75,6 +79,8 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   // The whole payload buffer (copies, tests) and its binding windows (shaders).
   const vk::Buffer& payloads() const { return payloads_; }
   const PayloadPages& pages() const { return pages_; }
+  // The pages' surface textures (one 1 x 1 dummy layer without normal maps).
+  const SurfaceTextures& surfaceTextures() const { return textures_; }
   // Device time of all finished batches so far (ms) and how many nodes they held.
   double gpuTime_ms() const { return gpuTime_ms_; }
   uint64_t nodesGenerated() const { return nodesGenerated_; }
@@ -120,6 +126,7 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   vk::Buffer faces_;
   vk::Buffer payloads_;
   PayloadPages pages_;
+  SurfaceTextures textures_;
   vk::UniqueCommandPool commandPool_;
   vk::UniqueQueryPool queries_;
   double timestampPeriod_ns_ = 1.0;

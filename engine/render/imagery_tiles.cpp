@@ -16,7 +16,6 @@ namespace {
 // its samples are the ring the map's border normals are differenced from).
 constexpr uint32_t kTileGrid = GLOBE_IMAGERY_TILE_GRID;
 constexpr uint32_t kTileMapScale = GLOBE_IMAGERY_TILE_MAP_SCALE;
-constexpr uint32_t kTileSamples = GLOBE_PAYLOAD_SAMPLES_PER_SIDE(kTileGrid);
 static_assert(kImageryTilePages == GLOBE_IMAGERY_TILE_PAGES);
 static_assert(kImageryCellsPerSide == int(GLOBE_IMAGERY_CELLS_PER_SIDE));
 }  // namespace
@@ -33,11 +32,14 @@ Result<std::unique_ptr<ImageryTiles>> ImageryTiles::create(vk::Device& device, c
   config.ramBudget_MiB = 16.0;
   // Its own budget (--imagery-mib on the command line), named apart from the mesh pool's.
   config.vramBudgetField = "imagery_vram_budget_mib";
-  config.vramBudgetName = "the imagery budget (at most " + std::to_string(kImageryTilePages) + " bindings' worth)";
-  // The fragment stages bind kImageryTilePages windows of one binding each.
-  const VkDeviceSize range = device.properties().limits.maxStorageBufferRange;
+  config.vramBudgetName = "the imagery budget (at most " + std::to_string(kImageryTilePages) + " pages' worth)";
+  // The fragment stages bind kImageryTilePages pages: surface texture arrays of at most
+  // maxImageArrayLayers layers (and buffer windows of at most one binding).
+  const VkPhysicalDeviceLimits& limits = device.properties().limits;
   // Pages of a multiple of 16 slots start at an aligned offset (GpuPayloadGenerator::reserveSlots).
-  VkDeviceSize perBinding = std::min<VkDeviceSize>(range / tiles->generator_->slotBytes(), 1u << 20);
+  VkDeviceSize perBinding =
+      std::min<VkDeviceSize>(limits.maxStorageBufferRange / GpuPayloadGenerator::bufferSlotBytes(kTileGrid),
+                             limits.maxImageArrayLayers);
   if (settings.slotsPerPage > 0) perBinding = std::min<VkDeviceSize>(perBinding, settings.slotsPerPage);
   const uint32_t perPage = std::max(uint32_t(perBinding) / 16u * 16u, 16u);
   config.maxSlots = perPage * kImageryTilePages;
@@ -81,11 +83,9 @@ void ImageryTiles::update(uint64_t frame, uint64_t completedFrame, const Camera&
 void ImageryTiles::cellRecord(const NodeId& node, const ImageryCell& cell, void* out) const {
   gpu::TerrainImageryCell record{};
   if (std::optional<uint32_t> slot = cell.resident ? pool_->slotOf(cell.tile) : std::nullopt) {
-    const uint32_t slotVec4 = GLOBE_PAYLOAD_SLOT_VEC4(kTileGrid, kTileMapScale);
-    // The map starts after the mesh's positions and normals; texels are uvec2, two per vec4.
+    // The tile's layer in its page's surface textures.
     const PayloadPages& pages = generator_->pages();
-    record.tile = {(pages.localSlot(*slot) * slotVec4 + 2u * kTileSamples * kTileSamples) * 2u, 1u, pages.page(*slot),
-                   0u};
+    record.tile = {pages.localSlot(*slot), 1u, pages.page(*slot), 0u};
     // tile (u, v) = node (u, v) * s + offset, s = 2^(tile level - node level): exact in double.
     const double s = std::ldexp(1.0, int(cell.tile.level) - int(node.level));
     record.map = {
@@ -117,8 +117,12 @@ ImageryBinding ImageryTiles::write(uint32_t frameIndex) {
       std::memcpy(out + i * sizeof(record), &record, sizeof(record));
     }
   ImageryBinding binding{buffer.descriptor(), {}};
-  const PayloadPages& pages = generator_->pages();
-  for (uint32_t p = 0; p < kImageryTilePages; ++p) binding.pages[p] = pages.window(p < pages.pageCount() ? p : 0u);
+  const SurfaceTextures& textures = generator_->surfaceTextures();
+  for (uint32_t p = 0; p < kImageryTilePages; ++p) {
+    const auto page = textures.sampled(p < textures.pageCount() ? p : 0u, GLOBE_TERRAIN_SURFACE_BINDING + 2 * p);
+    binding.textures[2 * p] = page[0];
+    binding.textures[2 * p + 1] = page[1];
+  }
   return binding;
 }
 

@@ -18,8 +18,8 @@
 
 namespace globe {
 
-// Windows of at most one storage-buffer binding each that the fragment stages bind over the tiles'
-// payload buffer (GLOBE_IMAGERY_TILE_PAGES): 512 MiB on lavapipe (128 MiB bindings), ~16 GiB on GPUs.
+// Payload pages of the tiles (each a surface texture array of at most maxImageArrayLayers tiles, and
+// a window of at most one storage-buffer binding) the fragment stages bind (GLOBE_IMAGERY_TILE_PAGES).
 inline constexpr uint32_t kImageryTilePages = 4;
 
 struct ImagerySettings {
@@ -32,11 +32,11 @@ struct ImagerySettings {
   uint32_t slotsPerPage = 0;
 };
 
-// What the terrain pipelines bind for imagery (GLOBE_TERRAIN_IMAGERY_BINDING): the frame's cell
-// tables and the tiles' payload pages (unused pages repeat the first window).
+// What the terrain pipelines bind for imagery: the frame's cell tables (GLOBE_TERRAIN_IMAGERY_BINDING)
+// and the tiles' pages' surface textures (GLOBE_TERRAIN_SURFACE_BINDING on; unused pages repeat the first).
 struct ImageryBinding {
   VkDescriptorBufferInfo cells{};
-  std::array<VkDescriptorBufferInfo, kImageryTilePages> pages{};
+  std::array<vk::ImageDescriptor, 2 * kImageryTilePages> textures{};
 };
 
 class ImageryTiles {

@@ -28,9 +28,9 @@ vk::GraphicsPipelineDesc terrainDesc(TargetFormat target, bool wireframe, VkCull
   // atmosphere: 3 its parameters (uniform), 4-6 its tables, 7 the frame's camera (uniform), 8 its
   // aerial perspective table (AtmosphereView).
   d.storageBuffers = reprojected ? 5 : atmosphere ? 9 : 3;
-  // Imagery: 3-7 or 9-13 the cell tables and the tiles' pages (GLOBE_TERRAIN_IMAGERY_BINDING).
+  // Imagery: 3 or 9 the cell tables (GLOBE_TERRAIN_IMAGERY_BINDING).
   assert(!shading.imagery || !reprojected);
-  if (shading.imagery && shading.normalMaps) d.storageBuffers += 1 + GLOBE_IMAGERY_TILE_PAGES;
+  if (shading.imagery && shading.normalMaps) d.storageBuffers += 1;
   d.uniformMask = atmosphere ? (1u << 2) | (1u << 3) | (1u << 7) : 1u << 2;
   d.pushConstantBytes = sizeof(gpu::TerrainDrawPush);
   d.colourFormat = target.colour;
@@ -38,9 +38,12 @@ vk::GraphicsPipelineDesc terrainDesc(TargetFormat target, bool wireframe, VkCull
   d.wireframe = wireframe;
   d.cull = cull;
   if (shading.cover) {
-    d.sampledImageBinding = GLOBE_TERRAIN_DETAIL_BINDING;
+    d.sampledImageBindings.push_back(GLOBE_TERRAIN_DETAIL_BINDING);
     d.vertexShader.insert(d.vertexShader.size() - std::string_view(".vert").size(), "_cover");
   }
+  // The surface textures: the drawn page's normals and albedo, or the imagery tiles' pages.
+  const uint32_t surfaceBindings = !shading.normalMaps ? 0 : shading.imagery ? 2 * GLOBE_IMAGERY_TILE_PAGES : 2;
+  for (uint32_t b = 0; b < surfaceBindings; ++b) d.sampledImageBindings.push_back(GLOBE_TERRAIN_SURFACE_BINDING + b);
   return d;
 }
 

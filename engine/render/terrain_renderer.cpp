@@ -384,7 +384,7 @@ uint32_t TerrainRenderer::writeInstances(unsigned char* bytes, const glm::dvec3&
                                          std::span<const DrawNode> nodes, const PayloadPages& payloads,
                                          uint32_t pageCount, bool skirts, gpu::TerrainReprojectionNode* reprojection) {
   auto* instances = reinterpret_cast<gpu::TerrainInstance*>(bytes + kFrameHeaderBytes);
-  const uint32_t slotVec4 = GLOBE_PAYLOAD_SLOT_VEC4(cells_, style_.normalMapScale);
+  const uint32_t slotVec4 = GLOBE_PAYLOAD_SLOT_VEC4(cells_);
   std::vector<uint32_t>& next = nextInstance_;
   next = firstInstance_;
   uint32_t partial = 0;
@@ -400,7 +400,7 @@ uint32_t TerrainRenderer::writeInstances(unsigned char* bytes, const glm::dvec3&
                      morphDistance(n.morph.end_m[3])};
     inst.info = {payloads.localSlot(n.slot) * slotVec4, n.partial ? 2u : 1u,
                  uint32_t(n.id.level) - (n.partial ? 1u : 0u), 0u};
-    inst.imagery = {n.imageryCell, 0u, 0u, 0u};
+    inst.imagery = {n.imageryCell, payloads.localSlot(n.slot), 0u, 0u};
     if (style_.landCover()) {  // only the _cover vertex stages read it
       const glm::vec4 detail = detailTileOffsets(n.id, detailTiling_);
       inst.detail = {detail.x, detail.y, detail.z, detail.w};
@@ -440,10 +440,7 @@ DrawStats TerrainRenderer::recordDraws(VkCommandBuffer cmd, const PayloadPages& 
                                              : r < 2 ? solid_
                                                      : skirts_;
       const gpu::TerrainDrawPush push{r % 2 == 0 ? cells_ : cells_ / 2, 0};
-      // The detail textures, for the land cover pipelines (the wireframe's has none).
-      const vk::SampledImage detail{GLOBE_TERRAIN_DETAIL_BINDING, style_.detailTextures};
-      const vk::SampledImage* image = style_.landCover() && !wireframe ? &detail : nullptr;
-      std::array<VkDescriptorBufferInfo, 9 + 1 + kImageryTilePages> buffers{
+      std::array<VkDescriptorBufferInfo, 9 + 1> buffers{
           instanceDescriptor(frameIndex), payloads.window(page), constantsDescriptor(frameIndex)};
       size_t count = 3;
       if (reprojected) {
@@ -455,17 +452,30 @@ DrawStats TerrainRenderer::recordDraws(VkCommandBuffer cmd, const PayloadPages& 
               atmosphere_->scattering(), view_->camera(frameIndex), view_->table(frameIndex)})
           buffers[count++] = b;
       }
-      if (imagery && !wireframe) {  // the wireframe's pipeline has no maps
-        buffers[count++] = imagery->cells;
-        for (const VkDescriptorBufferInfo& window : imagery->pages) buffers[count++] = window;
-      }
-      pipeline.bind(cmd, std::span(buffers.data(), count), &push, sizeof(push), image);
+      if (imagery && !wireframe) buffers[count++] = imagery->cells;  // the wireframe's pipeline has no maps
+      const ImageSet images = wireframe ? ImageSet{} : drawImages(payloads, page, imagery);
+      pipeline.bind(cmd, std::span(buffers.data(), count), &push, sizeof(push),
+                    std::span(images.images.data(), images.count));
       vkCmdDrawIndexed(cmd, count_[r], instancesOf_[g], first_[r], 0, firstInstance_[g]);
       ++stats.drawCalls;
       stats.triangles += uint64_t(count_[r] / 3) * instancesOf_[g];
     }
   }
   return stats;
+}
+
+TerrainRenderer::ImageSet TerrainRenderer::drawImages(const PayloadPages& payloads, uint32_t page,
+                                                      const ImageryBinding* imagery) const {
+  ImageSet set;
+  // The detail textures, for the land cover pipelines.
+  if (style_.landCover()) set.images[set.count++] = {{GLOBE_TERRAIN_DETAIL_BINDING}, style_.detailTextures};
+  if (imagery) {
+    for (const vk::ImageDescriptor& image : imagery->textures) set.images[set.count++] = image;
+  } else if (style_.normalMapScale > 0 && payloads.surfaces) {
+    for (const vk::ImageDescriptor& image : payloads.surfaces->sampled(page, GLOBE_TERRAIN_SURFACE_BINDING))
+      set.images[set.count++] = image;
+  }
+  return set;
 }
 
 void TerrainRenderer::writeMarks(VkCommandBuffer cmd, uint32_t& next, uint32_t mark) const {

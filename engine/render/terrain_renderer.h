@@ -82,10 +82,10 @@ struct TerrainStyle {
   // (terrain_water.frag), which colours fragments below sea level per fragment.
   Water water;
   double seaLevel_m = 0.0;
-  // Map cells per grid cell of the payloads' normal maps (1, 2 or 4; payload_layout.h): the
-  // fragment stages shade from them, and slots are GpuPayloadGenerator::slotBytesFor(cells, this).
-  // 0: payloads without maps, lit per vertex from the mesh's normals and albedo.
-  uint32_t normalMapScale = 1;
+  // Map cells per grid cell of the payloads' surface textures (1, 2 or 4; payload_layout.h): the
+  // fragment stages shade from them (PayloadPages::surfaces). 0: payloads without maps (e.g. filled
+  // on the CPU), lit per vertex from the mesh's normals and albedo.
+  uint32_t normalMapScale = 0;
   // The planet's land cover: the classes' detail textures (DetailTextureArray::descriptor(), owned
   // by the caller, alive as long as the renderer). With an image view the payloads' masks are read
   // and the fragment stages splat the textures (terrain_fragment.glsl); null: no land cover.
@@ -147,7 +147,7 @@ class TerrainRenderer {
 
   // Records the sky (if enabled) and the terrain into the current dynamic-rendering pass (viewport and
   // scissor already set). `origin_m`: the floating origin (FloatingOrigin); `payloads`: the payload
-  // pages, slot s starting at vec4 localSlot(s) * GLOBE_PAYLOAD_SLOT_VEC4(gridCells, normalMapScale) of page
+  // pages, slot s starting at vec4 localSlot(s) * GLOBE_PAYLOAD_SLOT_VEC4(gridCells) of page
   // page(s)'s window. frameIndex < vk::kFramesInFlight.
   // `imagery`: the imagery tiles' binding when the style has imagery (else nullptr).
   DrawStats record(VkCommandBuffer cmd, const Camera& camera, const glm::dvec3& origin_m,
@@ -195,6 +195,13 @@ class TerrainRenderer {
   uint32_t writeInstances(unsigned char* bytes, const glm::dvec3& origin_m, std::span<const DrawNode> nodes,
                           const PayloadPages& payloads, uint32_t pageCount, bool skirts,
                           gpu::TerrainReprojectionNode* reprojection);
+  // The images a surface draw of payload page `page` samples: the detail textures (land cover) and
+  // the surface textures (the page's, or the imagery tiles').
+  struct ImageSet {
+    std::array<vk::ImageDescriptor, 1 + 2 * kImageryTilePages> images{};
+    uint32_t count = 0;
+  };
+  ImageSet drawImages(const PayloadPages& payloads, uint32_t page, const ImageryBinding* imagery) const;
   DrawStats recordDraws(VkCommandBuffer cmd, const PayloadPages& payloads, uint32_t pageCount, uint32_t frameIndex,
                         TerrainDebugView view, bool reprojected, const ImageryBinding* imagery,
                         uint32_t& nextMark) const;

@@ -14,11 +14,10 @@ VkDescriptorType bufferType(uint32_t binding, uint32_t uniformMask) {
 }  // namespace
 
 UniqueDescriptorSetLayout storageBufferSetLayout(Device& device, uint32_t count, VkShaderStageFlags stages,
-                                                 uint32_t uniformMask, uint32_t sampledImageBinding) {
+                                                 uint32_t uniformMask, std::span<const ImageSlot> images) {
   std::vector<VkDescriptorSetLayoutBinding> bindings(count);
   for (uint32_t i = 0; i < count; ++i) bindings[i] = {i, bufferType(i, uniformMask), 1, stages, nullptr};
-  if (sampledImageBinding != kNoSampledImage)
-    bindings.push_back({sampledImageBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, nullptr});
+  for (const ImageSlot& image : images) bindings.push_back({image.binding, image.type, 1, stages, nullptr});
   VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   info.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
   info.bindingCount = uint32_t(bindings.size());
@@ -30,9 +29,9 @@ UniqueDescriptorSetLayout storageBufferSetLayout(Device& device, uint32_t count,
 
 void pushStorageBuffers(PFN_vkCmdPushDescriptorSetKHR push, VkCommandBuffer cmd, VkPipelineBindPoint bindPoint,
                         VkPipelineLayout layout, std::span<const VkDescriptorBufferInfo> buffers, uint32_t uniformMask,
-                        const SampledImage* image) {
+                        std::span<const ImageDescriptor> images) {
   std::vector<VkWriteDescriptorSet> writes;
-  writes.reserve(buffers.size() + 1);
+  writes.reserve(buffers.size() + images.size());
   uint32_t binding = 0;
   for (const auto& b : buffers) {
     VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -42,12 +41,12 @@ void pushStorageBuffers(PFN_vkCmdPushDescriptorSetKHR push, VkCommandBuffer cmd,
     w.pBufferInfo = &b;
     writes.push_back(w);
   }
-  if (image) {
+  for (const ImageDescriptor& image : images) {
     VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    w.dstBinding = image->binding;
+    w.dstBinding = image.slot.binding;
     w.descriptorCount = 1;
-    w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    w.pImageInfo = &image->info;
+    w.descriptorType = image.slot.type;
+    w.pImageInfo = &image.info;
     writes.push_back(w);
   }
   push(cmd, bindPoint, layout, 0, static_cast<uint32_t>(writes.size()), writes.data());
@@ -75,10 +74,10 @@ UniquePipelineLayout pushDescriptorPipelineLayout(Device& device, VkDescriptorSe
 
 ComputePipeline::ComputePipeline(Device& device, const std::string& shader, uint32_t buffers,
                                  uint32_t pushConstantBytes, uint32_t uniformMask,
-                                 std::span<const uint32_t> specialization)
+                                 std::span<const uint32_t> specialization, std::span<const ImageSlot> images)
     : device_(device), uniformMask_(uniformMask) {
   pushDescriptorSet_ = pushDescriptorSetFunction(device);
-  setLayout_ = storageBufferSetLayout(device, buffers, VK_SHADER_STAGE_COMPUTE_BIT, uniformMask);
+  setLayout_ = storageBufferSetLayout(device, buffers, VK_SHADER_STAGE_COMPUTE_BIT, uniformMask, images);
   layout_ = pushDescriptorPipelineLayout(device, setLayout_, VK_SHADER_STAGE_COMPUTE_BIT, pushConstantBytes);
 
   UniqueShaderModule module = loadShaderModule(device, shader);
@@ -100,10 +99,11 @@ ComputePipeline::ComputePipeline(Device& device, const std::string& shader, uint
 }
 
 void ComputePipeline::bind(VkCommandBuffer cmd, std::initializer_list<VkDescriptorBufferInfo> buffers,
-                           const void* pushConstants, uint32_t pushConstantBytes) const {
+                           const void* pushConstants, uint32_t pushConstantBytes,
+                           std::span<const ImageDescriptor> images) const {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
   pushStorageBuffers(pushDescriptorSet_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_,
-                     std::span(buffers.begin(), buffers.size()), uniformMask_);
+                     std::span(buffers.begin(), buffers.size()), uniformMask_, images);
   if (pushConstantBytes)
     vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes, pushConstants);
 }

@@ -83,7 +83,9 @@ struct FixedFunctionState {
 GraphicsPipeline::GraphicsPipeline(Device& device, const GraphicsPipelineDesc& desc) {
   pushDescriptorSet_ = pushDescriptorSetFunction(device);
   uniformMask_ = desc.uniformMask;
-  setLayout_ = storageBufferSetLayout(device, desc.storageBuffers, stages_, desc.uniformMask, desc.sampledImageBinding);
+  std::vector<ImageSlot> images;
+  for (const uint32_t binding : desc.sampledImageBindings) images.push_back({binding});
+  setLayout_ = storageBufferSetLayout(device, desc.storageBuffers, stages_, desc.uniformMask, images);
   layout_ = pushDescriptorPipelineLayout(device, setLayout_, stages_, desc.pushConstantBytes);
 
   UniqueShaderModule vert = loadShaderModule(device, desc.vertexShader);
@@ -121,10 +123,11 @@ GraphicsPipeline::GraphicsPipeline(Device& device, const GraphicsPipelineDesc& d
 }
 
 void GraphicsPipeline::bind(VkCommandBuffer cmd, std::span<const VkDescriptorBufferInfo> buffers,
-                            const void* pushConstants, uint32_t pushConstantBytes, const SampledImage* image) const {
+                            const void* pushConstants, uint32_t pushConstantBytes,
+                            std::span<const ImageDescriptor> images) const {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
-  if (buffers.size() || image)
-    pushStorageBuffers(pushDescriptorSet_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, buffers, uniformMask_, image);
+  if (buffers.size() || images.size())
+    pushStorageBuffers(pushDescriptorSet_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, buffers, uniformMask_, images);
   if (pushConstantBytes) vkCmdPushConstants(cmd, layout_, stages_, 0, pushConstantBytes, pushConstants);
 }
 

@@ -34,22 +34,22 @@ struct GraphicsPipelineDesc {
   // Specialization constants of the fragment shader: constant_id k takes fragmentSpecialization[k].
   std::vector<uint32_t> fragmentSpecialization;
   std::vector<uint32_t> vertexSpecialization;  // the same for the vertex shader
-  // Binding of a combined image sampler after the buffers (kNoSampledImage: none); bind() pushes it.
-  uint32_t sampledImageBinding = kNoSampledImage;
+  // Bindings of combined image samplers after the buffers; bind() pushes them.
+  std::vector<uint32_t> sampledImageBindings;
 };
 
 class GraphicsPipeline {
  public:
   GraphicsPipeline(Device& device, const GraphicsPipelineDesc& desc);
 
-  // `image`: the sampled image of sampledImageBinding (binding set), or nullptr.
+  // `images`: what the sampledImageBindings hold (all of them, or none when no shader reads them).
   void bind(VkCommandBuffer cmd, std::initializer_list<VkDescriptorBufferInfo> buffers, const void* pushConstants,
-            uint32_t pushConstantBytes, const SampledImage* image = nullptr) const {
-    bind(cmd, std::span(buffers.begin(), buffers.size()), pushConstants, pushConstantBytes, image);
+            uint32_t pushConstantBytes, std::span<const ImageDescriptor> images = {}) const {
+    bind(cmd, std::span(buffers.begin(), buffers.size()), pushConstants, pushConstantBytes, images);
   }
   // The same with buffers 0..n-1 gathered at run time.
   void bind(VkCommandBuffer cmd, std::span<const VkDescriptorBufferInfo> buffers, const void* pushConstants,
-            uint32_t pushConstantBytes, const SampledImage* image = nullptr) const;
+            uint32_t pushConstantBytes, std::span<const ImageDescriptor> images = {}) const;
 
   VkPipeline pipeline() const { return pipeline_; }
   VkPipelineLayout layout() const { return layout_; }

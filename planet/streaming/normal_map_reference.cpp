@@ -23,7 +23,7 @@ std::vector<NormalMapTexel> normalMapReference(const ElevationModel& model, cons
       const glm::dvec3 dir = payloadSampleDirection(job, uint32_t(m), a, b);
       const double h = model.proceduralElevation_m(dir);
       const double drawn = sea ? std::max(h, model.seaLevel_m()) : h;
-      grid[size_t(b + 2) * size_t(w) + size_t(a + 2)] = glm::dvec4(model.shape().position(dir, drawn), drawn);
+      grid[size_t(b + 2) * size_t(w) + size_t(a + 2)] = glm::dvec4(model.shape().position(dir, drawn), h);
       firstLayers[size_t(b + 2) * size_t(w) + size_t(a + 2)] = cover ? model.firstLayer_m(dir) : 0.0;
     }
   }
@@ -48,45 +48,16 @@ std::vector<NormalMapTexel> normalMapReference(const ElevationModel& model, cons
       const double cosSlope = std::clamp(glm::dot(normal, up), 0.0, 1.0);
       LandCoverMasks masks;
       const glm::dvec3 dir = payloadSampleDirection(job, uint32_t(m), t % side * step, t / side * step);
-      texels.push_back({normal, payloadSampleAlbedo(model, dir, grid[at].w, firstLayers[at], cosSlope, masks)});
+      // The kernel keeps the ground as a float: the ramp's drawn elevation and the coast from it.
+      const float ground = float(grid[at].w);
+      const float drawn = sea ? std::max(ground, float(model.seaLevel_m())) : ground;
+      const double texel_m = job.uv.z * e.radius_m * double(step) / double(m);
+      const float coast = std::clamp(float(double(ground) - e.sea_level_m) / float(texel_m * GLOBE_SURFACE_COAST_SCALE),
+                                     -1.0f, 1.0f);
+      texels.push_back({normal, payloadSampleAlbedo(model, dir, double(drawn), firstLayers[at], cosSlope, masks), coast});
     }
   }
   return texels;
-}
-
-namespace {
-uint32_t rootByte(float linear) { return uint32_t(std::lround(std::sqrt(std::clamp(linear, 0.0f, 1.0f)) * 255.0f)); }
-}  // namespace
-
-glm::uvec2 packNormalMapTexel(const NormalMapTexel& texel) {
-  const glm::dvec3& n = texel.normal;
-  const double l1 = (std::abs(n.x) + std::abs(n.y)) + std::abs(n.z);
-  glm::dvec2 o(n.x / l1, n.y / l1);
-  if (n.z < 0.0)
-    o = glm::dvec2((1.0 - std::abs(o.y)) * (o.x >= 0.0 ? 1.0 : -1.0),
-                   (1.0 - std::abs(o.x)) * (o.y >= 0.0 ? 1.0 : -1.0));
-  const auto q = [](double c) { return uint32_t(std::floor((c * 0.5 + 0.5) * 1048575.0 + 0.5)); };
-  const uint32_t qx = q(o.x), qy = q(o.y);
-  const uint32_t colour = rootByte(texel.albedo.x) | rootByte(texel.albedo.y) << 8 | rootByte(texel.albedo.z) << 16;
-  return {qx | (qy << 20), colour | ((qy >> 12) << 24)};
-}
-
-glm::dvec3 normalMapTexelNormal(glm::uvec2 packed) {
-  const uint32_t qx = packed.x & 0xfffffu, qy = (packed.x >> 20) | ((packed.y >> 24) << 12);
-  const glm::dvec2 o(double(qx) * (2.0 / 1048575.0) - 1.0, double(qy) * (2.0 / 1048575.0) - 1.0);
-  glm::dvec3 n(o, 1.0 - std::abs(o.x) - std::abs(o.y));
-  const double fold = std::max(-n.z, 0.0);
-  n.x += n.x >= 0.0 ? -fold : fold;
-  n.y += n.y >= 0.0 ? -fold : fold;
-  return glm::normalize(n);
-}
-
-glm::vec3 normalMapTexelAlbedo(glm::uvec2 packed) {
-  const auto channel = [&](int k) {
-    const float root = float((packed.y >> (8 * k)) & 0xffu) / 255.0f;
-    return root * root;
-  };
-  return {channel(0), channel(1), channel(2)};
 }
 
 }  // namespace globe

@@ -1,8 +1,7 @@
 #pragma once
-// The CPU reference of a payload's normal map (shaders/include/payload_layout.h,
-// shaders/include/normal_map.glsl): the texels' directions, elevations, double normals and colour
-// ramp the payload kernel computes, and the texel packing. Tests compare the GPU's maps with it;
-// fillPayloadReference fills the map of slots with a normal map.
+// The CPU reference of a payload's surface textures (shaders/include/payload_layout.h): the texels'
+// directions, elevations, double normals, coast field and colour ramp the payload kernel computes.
+// Tests compare the GPU's textures with it.
 #include "planet/elevation/elevation.h"
 #include "shaders/include/payload_layout.h"
 
@@ -16,10 +15,12 @@ namespace globe {
 // Texels of a map with `mapCells` cells per side, both levels (GLOBE_NORMAL_MAP_TEXELS).
 inline size_t normalMapTexelCount(uint32_t mapCells) { return GLOBE_NORMAL_MAP_TEXELS(mapCells); }
 
-// One texel before packing: the unit normal in double and the linear albedo.
+// One texel before it is stored: the unit normal in double, the linear albedo and the coast field
+// (ground above sea level in GLOBE_SURFACE_COAST_SCALE texel widths of its level, clamped to [-1, 1]).
 struct NormalMapTexel {
   glm::dvec3 normal{0.0};
   glm::vec3 albedo{0.0f};
+  float coast = 0.0f;
 };
 
 // The map of `job`'s node with `cells` grid cells and map scale `scale` (1, 2, 4), texels in the
@@ -28,10 +29,5 @@ struct NormalMapTexel {
 // `waterSurface`: as the kernel's switch (texels below sea level lie on the sea surface).
 std::vector<NormalMapTexel> normalMapReference(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
                                                uint32_t scale, bool waterSurface = false);
-
-// The packed texel (normal_map.glsl's packNormalMapTexel) and its decoded normal and linear albedo.
-glm::uvec2 packNormalMapTexel(const NormalMapTexel& texel);
-glm::dvec3 normalMapTexelNormal(glm::uvec2 packed);
-glm::vec3 normalMapTexelAlbedo(glm::uvec2 packed);
 
 }  // namespace globe

@@ -199,19 +199,12 @@ glm::vec3 payloadSampleAlbedo(const ElevationModel& model, const glm::dvec3& dir
 }
 
 RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
-                                 std::span<glm::vec4> slot, bool waterSurface, uint32_t normalMapScale) {
+                                 std::span<glm::vec4> slot, bool waterSurface) {
   const bool sea = waterSurface && model.drawsWater();
   const int n = int(cells);
   const int s = n + 3;
   // Slots for meshes only (collision, tests) may end before the land cover masks, which are then not written.
-  assert(slot.size() >= size_t(GLOBE_PAYLOAD_COVER_OFFSET(cells, normalMapScale)));
-  if (normalMapScale > 0) {
-    const std::vector<NormalMapTexel> texels = normalMapReference(model, job, cells, normalMapScale, waterSurface);
-    std::vector<glm::uvec2> packed(texels.size());
-    std::transform(texels.begin(), texels.end(), packed.begin(),
-                   [](const NormalMapTexel& t) { return packNormalMapTexel(t); });
-    std::memcpy(slot.data() + GLOBE_PAYLOAD_VEC4_PER_SLOT(cells), packed.data(), packed.size() * sizeof(glm::uvec2));
-  }
+  assert(slot.size() >= size_t(GLOBE_PAYLOAD_COVER_OFFSET(cells)));
   const glm::dvec3 centre{job.centre.x, job.centre.y, job.centre.z};
   const double q = job.centre.w;
   std::vector<glm::dvec3> positions(size_t(s) * size_t(s));
@@ -219,7 +212,7 @@ RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::Payload
   std::vector<double> elevations(size_t(s) * size_t(s));
   std::vector<double> firstLayers(size_t(s) * size_t(s));
   const bool cover = model.landCover().class_count > 0;
-  const bool writeCover = cover && slot.size() >= size_t(GLOBE_PAYLOAD_SLOT_VEC4(cells, normalMapScale));
+  const bool writeCover = cover && slot.size() >= size_t(GLOBE_PAYLOAD_SLOT_VEC4(cells));
   RadiusRange range{std::numeric_limits<double>::infinity(), 0.0};
   const double spacing_m = payloadSampleSpacing_m(job, cells, model.radius_m());
   for (int j = -1; j <= n + 1; ++j) {
@@ -266,7 +259,7 @@ RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::Payload
       const glm::vec3 albedo = payloadSampleAlbedo(model, payloadSampleDirection(job, cells, vi, vj),
                                                    elevations[vertex], firstLayers[vertex], cosSlope, masks);
       const size_t index = size_t(j + 1) * size_t(s) + size_t(i + 1);
-      if (writeCover) writeCoverMasks(slot, GLOBE_PAYLOAD_COVER_OFFSET(cells, normalMapScale), index, masks);
+      if (writeCover) writeCoverMasks(slot, GLOBE_PAYLOAD_COVER_OFFSET(cells), index, masks);
       slot[normals + index] =
           glm::vec4(float(nrm.x), float(nrm.y), float(nrm.z), packPayloadSurface(albedo, holes[index]));
     }

@@ -43,12 +43,12 @@ glm::dvec3 payloadSampleDirection(const gpu::PayloadJob& job, uint32_t cells, in
 // the sphere. Pads a payload's radius range so it also holds its children's finer surface.
 double unresolvedRelief_m(const gpu::ElevationParams& params, double sampleSpacing_m);
 
-// Fills one slot (GLOBE_PAYLOAD_SLOT_VEC4(cells, normalMapScale) entries) like the shader does and
+// Fills one slot's buffer part (GLOBE_PAYLOAD_SLOT_VEC4(cells) entries) like the shader does and
 // returns the node's radius range (vertices only, unpadded). `waterSurface`: as the kernel's switch
-// (GLOBE_PAYLOAD_SPEC_WATER_SURFACE; only on a planet that draws water). `normalMapScale` > 0 also
-// fills the normal map (normal_map_reference.h).
+// (GLOBE_PAYLOAD_SPEC_WATER_SURFACE; only on a planet that draws water). The surface textures'
+// reference is normalMapReference (normal_map_reference.h).
 RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
-                                 std::span<glm::vec4> slot, bool waterSurface = false, uint32_t normalMapScale = 0);
+                                 std::span<glm::vec4> slot, bool waterSurface = false);
 
 // = surfaceAlbedo (payload_generate.glsl): a sample's albedo from the colour ramp at its drawn
 // elevation and slope, or on a planet with land cover the blend of its masks (also returned; all

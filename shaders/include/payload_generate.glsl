@@ -7,7 +7,7 @@
 // the normal map) (payload_surface.glsl); a shared-memory reduction gives the node's
 // min/max vertex radius and its geometric error (the largest distance a vertex moves when the node morphs to its
 // parent's mesh); pass 3 (with a normal map, kNormalMapScale > 0) evaluates the map's grid in double and writes its
-// texels (fillNormalMap, payload_layout.h). Mirrors planet/streaming/payload_reference.cpp operation for operation (the double kernel).
+// texels into the slot's layer of the surface textures (fillNormalMap, payload_layout.h). Mirrors planet/streaming/payload_reference.cpp operation for operation (the double kernel).
 #include "colour_ramp.h"
 #include "elevation_params.h"
 #include "land_cover.h"
@@ -21,8 +21,11 @@ layout(std140, binding = 0) uniform Elevation { ElevationParams elevation; };
 layout(std430, binding = 1) readonly buffer Faces { FaceCorners faces[30]; };
 layout(std430, binding = 2) readonly buffer Jobs { PayloadJob jobs[]; };
 layout(std430, binding = 3) writeonly buffer Payloads { vec4 payloads[]; };
-// The same slots seen as normal map texels (payload_layout.h, normal_map.glsl).
+// The same slots seen as pairs of words (the land cover masks, payload_layout.h).
 layout(std430, binding = 3) writeonly buffer PayloadTexels { uvec2 payloadTexels[]; };
+// The job's page's surface textures, a layer per slot (payload_layout.h).
+layout(binding = GLOBE_PAYLOAD_NORMALS_BINDING, rgba16_snorm) writeonly uniform image2DArray surfaceNormalsImage;
+layout(binding = GLOBE_PAYLOAD_ALBEDO_BINDING, rgba8) writeonly uniform image2DArray surfaceAlbedoImage;
 layout(std430, binding = 4) buffer Scratch { dvec4 scratch[]; };
 layout(std430, binding = 5) writeonly buffer Results { PayloadResult results[]; };
 layout(std140, binding = 7) uniform ColourRamp { ColourRampParams colourRamp; };
@@ -43,8 +46,6 @@ push;
 #include "payload_surface.glsl"
 #define GLOBE_RAMP colourRamp
 #include "colour_ramp.glsl"
-#define GLOBE_NORMAL_MAP_PACK
-#include "normal_map.glsl"
 #define GLOBE_LAND_COVER landCover
 #include "land_cover.glsl"
 
@@ -182,11 +183,25 @@ double normalMapElevation(PayloadJob job, dvec3 dir, int a, int b, out double fi
   return h;
 }
 
-// Fills the slot's normal map (payload_layout.h) from `mapBase` (vec4 index) on: positions of the
-// map grid and its two-texel ring in double into the job's scratch, then per texel of both levels
-// the normal by central differences (one texel apart for level 0, two for level 1) and the colour
+// What scratch.w holds for a map grid point: its ground elevation and the first layer's value as two
+// floats (the drawn elevation is max(ground, sea level) with a water surface: the ramp's input).
+double mapScratchWord(double ground, double firstLayer) {
+  return packDouble2x32(uvec2(floatBitsToUint(float(ground)), floatBitsToUint(float(firstLayer))));
+}
+
+// The coast field of a texel (payload_layout.h): its ground above sea level in units of
+// GLOBE_SURFACE_COAST_SCALE texel widths of its level (the same at every node of the level), clamped.
+float coastField(float ground, PayloadJob job, uint step) {
+  double texel_m = job.uv.z * GLOBE_ELEVATION_PARAMS.radius_m * double(step) / double(push.cells * kNormalMapScale);
+  return clamp(float(double(ground) - GLOBE_ELEVATION_PARAMS.sea_level_m) / float(texel_m * GLOBE_SURFACE_COAST_SCALE),
+               -1.0, 1.0);
+}
+
+// Fills the slot's layer of the surface textures (payload_layout.h): positions of the map grid and
+// its two-texel ring in double into the job's scratch, then per texel of both levels the normal by
+// central differences (one texel apart for level 0, two for level 1), the coast field and the colour
 // ramp at the texel's elevation and slope, as pass 2 does for the mesh samples.
-void fillNormalMap(PayloadJob job, uint mapBase, uint scratchBase) {
+void fillNormalMap(PayloadJob job, uint scratchBase) {
   uint m = push.cells * kNormalMapScale;
   int w = int(m) + 5;
   memoryBarrierBuffer();
@@ -198,7 +213,7 @@ void fillNormalMap(PayloadJob job, uint mapBase, uint scratchBase) {
     double firstLayer;
     double h = normalMapElevation(job, dir, a, b, firstLayer);
     double drawn = kWaterSurface != 0u ? max(h, GLOBE_ELEVATION_PARAMS.sea_level_m) : h;
-    scratch[scratchBase + index] = dvec4(globePosition(dir, drawn), scratchSurfaceWord(drawn, firstLayer));
+    scratch[scratchBase + index] = dvec4(globePosition(dir, drawn), mapScratchWord(h, firstLayer));
   }
   memoryBarrierBuffer();
   barrier();
@@ -215,11 +230,16 @@ void fillNormalMap(PayloadJob job, uint mapBase, uint scratchBase) {
     dvec3 normal = normalised(c);
     dvec3 up = kGlobeEllipsoid != 0u ? globeEllipsoidGradient(scratch[at].xyz) : normalised(scratch[at].xyz);
     double cosSlope = clamp(dot(normal, up), 0.0lf, 1.0lf);
+    vec2 words = uintBitsToFloat(unpackDouble2x32(scratch[at].w));
+    float ground = words.x;
+    float drawn = kWaterSurface != 0u ? max(ground, float(GLOBE_ELEVATION_PARAMS.sea_level_m)) : ground;
     uvec2 masks;
     int a = int(local % side * step), b = int(local / side * step);
-    vec3 albedo = surfaceAlbedo(scratch[at].w, kLandCover != 0u ? sampleDirection(job, m, a, b) : dvec3(0.0lf),
-                                cosSlope, masks);
-    payloadTexels[mapBase * 2u + t] = packNormalMapTexel(normal, albedo);
+    vec3 albedo = surfaceAlbedo(scratchSurfaceWord(double(drawn), double(words.y)),
+                                kLandCover != 0u ? sampleDirection(job, m, a, b) : dvec3(0.0lf), cosSlope, masks);
+    ivec3 texel = ivec3(int(local % side + (parent ? m + 1u : 0u)), int(local / side), int(job.slot));
+    imageStore(surfaceNormalsImage, texel, vec4(vec3(normal), coastField(ground, job, step)));
+    imageStore(surfaceAlbedoImage, texel, vec4(sqrt(clamp(albedo, 0.0, 1.0)), 1.0));
   }
 }
 
@@ -230,7 +250,7 @@ void main() {
   int n = int(push.cells);
   int s = n + 3;
   uint samples = uint(s * s);
-  uint slotBase = job.slot * GLOBE_PAYLOAD_SLOT_VEC4(push.cells, kNormalMapScale);
+  uint slotBase = job.slot * GLOBE_PAYLOAD_SLOT_VEC4(push.cells);
   uint scratchBase = jobIndex * max(samples, normalMapEvaluations(push.cells));
   dvec3 centre = job.centre.xyz;
   double q = job.centre.w;
@@ -286,7 +306,7 @@ void main() {
   barrier();
 
   uint normalBase = slotBase + samples;
-  uint coverBase = slotBase + GLOBE_PAYLOAD_COVER_OFFSET(push.cells, kNormalMapScale);
+  uint coverBase = slotBase + GLOBE_PAYLOAD_COVER_OFFSET(push.cells);
   double localError = 0.0lf;
   for (uint index = gl_LocalInvocationID.x; index < samples; index += GLOBE_PAYLOAD_WORKGROUP) {
     int i = clamp(int(index % uint(s)) - 1, 0, n);
@@ -324,5 +344,5 @@ void main() {
   }
   if (gl_LocalInvocationID.x == 0u)
     results[jobIndex] = PayloadResult(sharedMin[0], sharedMax[0], sharedError[0], sharedLowest[0]);
-  fillNormalMap(job, slotBase + 2u * samples, scratchBase);
+  if (kNormalMapScale > 0u) fillNormalMap(job, scratchBase);
 }

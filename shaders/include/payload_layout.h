@@ -25,19 +25,26 @@
 //                         elevation_sources.glsl). Ring samples hold the normal and surface word of
 //                         the nearest vertex (there are no samples beyond the ring).
 // With a normal map (GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE s > 0: the renderer's payloads; collision
-// meshes and bakes have none) the slot goes on with M = s * N map cells per side, as uvec2 texels
-// (8 bytes; shaders/include/normal_map.glsl), counted from the slot's first vec4 times 2:
-//   [2*S*S*2, +(M+1)^2)            level 0: texel (a, b), a, b in [0, M], at index b * (M+1) + a, lies
-//                                  at the node's (u, v) = corner + size * (a, b) / M: texels sit on the
-//                                  map grid's corners, so the border texels are the shared edges and
-//                                  both nodes hold the same directions there (across face seams too);
-//   [.. , +(M/2+1)^2)              level 1: the parent's texels over this node's quadrant (every other
-//                                  direction, normals from differences two texels apart): what the
-//                                  parent's own map holds there, so morphing towards it does not pop.
-// A texel holds the unit normal (octahedral, 2 x 20 bits: error < 3e-6) from double positions by
-// central differences (the positions two texels around the node come from the ring technique), and
-// the square root of the albedo (the colour ramp at the texel's elevation and slope) in 3 bytes.
-// Then, whatever the map: [cover offset, + (S*S + 1) / 2) the land cover masks, one uvec2 per sample
+// meshes and bakes have none) the slot also has a layer of its payload page's two surface textures
+// (sampled 2-D array images, engine/generation/surface_textures.h; the fragment stages filter them
+// with the sampler), M = s * N map cells per side, each layer GLOBE_SURFACE_TEXTURE_WIDTH(M) x
+// GLOBE_SURFACE_TEXTURE_HEIGHT(M) texels:
+//   x in [0, M], y in [0, M]              level 0: texel (a, b) lies at the node's
+//                                         (u, v) = corner + size * (a, b) / M: texels sit on the map
+//                                         grid's corners, so the border texels are the shared edges
+//                                         and both nodes hold the same directions there (across face
+//                                         seams too); bilinear filtering between texel centres is
+//                                         the map's bilinear interpolation;
+//   x in [M + 1, M + 1 + M/2], y <= M/2   level 1: the parent's texels over this node's quadrant
+//                                         (every other direction, normals from differences two texels
+//                                         apart): what the parent's own map holds there, so morphing
+//                                         towards it does not pop.
+// Normals texture (RGBA16_SNORM): xyz the unit normal, planet-fixed, from double positions by central
+// differences (the positions two texels around the node come from the ring technique); w the coast
+// field, (ground elevation - sea level) / GLOBE_SURFACE_COAST_SCALE texel widths, clamped to [-1, 1]:
+// its bilinear zero crossing is the per-pixel coastline. Albedo texture (RGBA8_UNORM): rgb the square
+// root of the albedo (the colour ramp at the texel's elevation and slope, or the land cover's blend).
+// After the mesh, [cover offset, + (S*S + 1) / 2) the land cover masks, one uvec2 per sample
 // (index as the mesh's): 8 bytes, class i in byte i % 4 of word i / 4, summing to 255 (land_cover.h).
 // Ring samples hold the masks of their nearest vertex, like its normal. Without land cover
 // (GLOBE_PAYLOAD_SPEC_LAND_COVER 0) the region is left unwritten and nothing reads it.
@@ -69,18 +76,21 @@ struct uvec4_ {
 // vec4 entries of a slot's mesh: positions then normals (the whole slot without a normal map).
 #define GLOBE_PAYLOAD_VEC4_PER_SLOT(cells) \
   (2u * GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells) * GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells))
-// Normal map texels of one slot with M = mapCells map cells per side (0: no map); vec4 entries of
-// a slot with grid `cells` and map scale `scale` (0, 1, 2, 4), the map's texels rounded up to vec4.
+// Normal map texels of one slot with M = mapCells map cells per side (0: no map), both levels.
 #define GLOBE_NORMAL_MAP_TEXELS(mapCells) \
   ((mapCells) == 0u ? 0u : ((mapCells) + 1u) * ((mapCells) + 1u) + ((mapCells) / 2u + 1u) * ((mapCells) / 2u + 1u))
+// A surface texture layer's size for M map cells per side: level 0 and level 1 side by side.
+#define GLOBE_SURFACE_TEXTURE_WIDTH(mapCells) ((mapCells) + 1u + (mapCells) / 2u + 1u)
+#define GLOBE_SURFACE_TEXTURE_HEIGHT(mapCells) ((mapCells) + 1u)
+// Texel widths of elevation that span the coast field's [-1, 1] (w of the normals texture).
+#define GLOBE_SURFACE_COAST_SCALE 16.0
 // Land cover masks of a slot: one uvec2 per sample (two RGBA8 words, land_cover.h), in vec4 entries;
-// they follow the normal map, from vec4 GLOBE_PAYLOAD_COVER_OFFSET on.
+// they follow the mesh, from vec4 GLOBE_PAYLOAD_COVER_OFFSET on.
 #define GLOBE_PAYLOAD_COVER_VEC4(cells) \
   ((GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells) * GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells) + 1u) / 2u)
-#define GLOBE_PAYLOAD_COVER_OFFSET(cells, scale) \
-  (GLOBE_PAYLOAD_VEC4_PER_SLOT(cells) + (GLOBE_NORMAL_MAP_TEXELS((cells) * (scale)) + 1u) / 2u)
-#define GLOBE_PAYLOAD_SLOT_VEC4(cells, scale) \
-  (GLOBE_PAYLOAD_COVER_OFFSET(cells, scale) + GLOBE_PAYLOAD_COVER_VEC4(cells))
+#define GLOBE_PAYLOAD_COVER_OFFSET(cells) GLOBE_PAYLOAD_VEC4_PER_SLOT(cells)
+// vec4 entries of a slot in the payload buffer (its surface textures, if any, are images).
+#define GLOBE_PAYLOAD_SLOT_VEC4(cells) (GLOBE_PAYLOAD_COVER_OFFSET(cells) + GLOBE_PAYLOAD_COVER_VEC4(cells))
 // Most jobs one generation dispatch takes.
 #define GLOBE_PAYLOAD_MAX_BATCH 64u
 // PayloadJob.sourceBase of a job without source terms.
@@ -92,6 +102,9 @@ struct uvec4_ {
 // water); 0 = the ground everywhere (collision meshes, bakes, dry planets).
 #define GLOBE_PAYLOAD_SPEC_WATER_SURFACE 26
 // Specialization constant: the normal map's scale s (map cells = s * grid cells), 0 = no map.
+// Bindings of the payload kernel's surface textures (storage images of the job's page).
+#define GLOBE_PAYLOAD_NORMALS_BINDING 9
+#define GLOBE_PAYLOAD_ALBEDO_BINDING 10
 #define GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE 27
 // Specialization constant: 1 = the planet has land cover (land_cover.h): the samples' albedo is the
 // masks' blend of the class colours and the masks are written; 0 = the colour ramp, no masks.

@@ -3,12 +3,12 @@
 // declares only the inputs it reads: lavapipe made the terrain pass up to 4x slower in some frames
 // of the flyover when unused inputs were declared (docs/rendering.md, "Atmosphere").
 // - GLOBE_TERRAIN_NORMAL_MAPS (TerrainStyle::normalMapScale > 0): shades per fragment from the
-//   node's normal map (payload_layout.h): normal and colour sampled bilinearly from the map's own
-//   level, blended with its parent level by the morph factor k (at k = 1 the parent's map, exactly
-//   what the parent draws: no pop), then lit; the parent level is only read where k > 0 (a
-//   per-fragment branch on an interpolated value). Without, and in the debug views, it writes the
-//   vertex stage's lit, display-encoded colour and reads no buffers, since per-fragment cost is what
-//   bounds lavapipe.
+//   node's surface textures (payload_layout.h): normal, coast field and colour sampled with the
+//   sampler's bilinear filter from the map's own level, blended with its parent level by the morph
+//   factor k (at k = 1 the parent's map, exactly what the parent draws: no pop), then lit; the parent
+//   level is only read where k > 0 (a per-fragment branch on an interpolated value). The coast is the
+//   field's zero crossing. Without, and in the debug views, it writes the vertex stage's lit,
+//   display-encoded colour and samples nothing, since per-fragment cost is what bounds lavapipe.
 // - GLOBE_TERRAIN_IMAGERY (with NORMAL_MAPS, TerrainStyle::imagery): the maps are the imagery
 //   tiles', chosen by texel magnification apart from the mesh (planet/imagery/imagery_selection.h).
 // - GLOBE_TERRAIN_ATMOSPHERE (for terrain_atmosphere.vert): mapped fragments lit by the vertex
@@ -31,43 +31,52 @@ layout(location = 1) in float inHole;
 layout(location = 0) out vec4 outColour;
 
 #ifdef GLOBE_TERRAIN_NORMAL_MAPS
+#include "payload_layout.h"
+#include "surface_textures.glsl"
 #ifdef GLOBE_TERRAIN_IMAGERY
 // The maps come from imagery tiles (planet/imagery/imagery_selection.h): the drawn node's cell table
 // says which tile covers each of its 8 x 8 cells, and where.
 #ifdef GLOBE_TERRAIN_ATMOSPHERE
-#define GLOBE_IMAGERY_FIRST_BINDING GLOBE_TERRAIN_IMAGERY_BINDING_ATMOSPHERE
+#define GLOBE_IMAGERY_CELLS_BINDING GLOBE_TERRAIN_IMAGERY_BINDING_ATMOSPHERE
 #else
-#define GLOBE_IMAGERY_FIRST_BINDING GLOBE_TERRAIN_IMAGERY_BINDING
+#define GLOBE_IMAGERY_CELLS_BINDING GLOBE_TERRAIN_IMAGERY_BINDING
 #endif
-layout(std430, set = 0, binding = GLOBE_IMAGERY_FIRST_BINDING) readonly buffer ImageryCells {
+layout(std430, set = 0, binding = GLOBE_IMAGERY_CELLS_BINDING) readonly buffer ImageryCells {
   TerrainImageryCell imageryCells[];
 };
-// The tiles' payload buffer in windows (pages) of at most one binding each; a cell names its page.
-layout(std430, set = 0, binding = GLOBE_IMAGERY_FIRST_BINDING + 1) readonly buffer ImageryPage0 { uvec2 imageryPage0[]; };
-layout(std430, set = 0, binding = GLOBE_IMAGERY_FIRST_BINDING + 2) readonly buffer ImageryPage1 { uvec2 imageryPage1[]; };
-layout(std430, set = 0, binding = GLOBE_IMAGERY_FIRST_BINDING + 3) readonly buffer ImageryPage2 { uvec2 imageryPage2[]; };
-layout(std430, set = 0, binding = GLOBE_IMAGERY_FIRST_BINDING + 4) readonly buffer ImageryPage3 { uvec2 imageryPage3[]; };
+// The tiles' surface textures, page by page; a cell names its page.
+layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING + 0) uniform sampler2DArray imageryNormals0;
+layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING + 1) uniform sampler2DArray imageryAlbedo0;
+layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING + 2) uniform sampler2DArray imageryNormals1;
+layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING + 3) uniform sampler2DArray imageryAlbedo1;
+layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING + 4) uniform sampler2DArray imageryNormals2;
+layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING + 5) uniform sampler2DArray imageryAlbedo2;
+layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING + 6) uniform sampler2DArray imageryNormals3;
+layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING + 7) uniform sampler2DArray imageryAlbedo3;
 uint imageryPage = 0u;  // the page of the tile being sampled (mappedColour)
-uvec2 imageryTexel(uint i) {
-  // Constant indices into separate bindings: no descriptor indexing needed for a per-fragment page.
+// Constant bindings behind a switch: no descriptor indexing needed for a per-fragment page.
+void sampleSurface(vec3 at, out vec4 normal, out vec3 rootAlbedo) {
   switch (imageryPage) {
-    case 0u: return imageryPage0[i];
-    case 1u: return imageryPage1[i];
-    case 2u: return imageryPage2[i];
-    default: return imageryPage3[i];
+    case 0u: normal = textureLod(imageryNormals0, at, 0.0); rootAlbedo = textureLod(imageryAlbedo0, at, 0.0).rgb; break;
+    case 1u: normal = textureLod(imageryNormals1, at, 0.0); rootAlbedo = textureLod(imageryAlbedo1, at, 0.0).rgb; break;
+    case 2u: normal = textureLod(imageryNormals2, at, 0.0); rootAlbedo = textureLod(imageryAlbedo2, at, 0.0).rgb; break;
+    default: normal = textureLod(imageryNormals3, at, 0.0); rootAlbedo = textureLod(imageryAlbedo3, at, 0.0).rgb;
   }
 }
-#define GLOBE_NORMAL_MAP_TEXEL(i) imageryTexel(i)
 layout(location = 18) flat in uint inImageryCell;
 #ifndef GLOBE_TERRAIN_WATER
 layout(location = 3) in vec3 inRelative;
 #endif
 #else
-// The payload page's slots seen as normal map texels (the vertex stage reads them as vec4).
-layout(std430, set = 0, binding = 1) readonly buffer PayloadTexels { uvec2 payloadTexels[]; };
+// The drawn page's surface textures (payload_layout.h), a layer per slot.
+layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING) uniform sampler2DArray surfaceNormals;
+layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING + 1) uniform sampler2DArray surfaceAlbedo;
+// Level 0: no derivatives (lavapipe computes them for implicit-LOD fetches), no mips.
+void sampleSurface(vec3 at, out vec4 normal, out vec3 rootAlbedo) {
+  normal = textureLod(surfaceNormals, at, 0.0);
+  rootAlbedo = textureLod(surfaceAlbedo, at, 0.0).rgb;
+}
 #endif
-#define GLOBE_NORMAL_MAP_SAMPLE
-#include "normal_map.glsl"
 layout(location = 4) in vec2 inMapUv;
 layout(location = 5) flat in uint inMapBase;
 layout(location = 6) in float inMapBlend;
@@ -132,34 +141,37 @@ const float kHoleRim = 0.12;
 // Imagery LOD: no tile is resident over the fragment yet (its vertex colour is drawn).
 bool imageryMissing = false;
 
-// The lit, display-encoded colour from the normal map: the node's own (its level, blended to its
-// parent's by the mesh's morph), or with imagery LOD the tile over the fragment's cell (its level,
-// blended to its parent's by distance over [0.8, 1] x D of the parent level).
-vec3 mappedColour(vec3 modulation) {
+// The lit, display-encoded colour from the surface textures: the node's own (its level, blended to
+// its parent's by the mesh's morph), or with imagery LOD the tile over the fragment's cell (its level,
+// blended to its parent's by distance over [0.8, 1] x D of the parent level). `coast`: the coast field
+// (payload_layout.h), below 0 over the sea.
+vec3 mappedColour(vec3 modulation, out float coast) {
 #ifdef GLOBE_TERRAIN_IMAGERY
   const uint side = GLOBE_IMAGERY_CELLS_PER_SIDE;
   uvec2 at = min(uvec2(inMapUv * float(side)), uvec2(side - 1u));
   TerrainImageryCell cell = imageryCells[inImageryCell + at.y * side + at.x];
   imageryMissing = cell.tile.y == 0u;
-  uint cells = GLOBE_IMAGERY_TILE_CELLS, base = cell.tile.x;
+  uint cells = GLOBE_IMAGERY_TILE_CELLS, layer = cell.tile.x;
   imageryPage = cell.tile.z;
   vec2 uv = inMapUv * cell.map.x + cell.map.yz;
   float blend = clamp((length(inRelative) * cell.map.w - 0.8) * 5.0, 0.0, 1.0);
 #else
-  uint cells = frame.options.w, base = inMapBase;
+  uint cells = frame.options.w, layer = inMapBase;
   vec2 uv = inMapUv;
   float blend = inMapBlend;
 #endif
-  vec3 normal, root;
-  sampleNormalMap(base, cells + 1u, uv * float(cells), normal, root);
+  vec4 normal;
+  vec3 root;
+  sampleSurface(surfaceCoordinate(uv, 0u, cells, layer), normal, root);
   if (blend > 0.0) {
-    vec3 parentNormal, parentRoot;
-    sampleNormalMap(base + (cells + 1u) * (cells + 1u), cells / 2u + 1u, uv * float(cells / 2u), parentNormal,
-                    parentRoot);
+    vec4 parentNormal;
+    vec3 parentRoot;
+    sampleSurface(surfaceCoordinate(uv, 1u, cells, layer), parentNormal, parentRoot);
     normal = mix(normal, parentNormal, blend);
     root = mix(root, parentRoot, blend);
   }
-  vec3 n = normalize(normal);
+  coast = normal.w;
+  vec3 n = normalize(normal.xyz);
   vec3 albedo = root * root * modulation;
 #ifdef GLOBE_TERRAIN_ATMOSPHERE
   // The vertex stage's light through the air, applied to the mapped normal and colour
@@ -182,16 +194,26 @@ void main() {
   // The vertex colour is lit and display-encoded, ~ the square root of linear (display_encoding.h):
   // the square root of the modulation scales it as the albedo's would.
   vec3 colour = inColour * sqrt(modulation);
+  // Without maps the coast is where the vertices' interpolated depth changes sign (straight segments
+  // across the mesh's cells); with them, where the textures' coast field does (a curve per pixel).
+#ifdef GLOBE_TERRAIN_WATER
+  float coast = -inSeaDepth;
+#else
+  float coast = 1.0;
+#endif
 #ifdef GLOBE_TERRAIN_NORMAL_MAPS
   // A select, not an if, on the debug view (a uniform value: an if would make lavapipe compile the
   // shader again at draw time, docs/rendering.md).
-  vec3 mapped = mappedColour(modulation);
-  colour = mix(mapped, inColour, bvec3(debug || imageryMissing));
+  float mappedCoast;
+  vec3 mapped = mappedColour(modulation, mappedCoast);
+  bool vertexColour = debug || imageryMissing;
+  colour = mix(mapped, inColour, bvec3(vertexColour));
+  coast = vertexColour ? coast : mappedCoast;
 #endif
 #ifdef GLOBE_TERRAIN_WATER
-  // The coast is where the interpolated depth changes sign: crisp at every distance, whatever the
-  // mesh resolution (the vertex colours of sea samples are their shore's, so land is not tinted).
-  if (inSeaDepth > 0.0) colour = waterColour(inSeaDepth, inRelative);
+  // The vertex colours of sea samples are their shore's, so land is not tinted; the depth tint stays
+  // the vertices' (no shallower than the shore).
+  if (coast < 0.0) colour = waterColour(max(inSeaDepth, 0.0), inRelative);
 #endif
 #ifdef GLOBE_TERRAIN_HOLES
   // Irregular, crack-free hole borders: the mask is continuous across nodes (equal at shared

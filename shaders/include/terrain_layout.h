@@ -45,13 +45,15 @@ struct TerrainDvec4 {
 // Binding of the land cover's detail textures (a sampler2DArray, one layer per class) in the terrain
 // pipelines with land cover (terrain_fragment.glsl), past every buffer binding.
 #define GLOBE_TERRAIN_DETAIL_BINDING 14
+// The surface textures the _maps fragment stages sample (payload_layout.h; sampler2DArrays, a layer
+// per slot): the drawn page's normals at this binding and its albedo at the next; with imagery LOD,
+// the imagery tiles' GLOBE_IMAGERY_TILE_PAGES pages, normals and albedo of page p at 2p and 2p + 1 after it.
+#define GLOBE_TERRAIN_SURFACE_BINDING 15
 // Imagery LOD (planet/imagery/imagery_selection.h; the _imagery fragment stages): the drawn nodes'
-// cell tables (TerrainImageryCell), then the imagery tiles' payload buffer in GLOBE_IMAGERY_TILE_PAGES
-// windows of at most one storage-buffer binding each (engine/generation/payload_pages.h), after the
-// other buffers: at 3-7, or 9-13 with the atmosphere's.
+// cell tables (TerrainImageryCell), after the other buffers: at 3, or 9 with the atmosphere's.
 #define GLOBE_TERRAIN_IMAGERY_BINDING 3
 #define GLOBE_TERRAIN_IMAGERY_BINDING_ATMOSPHERE 9
-// Windows of the tiles' buffer the fragment stages bind: 4 x 128 MiB on lavapipe.
+// Pages (surface texture arrays) of the imagery tiles the fragment stages bind.
 #define GLOBE_IMAGERY_TILE_PAGES 4u
 // An imagery tile is a payload of grid 32 with normal map scale 4 (payload_layout.h): 128 map cells
 // per side, its parent's 64 over its quadrant after them. Cells per side of a node's table.
@@ -83,7 +85,7 @@ struct TerrainFrame {
 
 // One cell of a drawn node's imagery table (std430, 32 bytes; the node's cells in rows along v).
 struct TerrainImageryCell {
-  GLOBE_UVEC4 tile;  // x = the tile's first map texel (uvec2 index in its page's window), y = 1 when a
+  GLOBE_UVEC4 tile;  // x = the tile's layer in its page's surface textures, y = 1 when a
                      // tile is drawn (0: none resident yet: the vertex colour), z = the page, w unused
   GLOBE_VEC4 map;    // tile (u, v) = node (u, v) * x + (y, z); w = 1 / D of the tile's parent level (per
                      // metre; 0 for roots): its texels blend to the parent's over [0.8, 1] x D
@@ -101,7 +103,8 @@ struct TerrainInstance {
   GLOBE_VEC4 morphEnd;  // 48: morph end at the node's corners u0 v0, u1 v0, u0 v1, u1 v1
   GLOBE_VEC4 detail;    // 64: where the node's (u, v) corner falls in the fine (xy) and coarse (zw)
                         //     detail tiles, [0, 1): the tiles' coordinates go on across nodes
-  GLOBE_UVEC4 imagery;  // 80: x = the node's first cell in the imagery table; yzw unused
+  GLOBE_UVEC4 imagery;  // 80: x = the node's first cell in the imagery table; y = the slot's layer in its
+                        //     page's surface textures; zw unused
 };
 
 // Positions re-projected every frame (VertexPositions::kReprojected, measured by globe trade): one
@@ -126,8 +129,9 @@ static_assert(sizeof(TerrainFrame) == 256);
 static_assert(sizeof(TerrainInstance) == 96);
 static_assert(sizeof(TerrainImageryCell) == 32);
 static_assert(GLOBE_IMAGERY_TILE_CELLS == GLOBE_IMAGERY_TILE_GRID * GLOBE_IMAGERY_TILE_MAP_SCALE);
-static_assert(GLOBE_IMAGERY_TILE_PAGES == 4, "terrain_fragment.glsl declares four page bindings");
-static_assert(GLOBE_TERRAIN_DETAIL_BINDING == GLOBE_TERRAIN_IMAGERY_BINDING_ATMOSPHERE + 1 + GLOBE_IMAGERY_TILE_PAGES);
+static_assert(GLOBE_IMAGERY_TILE_PAGES == 4, "surface_textures.glsl declares four pages");
+static_assert(GLOBE_TERRAIN_DETAIL_BINDING > GLOBE_TERRAIN_IMAGERY_BINDING_ATMOSPHERE);
+static_assert(GLOBE_TERRAIN_SURFACE_BINDING > GLOBE_TERRAIN_DETAIL_BINDING);
 static_assert(sizeof(TerrainReprojectionFrame) == 32 && sizeof(TerrainReprojectionNode) == 32);
 }  // namespace globe::gpu
 #endif

@@ -70,9 +70,9 @@ struct TerrainVertex {
   float hole;       // hole mask of elevation sources (payload surface word, morphed; >= 0.5 is discarded)
   float morph;      // k in [0, 1]
   uint level;       // level the node is drawn at (TerrainInstance.info.z)
-  // Normal map (payload_layout.h): where the vertex is in its node's (u, v) square, [0, 1]^2 (morphed
-  // with the position), the first texel of the slot's map (uvec2 index in the page), and the weight
-  // of the map's parent level (k; 1 for partial nodes, which stand for their parent).
+  // Surface textures (payload_layout.h): where the vertex is in its node's (u, v) square, [0, 1]^2
+  // (morphed with the position), the slot's layer in its page, and the weight of the map's parent
+  // level (k; 1 for partial nodes, which stand for their parent).
   vec2 mapUv;
   uint mapBase;
   float mapBlend;
@@ -88,7 +88,7 @@ struct TerrainVertex {
 // The land cover masks of the slot's mesh sample `sampleIndex` (payload_layout.h) as weights.
 void terrainCoverMasks(uint base, uint sampleIndex, out vec4 m0, out vec4 m1) {
   uint cells = frame.options.x;
-  vec4 pair = payload[base + GLOBE_PAYLOAD_COVER_OFFSET(cells, frame.options.w / cells) + sampleIndex / 2u];
+  vec4 pair = payload[base + GLOBE_PAYLOAD_COVER_OFFSET(cells) + sampleIndex / 2u];
   uvec2 words = (sampleIndex & 1u) != 0u ? floatBitsToUint(pair.zw) : floatBitsToUint(pair.xy);
   m0 = unpackUnorm4x8(words.x);
   m1 = unpackUnorm4x8(words.y);
@@ -221,7 +221,7 @@ TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCell
   v.morph = k;
   v.level = inst.info.z;
   v.mapUv = mapUv;
-  v.mapBase = (base + 2u * normals) * 2u;
+  v.mapBase = inst.imagery.y;
   v.mapBlend = stride == 2u ? 1.0 : k;
   v.imageryCell = inst.imagery.x;
   v.cover0 = cover0;

@@ -135,7 +135,7 @@ class ExtremesTest : public GpuTest {
   // Copies the meshes of the drawn nodes' payload slots to the host, in selection order (not the
   // normal maps: their texels are not floats).
   std::vector<glm::vec4> readSlots(const Scene& s, const std::vector<uint32_t>& slots) {
-    const VkDeviceSize slotBytes = s.terrain->generator().slotBytes();
+    const VkDeviceSize slotBytes = GpuPayloadGenerator::bufferSlotBytes(kCells);
     const VkDeviceSize meshBytes = GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells) * 16u;
     vk::Buffer host(device(), std::max<VkDeviceSize>(1, slots.size()) * meshBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                     vk::MemoryUse::HostVisible, "extremes payload readback");
@@ -418,7 +418,7 @@ class ExtremesTest : public GpuTest {
         for (uint32_t i = 0; i < selection.nodes.size() && instance == UINT32_MAX; ++i) {
           const gpu::TerrainInstance& r = records[i];
           if (r.info.x ==
-                  pages.localSlot(slot) * GLOBE_PAYLOAD_SLOT_VEC4(kCells, s.terrain->settings().normalMapScale) &&
+                  pages.localSlot(slot) * GLOBE_PAYLOAD_SLOT_VEC4(kCells) &&
               r.info.y == 1u && r.offset.x == offset.x && r.offset.y == offset.y && r.offset.z == offset.z)
             instance = i;
         }

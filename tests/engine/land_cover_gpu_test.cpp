@@ -54,9 +54,9 @@ const ElevationModel& coveredModel() {
 using Masks = std::array<uint8_t, 8>;
 
 Masks masksAt(const std::vector<glm::vec4>& slots, size_t slot, size_t sample) {
-  const size_t perSlot = GLOBE_PAYLOAD_SLOT_VEC4(kCells, 0);
+  const size_t perSlot = GLOBE_PAYLOAD_SLOT_VEC4(kCells);
   const auto* bytes =
-      reinterpret_cast<const unsigned char*>(slots.data() + slot * perSlot + GLOBE_PAYLOAD_COVER_OFFSET(kCells, 0));
+      reinterpret_cast<const unsigned char*>(slots.data() + slot * perSlot + GLOBE_PAYLOAD_COVER_OFFSET(kCells));
   Masks m;
   std::memcpy(m.data(), bytes + sample * 8, 8);
   return m;
@@ -80,7 +80,7 @@ TEST_F(LandCoverGpuTest, MasksMatchTheCpuReferenceAndSumTo255) {
     for (int k = 0; k < 3; ++k) nodes.push_back({uint8_t(rng() % 30), uint8_t(level), cell(rng), cell(rng)});
   }
   const std::vector<glm::vec4> gpu = generate(nodes);
-  const size_t perSlot = GLOBE_PAYLOAD_SLOT_VEC4(kCells, 0);
+  const size_t perSlot = GLOBE_PAYLOAD_SLOT_VEC4(kCells);
   std::vector<glm::vec4> cpu(perSlot);
   size_t compared = 0, differing = 0;
   int worst = 0;
@@ -124,7 +124,7 @@ TEST_F(LandCoverGpuTest, NeighboursHoldTheSameMasksOnSharedEdges) {
     }
   }
   const std::vector<glm::vec4> gpu = generate(nodes);
-  const size_t perSlot = GLOBE_PAYLOAD_SLOT_VEC4(kCells, 0);
+  const size_t perSlot = GLOBE_PAYLOAD_SLOT_VEC4(kCells);
   int compared = 0;
   for (auto [ia, edge] : pairs) {
     const glm::dvec3 ca = payloadCentre(nodes[ia], coveredModel()), cb = payloadCentre(nodes[ia + 1], coveredModel());

@@ -1,4 +1,4 @@
-// Payload normal maps (docs/rendering.md, "Normal maps"): GPU texels against the CPU double
+// Payload surface textures (docs/rendering.md, "Surface textures"): GPU texels against the CPU double
 // reference, agreement across node edges and face seams, and the pool's budget per slot.
 #include "engine/generation/payload_generator.h"
 #include "planet/geometry/node_id.h"
@@ -9,9 +9,12 @@
 #include "tests/support/fake_payload_generator.h"
 #include "tests/support/gpu_test.h"
 
+#include "engine/vk/resources.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace globe::testing {
@@ -19,43 +22,87 @@ namespace {
 
 constexpr uint32_t kCells = 16;
 
-// The normal map texels of `nodes` generated into slots 0..n-1 at map scale `scale`, per node.
-std::vector<std::vector<glm::uvec2>> generateMaps(vk::Device& device, const ElevationModel& model,
-                                                  const std::vector<NodeId>& nodes, uint32_t scale) {
+// One texel of the surface textures as stored (payload_layout.h): RGBA16_SNORM normal and coast
+// field, RGBA8_UNORM square root of the albedo.
+struct StoredTexel {
+  std::array<int16_t, 4> normal{};
+  std::array<uint8_t, 4> albedo{};
+  bool operator==(const StoredTexel&) const = default;
+};
+
+double snorm(int16_t v) { return std::max(double(v) / 32767.0, -1.0); }
+glm::dvec3 storedNormal(const StoredTexel& t) { return {snorm(t.normal[0]), snorm(t.normal[1]), snorm(t.normal[2])}; }
+double storedCoast(const StoredTexel& t) { return snorm(t.normal[3]); }
+
+// The surface textures' texels of `nodes` generated into slots 0..n-1 at map scale `scale`, per node
+// in the reference's order (level 0, then level 1: normalMapReference).
+std::vector<std::vector<StoredTexel>> generateMaps(vk::Device& device, const ElevationModel& model,
+                                                   const std::vector<NodeId>& nodes, uint32_t scale) {
   GpuPayloadGenerator gen(device, model, kCells, GLOBE_PAYLOAD_MAX_BATCH, 1, GenerationPrecision::kDouble, false,
                           scale);
   gen.reserveSlots(uint32_t(nodes.size()));
   EXPECT_EQ(generateIntoSlots(gen, nodes).size(), nodes.size());
-  vk::Buffer readback(device, gen.payloads().size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::HostVisible,
-                      "normal map readback");
+  const SurfaceTextures& textures = gen.surfaceTextures();
+  EXPECT_EQ(textures.pageCount(), 1u);
+  const uint32_t w = textures.width(), h = textures.height(), m = kCells * scale;
+  const VkDeviceSize layerTexels = VkDeviceSize(w) * h, layers = nodes.size();
+  vk::Buffer normals(device, layerTexels * layers * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::HostVisible,
+                     "surface normals readback");
+  vk::Buffer albedo(device, layerTexels * layers * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::HostVisible,
+                    "surface albedo readback");
   device.submitAndWait([&](VkCommandBuffer cmd) {
-    VkBufferCopy copy{0, 0, gen.payloads().size()};
-    vkCmdCopyBuffer(cmd, gen.payloads().handle(), readback.handle(), 1, &copy);
+    VkBufferImageCopy copy{};
+    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, uint32_t(layers)};
+    copy.imageExtent = {w, h, 1};
+    const VkImageSubresourceRange all{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, VK_REMAINING_ARRAY_LAYERS};
+    for (const auto& [image, buffer] : {std::pair{textures.normalsImage(0), normals.handle()},
+                                        std::pair{textures.albedoImage(0), albedo.handle()}}) {
+      vk::transitionImage(cmd, image, all, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+      vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer, 1, &copy);
+      vk::transitionImage(cmd, image, all, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL);
+    }
+    vk::hostReadBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
   });
-  const auto* words = static_cast<const glm::uvec2*>(readback.mapped());
-  const size_t slotTexels = gen.slotBytes() / sizeof(glm::uvec2), meshTexels = GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells) * 2;
-  std::vector<std::vector<glm::uvec2>> maps;
+  const auto* n = static_cast<const std::array<int16_t, 4>*>(normals.mapped());
+  const auto* a = static_cast<const std::array<uint8_t, 4>*>(albedo.mapped());
+  std::vector<std::vector<StoredTexel>> maps(nodes.size());
   for (size_t k = 0; k < nodes.size(); ++k) {
-    const glm::uvec2* first = words + k * slotTexels + meshTexels;
-    maps.emplace_back(first, first + normalMapTexelCount(kCells * scale));
+    for (uint32_t level = 0; level < 2; ++level) {
+      const uint32_t side = (m >> level) + 1, first = level == 0 ? 0 : m + 1;
+      for (uint32_t t = 0; t < side * side; ++t) {
+        const size_t at = k * layerTexels + size_t(t / side) * w + first + t % side;
+        maps[k].push_back({n[at], a[at]});
+      }
+    }
   }
   return maps;
 }
 
-int albedoStep(glm::uvec2 a, glm::uvec2 b) {
+uint8_t rootByte(float linear) { return uint8_t(std::lround(std::sqrt(std::clamp(linear, 0.0f, 1.0f)) * 255.0f)); }
+
+int albedoStep(const StoredTexel& t, const glm::vec3& linear) {
   int worst = 0;
-  for (int c = 0; c < 3; ++c)
-    worst = std::max(worst, std::abs(int((a.y >> (8 * c)) & 0xffu) - int((b.y >> (8 * c)) & 0xffu)));
+  for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(int(t.albedo[size_t(c)]) - int(rootByte(linear[c]))));
   return worst;
 }
+
+int albedoStep(const StoredTexel& a, const StoredTexel& b) {
+  int worst = 0;
+  for (size_t c = 0; c < 3; ++c) worst = std::max(worst, std::abs(int(a.albedo[c]) - int(b.albedo[c])));
+  return worst;
+}
+
+// One step of RGBA16_SNORM: the stored normal is the double one rounded once per component.
+constexpr double kSnormStep = 1.0 / 32767.0;
 
 class NormalMapTest : public GpuTest {};
 class NormalMapShapeTest : public GpuTest, public ::testing::WithParamInterface<PlanetShapeCase> {};
 INSTANTIATE_TEST_SUITE_P(Shapes, NormalMapShapeTest, ::testing::Values(kPlanetShapes[0], kPlanetShapes[1]),
                          planetShapeName);
 
-// Decoded GPU normals within 1e-5 of the CPU's double normals, albedo within one 8-bit step, at
-// depths 0..26, at face corners and seams, at every map scale.
+// Stored GPU normals within the 16-bit rounding of the CPU's double normals, albedo within one 8-bit
+// step, the coast field within two 16-bit steps, at depths 0..26, at face corners and seams, at every
+// map scale.
 TEST_P(NormalMapShapeTest, MatchesCpuDoubleReference) {
   const ElevationModel& model = earthlikeModel(GetParam());
   std::vector<NodeId> nodes;
@@ -75,12 +122,13 @@ TEST_P(NormalMapShapeTest, MatchesCpuDoubleReference) {
       const auto reference = normalMapReference(model, makePayloadJob(nodes[k], 0, model), kCells, scale);
       ASSERT_EQ(reference.size(), maps[k].size());
       for (size_t t = 0; t < reference.size(); ++t) {
-        const double error = glm::length(normalMapTexelNormal(maps[k][t]) - reference[t].normal);
+        const double error = glm::length(storedNormal(maps[k][t]) - reference[t].normal);
         worstNormal = std::max(worstNormal, error);
-        ASSERT_LE(error, 1e-5) << "texel " << t;
-        const int step = albedoStep(maps[k][t], packNormalMapTexel(reference[t]));
+        ASSERT_LE(error, kSnormStep) << "texel " << t;
+        const int step = albedoStep(maps[k][t], reference[t].albedo);
         worstAlbedo = std::max(worstAlbedo, step);
         ASSERT_LE(step, 1) << "texel " << t;
+        ASSERT_NEAR(storedCoast(maps[k][t]), reference[t].coast, 2.0 * kSnormStep) << "texel " << t;
       }
     }
     RecordProperty("worst_normal_scale" + std::to_string(scale), std::to_string(worstNormal));
@@ -90,8 +138,8 @@ TEST_P(NormalMapShapeTest, MatchesCpuDoubleReference) {
 
 // Border texels of a node and its edge neighbour at the same level lie at the same directions and
 // hold the same texel: bit-identical within a face; across a face seam (the neighbour's axes are
-// turned, so its differences are taken in another order) within one quantisation step of the
-// normal and one albedo step. Both levels of the map. Across seams the edge's end texels are
+// turned, so its differences are taken in another order) within one 16-bit step of the normal and
+// the coast field and one albedo step. Both levels of the map. Across seams the edge's end texels are
 // skipped: they may be polyhedron vertices, where 3 or 5 faces meet and no neighbourhood is shared.
 TEST_P(NormalMapShapeTest, BorderTexelsAgreeAcrossNodeEdgesAndFaceSeams) {
   const ElevationModel& model = earthlikeModel(GetParam());
@@ -122,15 +170,16 @@ TEST_P(NormalMapShapeTest, BorderTexelsAgreeAcrossNodeEdgesAndFaceSeams) {
             if (glm::length(direction(b, tb) - da) > 1e-13) continue;
             const bool corner = (ia == 0 || ia == side - 1) && (ja == 0 || ja == side - 1);
             if (seam && corner) continue;  // an end of a seam edge: maybe a polyhedron vertex
-            const glm::uvec2 va = maps[base][first + ta], vb = maps[base + 1 + e][first + tb];
+            const StoredTexel va = maps[base][first + ta], vb = maps[base + 1 + e][first + tb];
             ++compared;
             if (!seam) {
-              EXPECT_EQ(va, vb) << "node " << base / 5 << " edge " << e << " level " << level << " texel " << ta;
+              EXPECT_TRUE(va == vb) << "node " << base / 5 << " edge " << e << " level " << level << " texel " << ta;
               continue;
             }
             ++acrossSeams;
-            EXPECT_LE(glm::length(normalMapTexelNormal(va) - normalMapTexelNormal(vb)), 6e-6)
-                << "node " << base / 5 << " edge " << e << " level " << level << " texel " << ta;
+            for (size_t c = 0; c < 4; ++c)
+              EXPECT_LE(std::abs(int(va.normal[c]) - int(vb.normal[c])), 1)
+                  << "node " << base / 5 << " edge " << e << " level " << level << " texel " << ta << " channel " << c;
             EXPECT_LE(albedoStep(va, vb), 1);
           }
         }
@@ -155,27 +204,26 @@ TEST_F(NormalMapTest, ChildParentLevelEqualsParentMap) {
   const auto maps = generateMaps(device(), model, nodes, scale);
   for (size_t base = 0; base < nodes.size(); base += 5) {
     for (uint32_t q = 0; q < 4; ++q) {
-      const std::vector<glm::uvec2>& child = maps[base + 1 + q];
+      const std::vector<StoredTexel>& child = maps[base + 1 + q];
       for (uint32_t b = 0; b <= half; ++b)
         for (uint32_t a = 0; a <= half; ++a) {
-          const glm::uvec2 mine = child[(m + 1) * (m + 1) + b * (half + 1) + a];
-          const glm::uvec2 parents = maps[base][((q >> 1) * half + b) * (m + 1) + (q & 1u) * half + a];
-          ASSERT_EQ(mine, parents) << "parent " << base / 5 << " quadrant " << q << " texel " << a << ", " << b;
+          const StoredTexel mine = child[(m + 1) * (m + 1) + b * (half + 1) + a];
+          const StoredTexel parents = maps[base][((q >> 1) * half + b) * (m + 1) + (q & 1u) * half + a];
+          ASSERT_TRUE(mine == parents) << "parent " << base / 5 << " quadrant " << q << " texel " << a << ", " << b;
         }
     }
   }
 }
 
-// The pool's slot count comes from the whole slot: mesh, normal map and land cover masks.
+// The pool's slot count comes from the whole slot: mesh, land cover masks and surface texture layers.
 TEST(NormalMapBudgetTest, PoolBudgetCountsTheNormalMap) {
   const size_t mesh = 2 * 19 * 19 * 16;         // 16 cells: 19 x 19 samples, position + normal vec4
   const size_t cover = (19 * 19 + 1) / 2 * 16;  // 8 mask bytes a sample
   EXPECT_EQ(GpuPayloadGenerator::slotBytesFor(kCells, 0), mesh + cover);
   for (uint32_t scale : {1u, 2u, 4u}) {
-    const size_t m = kCells * scale, texels = (m + 1) * (m + 1) + (m / 2 + 1) * (m / 2 + 1);
+    const size_t m = kCells * scale, texels = (m + 1 + m / 2 + 1) * (m + 1);
     const size_t slot = GpuPayloadGenerator::slotBytesFor(kCells, scale);
-    EXPECT_EQ(slot, mesh + (texels + 1) / 2 * 16 + cover) << scale;
-    EXPECT_EQ(slot % 16, 0u);
+    EXPECT_EQ(slot, mesh + cover + texels * (8 + 4)) << scale;
     FakePayloadGenerator generator(slot, 6371000.0, {6.36e6, 6.38e6});
     StreamingConfig config;
     config.vramBudget_MiB = 64.0;

@@ -68,7 +68,7 @@ TEST_P(PayloadGeneratorShapeTest, MatchesCpuReferenceAtEveryDepth) {
   std::vector<GenerationResult> results;
   auto gpu = generate(gen, nodes, results);
   ASSERT_EQ(results.size(), nodes.size());
-  const size_t perSlot = GLOBE_PAYLOAD_SLOT_VEC4(kCells, 0);
+  const size_t perSlot = GLOBE_PAYLOAD_SLOT_VEC4(kCells);
   const size_t samples = GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells) / 2;
   std::vector<glm::vec4> cpu(perSlot);
   double worstRadius = 0, worstElevation = 0, worstNormal = 0, worstError = 0, worstHeight = 0;
@@ -135,7 +135,7 @@ TEST_F(PayloadGeneratorTest, WaterSurfaceMatchesCpuReferenceAndMarksTheWetSlots)
   std::vector<GenerationResult> results;
   auto gpu = generate(gen, nodes, results);
   ASSERT_EQ(results.size(), nodes.size());
-  const size_t perSlot = GLOBE_PAYLOAD_SLOT_VEC4(kCells, 0), samples = GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells) / 2,
+  const size_t perSlot = GLOBE_PAYLOAD_SLOT_VEC4(kCells), samples = GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells) / 2,
                side = kCells + 3;
   const double sea_m = model_->seaLevel_m();
   std::vector<glm::vec4> cpu(perSlot);
@@ -179,7 +179,7 @@ TEST_F(PayloadGeneratorTest, FloatVariantIsTheFloatModel) {
   std::vector<GenerationResult> results;
   auto gpu = generate(gen, nodes, results);
   ASSERT_EQ(results.size(), nodes.size());
-  const size_t perSlot = GLOBE_PAYLOAD_SLOT_VEC4(kCells, 0);
+  const size_t perSlot = GLOBE_PAYLOAD_SLOT_VEC4(kCells);
   const int side = int(kCells) + 3;
   double worstHeight = 0, worstPosition = 0;
   for (size_t k = 0; k < nodes.size(); ++k) {
@@ -224,9 +224,9 @@ TEST_F(PayloadGeneratorTest, PagesSplitTheBufferWithoutChangingPayloads) {
   ASSERT_EQ(whole.size(), split.size());
   // Slot by slot, what the kernel writes: without land cover the masks' region is never written, and
   // with it the region's last 8 bytes are padding when the sample count is odd.
-  const size_t perSlot = GLOBE_PAYLOAD_SLOT_VEC4(kCells, 0);
+  const size_t perSlot = GLOBE_PAYLOAD_SLOT_VEC4(kCells);
   const size_t samples = (kCells + 3) * (kCells + 3);
-  const size_t written = GLOBE_PAYLOAD_COVER_OFFSET(kCells, 0) * sizeof(glm::vec4) +
+  const size_t written = GLOBE_PAYLOAD_COVER_OFFSET(kCells) * sizeof(glm::vec4) +
                          (model_->landCover().class_count > 0 ? samples * sizeof(glm::uvec2) : 0);
   for (size_t k = 0; k < nodes.size(); ++k)
     EXPECT_EQ(std::memcmp(&whole[k * perSlot], &split[k * perSlot], written), 0) << k;
@@ -260,7 +260,7 @@ TEST_F(PayloadGeneratorTest, NeighboursAgreeExactlyOnSharedEdges) {
   gen.reserveSlots(uint32_t(nodes.size()));
   std::vector<GenerationResult> results;
   auto gpu = generate(gen, nodes, results);
-  const size_t perSlot = GLOBE_PAYLOAD_SLOT_VEC4(kCells, 0);
+  const size_t perSlot = GLOBE_PAYLOAD_SLOT_VEC4(kCells);
   const int s = int(kCells) + 3;
   int compared = 0, seams = 0;
   for (auto [ia, edge] : pairs) {

@@ -43,7 +43,7 @@ void compareSourcePayloads(vk::Device& device, const ElevationModel& model, cons
   const std::vector<GenerationResult> results = generateIntoSlots(gen, nodes);
   ASSERT_EQ(results.size(), nodes.size());
   const std::vector<glm::vec4> gpu = readPayloadBuffer(device, gen);
-  const size_t perSlot = GLOBE_PAYLOAD_SLOT_VEC4(cells, 0), samples = GLOBE_PAYLOAD_VEC4_PER_SLOT(cells) / 2;
+  const size_t perSlot = GLOBE_PAYLOAD_SLOT_VEC4(cells), samples = GLOBE_PAYLOAD_VEC4_PER_SLOT(cells) / 2;
   std::vector<glm::vec4> cpu(perSlot);
   double worstRadius = 0.0, worstElevation = 0.0;
   int holeSamples = 0;

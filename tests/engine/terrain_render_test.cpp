@@ -29,7 +29,6 @@ namespace globe::testing {
 namespace {
 
 constexpr uint32_t kCells = 16;          // smallest grid: keeps CPU payload filling and lavapipe fast
-constexpr uint32_t kNormalMapScale = 1;  // TerrainStyle's default: the renderer reads maps of this scale
 constexpr uint32_t kWidth = 160, kHeight = 120;
 constexpr double kRadius_m = 6371000.0;
 // Clear colour the terrain never writes (alpha 0: every terrain fragment has alpha 1).
@@ -63,7 +62,7 @@ class CpuPayloads final : public NodeResidency {
   CpuPayloads(vk::Device& device, const ElevationModel& model, uint32_t capacity)
       : model_(model),
         capacity_(capacity),
-        buffer_(device, VkDeviceSize(capacity) * GLOBE_PAYLOAD_SLOT_VEC4(kCells, kNormalMapScale) * 16u,
+        buffer_(device, VkDeviceSize(capacity) * GLOBE_PAYLOAD_SLOT_VEC4(kCells) * 16u,
                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::HostVisible, "test payloads") {}
 
   struct Entry {
@@ -84,9 +83,8 @@ class CpuPayloads final : public NodeResidency {
     e.centre_m = {job.centre.x, job.centre.y, job.centre.z};
     auto all = buffer_.as<glm::vec4>();
     e.vertices = fillPayloadReference(model_, job, kCells,
-                                      all.subspan(size_t(e.slot) * GLOBE_PAYLOAD_SLOT_VEC4(kCells, kNormalMapScale),
-                                                  GLOBE_PAYLOAD_SLOT_VEC4(kCells, kNormalMapScale)),
-                                      false, kNormalMapScale);
+                                      all.subspan(size_t(e.slot) * GLOBE_PAYLOAD_SLOT_VEC4(kCells),
+                                                  GLOBE_PAYLOAD_SLOT_VEC4(kCells)));
     e.padded = paddedRadiusRange(model_.params(), e.vertices, id.level, kCells);
     e.geometricError_m = payloadGeometricError_m(slot(e.slot), kCells);
     return entries_.emplace(id, e).first->second;
@@ -104,8 +102,8 @@ class CpuPayloads final : public NodeResidency {
   const vk::Buffer& buffer() const { return buffer_; }
   PayloadPages pages() const { return PayloadPages::single(buffer_.handle(), buffer_.size(), capacity_); }
   std::span<glm::vec4> slot(uint32_t s) const {
-    return buffer_.as<glm::vec4>().subspan(size_t(s) * GLOBE_PAYLOAD_SLOT_VEC4(kCells, kNormalMapScale),
-                                           GLOBE_PAYLOAD_SLOT_VEC4(kCells, kNormalMapScale));
+    return buffer_.as<glm::vec4>().subspan(size_t(s) * GLOBE_PAYLOAD_SLOT_VEC4(kCells),
+                                           GLOBE_PAYLOAD_SLOT_VEC4(kCells));
   }
 
  private:
