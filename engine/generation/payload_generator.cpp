@@ -36,10 +36,12 @@ std::array<uint32_t, GLOBE_PAYLOAD_SPEC_LAND_COVER + 1> payloadSpecialization(co
   return values;
 }
 
-// The surface textures' storage images (payload_layout.h's bindings).
-constexpr std::array<vk::ImageSlot, 2> kSurfaceStorageSlots{
+// The surface textures' storage images (payload_layout.h's bindings): both mips' normals and albedo.
+constexpr std::array<vk::ImageSlot, 4> kSurfaceStorageSlots{
     vk::ImageSlot{GLOBE_PAYLOAD_NORMALS_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-    vk::ImageSlot{GLOBE_PAYLOAD_ALBEDO_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}};
+    vk::ImageSlot{GLOBE_PAYLOAD_ALBEDO_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+    vk::ImageSlot{GLOBE_PAYLOAD_PARENT_NORMALS_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+    vk::ImageSlot{GLOBE_PAYLOAD_PARENT_ALBEDO_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}};
 
 }  // namespace
 
@@ -83,9 +85,8 @@ GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationMode
   timestampPeriod_ns_ = double(device.properties().limits.timestampPeriod);
 
   size_t samples = size_t(cells + 3) * size_t(cells + 3);
-  // The scratch holds a job's double positions: the mesh samples, then (reused) the normal map's grid.
-  const size_t mapSide = normalMapScale > 0 ? size_t(cells) * normalMapScale + 5 : 0;
-  const size_t scratchPerJob = std::max(samples, mapSide * mapSide);
+  // The scratch holds a job's double positions: the mesh samples, then (reused) the normal map's grids.
+  const size_t scratchPerJob = std::max(samples, size_t(GLOBE_SURFACE_EVALUATIONS(cells * normalMapScale)));
   batches_.resize(batchCount);
   for (uint32_t b = 0; b < batchCount; ++b) {
     Batch& batch = batches_[b];

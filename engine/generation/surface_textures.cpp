@@ -13,13 +13,14 @@ namespace {
 constexpr std::array<VkFormat, 2> kFormats{kSurfaceNormalsFormat, kSurfaceAlbedoFormat};
 constexpr std::array<const char*, 2> kNames{"surface normals", "surface albedo"};
 
-vk::UniqueImage createLayers(vk::Device& device, VkFormat format, uint32_t width, uint32_t height, uint32_t layers,
-                             const char* name) {
+constexpr uint32_t kMips = 2;  // the node's map and its parent's over its quadrant (payload_layout.h)
+
+vk::UniqueImage createLayers(vk::Device& device, VkFormat format, uint32_t side, uint32_t layers, const char* name) {
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
   info.imageType = VK_IMAGE_TYPE_2D;
   info.format = format;
-  info.extent = {width, height, 1};
-  info.mipLevels = 1;
+  info.extent = {side, side, 1};
+  info.mipLevels = kMips;
   info.arrayLayers = layers;
   info.samples = VK_SAMPLE_COUNT_1_BIT;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
@@ -32,24 +33,27 @@ vk::UniqueImage createLayers(vk::Device& device, VkFormat format, uint32_t width
   return vk::UniqueImage(device.device(), image);
 }
 
-vk::UniqueImageView createLayersView(VkDevice device, VkImage image, VkFormat format, uint32_t layers) {
+// Mips [firstMip, firstMip + mips) of every layer.
+vk::UniqueImageView createLayersView(VkDevice device, VkImage image, VkFormat format, uint32_t layers,
+                                     uint32_t firstMip, uint32_t mips) {
   VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
   info.image = image;
   info.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
   info.format = format;
-  info.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, layers};
+  info.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, firstMip, mips, 0, layers};
   VkImageView view;
   GLOBE_VK_CHECK(vkCreateImageView(device, &info, nullptr, &view));
   return vk::UniqueImageView(device, view);
 }
 
-// Bilinear, clamped: the fragment stages address texel centres inside the slot's own level, so
-// the filter never reaches the neighbouring level or the layer's edge.
+// Trilinear, clamped: the fragment stages give the LOD (the morph factor) and address the node's own
+// cells, whose bilinear footprint stays inside the gutter.
 vk::UniqueSampler createClampSampler(VkDevice device) {
   VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   info.magFilter = VK_FILTER_LINEAR;
   info.minFilter = VK_FILTER_LINEAR;
-  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
+  info.maxLod = float(kMips - 1);
   info.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
@@ -59,21 +63,16 @@ vk::UniqueSampler createClampSampler(VkDevice device) {
   return vk::UniqueSampler(device, sampler);
 }
 
-size_t texelBytes(VkFormat format) { return format == kSurfaceNormalsFormat ? 8 : 4; }
-
 }  // namespace
 
 size_t SurfaceTextures::bytesPerSlot(uint32_t mapCells) {
-  if (mapCells == 0) return 0;
-  const size_t texels = size_t(GLOBE_SURFACE_TEXTURE_WIDTH(mapCells)) * GLOBE_SURFACE_TEXTURE_HEIGHT(mapCells);
-  return texels * (texelBytes(kFormats[0]) + texelBytes(kFormats[1]));
+  return size_t(GLOBE_NORMAL_MAP_TEXELS(mapCells)) * 2 * 4;  // both mips, two RGBA8 texels
 }
 
 SurfaceTextures::SurfaceTextures(vk::Device& device, uint32_t mapCells, uint32_t slots, uint32_t slotsPerPage)
     : mapCells_(mapCells) {
   if (mapCells > 0) {
-    width_ = GLOBE_SURFACE_TEXTURE_WIDTH(mapCells);
-    height_ = GLOBE_SURFACE_TEXTURE_HEIGHT(mapCells);
+    side_ = GLOBE_SURFACE_TEXTURE_SIDE(mapCells);
   } else {
     slots = slotsPerPage = 1;
   }
@@ -85,7 +84,7 @@ SurfaceTextures::SurfaceTextures(vk::Device& device, uint32_t mapCells, uint32_t
   device.submitAndWait([&](VkCommandBuffer cmd) {
     for (const Page& page : pages_)
       for (const vk::UniqueImage& image : page.images)
-        vk::transitionImage(cmd, image, {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, VK_REMAINING_ARRAY_LAYERS},
+        vk::transitionImage(cmd, image, {VK_IMAGE_ASPECT_COLOR_BIT, 0, kMips, 0, VK_REMAINING_ARRAY_LAYERS},
                             VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
   });
 }
@@ -95,7 +94,7 @@ SurfaceTextures::Page SurfaceTextures::makePage(vk::Device& device, uint32_t lay
   // One allocation for both images: the normals first, the albedo at its alignment after them.
   std::array<VkMemoryRequirements, 2> req{};
   for (size_t i = 0; i < 2; ++i) {
-    page.images[i] = createLayers(device, kFormats[i], width_, height_, layers, kNames[i]);
+    page.images[i] = createLayers(device, kFormats[i], side_, layers, kNames[i]);
     vkGetImageMemoryRequirements(device.device(), page.images[i], &req[i]);
   }
   const VkDeviceSize second = (req[0].size + req[1].alignment - 1) / req[1].alignment * req[1].alignment;
@@ -105,16 +104,23 @@ SurfaceTextures::Page SurfaceTextures::makePage(vk::Device& device, uint32_t lay
   page.memory = vk::allocateMemory(device, both, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
   GLOBE_VK_CHECK(vkBindImageMemory(device.device(), page.images[0], page.memory, 0));
   GLOBE_VK_CHECK(vkBindImageMemory(device.device(), page.images[1], page.memory, second));
-  for (size_t i = 0; i < 2; ++i) page.views[i] = createLayersView(device.device(), page.images[i], kFormats[i], layers);
+  for (size_t i = 0; i < 2; ++i) {
+    page.views[i] = createLayersView(device.device(), page.images[i], kFormats[i], layers, 0, kMips);
+    for (uint32_t mip = 0; mip < kMips; ++mip)
+      page.storageViews[2 * mip + i] = createLayersView(device.device(), page.images[i], kFormats[i], layers, mip, 1);
+  }
   return page;
 }
 
-std::array<vk::ImageDescriptor, 2> SurfaceTextures::storage(uint32_t page) const {
-  const Page& p = pages_[page];
-  return {vk::ImageDescriptor{{GLOBE_PAYLOAD_NORMALS_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-                              {VK_NULL_HANDLE, p.views[0], VK_IMAGE_LAYOUT_GENERAL}},
-          vk::ImageDescriptor{{GLOBE_PAYLOAD_ALBEDO_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-                              {VK_NULL_HANDLE, p.views[1], VK_IMAGE_LAYOUT_GENERAL}}};
+std::array<vk::ImageDescriptor, 4> SurfaceTextures::storage(uint32_t page) const {
+  static_assert(GLOBE_PAYLOAD_ALBEDO_BINDING == GLOBE_PAYLOAD_NORMALS_BINDING + 1 &&
+                GLOBE_PAYLOAD_PARENT_NORMALS_BINDING == GLOBE_PAYLOAD_NORMALS_BINDING + 2 &&
+                GLOBE_PAYLOAD_PARENT_ALBEDO_BINDING == GLOBE_PAYLOAD_NORMALS_BINDING + 3);
+  std::array<vk::ImageDescriptor, 4> images;
+  for (uint32_t k = 0; k < 4; ++k)
+    images[k] = {{GLOBE_PAYLOAD_NORMALS_BINDING + k, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+                 {VK_NULL_HANDLE, pages_[page].storageViews[k], VK_IMAGE_LAYOUT_GENERAL}};
+  return images;
 }
 
 std::array<vk::ImageDescriptor, 2> SurfaceTextures::sampled(uint32_t page, uint32_t normalsBinding) const {

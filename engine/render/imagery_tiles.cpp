@@ -37,9 +37,8 @@ Result<std::unique_ptr<ImageryTiles>> ImageryTiles::create(vk::Device& device, c
   // maxImageArrayLayers layers (and buffer windows of at most one binding).
   const VkPhysicalDeviceLimits& limits = device.properties().limits;
   // Pages of a multiple of 16 slots start at an aligned offset (GpuPayloadGenerator::reserveSlots).
-  VkDeviceSize perBinding =
-      std::min<VkDeviceSize>(limits.maxStorageBufferRange / GpuPayloadGenerator::bufferSlotBytes(kTileGrid),
-                             limits.maxImageArrayLayers);
+  VkDeviceSize perBinding = std::min<VkDeviceSize>(
+      limits.maxStorageBufferRange / GpuPayloadGenerator::bufferSlotBytes(kTileGrid), limits.maxImageArrayLayers);
   if (settings.slotsPerPage > 0) perBinding = std::min<VkDeviceSize>(perBinding, settings.slotsPerPage);
   const uint32_t perPage = std::max(uint32_t(perBinding) / 16u * 16u, 16u);
   config.maxSlots = perPage * kImageryTilePages;

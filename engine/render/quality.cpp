@@ -11,7 +11,9 @@ TerrainSettings terrainSettingsFor(QualityPreset preset) {
       // Tolerance-driven ranges: 11 % fewer triangles over the seven trade cameras than the distance
       // multiplier 0.25 it replaces, worst p95 12.0 px instead of 12.5 (docs/tradeoffs.md, "Presets").
       s.ranges.tolerance_px = 32.0;
-      s.normalMapScale = 0;      // light per vertex, as balanced
+      // Per-pixel light, colour and coast from surface textures of 16 texels a node (2 x 2 per grid cell
+      // less than balanced: a fifth of its map generation; docs/rendering.md, "Surface textures").
+      s.normalMapScale = 1;
       s.detailTextures = false;  // as balanced
       s.atmosphere = AtmosphereDetail::kSky;
       break;
@@ -24,9 +26,10 @@ TerrainSettings terrainSettingsFor(QualityPreset preset) {
       // Depth 24 instead of 20: the same nodes above ~100 m, and at the 2 m camera p95 6.1 px
       // instead of 10.5 px for the same frame time (globe trade, 2026-11-22).
       s.ranges.maxDepth = 24;
-      // Light per vertex: with normal maps (scale 1) the flight's CPU doubles on lavapipe and its
-      // median would pass 33 ms (docs/rendering.md, "Normal maps").
-      s.normalMapScale = 0;
+      // Per-pixel light, colour and coast from the payloads' surface textures, 32 texels a node side:
+      // the flyover's median 32.9 ms on lavapipe where scale 4 (64 texels) spends 3.6 ms a frame
+      // generating them and reaches 36.5 ms (docs/rendering.md, "Surface textures").
+      s.normalMapScale = 2;
       // Land cover colours per vertex: the splat's detail textures took the flight's median from 21
       // to 33 ms on lavapipe (docs/rendering.md, "Land cover").
       s.detailTextures = false;

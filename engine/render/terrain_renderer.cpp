@@ -100,28 +100,27 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
       // surface and the hole's rim are seen from below through the hole too.
       // The reprojected positions (a measurement only) are drawn without the atmosphere.
       atmosphere_(positions == VertexPositions::kStored && style.aerialPerspective ? style.atmosphere : nullptr),
-      pendingOptional_(std::async(
-          std::launch::async,
-          [&device, style, positions, target = TargetFormat{colourFormat, samples},
-           atmosphere = atmosphere_ != nullptr] {
-            OptionalPipelines made;
-            if (style.water.enabled) {
-              const TerrainShading water = surfaceShading(style, atmosphere, true);
-              made.water = std::make_unique<vk::GraphicsPipeline>(
-                  device, terrainDesc(target, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT, positions,
-                                      water));
-              made.waterSkirts = std::make_unique<vk::GraphicsPipeline>(
-                  device, terrainDesc(target, false, VK_CULL_MODE_NONE, positions, water));
-            }
-            VkPhysicalDeviceFeatures features{};
-            vkGetPhysicalDeviceFeatures(device.physical(), &features);
-            if (features.fillModeNonSolid) {
-              made.wireframe = std::make_unique<vk::GraphicsPipeline>(
-                  device,
-                  terrainDesc(target, true, VK_CULL_MODE_NONE, positions, {style.normalMapScale > 0, atmosphere}));
-            }
-            return made;
-          })),
+      pendingOptional_(
+          std::async(std::launch::async,
+                     [&device, style, positions, target = TargetFormat{colourFormat, samples},
+                      atmosphere = atmosphere_ != nullptr] {
+                       OptionalPipelines made;
+                       if (style.water.enabled) {
+                         const TerrainShading water = surfaceShading(style, atmosphere, true);
+                         made.water = std::make_unique<vk::GraphicsPipeline>(
+                             device, terrainDesc(target, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT,
+                                                 positions, water));
+                         made.waterSkirts = std::make_unique<vk::GraphicsPipeline>(
+                             device, terrainDesc(target, false, VK_CULL_MODE_NONE, positions, water));
+                       }
+                       VkPhysicalDeviceFeatures features{};
+                       vkGetPhysicalDeviceFeatures(device.physical(), &features);
+                       if (features.fillModeNonSolid) {
+                         made.wireframe = std::make_unique<vk::GraphicsPipeline>(
+                             device, terrainDesc(target, true, VK_CULL_MODE_NONE, positions, {false, atmosphere}));
+                       }
+                       return made;
+                     })),
       solid_(device,
              terrainDesc({colourFormat, samples}, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT,
                          positions, surfaceShading(style, atmosphere_ != nullptr, false))),
@@ -440,8 +439,8 @@ DrawStats TerrainRenderer::recordDraws(VkCommandBuffer cmd, const PayloadPages& 
                                              : r < 2 ? solid_
                                                      : skirts_;
       const gpu::TerrainDrawPush push{r % 2 == 0 ? cells_ : cells_ / 2, 0};
-      std::array<VkDescriptorBufferInfo, 9 + 1> buffers{
-          instanceDescriptor(frameIndex), payloads.window(page), constantsDescriptor(frameIndex)};
+      std::array<VkDescriptorBufferInfo, 9 + 1> buffers{instanceDescriptor(frameIndex), payloads.window(page),
+                                                        constantsDescriptor(frameIndex)};
       size_t count = 3;
       if (reprojected) {
         for (const VkDescriptorBufferInfo& b : {reprojection_[frameIndex].descriptor(), faces_.descriptor()})

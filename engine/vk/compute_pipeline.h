@@ -1,9 +1,9 @@
 #pragma once
 // A compute pipeline whose bindings are buffers (and storage images) pushed per dispatch
-// (VK_KHR_push_descriptor) plus a push-constant block. Enough for every generation kernel. Bindings are storage buffers, except
-// those in `uniformMask` (bit b: binding b is a uniform buffer) — small read-only parameter blocks
-// that every invocation reads, which lavapipe fetches with one load instead of per-lane gathers
-// (measured 1.4x on the elevation kernel, docs/elevation.md).
+// (VK_KHR_push_descriptor) plus a push-constant block. Enough for every generation kernel. Bindings are storage
+// buffers, except those in `uniformMask` (bit b: binding b is a uniform buffer) — small read-only parameter blocks that
+// every invocation reads, which lavapipe fetches with one load instead of per-lane gathers (measured 1.4x on the
+// elevation kernel, docs/elevation.md).
 #include "engine/vk/resources.h"
 
 #include <initializer_list>

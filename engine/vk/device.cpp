@@ -61,7 +61,6 @@ std::string missingRequiredFeature(VkPhysicalDevice physical) {
   vkGetPhysicalDeviceFeatures(physical, &features);
   if (!features.shaderFloat64) return "shaderFloat64";
   if (!features.shaderInt64) return "shaderInt64";
-  if (!features.shaderStorageImageExtendedFormats) return "shaderStorageImageExtendedFormats";
   VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
   VkPhysicalDeviceVulkan12Features v12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &v13};
   VkPhysicalDeviceFeatures2 f2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &v12};
@@ -201,8 +200,6 @@ VkDevice createLogicalDevice(VkPhysicalDevice physical, uint32_t family, bool sw
   VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &v12};
   features.features.shaderFloat64 = VK_TRUE;                        // double-precision elevation and positions
   features.features.shaderInt64 = VK_TRUE;                          // the noise lattice keys
-  // The payload kernel writes the surface textures' normals as rgba16_snorm storage images.
-  features.features.shaderStorageImageExtendedFormats = VK_TRUE;
   features.features.fillModeNonSolid = supported.fillModeNonSolid;  // the wireframe view, when present
 
   float priority = 1.0f;

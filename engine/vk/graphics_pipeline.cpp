@@ -127,7 +127,8 @@ void GraphicsPipeline::bind(VkCommandBuffer cmd, std::span<const VkDescriptorBuf
                             std::span<const ImageDescriptor> images) const {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
   if (buffers.size() || images.size())
-    pushStorageBuffers(pushDescriptorSet_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, buffers, uniformMask_, images);
+    pushStorageBuffers(pushDescriptorSet_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, buffers, uniformMask_,
+                       images);
   if (pushConstantBytes) vkCmdPushConstants(cmd, layout_, stages_, 0, pushConstantBytes, pushConstants);
 }
 

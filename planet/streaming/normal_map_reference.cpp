@@ -10,53 +10,81 @@
 
 namespace globe {
 
+namespace {
+
+// Positions (xyz) and ground elevations (w) of one of the kernel's surface grids: `side` x `side`
+// points of the half-map-cell lattice, point g at lattice index stride * g - offset (payload_layout.h).
+struct SurfaceGrid {
+  int side = 0, stride = 0, offset = 0;
+  std::vector<glm::dvec4> points;
+  std::vector<double> firstLayers;
+};
+
+SurfaceGrid evaluateGrid(const ElevationModel& model, const gpu::PayloadJob& job, int m, bool sea, int side, int stride,
+                         int offset) {
+  SurfaceGrid grid{side, stride, offset, std::vector<glm::dvec4>(size_t(side) * size_t(side)),
+                   std::vector<double>(size_t(side) * size_t(side))};
+  const bool cover = model.landCover().class_count > 0;
+  for (int b = 0; b < side; ++b) {
+    for (int a = 0; a < side; ++a) {
+      const glm::dvec3 dir = payloadSampleDirection(job, uint32_t(2 * m), stride * a - offset, stride * b - offset);
+      const double h = model.proceduralElevation_m(dir);
+      const double drawn = sea ? std::max(h, model.seaLevel_m()) : h;
+      const size_t k = size_t(b) * size_t(side) + size_t(a);
+      grid.points[k] = glm::dvec4(model.shape().position(dir, drawn), h);
+      grid.firstLayers[k] = cover ? model.firstLayer_m(dir) : 0.0;
+    }
+  }
+  return grid;
+}
+
+// The texels of one mip from its grid: texel (x, y) is grid point (x + 1, y + 1); `step`: texel width
+// in map cells (the coast field's unit).
+void appendTexels(const ElevationModel& model, const gpu::PayloadJob& job, int m, bool sea, const SurfaceGrid& grid,
+                  int step, std::vector<NormalMapTexel>& texels) {
+  const gpu::ElevationParams& e = model.params();
+  const int side = grid.side, texelsPerSide = side - 2;
+  const double texel_m = job.uv.z * e.radius_m * double(step) / double(m);
+  for (int t = 0; t < texelsPerSide * texelsPerSide; ++t) {
+    const int gx = t % texelsPerSide + 1, gy = t / texelsPerSide + 1;
+    const size_t at = size_t(gy) * size_t(side) + size_t(gx), row = size_t(side);
+    const glm::dvec3 du = glm::dvec3(grid.points[at + 1]) - glm::dvec3(grid.points[at - 1]);
+    const glm::dvec3 dv = glm::dvec3(grid.points[at + row]) - glm::dvec3(grid.points[at - row]);
+    const glm::dvec3 normal = glm::normalize(glm::cross(du, dv));
+    const glm::dvec3 p(grid.points[at]);
+    // The vertical as fillPayloadReference takes it: radial, or the ellipsoid's gradient.
+    const glm::dvec3 up =
+        model.shape().isSphere()
+            ? glm::normalize(p)
+            : glm::normalize(glm::dvec3(p.x / (e.radius_m * e.radius_m), p.y / (e.radius_m * e.radius_m),
+                                        p.z / (e.polar_radius_m * e.polar_radius_m)));
+    const double cosSlope = std::clamp(glm::dot(normal, up), 0.0, 1.0);
+    LandCoverMasks masks;
+    const glm::dvec3 dir =
+        payloadSampleDirection(job, uint32_t(2 * m), grid.stride * gx - grid.offset, grid.stride * gy - grid.offset);
+    // The kernel keeps the ground as a float: the ramp's drawn elevation and the coast from it.
+    const float ground = float(grid.points[at].w);
+    const float drawn = sea ? std::max(ground, float(model.seaLevel_m())) : ground;
+    const float coast =
+        std::clamp(float(double(ground) - e.sea_level_m) / float(texel_m * GLOBE_SURFACE_COAST_SCALE), -1.0f, 1.0f);
+    texels.push_back(
+        {normal, payloadSampleAlbedo(model, dir, double(drawn), grid.firstLayers[at], cosSlope, masks), coast});
+  }
+}
+
+}  // namespace
+
 std::vector<NormalMapTexel> normalMapReference(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
                                                uint32_t scale, bool waterSurface) {
   const bool sea = waterSurface && model.drawsWater();
-  const int m = int(cells * scale), w = m + 5;
-  // Positions and drawn elevations of the map grid and its two-texel ring, as the kernel's scratch.
-  std::vector<glm::dvec4> grid(size_t(w) * size_t(w));
-  std::vector<double> firstLayers(size_t(w) * size_t(w));
-  const bool cover = model.landCover().class_count > 0;
-  for (int b = -2; b <= m + 2; ++b) {
-    for (int a = -2; a <= m + 2; ++a) {
-      const glm::dvec3 dir = payloadSampleDirection(job, uint32_t(m), a, b);
-      const double h = model.proceduralElevation_m(dir);
-      const double drawn = sea ? std::max(h, model.seaLevel_m()) : h;
-      grid[size_t(b + 2) * size_t(w) + size_t(a + 2)] = glm::dvec4(model.shape().position(dir, drawn), h);
-      firstLayers[size_t(b + 2) * size_t(w) + size_t(a + 2)] = cover ? model.firstLayer_m(dir) : 0.0;
-    }
-  }
-  const gpu::ElevationParams& e = model.params();
+  const int m = int(cells * scale);
   std::vector<NormalMapTexel> texels;
   texels.reserve(normalMapTexelCount(uint32_t(m)));
-  for (int level = 0; level < 2; ++level) {
-    const int step = 1 << level, side = m / step + 1;
-    for (int t = 0; t < side * side; ++t) {
-      const size_t at = size_t(t / side * step + 2) * size_t(w) + size_t(t % side * step + 2);
-      const glm::dvec3 du = glm::dvec3(grid[at + size_t(step)]) - glm::dvec3(grid[at - size_t(step)]);
-      const glm::dvec3 dv =
-          glm::dvec3(grid[at + size_t(step) * size_t(w)]) - glm::dvec3(grid[at - size_t(step) * size_t(w)]);
-      const glm::dvec3 normal = glm::normalize(glm::cross(du, dv));
-      const glm::dvec3 p(grid[at]);
-      // The vertical as fillPayloadReference takes it: radial, or the ellipsoid's gradient.
-      const glm::dvec3 up =
-          model.shape().isSphere()
-              ? glm::normalize(p)
-              : glm::normalize(glm::dvec3(p.x / (e.radius_m * e.radius_m), p.y / (e.radius_m * e.radius_m),
-                                          p.z / (e.polar_radius_m * e.polar_radius_m)));
-      const double cosSlope = std::clamp(glm::dot(normal, up), 0.0, 1.0);
-      LandCoverMasks masks;
-      const glm::dvec3 dir = payloadSampleDirection(job, uint32_t(m), t % side * step, t / side * step);
-      // The kernel keeps the ground as a float: the ramp's drawn elevation and the coast from it.
-      const float ground = float(grid[at].w);
-      const float drawn = sea ? std::max(ground, float(model.seaLevel_m())) : ground;
-      const double texel_m = job.uv.z * e.radius_m * double(step) / double(m);
-      const float coast = std::clamp(float(double(ground) - e.sea_level_m) / float(texel_m * GLOBE_SURFACE_COAST_SCALE),
-                                     -1.0f, 1.0f);
-      texels.push_back({normal, payloadSampleAlbedo(model, dir, double(drawn), firstLayers[at], cosSlope, masks), coast});
-    }
-  }
+  // Mip 0 on the odd lattice points 2g - 5, mip 1 on the points 4g - 6 (payload_layout.h).
+  appendTexels(model, job, m, sea, evaluateGrid(model, job, m, sea, int(GLOBE_SURFACE_GRID0_SIDE(uint32_t(m))), 2, 5),
+               1, texels);
+  appendTexels(model, job, m, sea, evaluateGrid(model, job, m, sea, int(GLOBE_SURFACE_GRID1_SIDE(uint32_t(m))), 4, 6),
+               2, texels);
   return texels;
 }
 

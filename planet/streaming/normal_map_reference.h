@@ -12,7 +12,7 @@
 
 namespace globe {
 
-// Texels of a map with `mapCells` cells per side, both levels (GLOBE_NORMAL_MAP_TEXELS).
+// Texels of a map with `mapCells` cells per side, both mips (GLOBE_NORMAL_MAP_TEXELS).
 inline size_t normalMapTexelCount(uint32_t mapCells) { return GLOBE_NORMAL_MAP_TEXELS(mapCells); }
 
 // One texel before it is stored: the unit normal in double, the linear albedo and the coast field
@@ -23,8 +23,8 @@ struct NormalMapTexel {
   float coast = 0.0f;
 };
 
-// The map of `job`'s node with `cells` grid cells and map scale `scale` (1, 2, 4), texels in the
-// layout's order (level 0, then level 1). Procedural elevation only: on a planet with sources the
+// The surface textures of `job`'s node with `cells` grid cells and map scale `scale` (1, 2, 4):
+// mip 0's texels row by row, then mip 1's (payload_layout.h). Procedural elevation only: on a planet with sources the
 // kernel also blends the mesh samples' source terms, which this reference does not.
 // `waterSurface`: as the kernel's switch (texels below sea level lie on the sea surface).
 std::vector<NormalMapTexel> normalMapReference(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,

@@ -23,9 +23,11 @@ layout(std430, binding = 2) readonly buffer Jobs { PayloadJob jobs[]; };
 layout(std430, binding = 3) writeonly buffer Payloads { vec4 payloads[]; };
 // The same slots seen as pairs of words (the land cover masks, payload_layout.h).
 layout(std430, binding = 3) writeonly buffer PayloadTexels { uvec2 payloadTexels[]; };
-// The job's page's surface textures, a layer per slot (payload_layout.h).
-layout(binding = GLOBE_PAYLOAD_NORMALS_BINDING, rgba16_snorm) writeonly uniform image2DArray surfaceNormalsImage;
+// The job's page's surface textures, a layer per slot (payload_layout.h): mip 0, then mip 1.
+layout(binding = GLOBE_PAYLOAD_NORMALS_BINDING, rgba8) writeonly uniform image2DArray surfaceNormalsImage;
 layout(binding = GLOBE_PAYLOAD_ALBEDO_BINDING, rgba8) writeonly uniform image2DArray surfaceAlbedoImage;
+layout(binding = GLOBE_PAYLOAD_PARENT_NORMALS_BINDING, rgba8) writeonly uniform image2DArray parentNormalsImage;
+layout(binding = GLOBE_PAYLOAD_PARENT_ALBEDO_BINDING, rgba8) writeonly uniform image2DArray parentAlbedoImage;
 layout(std430, binding = 4) buffer Scratch { dvec4 scratch[]; };
 layout(std430, binding = 5) writeonly buffer Results { PayloadResult results[]; };
 layout(std140, binding = 7) uniform ColourRamp { ColourRampParams colourRamp; };
@@ -159,21 +161,28 @@ dvec3 globeEllipsoidGradient(dvec3 p) {
   return normalised(dvec3(p.x / a2, p.y / a2, p.z / b2));
 }
 
-// Positions the normal map evaluates per job: its M + 1 texels per side plus two all around (the
-// parent-level texels' differences reach two texels beyond the node).
-uint normalMapEvaluations(uint cells) {
-  uint side = cells * kNormalMapScale + 5u;
-  return kNormalMapScale == 0u ? 0u : side * side;
+// Positions the surface textures evaluate per job (payload_layout.h: both mips' grids).
+uint surfaceEvaluations() {
+  return kNormalMapScale == 0u ? 0u : GLOBE_SURFACE_EVALUATIONS(push.cells * kNormalMapScale);
 }
 
-// The job's elevation at map grid point (a, b): the procedural layers plus, on a planet with
-// sources, the sample grid's terms interpolated bilinearly (the I/O thread resolves terms at the
-// mesh samples only; clamped to the ring).
+// The half-map-cell lattice point (payloadSampleDirection with 2M cells) of scratch entry `index`
+// of the surface grids: mip 0's grid, then mip 1's (payload_layout.h).
+ivec2 surfaceLatticePoint(uint index, uint m) {
+  uint side0 = GLOBE_SURFACE_GRID0_SIDE(m), side1 = GLOBE_SURFACE_GRID1_SIDE(m);
+  if (index < side0 * side0) return ivec2(int(index % side0), int(index / side0)) * 2 - 5;
+  index -= side0 * side0;
+  return ivec2(int(index % side1), int(index / side1)) * 4 - 6;
+}
+
+// The job's elevation at lattice point (a, b) (half map cells): the procedural layers plus, on a
+// planet with sources, the sample grid's terms interpolated bilinearly (the I/O thread resolves terms
+// at the mesh samples only; clamped to the ring).
 double normalMapElevation(PayloadJob job, dvec3 dir, int a, int b, out double firstLayer) {
   double procedural = globeElevationWithFirstLayer(dir, firstLayer);
   if (job.sourceBase == GLOBE_NO_SOURCE_TERMS) return procedural;
   int n = int(push.cells), s = n + 3;
-  dvec2 at = clamp(dvec2(a, b) / double(kNormalMapScale), dvec2(-1.0lf), dvec2(double(n + 1)));
+  dvec2 at = clamp(dvec2(a, b) / double(2u * kNormalMapScale), dvec2(-1.0lf), dvec2(double(n + 1)));
   ivec2 c = min(ivec2(floor(at)), ivec2(n));
   dvec2 f = at - dvec2(c);
   uint i = uint((c.y + 1) * s + (c.x + 1));
@@ -197,49 +206,68 @@ float coastField(float ground, PayloadJob job, uint step) {
                -1.0, 1.0);
 }
 
-// Fills the slot's layer of the surface textures (payload_layout.h): positions of the map grid and
-// its two-texel ring in double into the job's scratch, then per texel of both levels the normal by
-// central differences (one texel apart for level 0, two for level 1), the coast field and the colour
-// ramp at the texel's elevation and slope, as pass 2 does for the mesh samples.
+// Writes one texel of mip `mip` (0: the node's, 1: its parent's over the quadrant) of the slot's layer.
+void storeSurfaceTexel(uint mip, ivec3 texel, vec4 normalCoast, vec3 albedo) {
+  vec4 encoded = normalCoast * 0.5 + 0.5;  // RGBA8_UNORM (payload_layout.h)
+  vec4 rootAlbedo = vec4(sqrt(clamp(albedo, 0.0, 1.0)), 1.0);
+  if (mip == 0u) {
+    imageStore(surfaceNormalsImage, texel, encoded);
+    imageStore(surfaceAlbedoImage, texel, rootAlbedo);
+  } else {
+    imageStore(parentNormalsImage, texel, encoded);
+    imageStore(parentAlbedoImage, texel, rootAlbedo);
+  }
+}
+
+// One texel of the slot's surface textures from the scratch entry `at` of its grid (`row`: entries per
+// grid row, `step`: texel width in map cells, 1 or 2): the normal by central differences one texel
+// apart, the coast field and the albedo at the texel's elevation and slope, as pass 2 does for the
+// mesh samples.
+void surfaceTexel(PayloadJob job, uint scratchBase, uint at, uint row, uint step, uint mip, ivec3 texel) {
+  precise dvec3 du = scratch[at + 1u].xyz - scratch[at - 1u].xyz;
+  precise dvec3 dv = scratch[at + row].xyz - scratch[at - row].xyz;
+  precise dvec3 c = dvec3(du.y * dv.z - du.z * dv.y, du.z * dv.x - du.x * dv.z, du.x * dv.y - du.y * dv.x);
+  dvec3 normal = normalised(c);
+  dvec3 up = kGlobeEllipsoid != 0u ? globeEllipsoidGradient(scratch[at].xyz) : normalised(scratch[at].xyz);
+  double cosSlope = clamp(dot(normal, up), 0.0lf, 1.0lf);
+  vec2 words = uintBitsToFloat(unpackDouble2x32(scratch[at].w));
+  float ground = words.x;
+  float drawn = kWaterSurface != 0u ? max(ground, float(GLOBE_ELEVATION_PARAMS.sea_level_m)) : ground;
+  uvec2 masks;
+  uint m = push.cells * kNormalMapScale;
+  ivec2 lattice = surfaceLatticePoint(at - scratchBase, m);
+  vec3 albedo = surfaceAlbedo(scratchSurfaceWord(double(drawn), double(words.y)),
+                              kLandCover != 0u ? sampleDirection(job, 2u * m, lattice.x, lattice.y) : dvec3(0.0lf),
+                              cosSlope, masks);
+  storeSurfaceTexel(mip, texel, vec4(vec3(normal), coastField(ground, job, step)), albedo);
+}
+
+// Fills both mips of the slot's layer of the surface textures (payload_layout.h): positions of both
+// grids in double into the job's scratch, then every texel (surfaceTexel).
 void fillNormalMap(PayloadJob job, uint scratchBase) {
   uint m = push.cells * kNormalMapScale;
-  int w = int(m) + 5;
   memoryBarrierBuffer();
   barrier();  // the mesh passes are done with the scratch
-  for (uint index = gl_LocalInvocationID.x; index < normalMapEvaluations(push.cells); index += GLOBE_PAYLOAD_WORKGROUP) {
-    int a = int(index % uint(w)) - 2;
-    int b = int(index / uint(w)) - 2;
-    dvec3 dir = sampleDirection(job, m, a, b);
+  for (uint index = gl_LocalInvocationID.x; index < surfaceEvaluations(); index += GLOBE_PAYLOAD_WORKGROUP) {
+    ivec2 p = surfaceLatticePoint(index, m);
+    dvec3 dir = sampleDirection(job, 2u * m, p.x, p.y);
     double firstLayer;
-    double h = normalMapElevation(job, dir, a, b, firstLayer);
+    double h = normalMapElevation(job, dir, p.x, p.y, firstLayer);
     double drawn = kWaterSurface != 0u ? max(h, GLOBE_ELEVATION_PARAMS.sea_level_m) : h;
     scratch[scratchBase + index] = dvec4(globePosition(dir, drawn), mapScratchWord(h, firstLayer));
   }
   memoryBarrierBuffer();
   barrier();
-  uint level0 = (m + 1u) * (m + 1u);
+  uint side0 = GLOBE_SURFACE_TEXTURE_SIDE(m), side1 = GLOBE_SURFACE_TEXTURE_PARENT_SIDE(m);
+  uint grid0 = GLOBE_SURFACE_GRID0_SIDE(m), grid1 = GLOBE_SURFACE_GRID1_SIDE(m);
   for (uint t = gl_LocalInvocationID.x; t < GLOBE_NORMAL_MAP_TEXELS(m); t += GLOBE_PAYLOAD_WORKGROUP) {
-    bool parent = t >= level0;
-    uint side = parent ? m / 2u + 1u : m + 1u;
-    uint local = parent ? t - level0 : t;
-    uint step = parent ? 2u : 1u;
-    uint at = scratchBase + (local / side * step + 2u) * uint(w) + local % side * step + 2u;
-    precise dvec3 du = scratch[at + step].xyz - scratch[at - step].xyz;
-    precise dvec3 dv = scratch[at + step * uint(w)].xyz - scratch[at - step * uint(w)].xyz;
-    precise dvec3 c = dvec3(du.y * dv.z - du.z * dv.y, du.z * dv.x - du.x * dv.z, du.x * dv.y - du.y * dv.x);
-    dvec3 normal = normalised(c);
-    dvec3 up = kGlobeEllipsoid != 0u ? globeEllipsoidGradient(scratch[at].xyz) : normalised(scratch[at].xyz);
-    double cosSlope = clamp(dot(normal, up), 0.0lf, 1.0lf);
-    vec2 words = uintBitsToFloat(unpackDouble2x32(scratch[at].w));
-    float ground = words.x;
-    float drawn = kWaterSurface != 0u ? max(ground, float(GLOBE_ELEVATION_PARAMS.sea_level_m)) : ground;
-    uvec2 masks;
-    int a = int(local % side * step), b = int(local / side * step);
-    vec3 albedo = surfaceAlbedo(scratchSurfaceWord(double(drawn), double(words.y)),
-                                kLandCover != 0u ? sampleDirection(job, m, a, b) : dvec3(0.0lf), cosSlope, masks);
-    ivec3 texel = ivec3(int(local % side + (parent ? m + 1u : 0u)), int(local / side), int(job.slot));
-    imageStore(surfaceNormalsImage, texel, vec4(vec3(normal), coastField(ground, job, step)));
-    imageStore(surfaceAlbedoImage, texel, vec4(sqrt(clamp(albedo, 0.0, 1.0)), 1.0));
+    uint mip = t < side0 * side0 ? 0u : 1u;
+    uint local = mip == 0u ? t : t - side0 * side0;
+    uint side = mip == 0u ? side0 : side1, row = mip == 0u ? grid0 : grid1;
+    uint x = local % side, y = local / side;
+    // Texel (x, y) is grid point (x + 1, y + 1): the grid has one more point all around.
+    uint at = scratchBase + (mip == 0u ? 0u : grid0 * grid0) + (y + 1u) * row + x + 1u;
+    surfaceTexel(job, scratchBase, at, row, mip + 1u, mip, ivec3(int(x), int(y), int(job.slot)));
   }
 }
 
@@ -251,7 +279,7 @@ void main() {
   int s = n + 3;
   uint samples = uint(s * s);
   uint slotBase = job.slot * GLOBE_PAYLOAD_SLOT_VEC4(push.cells);
-  uint scratchBase = jobIndex * max(samples, normalMapEvaluations(push.cells));
+  uint scratchBase = jobIndex * max(samples, surfaceEvaluations());
   dvec3 centre = job.centre.xyz;
   double q = job.centre.w;
 

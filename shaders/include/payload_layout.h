@@ -26,24 +26,25 @@
 //                         the nearest vertex (there are no samples beyond the ring).
 // With a normal map (GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE s > 0: the renderer's payloads; collision
 // meshes and bakes have none) the slot also has a layer of its payload page's two surface textures
-// (sampled 2-D array images, engine/generation/surface_textures.h; the fragment stages filter them
-// with the sampler), M = s * N map cells per side, each layer GLOBE_SURFACE_TEXTURE_WIDTH(M) x
-// GLOBE_SURFACE_TEXTURE_HEIGHT(M) texels:
-//   x in [0, M], y in [0, M]              level 0: texel (a, b) lies at the node's
-//                                         (u, v) = corner + size * (a, b) / M: texels sit on the map
-//                                         grid's corners, so the border texels are the shared edges
-//                                         and both nodes hold the same directions there (across face
-//                                         seams too); bilinear filtering between texel centres is
-//                                         the map's bilinear interpolation;
-//   x in [M + 1, M + 1 + M/2], y <= M/2   level 1: the parent's texels over this node's quadrant
-//                                         (every other direction, normals from differences two texels
-//                                         apart): what the parent's own map holds there, so morphing
-//                                         towards it does not pop.
-// Normals texture (RGBA16_SNORM): xyz the unit normal, planet-fixed, from double positions by central
-// differences (the positions two texels around the node come from the ring technique); w the coast
-// field, (ground elevation - sea level) / GLOBE_SURFACE_COAST_SCALE texel widths, clamped to [-1, 1]:
-// its bilinear zero crossing is the per-pixel coastline. Albedo texture (RGBA8_UNORM): rgb the square
-// root of the albedo (the colour ramp at the texel's elevation and slope, or the land cover's blend).
+// (sampled 2-D array images with two mip levels, engine/generation/surface_textures.h), M = s * N map
+// cells per side. Texels are centred in the map's cells, with a gutter of cells beyond the node:
+//   mip 0: T = M + 4 texels per side; texel (a, b) is centred at the node's
+//          (u, v) = corner + size * ((a, b) - 1.5) / M: the node's M x M cells and two cells all around
+//          (the gutter holds the neighbours' texels at the same directions, across face seams too, so
+//          bilinear filtering at a node's edge reads what its neighbour reads there: no seam);
+//   mip 1: M / 2 + 2 texels per side, texel (c, d) centred at corner + size * ((c, d) - 0.5) / (M / 2):
+//          the parent's mip 0 texels over this node's quadrant (its cells and one cell all around),
+//          computed at the same directions, bit for bit what the parent holds there.
+// Both mips are addressed by one coordinate, ((u, v) in the node * M + 2) / T (surface_textures.glsl):
+// a mip-1 texel's centre lies between two mip-0 texels', as a mip chain's does, so one trilinear
+// fetch with LOD = the morph factor k is the blend of the node's map with its parent's, the texture
+// counterpart of the mesh's morph (at k = 1 exactly the parent's texels: no pop).
+// Normals texture (RGBA8_UNORM, each channel x * 0.5 + 0.5): xyz the unit normal, planet-fixed, from
+// double positions by central differences one texel apart (mip 1: one parent texel apart); w the
+// coast field, (ground elevation - sea level) / GLOBE_SURFACE_COAST_SCALE texel widths, clamped to
+// [-1, 1]: its bilinear zero crossing is the per-pixel coastline. Albedo texture (RGBA8_UNORM): rgb
+// the square root of the albedo (the colour ramp at the texel's elevation and slope, or the land
+// cover's blend of its masks there), a = 1.
 // After the mesh, [cover offset, + (S*S + 1) / 2) the land cover masks, one uvec2 per sample
 // (index as the mesh's): 8 bytes, class i in byte i % 4 of word i / 4, summing to 255 (land_cover.h).
 // Ring samples hold the masks of their nearest vertex, like its normal. Without land cover
@@ -76,12 +77,23 @@ struct uvec4_ {
 // vec4 entries of a slot's mesh: positions then normals (the whole slot without a normal map).
 #define GLOBE_PAYLOAD_VEC4_PER_SLOT(cells) \
   (2u * GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells) * GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells))
-// Normal map texels of one slot with M = mapCells map cells per side (0: no map), both levels.
-#define GLOBE_NORMAL_MAP_TEXELS(mapCells) \
-  ((mapCells) == 0u ? 0u : ((mapCells) + 1u) * ((mapCells) + 1u) + ((mapCells) / 2u + 1u) * ((mapCells) / 2u + 1u))
-// A surface texture layer's size for M map cells per side: level 0 and level 1 side by side.
-#define GLOBE_SURFACE_TEXTURE_WIDTH(mapCells) ((mapCells) + 1u + (mapCells) / 2u + 1u)
-#define GLOBE_SURFACE_TEXTURE_HEIGHT(mapCells) ((mapCells) + 1u)
+// The payload kernel evaluates the surface textures' positions on the lattice of half map cells
+// (payloadSampleDirection with 2M cells): mip 0's texel centres and one more all around on odd
+// lattice points 2g - 5, g in [0, M + 5]; mip 1's on points 4g - 6, g in [0, M / 2 + 3].
+#define GLOBE_SURFACE_GRID0_SIDE(mapCells) ((mapCells) + 6u)
+#define GLOBE_SURFACE_GRID1_SIDE(mapCells) ((mapCells) / 2u + 4u)
+#define GLOBE_SURFACE_EVALUATIONS(mapCells)                                                     \
+  ((mapCells) == 0u ? 0u                                                                        \
+                    : GLOBE_SURFACE_GRID0_SIDE(mapCells) * GLOBE_SURFACE_GRID0_SIDE(mapCells) + \
+                          GLOBE_SURFACE_GRID1_SIDE(mapCells) * GLOBE_SURFACE_GRID1_SIDE(mapCells))
+// Texels of one slot's surface texture layer (both mips) with M = mapCells map cells per side (0: none).
+#define GLOBE_NORMAL_MAP_TEXELS(mapCells)                                                           \
+  ((mapCells) == 0u ? 0u                                                                            \
+                    : GLOBE_SURFACE_TEXTURE_SIDE(mapCells) * GLOBE_SURFACE_TEXTURE_SIDE(mapCells) + \
+                          GLOBE_SURFACE_TEXTURE_PARENT_SIDE(mapCells) * GLOBE_SURFACE_TEXTURE_PARENT_SIDE(mapCells))
+// Texels per side of a surface texture layer's mip 0 and mip 1 for M map cells per side.
+#define GLOBE_SURFACE_TEXTURE_SIDE(mapCells) ((mapCells) + 4u)
+#define GLOBE_SURFACE_TEXTURE_PARENT_SIDE(mapCells) ((mapCells) / 2u + 2u)
 // Texel widths of elevation that span the coast field's [-1, 1] (w of the normals texture).
 #define GLOBE_SURFACE_COAST_SCALE 16.0
 // Land cover masks of a slot: one uvec2 per sample (two RGBA8 words, land_cover.h), in vec4 entries;
@@ -102,9 +114,12 @@ struct uvec4_ {
 // water); 0 = the ground everywhere (collision meshes, bakes, dry planets).
 #define GLOBE_PAYLOAD_SPEC_WATER_SURFACE 26
 // Specialization constant: the normal map's scale s (map cells = s * grid cells), 0 = no map.
-// Bindings of the payload kernel's surface textures (storage images of the job's page).
+// Bindings of the payload kernel's surface textures (storage images of the job's page): normals and
+// albedo of mip 0, then of mip 1.
 #define GLOBE_PAYLOAD_NORMALS_BINDING 9
 #define GLOBE_PAYLOAD_ALBEDO_BINDING 10
+#define GLOBE_PAYLOAD_PARENT_NORMALS_BINDING 11
+#define GLOBE_PAYLOAD_PARENT_ALBEDO_BINDING 12
 #define GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE 27
 // Specialization constant: 1 = the planet has land cover (land_cover.h): the samples' albedo is the
 // masks' blend of the class colours and the masks are written; 0 = the colour ramp, no masks.

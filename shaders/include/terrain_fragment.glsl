@@ -3,11 +3,9 @@
 // declares only the inputs it reads: lavapipe made the terrain pass up to 4x slower in some frames
 // of the flyover when unused inputs were declared (docs/rendering.md, "Atmosphere").
 // - GLOBE_TERRAIN_NORMAL_MAPS (TerrainStyle::normalMapScale > 0): shades per fragment from the
-//   node's surface textures (payload_layout.h): normal, coast field and colour sampled with the
-//   sampler's bilinear filter from the map's own level, blended with its parent level by the morph
-//   factor k (at k = 1 the parent's map, exactly what the parent draws: no pop), then lit; the parent
-//   level is only read where k > 0 (a per-fragment branch on an interpolated value). The coast is the
-//   field's zero crossing. Without, and in the debug views, it writes the vertex stage's lit,
+//   node's surface textures (payload_layout.h): normal, coast field and colour from one trilinear
+//   fetch per texture whose LOD is the morph factor k (mip 0 the node's map, mip 1 its parent's: at
+//   k = 1 exactly what the parent draws, no pop), then lit. The coast is the field's zero crossing. Without, and in the debug views, it writes the vertex stage's lit,
 //   display-encoded colour and samples nothing, since per-fragment cost is what bounds lavapipe.
 // - GLOBE_TERRAIN_IMAGERY (with NORMAL_MAPS, TerrainStyle::imagery): the maps are the imagery
 //   tiles', chosen by texel magnification apart from the mesh (planet/imagery/imagery_selection.h).
@@ -55,12 +53,12 @@ layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING + 6) uniform sampler2DAr
 layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING + 7) uniform sampler2DArray imageryAlbedo3;
 uint imageryPage = 0u;  // the page of the tile being sampled (mappedColour)
 // Constant bindings behind a switch: no descriptor indexing needed for a per-fragment page.
-void sampleSurface(vec3 at, out vec4 normal, out vec3 rootAlbedo) {
+void sampleSurface(vec3 at, float lod, out vec4 normal, out vec3 rootAlbedo) {
   switch (imageryPage) {
-    case 0u: normal = textureLod(imageryNormals0, at, 0.0); rootAlbedo = textureLod(imageryAlbedo0, at, 0.0).rgb; break;
-    case 1u: normal = textureLod(imageryNormals1, at, 0.0); rootAlbedo = textureLod(imageryAlbedo1, at, 0.0).rgb; break;
-    case 2u: normal = textureLod(imageryNormals2, at, 0.0); rootAlbedo = textureLod(imageryAlbedo2, at, 0.0).rgb; break;
-    default: normal = textureLod(imageryNormals3, at, 0.0); rootAlbedo = textureLod(imageryAlbedo3, at, 0.0).rgb;
+    case 0u: normal = textureLod(imageryNormals0, at, lod); rootAlbedo = textureLod(imageryAlbedo0, at, lod).rgb; break;
+    case 1u: normal = textureLod(imageryNormals1, at, lod); rootAlbedo = textureLod(imageryAlbedo1, at, lod).rgb; break;
+    case 2u: normal = textureLod(imageryNormals2, at, lod); rootAlbedo = textureLod(imageryAlbedo2, at, lod).rgb; break;
+    default: normal = textureLod(imageryNormals3, at, lod); rootAlbedo = textureLod(imageryAlbedo3, at, lod).rgb;
   }
 }
 layout(location = 18) flat in uint inImageryCell;
@@ -71,10 +69,11 @@ layout(location = 3) in vec3 inRelative;
 // The drawn page's surface textures (payload_layout.h), a layer per slot.
 layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING) uniform sampler2DArray surfaceNormals;
 layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING + 1) uniform sampler2DArray surfaceAlbedo;
-// Level 0: no derivatives (lavapipe computes them for implicit-LOD fetches), no mips.
-void sampleSurface(vec3 at, out vec4 normal, out vec3 rootAlbedo) {
-  normal = textureLod(surfaceNormals, at, 0.0);
-  rootAlbedo = textureLod(surfaceAlbedo, at, 0.0).rgb;
+// An explicit LOD: no derivatives, and the blend to the parent's mip without a branch (a per-fragment
+// branch around a second pair of fetches doubled the terrain pass on lavapipe: docs/rendering.md).
+void sampleSurface(vec3 at, float lod, out vec4 normal, out vec3 rootAlbedo) {
+  normal = textureLod(surfaceNormals, at, lod);
+  rootAlbedo = textureLod(surfaceAlbedo, at, lod).rgb;
 }
 #endif
 layout(location = 4) in vec2 inMapUv;
@@ -162,16 +161,9 @@ vec3 mappedColour(vec3 modulation, out float coast) {
 #endif
   vec4 normal;
   vec3 root;
-  sampleSurface(surfaceCoordinate(uv, 0u, cells, layer), normal, root);
-  if (blend > 0.0) {
-    vec4 parentNormal;
-    vec3 parentRoot;
-    sampleSurface(surfaceCoordinate(uv, 1u, cells, layer), parentNormal, parentRoot);
-    normal = mix(normal, parentNormal, blend);
-    root = mix(root, parentRoot, blend);
-  }
-  coast = normal.w;
-  vec3 n = normalize(normal.xyz);
+  sampleSurface(surfaceCoordinate(uv, cells, layer), blend, normal, root);
+  coast = normal.w - 0.5;  // stored as x * 0.5 + 0.5 (payload_layout.h)
+  vec3 n = normalize(normal.xyz - 0.5);
   vec3 albedo = root * root * modulation;
 #ifdef GLOBE_TERRAIN_ATMOSPHERE
   // The vertex stage's light through the air, applied to the mapped normal and colour

@@ -417,9 +417,8 @@ class ExtremesTest : public GpuTest {
         uint32_t instance = UINT32_MAX;
         for (uint32_t i = 0; i < selection.nodes.size() && instance == UINT32_MAX; ++i) {
           const gpu::TerrainInstance& r = records[i];
-          if (r.info.x ==
-                  pages.localSlot(slot) * GLOBE_PAYLOAD_SLOT_VEC4(kCells) &&
-              r.info.y == 1u && r.offset.x == offset.x && r.offset.y == offset.y && r.offset.z == offset.z)
+          if (r.info.x == pages.localSlot(slot) * GLOBE_PAYLOAD_SLOT_VEC4(kCells) && r.info.y == 1u &&
+              r.offset.x == offset.x && r.offset.y == offset.y && r.offset.z == offset.z)
             instance = i;
         }
         ASSERT_NE(instance, UINT32_MAX);

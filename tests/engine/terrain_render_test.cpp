@@ -28,7 +28,7 @@
 namespace globe::testing {
 namespace {
 
-constexpr uint32_t kCells = 16;          // smallest grid: keeps CPU payload filling and lavapipe fast
+constexpr uint32_t kCells = 16;  // smallest grid: keeps CPU payload filling and lavapipe fast
 constexpr uint32_t kWidth = 160, kHeight = 120;
 constexpr double kRadius_m = 6371000.0;
 // Clear colour the terrain never writes (alpha 0: every terrain fragment has alpha 1).
@@ -82,9 +82,9 @@ class CpuPayloads final : public NodeResidency {
     gpu::PayloadJob job = makePayloadJob(id, e.slot, model_);
     e.centre_m = {job.centre.x, job.centre.y, job.centre.z};
     auto all = buffer_.as<glm::vec4>();
-    e.vertices = fillPayloadReference(model_, job, kCells,
-                                      all.subspan(size_t(e.slot) * GLOBE_PAYLOAD_SLOT_VEC4(kCells),
-                                                  GLOBE_PAYLOAD_SLOT_VEC4(kCells)));
+    e.vertices = fillPayloadReference(
+        model_, job, kCells,
+        all.subspan(size_t(e.slot) * GLOBE_PAYLOAD_SLOT_VEC4(kCells), GLOBE_PAYLOAD_SLOT_VEC4(kCells)));
     e.padded = paddedRadiusRange(model_.params(), e.vertices, id.level, kCells);
     e.geometricError_m = payloadGeometricError_m(slot(e.slot), kCells);
     return entries_.emplace(id, e).first->second;
