@@ -36,12 +36,10 @@ std::array<uint32_t, GLOBE_PAYLOAD_SPEC_LAND_COVER + 1> payloadSpecialization(co
   return values;
 }
 
-// The surface textures' storage images (payload_layout.h's bindings): both mips' normals and albedo.
-constexpr std::array<vk::ImageSlot, 4> kSurfaceStorageSlots{
-    vk::ImageSlot{GLOBE_PAYLOAD_NORMALS_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-    vk::ImageSlot{GLOBE_PAYLOAD_ALBEDO_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-    vk::ImageSlot{GLOBE_PAYLOAD_PARENT_NORMALS_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-    vk::ImageSlot{GLOBE_PAYLOAD_PARENT_ALBEDO_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}};
+// The surface texture's storage images (payload_layout.h's bindings): mip 0, mip 1.
+constexpr std::array<vk::ImageSlot, 2> kSurfaceStorageSlots{
+    vk::ImageSlot{GLOBE_PAYLOAD_SURFACE_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+    vk::ImageSlot{GLOBE_PAYLOAD_PARENT_SURFACE_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}};
 
 }  // namespace
 

@@ -117,11 +117,8 @@ ImageryBinding ImageryTiles::write(uint32_t frameIndex) {
     }
   ImageryBinding binding{buffer.descriptor(), {}};
   const SurfaceTextures& textures = generator_->surfaceTextures();
-  for (uint32_t p = 0; p < kImageryTilePages; ++p) {
-    const auto page = textures.sampled(p < textures.pageCount() ? p : 0u, GLOBE_TERRAIN_SURFACE_BINDING + 2 * p);
-    binding.textures[2 * p] = page[0];
-    binding.textures[2 * p + 1] = page[1];
-  }
+  for (uint32_t p = 0; p < kImageryTilePages; ++p)
+    binding.textures[p] = textures.sampled(p < textures.pageCount() ? p : 0u, GLOBE_TERRAIN_SURFACE_BINDING + p);
   return binding;
 }
 

@@ -36,7 +36,7 @@ struct ImagerySettings {
 // and the tiles' pages' surface textures (GLOBE_TERRAIN_SURFACE_BINDING on; unused pages repeat the first).
 struct ImageryBinding {
   VkDescriptorBufferInfo cells{};
-  std::array<vk::ImageDescriptor, 2 * kImageryTilePages> textures{};
+  std::array<vk::ImageDescriptor, kImageryTilePages> textures{};
 };
 
 class ImageryTiles {

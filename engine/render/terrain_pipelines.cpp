@@ -41,8 +41,8 @@ vk::GraphicsPipelineDesc terrainDesc(TargetFormat target, bool wireframe, VkCull
     d.sampledImageBindings.push_back(GLOBE_TERRAIN_DETAIL_BINDING);
     d.vertexShader.insert(d.vertexShader.size() - std::string_view(".vert").size(), "_cover");
   }
-  // The surface textures: the drawn page's normals and albedo, or the imagery tiles' pages.
-  const uint32_t surfaceBindings = !shading.normalMaps ? 0 : shading.imagery ? 2 * GLOBE_IMAGERY_TILE_PAGES : 2;
+  // The surface texture: the drawn page's, or the imagery tiles' pages'.
+  const uint32_t surfaceBindings = !shading.normalMaps ? 0 : shading.imagery ? GLOBE_IMAGERY_TILE_PAGES : 1;
   for (uint32_t b = 0; b < surfaceBindings; ++b) d.sampledImageBindings.push_back(GLOBE_TERRAIN_SURFACE_BINDING + b);
   return d;
 }

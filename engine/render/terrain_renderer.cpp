@@ -400,6 +400,9 @@ uint32_t TerrainRenderer::writeInstances(unsigned char* bytes, const glm::dvec3&
     inst.info = {payloads.localSlot(n.slot) * slotVec4, n.partial ? 2u : 1u,
                  uint32_t(n.id.level) - (n.partial ? 1u : 0u), 0u};
     inst.imagery = {n.imageryCell, payloads.localSlot(n.slot), 0u, 0u};
+    const std::array<glm::dvec3, 3> frame = RhombusFaceMapping::get().faceFrame(n.id.face);
+    inst.frameEast = toGpu(glm::vec3(frame[0]), 0.0f);
+    inst.frameUp = toGpu(glm::vec3(frame[2]), 0.0f);
     if (style_.landCover()) {  // only the _cover vertex stages read it
       const glm::vec4 detail = detailTileOffsets(n.id, detailTiling_);
       inst.detail = {detail.x, detail.y, detail.z, detail.w};
@@ -471,8 +474,7 @@ TerrainRenderer::ImageSet TerrainRenderer::drawImages(const PayloadPages& payloa
   if (imagery) {
     for (const vk::ImageDescriptor& image : imagery->textures) set.images[set.count++] = image;
   } else if (style_.normalMapScale > 0 && payloads.surfaces) {
-    for (const vk::ImageDescriptor& image : payloads.surfaces->sampled(page, GLOBE_TERRAIN_SURFACE_BINDING))
-      set.images[set.count++] = image;
+    set.images[set.count++] = payloads.surfaces->sampled(page, GLOBE_TERRAIN_SURFACE_BINDING);
   }
   return set;
 }

@@ -198,7 +198,7 @@ class TerrainRenderer {
   // The images a surface draw of payload page `page` samples: the detail textures (land cover) and
   // the surface textures (the page's, or the imagery tiles').
   struct ImageSet {
-    std::array<vk::ImageDescriptor, 1 + 2 * kImageryTilePages> images{};
+    std::array<vk::ImageDescriptor, 1 + kImageryTilePages> images{};
     uint32_t count = 0;
   };
   ImageSet drawImages(const PayloadPages& payloads, uint32_t page, const ImageryBinding* imagery) const;

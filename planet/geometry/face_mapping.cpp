@@ -56,6 +56,13 @@ RhombusFaceMapping::RhombusFaceMapping() {
   }
 }
 
+std::array<glm::dvec3, 3> RhombusFaceMapping::faceFrame(int face) const {
+  const FaceCornersGpu c = gpuCorners(face);
+  const glm::dvec3 c0(c.corner[0]), e1 = glm::dvec3(c.corner[1]) - c0, e3 = glm::dvec3(c.corner[3]) - c0;
+  const glm::dvec3 up = glm::normalize(glm::cross(e1, e3)), east = glm::normalize(e1);
+  return {east, glm::cross(up, east), up};
+}
+
 glm::dvec3 RhombusFaceMapping::flatPoint(int face, double u, double v) const {
   assert(face >= 0 && face < 30 && u >= 0.0 && u <= 1.0 && v >= 0.0 && v <= 1.0);
   const auto& fv = Triacontahedron::get().face(face).vertex;

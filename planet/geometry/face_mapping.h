@@ -56,6 +56,9 @@ class RhombusFaceMapping final : public FaceMapping {
   FaceCornersGpu gpuCorners(int face) const;
   // Outward unit normal of the face's plane.
   const glm::dvec3& faceNormal(int face) const { return normal_[static_cast<size_t>(face)]; }
+  // The face's frame (= faceFrame in face_mapping.glsl): east along the edge from corner 0 to 1, north
+  // = up x east, up the face's normal. The surface textures store normals in it (payload_layout.h).
+  std::array<glm::dvec3, 3> faceFrame(int face) const;
 
  private:
   RhombusFaceMapping();

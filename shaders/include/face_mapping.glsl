@@ -50,6 +50,13 @@ dvec3 faceFlatPoint(FaceCorners f, double u, double v) {
   return p;
 }
 
+// The face's frame (= RhombusFaceMapping::faceFrame): rows east (corner 0 to 1), north, up (outward normal).
+dmat3 faceFrame(FaceCorners f) {
+  dvec3 e1 = f.corner[1].xyz - f.corner[0].xyz, e3 = f.corner[3].xyz - f.corner[0].xyz;
+  dvec3 up = normalize(cross(e1, e3)), east = normalize(e1);
+  return transpose(dmat3(east, cross(up, east), up));
+}
+
 dvec3 faceUnitPoint(FaceCorners f, double u, double v) {
   precise dvec3 p = faceFlatPoint(f, u, v);
   precise double lengthSquared = (p.x * p.x + p.y * p.y) + p.z * p.z;

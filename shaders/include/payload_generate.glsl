@@ -23,11 +23,9 @@ layout(std430, binding = 2) readonly buffer Jobs { PayloadJob jobs[]; };
 layout(std430, binding = 3) writeonly buffer Payloads { vec4 payloads[]; };
 // The same slots seen as pairs of words (the land cover masks, payload_layout.h).
 layout(std430, binding = 3) writeonly buffer PayloadTexels { uvec2 payloadTexels[]; };
-// The job's page's surface textures, a layer per slot (payload_layout.h): mip 0, then mip 1.
-layout(binding = GLOBE_PAYLOAD_NORMALS_BINDING, rgba8) writeonly uniform image2DArray surfaceNormalsImage;
-layout(binding = GLOBE_PAYLOAD_ALBEDO_BINDING, rgba8) writeonly uniform image2DArray surfaceAlbedoImage;
-layout(binding = GLOBE_PAYLOAD_PARENT_NORMALS_BINDING, rgba8) writeonly uniform image2DArray parentNormalsImage;
-layout(binding = GLOBE_PAYLOAD_PARENT_ALBEDO_BINDING, rgba8) writeonly uniform image2DArray parentAlbedoImage;
+// The job's page's surface texture, a layer per slot (payload_layout.h): mip 0, mip 1.
+layout(binding = GLOBE_PAYLOAD_SURFACE_BINDING, rgba8) writeonly uniform image2DArray surfaceImage;
+layout(binding = GLOBE_PAYLOAD_PARENT_SURFACE_BINDING, rgba8) writeonly uniform image2DArray parentSurfaceImage;
 layout(std430, binding = 4) buffer Scratch { dvec4 scratch[]; };
 layout(std430, binding = 5) writeonly buffer Results { PayloadResult results[]; };
 layout(std140, binding = 7) uniform ColourRamp { ColourRampParams colourRamp; };
@@ -206,17 +204,25 @@ float coastField(float ground, PayloadJob job, uint step) {
                -1.0, 1.0);
 }
 
+// One texel of the surface texture (payload_layout.h): the normal octahedral in the face's frame,
+// the luma of the albedo's square root, the coast field; all in [0, 1] for RGBA8_UNORM.
+vec4 encodeSurfaceTexel(PayloadJob job, dvec3 normal, vec3 albedo, float coast) {
+  dvec3 n = faceFrame(faces[job.face]) * normal;
+  precise double l1 = (abs(n.x) + abs(n.y)) + abs(n.z);
+  dvec2 o = n.xy / l1;
+  dvec2 signs = dvec2(o.x >= 0.0lf ? 1.0lf : -1.0lf, o.y >= 0.0lf ? 1.0lf : -1.0lf);
+  if (n.z < 0.0lf) o = (1.0lf - abs(o.yx)) * signs;
+  vec3 root = sqrt(clamp(albedo, 0.0, 1.0));
+  float luma = dot(root, vec3(0.25, 0.5, 0.25));
+  return vec4(vec2(o) * 0.5 + 0.5, luma, coast * 0.5 + 0.5);
+}
+
 // Writes one texel of mip `mip` (0: the node's, 1: its parent's over the quadrant) of the slot's layer.
-void storeSurfaceTexel(uint mip, ivec3 texel, vec4 normalCoast, vec3 albedo) {
-  vec4 encoded = normalCoast * 0.5 + 0.5;  // RGBA8_UNORM (payload_layout.h)
-  vec4 rootAlbedo = vec4(sqrt(clamp(albedo, 0.0, 1.0)), 1.0);
-  if (mip == 0u) {
-    imageStore(surfaceNormalsImage, texel, encoded);
-    imageStore(surfaceAlbedoImage, texel, rootAlbedo);
-  } else {
-    imageStore(parentNormalsImage, texel, encoded);
-    imageStore(parentAlbedoImage, texel, rootAlbedo);
-  }
+void storeSurfaceTexel(uint mip, ivec3 texel, vec4 encoded) {
+  if (mip == 0u)
+    imageStore(surfaceImage, texel, encoded);
+  else
+    imageStore(parentSurfaceImage, texel, encoded);
 }
 
 // One texel of the slot's surface textures from the scratch entry `at` of its grid (`row`: entries per
@@ -239,7 +245,7 @@ void surfaceTexel(PayloadJob job, uint scratchBase, uint at, uint row, uint step
   vec3 albedo = surfaceAlbedo(scratchSurfaceWord(double(drawn), double(words.y)),
                               kLandCover != 0u ? sampleDirection(job, 2u * m, lattice.x, lattice.y) : dvec3(0.0lf),
                               cosSlope, masks);
-  storeSurfaceTexel(mip, texel, vec4(vec3(normal), coastField(ground, job, step)), albedo);
+  storeSurfaceTexel(mip, texel, encodeSurfaceTexel(job, normal, albedo, coastField(ground, job, step)));
 }
 
 // Fills both mips of the slot's layer of the surface textures (payload_layout.h): positions of both

@@ -25,9 +25,9 @@
 //                         elevation_sources.glsl). Ring samples hold the normal and surface word of
 //                         the nearest vertex (there are no samples beyond the ring).
 // With a normal map (GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE s > 0: the renderer's payloads; collision
-// meshes and bakes have none) the slot also has a layer of its payload page's two surface textures
-// (sampled 2-D array images with two mip levels, engine/generation/surface_textures.h), M = s * N map
-// cells per side. Texels are centred in the map's cells, with a gutter of cells beyond the node:
+// meshes and bakes have none) the slot also has a layer of its payload page's surface texture (a
+// sampled RGBA8 2-D array image with two mip levels, engine/generation/surface_textures.h), M = s * N
+// map cells per side. Texels are centred in the map's cells, with a gutter of cells beyond the node:
 //   mip 0: T = M + 4 texels per side; texel (a, b) is centred at the node's
 //          (u, v) = corner + size * ((a, b) - 1.5) / M: the node's M x M cells and two cells all around
 //          (the gutter holds the neighbours' texels at the same directions, across face seams too, so
@@ -39,12 +39,16 @@
 // a mip-1 texel's centre lies between two mip-0 texels', as a mip chain's does, so one trilinear
 // fetch with LOD = the morph factor k is the blend of the node's map with its parent's, the texture
 // counterpart of the mesh's morph (at k = 1 exactly the parent's texels: no pop).
-// Normals texture (RGBA8_UNORM, each channel x * 0.5 + 0.5): xyz the unit normal, planet-fixed, from
-// double positions by central differences one texel apart (mip 1: one parent texel apart); w the
-// coast field, (ground elevation - sea level) / GLOBE_SURFACE_COAST_SCALE texel widths, clamped to
-// [-1, 1]: its bilinear zero crossing is the per-pixel coastline. Albedo texture (RGBA8_UNORM): rgb
-// the square root of the albedo (the colour ramp at the texel's elevation and slope, or the land
-// cover's blend of its masks there), a = 1.
+// One texel, 4 bytes, all read by that one fetch (docs/rendering.md, "Surface textures"):
+//   xy  the unit normal, planet-fixed, from double positions by central differences one texel apart
+//       (mip 1: one parent texel apart), octahedral [Cigolle 2014] in the node's face frame
+//       (faceFrame, face_mapping.glsl: up is the face's normal, so on any but near-vertical ground
+//       the code stays inside the octahedron's upper half, where bilinear filtering is smooth);
+//   z   the luma Y = (r + 2 g + b) / 4 of the square root of the albedo (the colour ramp at the texel's
+//       elevation and slope, or the land cover's blend there); the chroma (YCoCg's Co, Cg) comes from
+//       the mesh's vertices, at half the texels' resolution per axis at scale 2 (4:2:0 sampling);
+//   w   the coast field, (ground elevation - sea level) / GLOBE_SURFACE_COAST_SCALE texel widths,
+//       clamped to [-1, 1] and stored as x * 0.5 + 0.5: its bilinear zero crossing is the coastline.
 // After the mesh, [cover offset, + (S*S + 1) / 2) the land cover masks, one uvec2 per sample
 // (index as the mesh's): 8 bytes, class i in byte i % 4 of word i / 4, summing to 255 (land_cover.h).
 // Ring samples hold the masks of their nearest vertex, like its normal. Without land cover
@@ -114,12 +118,9 @@ struct uvec4_ {
 // water); 0 = the ground everywhere (collision meshes, bakes, dry planets).
 #define GLOBE_PAYLOAD_SPEC_WATER_SURFACE 26
 // Specialization constant: the normal map's scale s (map cells = s * grid cells), 0 = no map.
-// Bindings of the payload kernel's surface textures (storage images of the job's page): normals and
-// albedo of mip 0, then of mip 1.
-#define GLOBE_PAYLOAD_NORMALS_BINDING 9
-#define GLOBE_PAYLOAD_ALBEDO_BINDING 10
-#define GLOBE_PAYLOAD_PARENT_NORMALS_BINDING 11
-#define GLOBE_PAYLOAD_PARENT_ALBEDO_BINDING 12
+// Bindings of the payload kernel's surface texture (storage images of the job's page): mip 0, mip 1.
+#define GLOBE_PAYLOAD_SURFACE_BINDING 9
+#define GLOBE_PAYLOAD_PARENT_SURFACE_BINDING 10
 #define GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE 27
 // Specialization constant: 1 = the planet has land cover (land_cover.h): the samples' albedo is the
 // masks' blend of the class colours and the masks are written; 0 = the colour ramp, no masks.

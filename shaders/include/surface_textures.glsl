@@ -12,4 +12,14 @@ vec3 surfaceCoordinate(vec2 uv, uint mapCells, uint layer) {
   return vec3(at / float(GLOBE_SURFACE_TEXTURE_SIDE(mapCells)), float(layer));
 }
 
+// The unit normal, in the node's face frame (east, north, up), of a texel's octahedral code `code`
+// (its xy, [0, 1]).
+vec3 surfaceNormal(vec2 code) {
+  vec2 o = code * 2.0 - 1.0;
+  vec3 f = vec3(o, 1.0 - abs(o.x) - abs(o.y));
+  float fold = max(-f.z, 0.0);
+  f.xy += mix(vec2(fold), vec2(-fold), greaterThanEqual(f.xy, vec2(0.0)));
+  return normalize(f);
+}
+
 #endif  // GLOBE_SURFACE_TEXTURES_GLSL

@@ -43,22 +43,18 @@ layout(std430, set = 0, binding = GLOBE_IMAGERY_CELLS_BINDING) readonly buffer I
   TerrainImageryCell imageryCells[];
 };
 // The tiles' surface textures, page by page; a cell names its page.
-layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING + 0) uniform sampler2DArray imageryNormals0;
-layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING + 1) uniform sampler2DArray imageryAlbedo0;
-layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING + 2) uniform sampler2DArray imageryNormals1;
-layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING + 3) uniform sampler2DArray imageryAlbedo1;
-layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING + 4) uniform sampler2DArray imageryNormals2;
-layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING + 5) uniform sampler2DArray imageryAlbedo2;
-layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING + 6) uniform sampler2DArray imageryNormals3;
-layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING + 7) uniform sampler2DArray imageryAlbedo3;
+layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING + 0) uniform sampler2DArray imagerySurface0;
+layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING + 1) uniform sampler2DArray imagerySurface1;
+layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING + 2) uniform sampler2DArray imagerySurface2;
+layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING + 3) uniform sampler2DArray imagerySurface3;
 uint imageryPage = 0u;  // the page of the tile being sampled (mappedColour)
 // Constant bindings behind a switch: no descriptor indexing needed for a per-fragment page.
-void sampleSurface(vec3 at, float lod, out vec4 normal, out vec3 rootAlbedo) {
+vec4 sampleSurface(vec3 at, float lod) {
   switch (imageryPage) {
-    case 0u: normal = textureLod(imageryNormals0, at, lod); rootAlbedo = textureLod(imageryAlbedo0, at, lod).rgb; break;
-    case 1u: normal = textureLod(imageryNormals1, at, lod); rootAlbedo = textureLod(imageryAlbedo1, at, lod).rgb; break;
-    case 2u: normal = textureLod(imageryNormals2, at, lod); rootAlbedo = textureLod(imageryAlbedo2, at, lod).rgb; break;
-    default: normal = textureLod(imageryNormals3, at, lod); rootAlbedo = textureLod(imageryAlbedo3, at, lod).rgb;
+    case 0u: return textureLod(imagerySurface0, at, lod);
+    case 1u: return textureLod(imagerySurface1, at, lod);
+    case 2u: return textureLod(imagerySurface2, at, lod);
+    default: return textureLod(imagerySurface3, at, lod);
   }
 }
 layout(location = 18) flat in uint inImageryCell;
@@ -66,16 +62,14 @@ layout(location = 18) flat in uint inImageryCell;
 layout(location = 3) in vec3 inRelative;
 #endif
 #else
-// The drawn page's surface textures (payload_layout.h), a layer per slot.
-layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING) uniform sampler2DArray surfaceNormals;
-layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING + 1) uniform sampler2DArray surfaceAlbedo;
+// The drawn page's surface texture (payload_layout.h), a layer per slot.
+layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING) uniform sampler2DArray surfaceTexture;
 // An explicit LOD: no derivatives, and the blend to the parent's mip without a branch (a per-fragment
-// branch around a second pair of fetches doubled the terrain pass on lavapipe: docs/rendering.md).
-void sampleSurface(vec3 at, float lod, out vec4 normal, out vec3 rootAlbedo) {
-  normal = textureLod(surfaceNormals, at, lod);
-  rootAlbedo = textureLod(surfaceAlbedo, at, lod).rgb;
-}
+// branch around a second fetch doubled the terrain pass on lavapipe: docs/rendering.md).
+vec4 sampleSurface(vec3 at, float lod) { return textureLod(surfaceTexture, at, lod); }
 #endif
+layout(location = 19) flat in vec3 inSunFace;
+layout(location = 21) in vec2 inChroma;
 layout(location = 4) in vec2 inMapUv;
 layout(location = 5) flat in uint inMapBase;
 layout(location = 6) in float inMapBlend;
@@ -159,19 +153,20 @@ vec3 mappedColour(vec3 modulation, out float coast) {
   vec2 uv = inMapUv;
   float blend = inMapBlend;
 #endif
-  vec4 normal;
-  vec3 root;
-  sampleSurface(surfaceCoordinate(uv, cells, layer), blend, normal, root);
-  coast = normal.w - 0.5;  // stored as x * 0.5 + 0.5 (payload_layout.h)
-  vec3 n = normalize(normal.xyz - 0.5);
+  vec4 texel = sampleSurface(surfaceCoordinate(uv, cells, layer), blend);
+  coast = texel.w - 0.5;  // stored as x * 0.5 + 0.5 (payload_layout.h)
+  vec3 n = surfaceNormal(texel.xy);  // in the node's face frame, as inSunFace and inUp
+  // YCoCg to RGB: the texel's luma, the vertices' chroma.
+  float g = texel.z + inChroma.y, rb = texel.z - inChroma.y;
+  vec3 root = max(vec3(rb + inChroma.x, g, rb - inChroma.x), vec3(0.0));
   vec3 albedo = root * root * modulation;
 #ifdef GLOBE_TERRAIN_ATMOSPHERE
   // The vertex stage's light through the air, applied to the mapped normal and colour
   // (terrain_atmosphere.glsl, TerrainAerial).
-  vec3 light = inSunLight * max(dot(n, frame.sun.xyz), 0.0) + inSkyLight * (1.0 + dot(n, normalize(inUp))) * 0.5;
+  vec3 light = inSunLight * max(dot(n, inSunFace), 0.0) + inSkyLight * (1.0 + dot(n, normalize(inUp))) * 0.5;
   return encodeDisplay(vec3(1.0) - exp(-albedo * light) * inAerialFog, 1.0).rgb;
 #else
-  float light = frame.sun.w + (1.0 - frame.sun.w) * max(dot(n, frame.sun.xyz), 0.0);
+  float light = frame.sun.w + (1.0 - frame.sun.w) * max(dot(n, inSunFace), 0.0);
   return encodeDisplay(albedo * light, 1.0).rgb;
 #endif
 }

@@ -45,9 +45,9 @@ struct TerrainDvec4 {
 // Binding of the land cover's detail textures (a sampler2DArray, one layer per class) in the terrain
 // pipelines with land cover (terrain_fragment.glsl), past every buffer binding.
 #define GLOBE_TERRAIN_DETAIL_BINDING 14
-// The surface textures the _maps fragment stages sample (payload_layout.h; sampler2DArrays, a layer
-// per slot): the drawn page's normals at this binding and its albedo at the next; with imagery LOD,
-// the imagery tiles' GLOBE_IMAGERY_TILE_PAGES pages, normals and albedo of page p at 2p and 2p + 1 after it.
+// The surface texture the _maps fragment stages sample (payload_layout.h; a sampler2DArray, a layer
+// per slot): the drawn page's at this binding; with imagery LOD, the imagery tiles' GLOBE_IMAGERY_TILE_PAGES
+// pages', page p at this binding + p.
 #define GLOBE_TERRAIN_SURFACE_BINDING 15
 // Imagery LOD (planet/imagery/imagery_selection.h; the _imagery fragment stages): the drawn nodes'
 // cell tables (TerrainImageryCell), after the other buffers: at 3, or 9 with the atmosphere's.
@@ -91,20 +91,22 @@ struct TerrainImageryCell {
                      // metre; 0 for roots): its texels blend to the parent's over [0.8, 1] x D
 };
 
-// One drawn node (std430, 96 bytes). Morph band (metres from the camera, LodRanges / NodeMorph): the
+// One drawn node (std430, 128 bytes). Morph band (metres from the camera, LodRanges / NodeMorph): the
 // end is bilinear between morphEnd's corner values at the vertex's place in the node's (u, v) square,
 // start = min(end, max(end - morph.z * (end - morph.y), morph.x)); morphEnd.x = FLT_MAX: never morphs.
 struct TerrainInstance {
-  GLOBE_VEC4 offset;    //  0: xyz = float(node centre - origin), metres: exact (multiples of the quantum)
-  GLOBE_VEC4 morph;     // 16: x = start floor, y = refine range of the drawn depth, z = morph fraction; w unused
-  GLOBE_UVEC4 info;     // 32: x = first vec4 of the node's payload slot, y = sample stride (1 full, 2 partial),
-                        //     z = level the node is drawn at (id.level - partial),
-                        //     w = node edge of a skirt instance (NodeEdge), 0 for the grid
-  GLOBE_VEC4 morphEnd;  // 48: morph end at the node's corners u0 v0, u1 v0, u0 v1, u1 v1
-  GLOBE_VEC4 detail;    // 64: where the node's (u, v) corner falls in the fine (xy) and coarse (zw)
-                        //     detail tiles, [0, 1): the tiles' coordinates go on across nodes
-  GLOBE_UVEC4 imagery;  // 80: x = the node's first cell in the imagery table; y = the slot's layer in its
-                        //     page's surface textures; zw unused
+  GLOBE_VEC4 offset;     //  0: xyz = float(node centre - origin), metres: exact (multiples of the quantum)
+  GLOBE_VEC4 morph;      // 16: x = start floor, y = refine range of the drawn depth, z = morph fraction; w unused
+  GLOBE_UVEC4 info;      // 32: x = first vec4 of the node's payload slot, y = sample stride (1 full, 2 partial),
+                         //     z = level the node is drawn at (id.level - partial),
+                         //     w = node edge of a skirt instance (NodeEdge), 0 for the grid
+  GLOBE_VEC4 morphEnd;   // 48: morph end at the node's corners u0 v0, u1 v0, u0 v1, u1 v1
+  GLOBE_VEC4 detail;     // 64: where the node's (u, v) corner falls in the fine (xy) and coarse (zw)
+                         //     detail tiles, [0, 1): the tiles' coordinates go on across nodes
+  GLOBE_UVEC4 imagery;   // 80: x = the node's first cell in the imagery table; y = the slot's layer in its
+                         //     page's surface texture; zw unused
+  GLOBE_VEC4 frameEast;  // 96: xyz = the node's face frame (RhombusFaceMapping::faceFrame): east, then up;
+  GLOBE_VEC4 frameUp;    // 112: the surface texture's normals are octahedral in it (payload_layout.h)
 };
 
 // Positions re-projected every frame (VertexPositions::kReprojected, measured by globe trade): one
@@ -126,7 +128,7 @@ struct TerrainDrawPush {
 
 #ifdef __cplusplus
 static_assert(sizeof(TerrainFrame) == 256);
-static_assert(sizeof(TerrainInstance) == 96);
+static_assert(sizeof(TerrainInstance) == 128);
 static_assert(sizeof(TerrainImageryCell) == 32);
 static_assert(GLOBE_IMAGERY_TILE_CELLS == GLOBE_IMAGERY_TILE_GRID * GLOBE_IMAGERY_TILE_MAP_SCALE);
 static_assert(GLOBE_IMAGERY_TILE_PAGES == 4, "surface_textures.glsl declares four pages");

@@ -32,6 +32,12 @@ layout(location = 5) flat out uint outMapBase;
 layout(location = 6) out float outMapBlend;
 // Imagery LOD (the _imagery fragment stages read it with outRelative): the node's cell table.
 layout(location = 18) flat out uint outImageryCell;
+// The surface texture (the _maps fragment stages, payload_layout.h): the sun's direction in the node's
+// face frame, which the texture's normals are coded in (the fragments light in that frame: one flat
+// input instead of the frame's three), and the albedo's chroma (YCoCg's Co, Cg of its square root) at
+// the vertex.
+layout(location = 19) flat out vec3 outSunFace;
+layout(location = 21) out vec2 outChroma;
 #ifdef GLOBE_TERRAIN_COVER
 // Land cover (terrain_cover*.vert, for the _cover fragment stages): the masks, the fine detail
 // texture's coordinates, and the coarse detail texture's modulation, sampled here per vertex (the
@@ -91,7 +97,10 @@ void main() {
   outAerialFog = aerial.fog;
   outSunLight = aerial.sunLight;
   outSkyLight = aerial.skyLight;
-  outUp = aerial.up;
+  // In the face frame too: the mapped fragments' sky light takes it with the texture's normal.
+  outUp = transpose(mat3(instances[gl_InstanceIndex].frameEast.xyz,
+                         cross(instances[gl_InstanceIndex].frameUp.xyz, instances[gl_InstanceIndex].frameEast.xyz),
+                         instances[gl_InstanceIndex].frameUp.xyz)) * aerial.up;
   outSkyZenith = uintBitsToFloat(atmosphereViewTable[GLOBE_VIEW_TEXELS].xyz);
   outSkyHorizon = uintBitsToFloat(atmosphereViewTable[GLOBE_VIEW_TEXELS + 1].xyz);
 #endif
@@ -103,6 +112,11 @@ void main() {
   outMapBase = v.mapBase;
   outMapBlend = v.mapBlend;
   outImageryCell = v.imageryCell;
+  vec3 east = instances[gl_InstanceIndex].frameEast.xyz, up = instances[gl_InstanceIndex].frameUp.xyz;
+  mat3 toFace = transpose(mat3(east, cross(up, east), up));
+  outSunFace = toFace * frame.sun.xyz;
+  vec3 root = sqrt(max(v.albedo, vec3(0.0)));
+  outChroma = vec2(0.5 * (root.r - root.b), 0.25 * (2.0 * root.g - root.r - root.b));
 #ifdef GLOBE_TERRAIN_COVER
   outCover0 = v.cover0;
   outCover1 = v.cover1;

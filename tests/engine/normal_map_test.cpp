@@ -10,6 +10,7 @@
 #include "tests/support/gpu_test.h"
 
 #include "engine/vk/resources.h"
+#include "planet/geometry/face_mapping.h"
 
 #include <glm/geometric.hpp>
 
@@ -23,17 +24,11 @@ namespace {
 
 constexpr uint32_t kCells = 16;
 
-// One texel of the surface textures as stored (payload_layout.h): RGBA8 normal and coast field
-// (x * 0.5 + 0.5), RGBA8 square root of the albedo.
-struct StoredTexel {
-  std::array<uint8_t, 4> normal{};
-  std::array<uint8_t, 4> albedo{};
-  bool operator==(const StoredTexel&) const = default;
-};
+// One texel of the surface texture as stored (payload_layout.h): RGBA8, the normal octahedral in the
+// face frame, the luma of the albedo's square root, the coast field.
+using StoredTexel = std::array<uint8_t, 4>;
 
-// The byte a value in [-1, 1] (normal, coast) or [0, 1] (square root of the albedo) is stored as.
-int signedByte(double v) { return int(std::lround((v * 0.5 + 0.5) * 255.0)); }
-int rootByte(float linear) { return int(std::lround(std::sqrt(std::clamp(linear, 0.0f, 1.0f)) * 255.0f)); }
+int unitByte(double v) { return int(std::lround(v * 255.0)); }  // a value in [0, 1]
 
 // Copies mip `mip` of layers [0, layers) of `image` (side x side texels of 4 bytes) into `out`.
 void readMip(vk::Device& device, VkImage image, uint32_t mip, uint32_t side, uint32_t layers, vk::Buffer& out) {
@@ -49,7 +44,7 @@ void readMip(vk::Device& device, VkImage image, uint32_t mip, uint32_t side, uin
   });
 }
 
-// The surface textures' texels of `nodes` generated into slots 0..n-1 at map scale `scale`, per node
+// The surface texture's texels of `nodes` generated into slots 0..n-1 at map scale `scale`, per node
 // in the reference's order (mip 0 row by row, then mip 1: normalMapReference).
 std::vector<std::vector<StoredTexel>> generateMaps(vk::Device& device, const ElevationModel& model,
                                                    const std::vector<NodeId>& nodes, uint32_t scale) {
@@ -63,39 +58,52 @@ std::vector<std::vector<StoredTexel>> generateMaps(vk::Device& device, const Ele
   std::vector<std::vector<StoredTexel>> maps(nodes.size());
   for (uint32_t mip = 0; mip < 2; ++mip) {
     const uint32_t side = textures.side() >> mip;
-    const VkDeviceSize bytes = VkDeviceSize(side) * side * layers * 4;
-    vk::Buffer normals(device, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::HostVisible, "normals readback");
-    vk::Buffer albedo(device, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::HostVisible, "albedo readback");
-    readMip(device, textures.normalsImage(0), mip, side, layers, normals);
-    readMip(device, textures.albedoImage(0), mip, side, layers, albedo);
-    const auto* n = static_cast<const std::array<uint8_t, 4>*>(normals.mapped());
-    const auto* a = static_cast<const std::array<uint8_t, 4>*>(albedo.mapped());
+    vk::Buffer texels(device, VkDeviceSize(side) * side * layers * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                      vk::MemoryUse::HostVisible, "surface readback");
+    readMip(device, textures.image(0), mip, side, layers, texels);
+    const auto* t = static_cast<const StoredTexel*>(texels.mapped());
     for (size_t k = 0; k < nodes.size(); ++k)
-      for (size_t t = 0; t < size_t(side) * side; ++t)
-        maps[k].push_back({n[k * side * side + t], a[k * side * side + t]});
+      maps[k].insert(maps[k].end(), t + k * side * side, t + (k + 1) * side * side);
   }
   return maps;
 }
 
-// Largest difference in stored bytes between two texels: normal and coast, albedo.
-int normalStep(const StoredTexel& a, const StoredTexel& b) {
-  int worst = 0;
-  for (size_t c = 0; c < 4; ++c) worst = std::max(worst, std::abs(int(a.normal[c]) - int(b.normal[c])));
-  return worst;
-}
-int albedoStep(const StoredTexel& a, const StoredTexel& b) {
-  int worst = 0;
-  for (size_t c = 0; c < 3; ++c) worst = std::max(worst, std::abs(int(a.albedo[c]) - int(b.albedo[c])));
-  return worst;
+// The octahedral code [Cigolle 2014] of a unit normal in `face`'s frame, in [0, 1]^2.
+glm::dvec2 octahedralCode(const glm::dvec3& normal, int face) {
+  const auto frame = RhombusFaceMapping::get().faceFrame(face);
+  const glm::dvec3 n(glm::dot(frame[0], normal), glm::dot(frame[1], normal), glm::dot(frame[2], normal));
+  glm::dvec2 o = glm::dvec2(n.x, n.y) / (std::abs(n.x) + std::abs(n.y) + std::abs(n.z));
+  if (n.z < 0.0)
+    o = glm::dvec2((1.0 - std::abs(o.y)) * (o.x >= 0.0 ? 1.0 : -1.0),
+                   (1.0 - std::abs(o.x)) * (o.y >= 0.0 ? 1.0 : -1.0));
+  return o * 0.5 + 0.5;
 }
 
-// The texel the GPU should store for a reference texel.
-StoredTexel expectedTexel(const NormalMapTexel& r) {
-  StoredTexel t;
-  t.normal = {uint8_t(signedByte(r.normal.x)), uint8_t(signedByte(r.normal.y)), uint8_t(signedByte(r.normal.z)),
-              uint8_t(signedByte(r.coast))};
-  t.albedo = {uint8_t(rootByte(r.albedo.x)), uint8_t(rootByte(r.albedo.y)), uint8_t(rootByte(r.albedo.z)), 255};
-  return t;
+// The planet-fixed unit normal a stored texel of a node on `face` decodes to (surface_textures.glsl).
+glm::dvec3 storedNormal(const StoredTexel& t, int face) {
+  const glm::dvec2 o = glm::dvec2(t[0], t[1]) / 255.0 * 2.0 - 1.0;
+  glm::dvec3 f(o, 1.0 - std::abs(o.x) - std::abs(o.y));
+  const double fold = std::max(-f.z, 0.0);
+  f.x += f.x >= 0.0 ? -fold : fold;
+  f.y += f.y >= 0.0 ? -fold : fold;
+  const auto frame = RhombusFaceMapping::get().faceFrame(face);
+  return glm::normalize(f.x * frame[0] + f.y * frame[1] + f.z * frame[2]);
+}
+
+// The texel the GPU should store for a reference texel of a node on `face`.
+StoredTexel expectedTexel(const NormalMapTexel& r, int face) {
+  const glm::dvec2 code = octahedralCode(r.normal, face);
+  const glm::dvec3 root = glm::sqrt(glm::clamp(glm::dvec3(r.albedo), 0.0, 1.0));
+  const double luma = 0.25 * root.x + 0.5 * root.y + 0.25 * root.z;
+  return {uint8_t(unitByte(code.x)), uint8_t(unitByte(code.y)), uint8_t(unitByte(luma)),
+          uint8_t(unitByte(r.coast * 0.5 + 0.5))};
+}
+
+// Largest difference in stored bytes between two texels, over channels [first, last).
+int byteStep(const StoredTexel& a, const StoredTexel& b, size_t first = 0, size_t last = 4) {
+  int worst = 0;
+  for (size_t c = first; c < last; ++c) worst = std::max(worst, std::abs(int(a[c]) - int(b[c])));
+  return worst;
 }
 
 // Where texel `t` (the generateMaps order) of a map of `m` cells lies: its half-cell lattice point
@@ -121,8 +129,9 @@ class NormalMapShapeTest : public GpuTest, public ::testing::WithParamInterface<
 INSTANTIATE_TEST_SUITE_P(Shapes, NormalMapShapeTest, ::testing::Values(kPlanetShapes[0], kPlanetShapes[1]),
                          planetShapeName);
 
-// Stored GPU texels within one 8-bit step of the CPU's double reference (normal, coast field,
-// albedo), at depths 0..26, at face corners and seams, at every map scale.
+// Stored GPU texels within one 8-bit step of the CPU's double reference (the normal's octahedral
+// code, the albedo's luma, the coast field), at depths 0..26, at face corners and seams, at every map
+// scale.
 TEST_P(NormalMapShapeTest, MatchesCpuDoubleReference) {
   const ElevationModel& model = earthlikeModel(GetParam());
   std::vector<NodeId> nodes;
@@ -141,8 +150,8 @@ TEST_P(NormalMapShapeTest, MatchesCpuDoubleReference) {
       const auto reference = normalMapReference(model, makePayloadJob(nodes[k], 0, model), kCells, scale);
       ASSERT_EQ(reference.size(), maps[k].size());
       for (size_t t = 0; t < reference.size(); ++t) {
-        const StoredTexel expected = expectedTexel(reference[t]);
-        const int normal = normalStep(maps[k][t], expected), albedo = albedoStep(maps[k][t], expected);
+        const StoredTexel expected = expectedTexel(reference[t], nodes[k].face);
+        const int normal = byteStep(maps[k][t], expected, 0, 2), albedo = byteStep(maps[k][t], expected, 2, 4);
         worstNormal = std::max(worstNormal, normal);
         worstAlbedo = std::max(worstAlbedo, albedo);
         ASSERT_LE(normal, 1) << "texel " << t;
@@ -157,7 +166,9 @@ TEST_P(NormalMapShapeTest, MatchesCpuDoubleReference) {
 // A node's gutter texels (the two cells beyond its edges, payload_layout.h) and its edge neighbour's
 // texels at the same directions hold the same texel, so bilinear filtering at the shared edge reads
 // the same values from both sides: bit-identical within a face; across a face seam (the neighbour's
-// axes are turned, so its differences are taken in another order) within one 8-bit step. Both mips.
+// axes are turned, so its differences are taken in another order, and its normals are coded in its
+// own face's frame) decoded normals within two 8-bit octahedral roundings (0.025), luma and coast
+// within one 8-bit step. Both mips.
 // Across seams the texels within two texels of a node's corner are skipped: their differences reach
 // beyond the corner, where at a polyhedron vertex the rings of 3 or 5 faces meet and no
 // neighbourhood is shared.
@@ -201,8 +212,9 @@ TEST_P(NormalMapShapeTest, BorderTexelsAgreeAcrossNodeEdgesAndFaceSeams) {
           continue;
         }
         ++acrossSeams;
-        EXPECT_LE(normalStep(va, vb), 1) << "node " << base / 5 << " edge " << e << " texel " << ta;
-        EXPECT_LE(albedoStep(va, vb), 1) << "node " << base / 5 << " edge " << e << " texel " << ta;
+        EXPECT_LE(glm::length(storedNormal(va, nodes[base].face) - storedNormal(vb, other.face)), 0.025)
+            << "node " << base / 5 << " edge " << e << " texel " << ta;
+        EXPECT_LE(byteStep(va, vb, 2, 4), 1) << "node " << base / 5 << " edge " << e << " texel " << ta;
       }
     }
   }
@@ -246,7 +258,7 @@ TEST(NormalMapBudgetTest, PoolBudgetCountsTheNormalMap) {
   for (uint32_t scale : {1u, 2u, 4u}) {
     const size_t m = kCells * scale, texels = (m + 4) * (m + 4) + (m / 2 + 2) * (m / 2 + 2);
     const size_t slot = GpuPayloadGenerator::slotBytesFor(kCells, scale);
-    EXPECT_EQ(slot, mesh + cover + texels * (4 + 4)) << scale;
+    EXPECT_EQ(slot, mesh + cover + texels * 4) << scale;
     FakePayloadGenerator generator(slot, 6371000.0, {6.36e6, 6.38e6});
     StreamingConfig config;
     config.vramBudget_MiB = 64.0;
