@@ -128,13 +128,13 @@ void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid) {
                  "classes' colours per vertex) (docs/rendering.md, \"Land cover\"; default: the preset's)")
       ->check(CLI::IsMember({"on", "off"}));
   cmd.add_option("--imagery", options.imagery,
-                 "on (normal and colour maps from imagery tiles of their own LOD: each texel covers at most 1.5 "
-                 "pixels, whatever the mesh's level) or off (each node's own map, --normal-map-scale) "
+                 "on (the surface textures from imagery tiles of their own LOD: each texel covers at most 1.5 "
+                 "pixels, whatever the mesh's level) or off (each node's own texture, --normal-map-scale) "
                  "(docs/rendering.md, \"Imagery LOD\"; default: the preset's)")
       ->check(CLI::IsMember({"on", "off"}));
   cmd.add_option("--normal-map-scale", options.normalMapScale,
-                 "Normal map cells per grid cell: 1, 2 or 4; 0 = none, light per vertex (docs/rendering.md, "
-                 "\"Normal maps\"; default: the preset's)")
+                 "Surface texture texels (normal, colour, coast per pixel) per grid cell: 1, 2 or 4; 0 = none, "
+                 "light per vertex (docs/rendering.md, \"Surface textures\"; default: the preset's)")
       ->check(CLI::IsMember({0U, 1U, 2U, 4U}));
   cmd.add_option("--atmosphere", options.atmosphere,
                  "With a planet's [atmosphere]: full (sky, light and aerial perspective), sky (the sky only, the "

@@ -106,7 +106,7 @@ std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::st
     s.ranges.roughness = true;
   };
   auto depth = [](TerrainSettings& s, double v) { s.ranges.maxDepth = int(v); };
-  // Normal map cells per grid cell (docs/rendering.md, "Normal maps"): shading detail vs generation.
+  // Normal map cells per grid cell (docs/rendering.md, "Surface textures"): shading detail vs generation.
   auto normalMap = [](TerrainSettings& s, double v) { s.normalMapScale = uint32_t(v); };
   auto morph = [](TerrainSettings& s, double v) { s.ranges.morphFraction = v; };
   // Generation in float instead of double (what double buys; never a preset).

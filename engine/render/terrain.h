@@ -34,7 +34,7 @@ const char* atmosphereDetailName(AtmosphereDetail detail);
 struct TerrainSettings {
   uint32_t gridCells = 32;  // cells per node side: power of two in [16, 256]
   // Normal map cells per grid cell (1, 2 or 4): each payload's normal and colour map has
-  // normalMapScale * gridCells cells per side (docs/rendering.md, "Normal maps"). 0: no maps, the
+  // normalMapScale * gridCells cells per side (docs/rendering.md, "Surface textures"). 0: no maps, the
   // light and colour per vertex (cheaper per fragment on lavapipe).
   uint32_t normalMapScale = 1;
   // On a planet with land cover: splat the classes' detail textures per fragment (the _cover

@@ -7,7 +7,7 @@
 // (half of its rasteriser time is the JIT-compiled fragment code), and its vertex stage runs on one
 // thread before the rasterisers start: the colour ramp is evaluated once per payload sample by the
 // generation kernel, not here (docs/rendering.md, "Per-vertex light", "Albedo in the payload").
-// With normal maps the fragment stage shades from the map instead (docs/rendering.md, "Normal maps")
+// With normal maps the fragment stage shades from the map instead (docs/rendering.md, "Surface textures")
 // and uses this colour for the debug views only.
 #include "terrain_vertex.glsl"
 #include "display_encoding.glsl"
