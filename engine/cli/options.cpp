@@ -119,6 +119,17 @@ void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid) {
             return {};
           },
           "PX"));
+  cmd.add_option("--texel-px", options.texel_px,
+                 "With tolerance-driven ranges and surface textures: also refine nodes whose texels would cover more "
+                 "than PX pixels (0 = off, else 0.5..1000; docs/lod.md, \"Texel rule\"; default: the preset's)")
+      ->check(CLI::Validator(
+          [](const std::string& text) -> std::string {
+            double px = 0;
+            if (!CLI::detail::lexical_cast(text, px) || !(px == 0.0 || (px >= kMinTexelPx && px <= kMaxTolerancePx)))
+              return "must be 0 or a number of pixels in [0.5, 1000], got '" + text + "'";
+            return {};
+          },
+          "PX"));
   cmd.add_option("--roughness", options.roughness,
                  "With tolerance-driven ranges: on (refine rough relief further than plains and sea) or off "
                  "(one range per depth) (docs/lod.md, \"Roughness\"; default: off)")
@@ -154,6 +165,7 @@ Result<TerrainSettings> terrainSettingsFromOptions(const QualityOptions& options
   TerrainSettings settings = terrainSettingsFor(*preset);
   if (options.gridCells) settings.gridCells = options.gridCells;
   if (options.tolerance_px > 0) settings.ranges.tolerance_px = options.tolerance_px;
+  if (options.texel_px >= 0) settings.ranges.texel_px = options.texel_px;
   if (!options.roughness.empty()) settings.ranges.roughness = options.roughness == "on";
   if (!options.detailTextures.empty()) settings.detailTextures = options.detailTextures == "on";
   if (!options.imagery.empty()) settings.imagery = options.imagery == "on";

@@ -28,6 +28,8 @@ inline constexpr std::uint64_t kMaxImageMemoryMiB = 4096;
 // --tolerance: below 0.05 px the ranges reach the max depth everywhere; above 1000 px nothing refines.
 inline constexpr double kMinTolerancePx = 0.05;
 inline constexpr double kMaxTolerancePx = 1000.0;
+// --texel-px: 0 turns the texel rule off; below 0.5 px the ranges reach the max depth everywhere.
+inline constexpr double kMinTexelPx = 0.5;
 
 // "WxH" with 16 <= W, H <= 16384 and W * H * kRenderBytesPerPixel within kMaxImageMemoryMiB.
 Result<ImageSize> parseSize(const std::string& text, const std::string& field);
@@ -52,6 +54,7 @@ struct QualityOptions {
   std::string quality;                              // --quality; empty: the planet's default_quality
   uint32_t gridCells = 0;                           // --grid; 0: the preset's grid
   double tolerance_px = 0;                          // --tolerance; 0: the preset's LOD (distance or tolerance ranges)
+  double texel_px = -1;                             // --texel-px; < 0: the preset's (0: off)
   std::string antialiasing;                         // --aa; empty: the preset's
   uint32_t normalMapScale = kPresetNormalMapScale;  // --normal-map-scale
   std::string atmosphere;                           // --atmosphere; empty: the preset's
@@ -59,8 +62,8 @@ struct QualityOptions {
   std::string detailTextures;                       // --detail-textures on|off; empty: the preset's
   std::string imagery;                              // --imagery on|off; empty: the preset's
 };
-// --quality, --tolerance, --roughness, --detail-textures, --imagery, --aa, --normal-map-scale, --atmosphere and, when
-// withGrid,
+// --quality, --tolerance, --texel-px, --roughness, --detail-textures, --imagery, --aa, --normal-map-scale, --atmosphere
+// and, when withGrid,
 // --grid, with the same help and checks on every rendering command; read them back with terrainSettingsFromOptions.
 void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid = true);
 vk::DeviceOptions deviceOptions(const DeviceFlags& flags);

@@ -23,6 +23,8 @@ TerrainSettings terrainSettingsFor(QualityPreset preset) {
       // the distance multiplier 0.5 it replaces, worst p95 screen error 5.2 px instead of 6.1, and the
       // flyover's median frame the same (docs/tradeoffs.md, "Tolerance vs distance ranges").
       s.ranges.tolerance_px = 16.0;
+      // No texel rule (--texel-px): refining the flyover's plains and sea until texels are within 8 px
+      // took its median from ~33 to 35 ms, 4 px to 39 ms (docs/lod.md, "Texel rule").
       // Depth 24 instead of 20: the same nodes above ~100 m, and at the 2 m camera p95 6.1 px
       // instead of 10.5 px for the same frame time (globe trade, 2026-11-22).
       s.ranges.maxDepth = 24;

@@ -66,6 +66,10 @@ Result<std::unique_ptr<Terrain>> Terrain::create(vk::Device& device, const Eleva
   lod.minElevation_m = model.bounds().min_m;
   lod.maxElevation_m = model.bounds().max_m;
   lod.ranges = settings.ranges;
+  // The texel rule follows the mesh payloads' own surface textures (imagery has its own selection).
+  const bool ownMaps =
+      settings.normalMapScale > 0 && !(settings.imagery && settings.vertexPositions == VertexPositions::kStored);
+  lod.ranges.texelsPerNode = ownMaps ? settings.gridCells * settings.normalMapScale : 0;
   auto selector = LodSelector::create(lod);
   if (!selector) return selector.error();
   if (lod.ranges.tolerance_px > 0.0 && lod.ranges.roughness)

@@ -62,6 +62,7 @@ Result<LodRanges> LodRanges::create(const LodRangeConfig& c, double radius_m) {
   }
   if (!(c.morphFraction > 0.0 && c.morphFraction <= 1.0)) return bad("morphFraction", "must be in (0, 1]");
   if (!(std::isfinite(c.tolerance_px) && c.tolerance_px >= 0.0)) return bad("tolerance", "must be finite and >= 0");
+  if (!(std::isfinite(c.texel_px) && c.texel_px >= 0.0)) return bad("texel_px", "must be finite and >= 0");
   LodRanges r;
   r.config_ = c;
   r.maxError_.fill(-1.0);
@@ -74,6 +75,9 @@ Result<LodRanges> LodRanges::create(const LodRangeConfig& c, double radius_m) {
   for (int d = c.maxDepth - 1; d >= 0; --d) {
     r.nominal_[static_cast<size_t>(d)] = value;
     value *= c.rangeRatio;
+    // The texel rule's range over lambda (a node's texel width seen at texel_px).
+    if (c.texel_px > 0.0 && c.texelsPerNode > 0)
+      r.texelRadians_[static_cast<size_t>(d)] = nominalNodeWidth(d, radius_m) / (c.texelsPerNode * c.texel_px);
   }
   r.recompute();
   return r;
@@ -224,7 +228,9 @@ bool LodRanges::recompute() {
   double finer = 0.0;  // R(d+1), none below the last refinable depth
   for (int d = config_.maxDepth - 1; d >= 0; --d) {
     const size_t i = static_cast<size_t>(d);
-    double value = toleranceDriven() ? pixelsPerRadian_ * estimatedError(d) / config_.tolerance_px : nominal_[i];
+    double value = toleranceDriven()
+                       ? pixelsPerRadian_ * std::max(estimatedError(d) / config_.tolerance_px, texelRadians_[i])
+                       : nominal_[i];
     if (d + 1 <= config_.maxDepth - 1) {
       value = std::max(value, grown(finer, maxDiagonal_[i + 1]));
     }

@@ -54,6 +54,12 @@ struct LodRangeConfig {
   // from its planet, LodRanges::setRoughness); false: one range per depth. Off by default: on
   // earthlike it buys no triangles at equal screen error (docs/tradeoffs.md).
   bool roughness = false;
+  // Tolerance mode with surface textures (payload_layout.h): a node of depth d is also refined while
+  // its texels would cover more than texel_px pixels, R(d) >= lambda * W(d) / (texelsPerNode *
+  // texel_px), W the nominal node width: the per-pixel detail then reaches the screen where the
+  // geometric error alone would keep plains and sea coarse. 0: geometric error only.
+  double texel_px = 0.0;
+  uint32_t texelsPerNode = 0;  // the surface texture's texels per node side (grid cells x map scale)
 };
 
 // Pixels per radian of a view `height_px` tall with vertical field of view `verticalFov_rad`:
@@ -141,6 +147,7 @@ class LodRanges {
   void recomputeBands();
   LodRangeConfig config_;
   std::array<double, kMaxNodeLevel + 1> nominal_{};
+  std::array<double, kMaxNodeLevel + 1> texelRadians_{};  // W(d) / (texelsPerNode * texel_px) / radius: 0 without
   std::array<double, kMaxNodeLevel + 1> range_{};
   std::array<double, kMaxNodeLevel + 1> maxDiagonal_{};
   std::array<double, kMaxNodeLevel + 1> maxError_{};       // per payload depth; < 0: none observed

@@ -44,7 +44,6 @@ void appendTexels(const ElevationModel& model, const gpu::PayloadJob& job, int m
                   int step, std::vector<NormalMapTexel>& texels) {
   const gpu::ElevationParams& e = model.params();
   const int side = grid.side, texelsPerSide = side - 2;
-  const double texel_m = job.uv.z * e.radius_m * double(step) / double(m);
   for (int t = 0; t < texelsPerSide * texelsPerSide; ++t) {
     const int gx = t % texelsPerSide + 1, gy = t / texelsPerSide + 1;
     const size_t at = size_t(gy) * size_t(side) + size_t(gx), row = size_t(side);
@@ -65,6 +64,8 @@ void appendTexels(const ElevationModel& model, const gpu::PayloadJob& job, int m
     // The kernel keeps the ground as a float: the ramp's drawn elevation and the coast from it.
     const float ground = float(grid.points[at].w);
     const float drawn = sea ? std::max(ground, float(model.seaLevel_m())) : ground;
+    // = coastField (payload_generate.glsl).
+    const double texel_m = job.uv.z * e.radius_m * double(step) / double(m);
     const float coast =
         std::clamp(float(double(ground) - e.sea_level_m) / float(texel_m * GLOBE_SURFACE_COAST_SCALE), -1.0f, 1.0f);
     texels.push_back(

@@ -196,12 +196,16 @@ double mapScratchWord(double ground, double firstLayer) {
   return packDouble2x32(uvec2(floatBitsToUint(float(ground)), floatBitsToUint(float(firstLayer))));
 }
 
-// The coast field of a texel (payload_layout.h): its ground above sea level in units of
-// GLOBE_SURFACE_COAST_SCALE texel widths of its level (the same at every node of the level), clamped.
-float coastField(float ground, PayloadJob job, uint step) {
+// The ground elevation (a float) stored in scratch entry `at` of a surface grid.
+float scratchGround(uint at) { return uintBitsToFloat(unpackDouble2x32(scratch[at].w)).x; }
+
+// The coast field of the texel at scratch entry `at` (payload_layout.h): its ground's height above
+// sea level in GLOBE_SURFACE_COAST_SCALE texel widths (`step` map cells; the same at every node of a
+// level, so neighbours and parent agree), clamped.
+float coastField(uint at, PayloadJob job, uint step) {
   double texel_m = job.uv.z * GLOBE_ELEVATION_PARAMS.radius_m * double(step) / double(push.cells * kNormalMapScale);
-  return clamp(float(double(ground) - GLOBE_ELEVATION_PARAMS.sea_level_m) / float(texel_m * GLOBE_SURFACE_COAST_SCALE),
-               -1.0, 1.0);
+  float above = float(double(scratchGround(at)) - GLOBE_ELEVATION_PARAMS.sea_level_m);
+  return clamp(above / float(texel_m * GLOBE_SURFACE_COAST_SCALE), -1.0, 1.0);
 }
 
 // One texel of the surface texture (payload_layout.h): the normal octahedral in the face's frame,
@@ -225,11 +229,10 @@ void storeSurfaceTexel(uint mip, ivec3 texel, vec4 encoded) {
     imageStore(parentSurfaceImage, texel, encoded);
 }
 
-// One texel of the slot's surface textures from the scratch entry `at` of its grid (`row`: entries per
-// grid row, `step`: texel width in map cells, 1 or 2): the normal by central differences one texel
-// apart, the coast field and the albedo at the texel's elevation and slope, as pass 2 does for the
-// mesh samples.
-void surfaceTexel(PayloadJob job, uint scratchBase, uint at, uint row, uint step, uint mip, ivec3 texel) {
+// One texel of the slot's surface texture from the scratch entry `at` of its grid (`row`: entries per
+// grid row): the normal by central differences one texel apart, the coast field and the albedo at
+// the texel's elevation and slope, as pass 2 does for the mesh samples. Returns the texel's ground.
+float surfaceTexel(PayloadJob job, uint scratchBase, uint at, uint row, uint mip, ivec3 texel) {
   precise dvec3 du = scratch[at + 1u].xyz - scratch[at - 1u].xyz;
   precise dvec3 dv = scratch[at + row].xyz - scratch[at - row].xyz;
   precise dvec3 c = dvec3(du.y * dv.z - du.z * dv.y, du.z * dv.x - du.x * dv.z, du.x * dv.y - du.y * dv.x);
@@ -245,12 +248,15 @@ void surfaceTexel(PayloadJob job, uint scratchBase, uint at, uint row, uint step
   vec3 albedo = surfaceAlbedo(scratchSurfaceWord(double(drawn), double(words.y)),
                               kLandCover != 0u ? sampleDirection(job, 2u * m, lattice.x, lattice.y) : dvec3(0.0lf),
                               cosSlope, masks);
-  storeSurfaceTexel(mip, texel, encodeSurfaceTexel(job, normal, albedo, coastField(ground, job, step)));
+  storeSurfaceTexel(mip, texel, encodeSurfaceTexel(job, normal, albedo, coastField(at, job, mip + 1u)));
+  return ground;
 }
 
 // Fills both mips of the slot's layer of the surface textures (payload_layout.h): positions of both
-// grids in double into the job's scratch, then every texel (surfaceTexel).
-void fillNormalMap(PayloadJob job, uint scratchBase) {
+// grids in double into the job's scratch, then every texel (surfaceTexel). Returns the lowest ground of
+// the invocation's texels: a node whose texels dip below the sea has water to draw, though its
+// vertices may all be above it.
+double fillNormalMap(PayloadJob job, uint scratchBase) {
   uint m = push.cells * kNormalMapScale;
   memoryBarrierBuffer();
   barrier();  // the mesh passes are done with the scratch
@@ -266,6 +272,7 @@ void fillNormalMap(PayloadJob job, uint scratchBase) {
   barrier();
   uint side0 = GLOBE_SURFACE_TEXTURE_SIDE(m), side1 = GLOBE_SURFACE_TEXTURE_PARENT_SIDE(m);
   uint grid0 = GLOBE_SURFACE_GRID0_SIDE(m), grid1 = GLOBE_SURFACE_GRID1_SIDE(m);
+  float lowest = 3.0e38;
   for (uint t = gl_LocalInvocationID.x; t < GLOBE_NORMAL_MAP_TEXELS(m); t += GLOBE_PAYLOAD_WORKGROUP) {
     uint mip = t < side0 * side0 ? 0u : 1u;
     uint local = mip == 0u ? t : t - side0 * side0;
@@ -273,8 +280,9 @@ void fillNormalMap(PayloadJob job, uint scratchBase) {
     uint x = local % side, y = local / side;
     // Texel (x, y) is grid point (x + 1, y + 1): the grid has one more point all around.
     uint at = scratchBase + (mip == 0u ? 0u : grid0 * grid0) + (y + 1u) * row + x + 1u;
-    surfaceTexel(job, scratchBase, at, row, mip + 1u, mip, ivec3(int(x), int(y), int(job.slot)));
+    lowest = min(lowest, surfaceTexel(job, scratchBase, at, row, mip, ivec3(int(x), int(y), int(job.slot))));
   }
+  return double(lowest);
 }
 
 void main() {
@@ -362,6 +370,8 @@ void main() {
     if (kLandCover != 0u) payloadTexels[coverBase * 2u + index] = masks;
   }
   sharedError[gl_LocalInvocationID.x] = localError;
+  if (kNormalMapScale > 0u)  // the texels' grids reuse the scratch: the mesh passes are done with it
+    sharedLowest[gl_LocalInvocationID.x] = min(sharedLowest[gl_LocalInvocationID.x], fillNormalMap(job, scratchBase));
 
   for (uint stride = GLOBE_PAYLOAD_WORKGROUP / 2u; stride > 0u; stride >>= 1) {
     barrier();
@@ -378,5 +388,4 @@ void main() {
   }
   if (gl_LocalInvocationID.x == 0u)
     results[jobIndex] = PayloadResult(sharedMin[0], sharedMax[0], sharedError[0], sharedLowest[0]);
-  if (kNormalMapScale > 0u) fillNormalMap(job, scratchBase);
 }

@@ -47,8 +47,12 @@
 //   z   the luma Y = (r + 2 g + b) / 4 of the square root of the albedo (the colour ramp at the texel's
 //       elevation and slope, or the land cover's blend there); the chroma (YCoCg's Co, Cg) comes from
 //       the mesh's vertices, at half the texels' resolution per axis at scale 2 (4:2:0 sampling);
-//   w   the coast field, (ground elevation - sea level) / GLOBE_SURFACE_COAST_SCALE texel widths,
-//       clamped to [-1, 1] and stored as x * 0.5 + 0.5: its bilinear zero crossing is the coastline.
+//   w   the coast field: the ground's height above sea level in GLOBE_SURFACE_COAST_SCALE texel widths
+//       of the texel's level (one scale per level: neighbours and parent agree), clamped to [-1, 1] and
+//       stored as x * 0.5 + 0.5: its bilinear zero crossing is the coastline. The small scale resolves
+//       gentle coasts at 8 bits (slope 1 %: to a 5th of a texel); a steep coast saturates within a
+//       texel and is drawn through the texels' centres. A distance field (height over the local
+//       slope) drew teeth a texel apart where neighbouring texels' slopes differed.
 // After the mesh, [cover offset, + (S*S + 1) / 2) the land cover masks, one uvec2 per sample
 // (index as the mesh's): 8 bytes, class i in byte i % 4 of word i / 4, summing to 255 (land_cover.h).
 // Ring samples hold the masks of their nearest vertex, like its normal. Without land cover
@@ -98,8 +102,8 @@ struct uvec4_ {
 // Texels per side of a surface texture layer's mip 0 and mip 1 for M map cells per side.
 #define GLOBE_SURFACE_TEXTURE_SIDE(mapCells) ((mapCells) + 4u)
 #define GLOBE_SURFACE_TEXTURE_PARENT_SIDE(mapCells) ((mapCells) / 2u + 2u)
-// Texel widths of elevation that span the coast field's [-1, 1] (w of the normals texture).
-#define GLOBE_SURFACE_COAST_SCALE 16.0
+// Texel widths of height above sea level that span the coast field's [-1, 1] (w of the surface texture).
+#define GLOBE_SURFACE_COAST_SCALE 0.1
 // Land cover masks of a slot: one uvec2 per sample (two RGBA8 words, land_cover.h), in vec4 entries;
 // they follow the mesh, from vec4 GLOBE_PAYLOAD_COVER_OFFSET on.
 #define GLOBE_PAYLOAD_COVER_VEC4(cells) \

@@ -46,15 +46,19 @@ grep -q "unknown quality 'best'" "$WORK/bad.err" || fail "render --quality: $(ca
 [[ -s "$WORK/fast.png" ]] || fail "render --quality fast wrote nothing"
 
 # --tolerance on the rendering commands: bad values are one line naming the option, exit 2.
-badTolerance() {  # badTolerance COMMAND VALUE
-  (cd "$WORK" && "$GLOBE" "$1" --tolerance "$2" >"$WORK/bad.out" 2>"$WORK/bad.err")
+badTolerance() {  # badTolerance COMMAND VALUE [OPTION]
+  local option=${3:---tolerance}
+  (cd "$WORK" && "$GLOBE" "$1" "$option" "$2" >"$WORK/bad.out" 2>"$WORK/bad.err")
   local code=$?
-  [[ $code -eq 2 ]] || fail "$1 --tolerance $2: exit $code, expected 2"
-  [[ $(wc -l <"$WORK/bad.err") -eq 1 ]] || fail "$1 --tolerance $2: stderr is not one line"
-  grep -q -- '--tolerance' "$WORK/bad.err" || fail "$1 --tolerance $2: $(cat "$WORK/bad.err")"
+  [[ $code -eq 2 ]] || fail "$1 $option $2: exit $code, expected 2"
+  [[ $(wc -l <"$WORK/bad.err") -eq 1 ]] || fail "$1 $option $2: stderr is not one line"
+  grep -q -- "$option" "$WORK/bad.err" || fail "$1 $option $2: $(cat "$WORK/bad.err")"
 }
 for value in 0 -1 nan 5000; do badTolerance render "$value"; done
 for command in bench movie view trade; do badTolerance "$command" abc; done
+# --texel-px likewise (0 is valid: the texel rule off).
+for value in 0.1 -1 nan 5000 abc; do badTolerance render "$value" --texel-px; done
+"$GLOBE" render --texel-px 8 --size 64x48 --out "$WORK/texel.png" >"$WORK/r.out" 2>"$WORK/r.err" || fail "render --texel-px 8"
 # A tolerance-driven trade row says so in the lod column.
 "$GLOBE" trade --quick --size 96x64 --configs 1 --frames 1 --stride 4 --cameras 1km --tolerance 2 \
   --out "$WORK/tt" >"$WORK/tt.out" 2>"$WORK/tt.err" || { fail "trade --tolerance"; cat "$WORK/tt.err"; }

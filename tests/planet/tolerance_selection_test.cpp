@@ -105,5 +105,31 @@ TEST(ToleranceSelection, RangesFollowTheObservedErrors) {
   EXPECT_EQ(bad.error().field, "tolerance");
 }
 
+// The texel rule: with surface textures of 32 texels a node and texel_px 4, a depth-d node is refined
+// within lambda * W(d) / (32 * 4) even where no geometric error asks for it (a sea, a plain), and the
+// growth rule still holds; without it the geometric error alone decides. Bad values name the field.
+TEST(ToleranceSelection, TexelRuleRefinesWhereTexelsWouldBeMagnified) {
+  LodRangeConfig config;
+  config.tolerance_px = 16.0;
+  config.texel_px = 4.0;
+  config.texelsPerNode = 32;
+  auto r = LodRanges::create(config, kEarthRadius_m);
+  ASSERT_TRUE(r.ok());
+  r->setPixelsPerRadian(1000.0);
+  for (int d = 0; d + 1 < r->maxDepth(); ++d) {
+    EXPECT_GE(r->refineRange(d), 1000.0 * nominalNodeWidth(d, kEarthRadius_m) / (32.0 * 4.0) * (1.0 - 1e-12)) << d;
+    EXPECT_GE(r->refineRange(d), r->refineRange(d + 1) + r->maxDiagonal(d + 1)) << d;
+  }
+  config.texel_px = 0.0;
+  auto off = LodRanges::create(config, kEarthRadius_m);
+  ASSERT_TRUE(off.ok());
+  off->setPixelsPerRadian(1000.0);
+  EXPECT_LT(off->refineRange(5), r->refineRange(5));  // no error observed: only the growth floor
+  config.texel_px = -1.0;
+  auto bad = LodRanges::create(config, kEarthRadius_m);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_EQ(bad.error().field, "texel_px");
+}
+
 }  // namespace
 }  // namespace globe
