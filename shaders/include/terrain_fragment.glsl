@@ -153,8 +153,18 @@ vec3 mappedColour(vec3 modulation, out float coast) {
   vec2 uv = inMapUv;
   float blend = inMapBlend;
 #endif
-  vec4 texel = sampleSurface(surfaceCoordinate(uv, cells, layer), blend);
+  vec3 coord = surfaceCoordinate(uv, cells, layer);
+  vec4 texel = sampleSurface(coord, blend);
   coast = texel.w - 0.5;  // stored as x * 0.5 + 0.5 (payload_layout.h)
+#if defined(GLOBE_TERRAIN_WATER) && !defined(GLOBE_TERRAIN_IMAGERY)
+  // The coast of the node's own mip from its four texels with float weights: lavapipe's filter
+  // weights for 8-bit textures are coarse enough to draw a magnified coast in teeth a tenth of a
+  // texel apart (docs/rendering.md, "Surface textures"); blended into the filtered value (its
+  // parent's too) as the morph goes.
+  vec2 f = fract(coord.xy * float(GLOBE_SURFACE_TEXTURE_SIDE(cells)) - 0.5);
+  vec4 w = textureGather(surfaceTexture, coord, 3);  // texels (0, 1), (1, 1), (1, 0), (0, 0)
+  coast = mix(mix(mix(w.w, w.z, f.x), mix(w.x, w.y, f.x), f.y) - 0.5, coast, blend);
+#endif
   vec3 n = surfaceNormal(texel.xy);  // in the node's face frame, as inSunFace and inUp
   // YCoCg to RGB: the texel's luma, the vertices' chroma.
   float g = texel.z + inChroma.y, rb = texel.z - inChroma.y;
