@@ -44,7 +44,7 @@
 //       (mip 1: one parent texel apart), octahedral [Cigolle 2014] in the node's face frame
 //       (faceFrame, face_mapping.glsl: up is the face's normal, so on any but near-vertical ground
 //       the code stays inside the octahedron's upper half, where bilinear filtering is smooth);
-//   z   the luma Y = (r + 2 g + b) / 4 of the square root of the albedo (the colour ramp at the texel's
+//   z   the luma Y = (r + 2 g + b) / 4 [Malvar 2003] of the square root of the albedo (the ramp at the texel's
 //       elevation and slope, or the land cover's blend there); the chroma (YCoCg's Co, Cg) comes from
 //       the mesh's vertices, at half the texels' resolution per axis at scale 2 (4:2:0 sampling);
 //   w   the coast field: the ground's height above sea level in GLOBE_SURFACE_COAST_SCALE texel widths
