@@ -12,37 +12,6 @@ namespace {
 
 constexpr uint32_t kMips = 2;  // the node's map and its parent's over its quadrant (payload_layout.h)
 
-vk::UniqueImage createLayers(vk::Device& device, uint32_t side, uint32_t layers) {
-  VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-  info.imageType = VK_IMAGE_TYPE_2D;
-  info.format = kSurfaceFormat;
-  info.extent = {side, side, 1};
-  info.mipLevels = kMips;
-  info.arrayLayers = layers;
-  info.samples = VK_SAMPLE_COUNT_1_BIT;
-  info.tiling = VK_IMAGE_TILING_OPTIMAL;
-  // Transfer source: tests and tools read layers back.
-  info.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-  info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  VkImage image;
-  GLOBE_VK_CHECK(vkCreateImage(device.device(), &info, nullptr, &image));
-  device.setName(VK_OBJECT_TYPE_IMAGE, reinterpret_cast<uint64_t>(image), "surface textures");
-  return vk::UniqueImage(device.device(), image);
-}
-
-// Mips [firstMip, firstMip + mips) of every layer.
-vk::UniqueImageView createLayersView(VkDevice device, VkImage image, uint32_t layers, uint32_t firstMip,
-                                     uint32_t mips) {
-  VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-  info.image = image;
-  info.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
-  info.format = kSurfaceFormat;
-  info.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, firstMip, mips, 0, layers};
-  VkImageView view;
-  GLOBE_VK_CHECK(vkCreateImageView(device, &info, nullptr, &view));
-  return vk::UniqueImageView(device, view);
-}
-
 // Trilinear, clamped: the fragment stages give the LOD (the morph factor) and address the node's own
 // cells, whose bilinear footprint stays inside the gutter.
 vk::UniqueSampler createClampSampler(VkDevice device) {
@@ -87,14 +56,17 @@ SurfaceTextures::SurfaceTextures(vk::Device& device, uint32_t mapCells, uint32_t
 
 SurfaceTextures::Page SurfaceTextures::makePage(vk::Device& device, uint32_t layers) const {
   Page page;
-  page.image = createLayers(device, side_, layers);
+  // Transfer source: tests and tools read layers back.
+  page.image = vk::createImage(
+      device, kSurfaceFormat, {side_, side_}, layers, kMips, VK_SAMPLE_COUNT_1_BIT,
+      VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "surface textures");
   VkMemoryRequirements req;
   vkGetImageMemoryRequirements(device.device(), page.image, &req);
   page.memory = vk::allocateMemory(device, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
   GLOBE_VK_CHECK(vkBindImageMemory(device.device(), page.image, page.memory, 0));
-  page.view = createLayersView(device.device(), page.image, layers, 0, kMips);
+  page.view = vk::createArrayView(device.device(), page.image, kSurfaceFormat, layers, 0, kMips);
   for (uint32_t mip = 0; mip < kMips; ++mip)
-    page.storageViews[mip] = createLayersView(device.device(), page.image, layers, mip, 1);
+    page.storageViews[mip] = vk::createArrayView(device.device(), page.image, kSurfaceFormat, layers, mip, 1);
   return page;
 }
 

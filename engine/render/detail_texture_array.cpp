@@ -18,35 +18,6 @@ namespace {
 // 8-bit linear modulation: the texels are ratios around 0.5, not colours, so no sRGB decoding.
 constexpr VkFormat kFormat = VK_FORMAT_R8G8B8A8_UNORM;
 
-vk::UniqueImage createArrayImage(vk::Device& device, uint32_t size, uint32_t layers, uint32_t mips) {
-  VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-  info.imageType = VK_IMAGE_TYPE_2D;
-  info.format = kFormat;
-  info.extent = {size, size, 1};
-  info.mipLevels = mips;
-  info.arrayLayers = layers;
-  info.samples = VK_SAMPLE_COUNT_1_BIT;
-  info.tiling = VK_IMAGE_TILING_OPTIMAL;
-  info.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-  info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  VkImage image;
-  GLOBE_VK_CHECK(vkCreateImage(device.device(), &info, nullptr, &image));
-  device.setName(VK_OBJECT_TYPE_IMAGE, reinterpret_cast<uint64_t>(image), "land-cover detail textures");
-  return vk::UniqueImage(device.device(), image);
-}
-
-vk::UniqueImageView createArrayView(VkDevice device, VkImage image, uint32_t layers, uint32_t mips) {
-  VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-  info.image = image;
-  // An array view even for one layer: the shader declares a sampler2DArray.
-  info.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
-  info.format = kFormat;
-  info.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, mips, 0, layers};
-  VkImageView view;
-  GLOBE_VK_CHECK(vkCreateImageView(device, &info, nullptr, &view));
-  return vk::UniqueImageView(device, view);
-}
-
 // Trilinear and repeating: the textures tile the ground. No anisotropic filtering: the device does
 // not enable samplerAnisotropy (engine/vk/device.cpp), and lavapipe's would cost the frame.
 vk::UniqueSampler createRepeatSampler(VkDevice device, uint32_t mips) {
@@ -71,12 +42,13 @@ vk::UniqueSampler createRepeatSampler(VkDevice device, uint32_t mips) {
 DetailTextureArray::DetailTextureArray(vk::Device& device, const DetailTextureSet& textures)
     : size_(textures.size), layers_(textures.layers), mipLevels_(uint32_t(textures.mips.size())) {
   assert(size_ > 0 && layers_ > 0 && mipLevels_ > 0 && (size_ >> (mipLevels_ - 1)) == 1);
-  image_ = createArrayImage(device, size_, layers_, mipLevels_);
+  image_ = vk::createImage(device, kFormat, {size_, size_}, layers_, mipLevels_, VK_SAMPLE_COUNT_1_BIT,
+                           VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, "land-cover detail textures");
   VkMemoryRequirements req;
   vkGetImageMemoryRequirements(device.device(), image_, &req);
   memory_ = vk::allocateMemory(device, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
   GLOBE_VK_CHECK(vkBindImageMemory(device.device(), image_, memory_, 0));
-  view_ = createArrayView(device.device(), image_, layers_, mipLevels_);
+  view_ = vk::createArrayView(device.device(), image_, kFormat, layers_, 0, mipLevels_);
   sampler_ = createRepeatSampler(device.device(), mipLevels_);
   upload(device, textures);
 }

@@ -20,6 +20,36 @@ UniqueMemory allocateMemory(Device& device, const VkMemoryRequirements& req, VkM
   return UniqueMemory(device.device(), mem);
 }
 
+UniqueImage createImage(Device& device, VkFormat format, VkExtent2D extent, uint32_t layers, uint32_t mips,
+                        VkSampleCountFlagBits samples, VkImageUsageFlags usage, const char* name) {
+  VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+  info.imageType = VK_IMAGE_TYPE_2D;
+  info.format = format;
+  info.extent = {extent.width, extent.height, 1};
+  info.mipLevels = mips;
+  info.arrayLayers = layers;
+  info.samples = samples;
+  info.tiling = VK_IMAGE_TILING_OPTIMAL;
+  info.usage = usage;
+  info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  VkImage image;
+  GLOBE_VK_CHECK(vkCreateImage(device.device(), &info, nullptr, &image));
+  device.setName(VK_OBJECT_TYPE_IMAGE, reinterpret_cast<uint64_t>(image), name);
+  return UniqueImage(device.device(), image);
+}
+
+UniqueImageView createArrayView(VkDevice device, VkImage image, VkFormat format, uint32_t layers, uint32_t firstMip,
+                                uint32_t mips) {
+  VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+  info.image = image;
+  info.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
+  info.format = format;
+  info.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, firstMip, mips, 0, layers};
+  VkImageView view;
+  GLOBE_VK_CHECK(vkCreateImageView(device, &info, nullptr, &view));
+  return UniqueImageView(device, view);
+}
+
 Buffer::Buffer(Device& device, VkDeviceSize sizeBytes, VkBufferUsageFlags usage, MemoryUse memory, const char* name)
     : size_(sizeBytes) {
   VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
@@ -45,20 +75,8 @@ Buffer::Buffer(Device& device, VkDeviceSize sizeBytes, VkBufferUsageFlags usage,
 Image::Image(Device& device, VkFormat format, VkExtent2D extent, VkImageUsageFlags usage, VkImageAspectFlags aspect,
              const char* name, VkSampleCountFlagBits samples)
     : format_(format), extent_(extent), aspect_(aspect) {
-  VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-  info.imageType = VK_IMAGE_TYPE_2D;
-  info.format = format;
-  info.extent = {extent.width, extent.height, 1};
-  info.mipLevels = 1;
-  info.arrayLayers = 1;
-  info.samples = samples;
-  info.tiling = VK_IMAGE_TILING_OPTIMAL;
-  info.usage = usage;
-  info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  VkImage image;
-  GLOBE_VK_CHECK(vkCreateImage(device.device(), &info, nullptr, &image));
-  image_ = UniqueImage(device.device(), image);
-  device.setName(VK_OBJECT_TYPE_IMAGE, reinterpret_cast<uint64_t>(image), name);
+  image_ = createImage(device, format, extent, 1, 1, samples, usage, name);
+  VkImage image = image_;
 
   VkMemoryRequirements req;
   vkGetImageMemoryRequirements(device.device(), image, &req);

@@ -68,6 +68,15 @@ UniqueShaderModule loadShaderModule(Device& device, const std::string& name);
 // image or buffer the classes above do not cover, e.g. mipmapped texture arrays).
 UniqueMemory allocateMemory(Device& device, const VkMemoryRequirements& req, VkMemoryPropertyFlags properties);
 
+// A 2-D (array) image, optimal tiling, UNDEFINED layout, of `layers` layers and `mips` levels, named
+// `name` for the debug tools; its memory is the caller's (Image binds its own).
+UniqueImage createImage(Device& device, VkFormat format, VkExtent2D extent, uint32_t layers, uint32_t mips,
+                        VkSampleCountFlagBits samples, VkImageUsageFlags usage, const char* name);
+// A 2D_ARRAY view of levels [firstMip, firstMip + mips) of every layer (an array view even for one
+// layer: the shaders declare arrays).
+UniqueImageView createArrayView(VkDevice device, VkImage image, VkFormat format, uint32_t layers, uint32_t firstMip,
+                                uint32_t mips);
+
 // A full pipeline barrier for images in the common transitions of this engine (layout change).
 void transitionImage(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
                      VkImageLayout to);
