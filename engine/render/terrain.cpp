@@ -67,9 +67,7 @@ Result<std::unique_ptr<Terrain>> Terrain::create(vk::Device& device, const Eleva
   lod.maxElevation_m = model.bounds().max_m;
   lod.ranges = settings.ranges;
   // The texel rule follows the mesh payloads' own surface textures (imagery has its own selection).
-  const bool ownMaps =
-      settings.normalMapScale > 0 && !(settings.imagery && settings.vertexPositions == VertexPositions::kStored);
-  lod.ranges.texelsPerNode = ownMaps ? settings.gridCells * settings.normalMapScale : 0;
+  lod.ranges.texelsPerNode = settings.gridCells * meshMapScale(settings);
   auto selector = LodSelector::create(lod);
   if (!selector) return selector.error();
   if (lod.ranges.tolerance_px > 0.0 && lod.ranges.roughness)
@@ -110,7 +108,7 @@ Terrain::Terrain(vk::Device& device, const ElevationModel& model, const TerrainS
   uint32_t batches = settings.streaming.maxInFlight;
   generator_ =
       std::make_unique<GpuPayloadGenerator>(device, model, settings.gridCells, budget, batches, settings.generation,
-                                            /*waterSurface=*/true, imageryOn() ? 0u : settings.normalMapScale);
+                                            /*waterSurface=*/true, meshMapScale(settings));
 }
 
 void Terrain::attachPool(std::unique_ptr<PayloadPool> pool) {
@@ -121,7 +119,7 @@ void Terrain::attachPool(std::unique_ptr<PayloadPool> pool) {
   style.holes = model_.sources() != nullptr && model_.sources()->hasHoles();
   style.water = model_.water();
   style.seaLevel_m = model_.seaLevel_m();
-  style.normalMapScale = imageryOn() ? 0u : settings_.normalMapScale;
+  style.normalMapScale = meshMapScale(settings_);
   style.imagery = imagery_ != nullptr;
   if (!imagery_ && settings_.normalMapScale > 0)
     meshMaps_.emplace(ImageryConfig{}, model_.radius_m(), model_.bounds().min_m, model_.bounds().max_m, model_.shape());

@@ -157,7 +157,10 @@ class Terrain {
   // lambda: the view's pixels per radian.
   void updateImagery(uint64_t poolFrame, uint64_t poolCompletedFrame, const Camera& camera, double lambda,
                      bool requestAllRoots);
-  bool imageryOn() const { return settings_.imagery && settings_.vertexPositions == VertexPositions::kStored; }
+  static bool imageryOn(const TerrainSettings& s) { return s.imagery && s.vertexPositions == VertexPositions::kStored; }
+  bool imageryOn() const { return imageryOn(settings_); }
+  // The mesh payloads' own surface texture scale: none when imagery tiles carry the textures.
+  static uint32_t meshMapScale(const TerrainSettings& s) { return imageryOn(s) ? 0u : s.normalMapScale; }
 
   vk::Device& device_;
   const ElevationModel& model_;

@@ -400,7 +400,7 @@ uint32_t TerrainRenderer::writeInstances(unsigned char* bytes, const glm::dvec3&
     inst.info = {payloads.localSlot(n.slot) * slotVec4, n.partial ? 2u : 1u,
                  uint32_t(n.id.level) - (n.partial ? 1u : 0u), 0u};
     inst.imagery = {n.imageryCell, payloads.localSlot(n.slot), 0u, 0u};
-    const std::array<glm::dvec3, 3> frame = RhombusFaceMapping::get().faceFrame(n.id.face);
+    const std::array<glm::dvec3, 3>& frame = RhombusFaceMapping::get().faceFrame(n.id.face);
     inst.frameEast = toGpu(glm::vec3(frame[0]), 0.0f);
     inst.frameUp = toGpu(glm::vec3(frame[2]), 0.0f);
     if (style_.landCover()) {  // only the _cover vertex stages read it

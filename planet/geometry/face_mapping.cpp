@@ -53,14 +53,12 @@ RhombusFaceMapping::RhombusFaceMapping() {
     inverse_[f].planeDistance = glm::dot(normal_[f], c0);
     inverse_[f].dualU = (c * e1 - b * e3) / det;
     inverse_[f].dualV = (a * e3 - b * e1) / det;
+    // The face frame from the GPU corners, as face_mapping.glsl's faceFrame computes it.
+    const FaceCornersGpu g = gpuCorners(static_cast<int>(f));
+    const glm::dvec3 g0(g.corner[0]), g1 = glm::dvec3(g.corner[1]) - g0, g3 = glm::dvec3(g.corner[3]) - g0;
+    const glm::dvec3 up = glm::normalize(glm::cross(g1, g3)), east = glm::normalize(g1);
+    frame_[f] = {east, glm::cross(up, east), up};
   }
-}
-
-std::array<glm::dvec3, 3> RhombusFaceMapping::faceFrame(int face) const {
-  const FaceCornersGpu c = gpuCorners(face);
-  const glm::dvec3 c0(c.corner[0]), e1 = glm::dvec3(c.corner[1]) - c0, e3 = glm::dvec3(c.corner[3]) - c0;
-  const glm::dvec3 up = glm::normalize(glm::cross(e1, e3)), east = glm::normalize(e1);
-  return {east, glm::cross(up, east), up};
 }
 
 glm::dvec3 RhombusFaceMapping::flatPoint(int face, double u, double v) const {

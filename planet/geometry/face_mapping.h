@@ -58,7 +58,7 @@ class RhombusFaceMapping final : public FaceMapping {
   const glm::dvec3& faceNormal(int face) const { return normal_[static_cast<size_t>(face)]; }
   // The face's frame (= faceFrame in face_mapping.glsl): east along the edge from corner 0 to 1, north
   // = up x east, up the face's normal. The surface textures store normals in it (payload_layout.h).
-  std::array<glm::dvec3, 3> faceFrame(int face) const;
+  const std::array<glm::dvec3, 3>& faceFrame(int face) const { return frame_[static_cast<size_t>(face)]; }
 
  private:
   RhombusFaceMapping();
@@ -68,6 +68,7 @@ class RhombusFaceMapping final : public FaceMapping {
     glm::dvec3 dualV{};          // likewise v
   };
   std::array<glm::dvec3, 30> normal_{};
+  std::array<std::array<glm::dvec3, 3>, 30> frame_{};  // faceFrame, made once
   std::array<FaceInverse, 30> inverse_{};
 };
 

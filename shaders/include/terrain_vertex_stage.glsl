@@ -79,6 +79,9 @@ layout(location = 13) out vec3 outUp;
 
 void main() {
   TerrainVertex v = terrainVertex(uint(gl_VertexIndex), uint(gl_InstanceIndex), push.draw.drawnCells);
+  // Planet-fixed to the node's face frame (the surface texture's normals are coded in it).
+  vec3 east = instances[gl_InstanceIndex].frameEast.xyz, up = instances[gl_InstanceIndex].frameUp.xyz;
+  mat3 toFace = transpose(mat3(east, cross(up, east), up));
   gl_Position = v.clip;
   vec3 n = normalize(v.normal);
   // Both colours, then a select (mix with a bool): an if on the debug view (a uniform value) would
@@ -98,9 +101,7 @@ void main() {
   outSunLight = aerial.sunLight;
   outSkyLight = aerial.skyLight;
   // In the face frame too: the mapped fragments' sky light takes it with the texture's normal.
-  outUp = transpose(mat3(instances[gl_InstanceIndex].frameEast.xyz,
-                         cross(instances[gl_InstanceIndex].frameUp.xyz, instances[gl_InstanceIndex].frameEast.xyz),
-                         instances[gl_InstanceIndex].frameUp.xyz)) * aerial.up;
+  outUp = toFace * aerial.up;
   outSkyZenith = uintBitsToFloat(atmosphereViewTable[GLOBE_VIEW_TEXELS].xyz);
   outSkyHorizon = uintBitsToFloat(atmosphereViewTable[GLOBE_VIEW_TEXELS + 1].xyz);
 #endif
@@ -112,8 +113,6 @@ void main() {
   outMapBase = v.mapBase;
   outMapBlend = v.mapBlend;
   outImageryCell = v.imageryCell;
-  vec3 east = instances[gl_InstanceIndex].frameEast.xyz, up = instances[gl_InstanceIndex].frameUp.xyz;
-  mat3 toFace = transpose(mat3(east, cross(up, east), up));
   outSunFace = toFace * frame.sun.xyz;
   vec3 root = sqrt(max(v.albedo, vec3(0.0)));
   outChroma = vec2(0.5 * (root.r - root.b), 0.25 * (2.0 * root.g - root.r - root.b));
