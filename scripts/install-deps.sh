@@ -31,6 +31,8 @@ PACKAGES=(
   # globe bake: COG tiles through GDAL (gdalinfo checks them); GNU parallel runs shards (docs/bake.md);
   # CesiumJS (npm, tests/cesium) in headless Chromium reads a baked tileset
   libgdal-dev gdal-bin parallel nodejs chromium
+  # NASA Blue Marble (earth.jpg): the Earth's colours the orbit view is compared with (globe compare)
+  xplanet-images
 )
 
 if [[ "${1:-}" == "--list" ]]; then

@@ -43,7 +43,7 @@ void main() {
     vec3 zenith = c / max(length(c), 1.0);
     vec3 transmittance;
     vec3 sky = index == texels ? atmosphereSky(c, zenith, sun, transmittance) : horizonSky(c, zenith, sun);
-    atmosphereViewTable[index] = packFloats(atmosphereToneMap(sky));
+    atmosphereViewTable[index] = packFloats(atmosphereExposed(sky));
     return;
   }
   uvec3 i = uvec3(index % uint(GLOBE_VIEW_X), (index / uint(GLOBE_VIEW_X)) % uint(GLOBE_VIEW_Y),

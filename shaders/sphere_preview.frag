@@ -33,7 +33,7 @@ void main() {
   vec3 normal = vec3(normalize(o + d * t));
   float lambert = max(dot(normal, push.sun.xyz), 0.0);
   vec3 albedo = mix(vec3(0.05, 0.18, 0.35), vec3(0.25, 0.45, 0.2), 0.5 + 0.5 * normal.z);
-  outColour = encodeDisplay(albedo * (0.04 + 0.96 * lambert), 1.0);
+  outColour = encodeScene(albedo * (0.04 + 0.96 * lambert), 1.0);
   // Reversed-Z with infinite far: depth = near / view-space distance along the view axis.
   float viewZ = float(t) * dot(dir, push.forward.xyz);
   gl_FragDepth = clamp(push.forward.w / viewZ, 0.0, 1.0);

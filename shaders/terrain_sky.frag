@@ -35,11 +35,11 @@ void main() {
   // atmosphereSky is black for rays that miss.
   if (kFromSpace != 0u && inShell > 0.0) {
     vec3 transmittance;
-    sky = atmosphereToneMap(atmosphereSky(push.camera.xyz, v, sun, transmittance));
+    sky = atmosphereExposed(atmosphereSky(push.camera.xyz, v, sun, transmittance));
     float alpha = atmosphere.sun.w;
-    disc = atmosphereToneMap(atmosphere.sun.rgb / (kAtmospherePi * alpha * alpha) * transmittance);
+    disc = atmosphereExposed(atmosphere.sun.rgb / (kAtmospherePi * alpha * alpha) * transmittance);
   }
-  // The sun's disc over the sky, as if its radiance were added before tone-mapping.
-  sky = mix(sky, sky + disc * (1.0 - sky), bvec3(dot(v, sun) > atmosphere.misc.w));
-  outColour = encodeDisplay(sky, 1.0);
+  // The sun's disc over the sky (the display transform rolls both off to white).
+  sky += mix(vec3(0.0), disc, bvec3(dot(v, sun) > atmosphere.misc.w));
+  outColour = encodeScene(sky, 1.0);
 }

@@ -96,10 +96,10 @@ void main() {
   // The phases with the vertex's own ray (v before the lift: the sun's halo stays round the sun).
   vec4 s = atmScattering(ray.x, ray.y, ray.z, ray.w, hitsGround);
   vec3 sky = atmosphereInscatter(s, dot(normalize(outRay), push.sun.xyz), ray.z);
-  outSky = atmosphereToneMap(mix(sky, vec3(0.0), bvec3(misses)));
+  outSky = atmosphereExposed(mix(sky, vec3(0.0), bvec3(misses)));
   vec3 transmittance = mix(atmTransmittanceToTop(ray.x, ray.y), vec3(float(misses)), bvec3(hitsGround || misses));
   float alpha = atmosphere.sun.w;
-  outDisc = atmosphereToneMap(atmosphere.sun.rgb / (kAtmospherePi * alpha * alpha) * transmittance);
+  outDisc = atmosphereExposed(atmosphere.sun.rgb / (kAtmospherePi * alpha * alpha) * transmittance);
   outShell = -1.0;
   gl_Position = vec4(ndc, 0.0, 1.0);
 }

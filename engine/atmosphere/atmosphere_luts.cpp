@@ -65,7 +65,11 @@ gpu::AtmosphereGpu packAtmosphere(const AtmosphereParameters& a, double radius_m
   g.mieExtinction = vec4(a.mie_extinction_per_m, a.mie_g);
   g.ozone = vec4(a.ozone_absorption_per_m, a.ozone_centre_m);
   g.sun = vec4(a.sun_irradiance, sunRadius_rad);
-  g.misc = {float(a.ozone_half_width_m), float(a.ground_albedo), float(a.exposure), float(std::cos(sunRadius_rad))};
+  // Radiance to scene value: a white Lambertian surface facing the sun above the air (radiance
+  // irradiance / pi, its luminance) is `exposure` (shaders/include/display_encoding.glsl).
+  const double sunLuminance = 0.2126 * a.sun_irradiance.x + 0.7152 * a.sun_irradiance.y + 0.0722 * a.sun_irradiance.z;
+  const double exposure = a.exposure * kPi / std::max(sunLuminance, 1e-30);
+  g.misc = {float(a.ozone_half_width_m), float(a.ground_albedo), float(exposure), float(std::cos(sunRadius_rad))};
   return g;
 }
 

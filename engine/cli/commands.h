@@ -23,6 +23,7 @@ void addPathCommand(CLI::App& app, Runner& run);     // globe path import|export
 void addMovieCommand(CLI::App& app, Runner& run);    // globe movie: PNG/EXR sequences, MP4
 void addPhysicsCommand(CLI::App& app, Runner& run);  // globe physics: bodies on the collision meshes
 void addBakeCommand(CLI::App& app, Runner& run);     // globe bake: quantized-mesh / COG terrain tiles
+void addCompareCommand(CLI::App& app, Runner& run);  // globe compare: images against references
 
 // Exit codes shared by every command.
 constexpr int kExitOk = 0;

@@ -56,6 +56,7 @@ int main(int argc, char** argv) {
   addMovieCommand(app, run);
   addBakeCommand(app, run);
   addPhysicsCommand(app, run);
+  addCompareCommand(app, run);
 
   try {
     app.parse(argc, argv);

@@ -2,6 +2,7 @@
 
 #include "engine/io/exr_stream.h"
 #include "planet/core/atomic_file.h"
+#include "planet/core/srgb.h"
 
 #include <Imath/half.h>
 #include <ImfChannelList.h>
@@ -18,17 +19,10 @@
 
 namespace globe {
 
-uint8_t linearToSrgb8(float linear) {
-  float c = std::clamp(std::isfinite(linear) ? linear : 0.0f, 0.0f, 1.0f);
-  float s = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-  return static_cast<uint8_t>(std::lround(s * 255.0f));
-}
+uint8_t linearToSrgb8(float linear) { return static_cast<uint8_t>(std::lround(srgbEncode(linear) * 255.0)); }
 
 namespace {
-float srgb8ToLinear(uint8_t v) {
-  float s = float(v) / 255.0f;
-  return s <= 0.04045f ? s / 12.92f : std::pow((s + 0.055f) / 1.055f, 2.4f);
-}
+float srgb8ToLinear(uint8_t v) { return float(srgbDecode(double(v) / 255.0)); }
 
 std::string extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -106,7 +100,7 @@ Status writeImage(const std::string& path, const ImageRgba& image, const std::st
   return Error::inField(field, "'" + path + "' must end in .png or .exr");
 }
 
-Result<ImageRgba> readPng(const std::string& path) {
+Result<ImageRgba> readImage8(const std::string& path) {
   int w = 0, h = 0, comp = 0;
   stbi_uc* data = stbi_load(path.c_str(), &w, &h, &comp, 4);
   if (!data) return Error::inFile(path, std::string("cannot read PNG: ") + stbi_failure_reason());

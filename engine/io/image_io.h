@@ -26,8 +26,8 @@ Status writeExr(const std::string& path, const ImageRgba& image);
 // Chooses PNG or EXR from the extension (.png / .exr); anything else is an Error on `field`.
 Status writeImage(const std::string& path, const ImageRgba& image, const std::string& field);
 
-// PNG pixels come back as linear floats from the 8-bit sRGB file.
-Result<ImageRgba> readPng(const std::string& path);
+// An 8-bit sRGB PNG or JPEG file (stb), as linear floats.
+Result<ImageRgba> readImage8(const std::string& path);
 Result<ImageRgba> readExr(const std::string& path);
 
 }  // namespace globe

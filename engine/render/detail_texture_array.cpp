@@ -87,7 +87,7 @@ Result<DetailTextureSet> loadDetailTextures(const LandCover& cover, std::uint64_
   for (size_t i = 0; i < cover.classes.size(); ++i) {
     const std::string& path = cover.classes[i].texture;
     if (path.empty()) continue;
-    Result<ImageRgba> image = readPng(path);
+    Result<ImageRgba> image = readImage8(path);
     if (!image) {
       Error error = image.error();
       error.field = fmt::format("land_cover[{}].texture", i);

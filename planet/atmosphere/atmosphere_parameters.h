@@ -34,8 +34,10 @@ struct AtmosphereParameters {
   double ozone_half_width_m = 15000.0;
   glm::dvec3 sun_irradiance{1.474, 1.8504, 1.91198};  // at the top of the atmosphere (arbitrary units)
   double sun_angular_radius_deg = 0.2679;             // (0, 10]
-  double exposure = 10.0;                             // display = 1 - exp(-exposure * radiance), (0, 1e4]
-  double ground_albedo = 0.1;                         // for light the ground sends back up, [0, 1]
+  // The camera's exposure relative to the planet's own sunlight, (0, 1e4]: 1 shows a white surface
+  // facing the sun above the air as white (scene value 1 before the display transform).
+  double exposure = 1.0;
+  double ground_albedo = 0.1;  // for light the ground sends back up, [0, 1]
 
   bool operator==(const AtmosphereParameters&) const = default;
 };

@@ -111,8 +111,7 @@ void atmosphereToPoint(vec3 camera, vec3 relative, vec3 sun, out vec3 inscatter,
 
 // Light on a surface point at `p` (relative to the centre) from the sun through the atmosphere
 // (`sunLight`, on a plane facing the sun) and from the sky (`skyLight`, on a horizontal plane), both
-// divided by pi: a Lambertian surface of `albedo` and unit normal `n` sends out
-// albedo * (sunLight * max(n.sun, 0) + skyLight * (1 + n.up) / 2), `up` the local vertical.
+// divided by pi, and `up` the local vertical: what surface_light.glsl lights a surface with.
 void atmosphereSurfaceLight(vec3 p, vec3 sun, out vec3 sunLight, out vec3 skyLight, out vec3 up) {
   float r = length(p);
   up = p / max(r, 1.0);
@@ -121,15 +120,8 @@ void atmosphereSurfaceLight(vec3 p, vec3 sun, out vec3 sunLight, out vec3 skyLig
   skyLight = atmIrradiance(r, muS) * (1.0 / kAtmospherePi);
 }
 
-// Radiance a Lambertian surface of `albedo` at `p` (relative to the centre) with unit normal `n`
-// sends out under the sun (through the atmosphere) and the sky.
-vec3 atmosphereSurfaceRadiance(vec3 albedo, vec3 p, vec3 n, vec3 sun) {
-  vec3 sunLight, skyLight, up;
-  atmosphereSurfaceLight(p, sun, sunLight, skyLight, up);
-  return albedo * (sunLight * max(dot(n, sun), 0.0) + skyLight * (1.0 + dot(n, up)) * 0.5);
-}
-
-// Radiance -> [0, 1] linear colour: 1 - exp(-exposure * radiance), as in the reference's demo.
-vec3 atmosphereToneMap(vec3 radiance) { return vec3(1.0) - exp(-atmosphere.misc.z * radiance); }
+// Radiance -> scene value (display_encoding.glsl): misc.z is the planet's exposure over the sun's
+// radiance, so that a white surface facing the sun above the air is 1.
+vec3 atmosphereExposed(vec3 radiance) { return atmosphere.misc.z * radiance; }
 
 #endif  // GLOBE_ATMOSPHERE_GLSL

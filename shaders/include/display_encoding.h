@@ -9,5 +9,7 @@
 #define GLOBE_DISPLAY_ENCODING_H
 
 #define GLOBE_DISPLAY_ENCODING_A 1.063
+// Where the display transform leaves the linear (display_encoding.glsl, displayTone).
+#define GLOBE_DISPLAY_TONE_KNEE 0.6
 
 #endif

@@ -10,6 +10,7 @@
 // level the in-scattered light is under 1 % of the sky's (2/255); it fades in up to twice that.
 #define GLOBE_ATMOSPHERE_BINDING 3
 #include "atmosphere.glsl"
+#include "surface_light.glsl"
 
 layout(std140, set = 0, binding = 7) uniform AtmosphereViewBlock { AtmosphereViewGpu atmosphereView; };
 layout(std430, set = 0, binding = 8) readonly buffer AtmosphereViewTable { uvec4 atmosphereViewTable[]; };
@@ -49,22 +50,22 @@ void atmosphereAerial(vec3 v, float distance, vec3 sun, out vec4 between, out ve
 // What the water's fragments (terrain_water.frag) need to put their own colour through the same air.
 struct TerrainAerial {
   vec3 transmittance;  // of the air between the camera and the vertex
-  vec3 fog;            // exp(-exposure * in-scattered light): tone-mapped, c -> 1 - (1 - c)^T * fog
+  vec3 inscatter;      // the in-scattered light between, exposed: a scene value c becomes c T + inscatter
   // What a normal-mapped fragment needs to light itself (atmosphereSurfaceLight): the sun's and the
-  // sky's light times exposure and transmittance, so that its colour is 1 - exp(-albedo * (sunLight
-  // max(n.sun, 0) + skyLight (1 + n.up) / 2)) * fog; and the local vertical.
+  // sky's light times exposure and transmittance, so that its scene value is albedo *
+  // surfaceLight(n, ...) + inscatter; and the local vertical.
   vec3 sunLight;
   vec3 skyLight;
   vec3 up;
 };
 
-// Linear [0, 1] colour of a surface point of `albedo` and unit normal `n` at `relative` (metres from
+// The scene value (display_encoding.glsl) of a surface point of `albedo` and unit normal `n` at `relative` (metres from
 // the camera, planet-fixed axes), lit by the sun in direction `sun`.
 vec3 terrainAtmosphereColour(vec3 albedo, vec3 n, vec3 relative, vec3 sun, out TerrainAerial aerial) {
   vec3 camera = atmosphereView.camera.xyz;
   vec3 sunLight, skyLight, up;
   atmosphereSurfaceLight(camera + relative, sun, sunLight, skyLight, up);
-  vec3 radiance = albedo * (sunLight * max(dot(n, sun), 0.0) + skyLight * (1.0 + dot(n, up)) * 0.5);
+  vec3 radiance = albedo * surfaceLight(n, sun, up, sunLight, skyLight);
   vec3 inscatter = vec3(0.0), transmittance = vec3(1.0);
   float distance = length(relative);
   if (distance > kNearAerial_m) {
@@ -76,9 +77,9 @@ vec3 terrainAtmosphereColour(vec3 albedo, vec3 n, vec3 relative, vec3 sun, out T
     transmittance = mix(vec3(1.0), transmittance, fade);
   }
   aerial.transmittance = transmittance;
-  aerial.fog = exp(-atmosphere.misc.z * inscatter);
+  aerial.inscatter = atmosphereExposed(inscatter);
   aerial.sunLight = atmosphere.misc.z * transmittance * sunLight;
   aerial.skyLight = atmosphere.misc.z * transmittance * skyLight;
   aerial.up = up;
-  return atmosphereToneMap(radiance * transmittance + inscatter);
+  return atmosphereExposed(radiance * transmittance + inscatter);
 }

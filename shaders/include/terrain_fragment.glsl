@@ -74,13 +74,14 @@ layout(location = 4) in vec2 inMapUv;
 layout(location = 5) flat in uint inMapBase;
 layout(location = 6) in float inMapBlend;
 #ifdef GLOBE_TERRAIN_ATMOSPHERE
+#include "surface_light.glsl"
 layout(location = 11) in vec3 inSunLight;
 layout(location = 12) in vec3 inSkyLight;
 layout(location = 13) in vec3 inUp;
 #endif
 #endif
 #if defined(GLOBE_TERRAIN_ATMOSPHERE) && (defined(GLOBE_TERRAIN_NORMAL_MAPS) || defined(GLOBE_TERRAIN_WATER))
-layout(location = 8) in vec3 inAerialFog;
+layout(location = 8) in vec3 inAerialInscatter;
 #endif
 #ifdef GLOBE_TERRAIN_WATER
 layout(location = 2) in float inSeaDepth;
@@ -173,11 +174,11 @@ vec3 mappedColour(vec3 modulation, out float coast) {
 #ifdef GLOBE_TERRAIN_ATMOSPHERE
   // The vertex stage's light through the air, applied to the mapped normal and colour
   // (terrain_atmosphere.glsl, TerrainAerial).
-  vec3 light = inSunLight * max(dot(n, inSunFace), 0.0) + inSkyLight * (1.0 + dot(n, normalize(inUp))) * 0.5;
-  return encodeDisplay(vec3(1.0) - exp(-albedo * light) * inAerialFog, 1.0).rgb;
+  vec3 light = surfaceLight(n, inSunFace, normalize(inUp), inSunLight, inSkyLight);
+  return encodeScene(albedo * light + inAerialInscatter, 1.0).rgb;
 #else
   float light = frame.sun.w + (1.0 - frame.sun.w) * max(dot(n, inSunFace), 0.0);
-  return encodeDisplay(albedo * light, 1.0).rgb;
+  return encodeScene(albedo * light, 1.0).rgb;
 #endif
 }
 #endif

@@ -69,7 +69,7 @@ vec3 coarseDetail(TerrainVertex v) {
 // reflects; for normal-mapped fragments, the sun's and the sky's light at the vertex as they reach
 // the camera (TerrainAerial), and the local vertical.
 layout(location = 7) out vec3 outAerialTransmittance;
-layout(location = 8) out vec3 outAerialFog;
+layout(location = 8) out vec3 outAerialInscatter;
 layout(location = 9) flat out vec3 outSkyZenith;
 layout(location = 10) flat out vec3 outSkyHorizon;
 layout(location = 11) out vec3 outSunLight;
@@ -97,7 +97,7 @@ void main() {
   TerrainAerial aerial;
   lit = mix(terrainAtmosphereColour(albedo, n, v.relative, frame.sun.xyz, aerial), lit, bvec3(debug));
   outAerialTransmittance = aerial.transmittance;
-  outAerialFog = aerial.fog;
+  outAerialInscatter = aerial.inscatter;
   outSunLight = aerial.sunLight;
   outSkyLight = aerial.skyLight;
   // In the face frame too: the mapped fragments' sky light takes it with the texture's normal.
@@ -105,7 +105,8 @@ void main() {
   outSkyZenith = uintBitsToFloat(atmosphereViewTable[GLOBE_VIEW_TEXELS].xyz);
   outSkyHorizon = uintBitsToFloat(atmosphereViewTable[GLOBE_VIEW_TEXELS + 1].xyz);
 #endif
-  outColour = encodeDisplay(lit, 1.0).rgb;
+  // Debug colours are shown as they are, lit colours through the display transform.
+  outColour = encodeDisplay(mix(displayTone(lit), lit, bvec3(debug)), 1.0).rgb;
   outHole = v.hole;
   outSeaDepth = frame.waterShallow.w - v.elevation;
   outRelative = v.relative;

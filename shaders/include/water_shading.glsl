@@ -36,9 +36,8 @@ vec3 waterColour(float depth_m, vec3 relative) {
   float glint = pow(max(dot(reflected, sun), 0.0), kGlintExponent) * kGlintStrength * step(0.0, sunHeight);
   vec3 c = mix(body, sky, fresnel) + vec3(glint);
 #ifdef GLOBE_TERRAIN_ATMOSPHERE
-  // Through the air to the camera as the land's vertices are (terrain_atmosphere.glsl), taking the
-  // colour as tone-mapped radiance: 1 - exp(-e (L T + S)) = 1 - (1 - c)^T exp(-e S).
-  c = vec3(1.0) - pow(vec3(1.0) - clamp(c, 0.0, 0.9999), inAerialTransmittance) * inAerialFog;
+  // Through the air to the camera as the land's vertices are (terrain_atmosphere.glsl).
+  c = c * inAerialTransmittance + inAerialInscatter;
 #endif
-  return encodeDisplay(c, 1.0).rgb;
+  return encodeScene(c, 1.0).rgb;
 }

@@ -24,7 +24,7 @@ namespace {
 
 globe::Result<globe::ImageRgba> readImage(const std::string& path) {
   if (path.size() > 4 && path.substr(path.size() - 4) == ".exr") return globe::readExr(path);
-  return globe::readPng(path);
+  return globe::readImage8(path);
 }
 
 int usage(const char* argv0) {
