@@ -30,13 +30,11 @@ pugi::xml_node childNamed(const pugi::xml_node& parent, std::string_view name) {
   return {};
 }
 
-pugi::xml_node findTour(const pugi::xml_node& node) {
-  for (pugi::xml_node c : node.children()) {
-    if (c.type() != pugi::node_element) continue;
-    if (localName(c) == "Tour") return c;
-    if (pugi::xml_node t = findTour(c)) return t;
-  }
-  return {};
+// The first gx:Tour in document order. pugixml's find_node walks the tree iteratively (parent and
+// sibling links): a recursive search overflowed the stack on a file nested 1e5 elements deep.
+pugi::xml_node findTour(const pugi::xml_node& document) {
+  return document.find_node(
+      [](const pugi::xml_node& n) { return n.type() == pugi::node_element && localName(n) == "Tour"; });
 }
 
 std::string_view trimmed(std::string_view s) {

