@@ -62,13 +62,14 @@ struct Samples {
 
 struct CzmlReader {
   std::string_view text;
+  const LineIndex& lines;
   const std::string& file;
   std::size_t packetStart = 0;
 
   // An error at the first `"key"` of the current packet (its start when not found).
   Error errorAt(std::string_view key, std::string message) const {
     std::size_t at = text.find(fmt::format("\"{}\"", key), packetStart);
-    TextPosition p = textPositionOf(text, at == std::string_view::npos ? packetStart : at);
+    TextPosition p = lines.positionOf(at == std::string_view::npos ? packetStart : at);
     return Error::at(file, p.line, p.column, std::string(key), std::move(message));
   }
 
@@ -209,7 +210,7 @@ Result<CameraPath> pathFromPacket(const CzmlReader& r, const json& packet) {
   times.erase(std::unique(times.begin(), times.end()), times.end());
   if (times.size() < 2)
     return r.errorAt("position", "a camera path needs at least 2 sample times in position or orientation");
-  const int line = textPositionOf(r.text, r.packetStart).line;
+  const int line = r.lines.positionOf(r.packetStart).line;
   std::vector<PathKeyframe> keys;
   for (double t : times) {
     GeodeticPose pose = poseOf(interpolated(*position, t), quaternionAt(*orientation, t));
@@ -223,7 +224,7 @@ Error syntaxError(std::string_view text, const std::string& file, const json::pa
   std::string what = e.what();
   auto colon = what.find(": ", what.find("column"));
   std::string message = colon == std::string::npos ? what : what.substr(colon + 2);
-  TextPosition p = textPositionOf(text, e.byte > 0 ? e.byte - 1 : 0);
+  TextPosition p = LineIndex(text).positionOf(e.byte > 0 ? e.byte - 1 : 0);
   return Error::at(file, p.line, p.column, "", "invalid JSON: " + message);
 }
 }  // namespace
@@ -255,10 +256,11 @@ Result<CameraPath> parseCzmlPath(std::string_view text, const std::string& fileN
     return syntaxError(text, fileName, e);
   }
   if (!doc.is_array()) return Error::at(fileName, 1, 1, "", "a CZML document must be a JSON array of packets");
+  const LineIndex lines(text);
   std::vector<std::size_t> offsets = packetOffsets(text);
   for (std::size_t i = 0; i < doc.size(); ++i) {
     if (!doc[i].is_object() || !doc[i].contains("position")) continue;
-    CzmlReader reader{text, fileName, i < offsets.size() ? offsets[i] : 0};
+    CzmlReader reader{text, lines, fileName, i < offsets.size() ? offsets[i] : 0};
     return pathFromPacket(reader, doc[i]);
   }
   return Error::at(fileName, 1, 1, "position", "no packet has a position (the camera's packet needs one)");
