@@ -219,13 +219,39 @@ Result<CameraPath> pathFromPacket(const CzmlReader& r, const json& packet) {
   return CameraPath::create(std::move(keys), r.file);
 }
 
-Error syntaxError(std::string_view text, const std::string& file, const json::parse_error& e) {
-  // nlohmann's text is "[json.exception.parse_error.101] parse error at line L, column C: what".
-  std::string what = e.what();
-  auto colon = what.find(": ", what.find("column"));
-  std::string message = colon == std::string::npos ? what : what.substr(colon + 2);
-  TextPosition p = LineIndex(text).positionOf(e.byte > 0 ? e.byte - 1 : 0);
-  return Error::at(file, p.line, p.column, "", "invalid JSON: " + message);
+// nlohmann's DOM builder, keeping where the first error is: a number beyond double's range (1e400)
+// otherwise escapes as an out_of_range exception with no position, and its raw text was printed.
+struct PositionedDomParser : nlohmann::detail::json_sax_dom_parser<json> {
+  using json_sax_dom_parser::json_sax_dom_parser;
+  std::size_t errorAt = 0;              // byte offset of the error
+  std::string lastKey, field, message;  // field: the key of an out-of-range number
+
+  bool key(json::string_t& k) {
+    lastKey = k;
+    return json_sax_dom_parser::key(k);
+  }
+  template <class Exception>
+  bool parse_error(std::size_t byte, const std::string& lastToken, const Exception& e) {
+    // nlohmann counts bytes read: one past the offending character, or past the whole number.
+    const std::size_t last = byte > 0 ? byte - 1 : 0;
+    errorAt = e.id == 406 && last + 1 >= lastToken.size() ? last + 1 - lastToken.size() : last;
+    // nlohmann's text is "[json.exception.KIND.ID] parse error at line L, column C: what".
+    std::string what = e.what();
+    auto colon = what.find(": ", what.find("column"));
+    if (e.id == 406) field = lastKey;
+    message = e.id == 406                  ? fmt::format("number {} is out of range (beyond a double)", lastToken)
+              : colon == std::string::npos ? what.substr(what.find(']') + 2)
+                                           : what.substr(colon + 2);
+    return false;
+  }
+};
+
+Result<json> parseJson(std::string_view text, const LineIndex& lines, const std::string& file) {
+  json doc;
+  PositionedDomParser dom(doc, /*allow_exceptions=*/false);
+  if (json::sax_parse(text.begin(), text.end(), &dom)) return doc;
+  TextPosition p = lines.positionOf(dom.errorAt);
+  return Error::at(file, p.line, p.column, dom.field, "invalid JSON: " + dom.message);
 }
 }  // namespace
 
@@ -249,14 +275,11 @@ std::optional<double> parseIso8601_s(std::string_view text) {
 }
 
 Result<CameraPath> parseCzmlPath(std::string_view text, const std::string& fileName) {
-  json doc;
-  try {
-    doc = json::parse(text.begin(), text.end());
-  } catch (const json::parse_error& e) {
-    return syntaxError(text, fileName, e);
-  }
-  if (!doc.is_array()) return Error::at(fileName, 1, 1, "", "a CZML document must be a JSON array of packets");
   const LineIndex lines(text);
+  auto parsed = parseJson(text, lines, fileName);
+  if (!parsed) return parsed.error();
+  const json& doc = *parsed;
+  if (!doc.is_array()) return Error::at(fileName, 1, 1, "", "a CZML document must be a JSON array of packets");
   std::vector<std::size_t> offsets = packetOffsets(text);
   for (std::size_t i = 0; i < doc.size(); ++i) {
     if (!doc[i].is_object() || !doc[i].contains("position")) continue;

@@ -1,6 +1,7 @@
 // Hostile camera path files (issue 40): a KML tour nested 1e5 elements deep is read without
 // overflowing the stack, 55,000 FlyTos import in linear time, and a CZML number beyond a double's
 // range names file, line, column and field instead of printing the JSON library's exception.
+#include "planet/paths/czml_path.h"
 #include "planet/paths/kml_tour.h"
 
 #include <gtest/gtest.h>
@@ -54,6 +55,15 @@ TEST(PathImportHostile, FiftyFiveThousandFlyTosImportInLinearTime) {
   // Quadratic, this took 158 s; linear, about 1 s here (docs/reliability.md). A loose ceiling, so a
   // loaded machine does not fail it.
   EXPECT_LT(seconds, 20.0);
+}
+
+TEST(PathImportHostile, CzmlNumberBeyondDoubleNamesFileLineAndField) {
+  const std::string text =
+      "[\n  {\"id\": \"camera\",\n   \"position\": {\"cartographicDegrees\": [0, -98, 22, 1e400]}}\n]\n";
+  auto path = parseCzmlPath(text, "big.czml");
+  ASSERT_FALSE(path.ok());
+  EXPECT_EQ(path.error().format(),
+            "big.czml:3:53: cartographicDegrees: invalid JSON: number 1e400 is out of range (beyond a double)");
 }
 
 }  // namespace
