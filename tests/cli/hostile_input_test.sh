@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Hostile input to the newer readers and writers (issue 40): deep and long KML tours, CZML numbers
 # beyond a double, raster sources with infinite or huge pixels, a raster over the pole, rasters too
-# large to scan, FIFOs at any depth of a VRT. Every command runs
+# large to scan, FIFOs at any depth of a VRT, temporaries left by killed runs. Every command runs
 # under a timeout: a hang is a failure. Usage: hostile_input_test.sh GLOBE SOURCE_DIR WORKDIR
 set -uo pipefail
 source "$(dirname "$0")/cli_common.sh"
@@ -125,5 +125,12 @@ check_refuses nested.vrt "'nested.vrt' its source '.*fifo.raw': cannot read rast
 check_refuses big.vrt "100000 x 100000 pixels is beyond the limit of 268435456 pixels"
 check_refuses nan_gt.vrt "has a geotransform that is not finite"
 check_refuses wide.vrt "pixels of 1e\+06 x 1e\+06 degrees make it larger than the globe"
+
+# --- Temporaries of killed runs -----------------------------------------------------------------
+# A run killed with SIGKILL leaves .NAME.tmpPID; the next run removes those of dead processes only.
+mkdir -p ph && touch ph/.bodies.csv.tmp999999999 "ph/.summary.json.tmp$$"
+timeout 60 "$GLOBE" physics --bodies 2 --seconds 1 --grid 16 --radius 8 --out ph >log 2>&1 || { fail "physics:"; cat log; }
+[[ -e ph/.bodies.csv.tmp999999999 ]] && fail "a dead run's temporary survived the rerun"
+[[ -e "ph/.summary.json.tmp$$" ]] || fail "a live process's temporary was removed"
 
 exit $failures
