@@ -133,4 +133,11 @@ timeout 60 "$GLOBE" physics --bodies 2 --seconds 1 --grid 16 --radius 8 --out ph
 [[ -e ph/.bodies.csv.tmp999999999 ]] && fail "a dead run's temporary survived the rerun"
 [[ -e "ph/.summary.json.tmp$$" ]] || fail "a live process's temporary was removed"
 
+# --- Limits at their documented values -----------------------------------------------------------
+# Exactly one hour at 60 Hz (216 001 frames, both ends) passes the frame limit: the next check (the
+# unknown quality) is what stops it. A frame more is refused by --rate.
+printf 't_s lat_deg lon_deg height_m heading_deg pitch_deg roll_deg\n0 22 -98.5 5000 60 -20 0\n3600 22 -98.4 5000 60 -20 0\n' >hour.path
+one_error 2 "--quality" -- "$GLOBE" bench --path hour.path --rate 60 --quality nonsense --out bench_hour
+one_error 2 "--rate: 3600 s of path at 60.001 Hz is 216004 frames" -- "$GLOBE" bench --path hour.path --rate 60.001 --quality nonsense --out bench_hour
+
 exit $failures
