@@ -260,12 +260,16 @@ std::optional<double> parseIso8601_s(std::string_view text) {
   int y = 0, mo = 0, d = 0, h = 0, mi = 0, consumed = 0;
   double sec = 0;
   if (std::sscanf(s.c_str(), "%4d-%2d-%2dT%2d:%2d:%lf%n", &y, &mo, &d, &h, &mi, &sec, &consumed) != 6) return {};
-  if (mo < 1 || mo > 12 || d < 1 || d > 31 || h > 24 || mi > 59 || !(sec >= 0 && sec < 61)) return {};
+  // The day must exist in its month (February 30 was accepted).
+  const bool leap = (y % 4 == 0 && y % 100 != 0) || y % 400 == 0;
+  const int monthDays[] = {31, leap ? 29 : 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+  if (mo < 1 || mo > 12 || d < 1 || d > monthDays[mo - 1] || h > 24 || mi > 59 || !(sec >= 0 && sec < 61)) return {};
   std::string_view zone = text.substr(static_cast<std::size_t>(consumed));
   double offset_s = 0;
   if (zone.size() == 6 && (zone[0] == '+' || zone[0] == '-') && zone[3] == ':') {
     int zh = 0, zm = 0;
     if (std::sscanf(std::string(zone.substr(1)).c_str(), "%2d:%2d", &zh, &zm) != 2) return {};
+    if (zh > 14 || zm > 59) return {};  // real offsets are within ±14:00 (+99:99 was accepted)
     offset_s = (zone[0] == '+' ? 1.0 : -1.0) * (zh * 3600.0 + zm * 60.0);
   } else if (zone != "Z") {
     return {};

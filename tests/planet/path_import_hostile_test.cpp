@@ -66,5 +66,13 @@ TEST(PathImportHostile, CzmlNumberBeyondDoubleNamesFileLineAndField) {
             "big.czml:3:53: cartographicDegrees: invalid JSON: number 1e400 is out of range (beyond a double)");
 }
 
+TEST(PathImportHostile, CzmlDatesAndZonesMustExist) {
+  EXPECT_FALSE(parseIso8601_s("2001-02-30T00:00:00Z"));  // accepted before
+  EXPECT_FALSE(parseIso8601_s("2001-02-29T00:00:00Z"));
+  EXPECT_TRUE(parseIso8601_s("2000-02-29T00:00:00Z"));        // a leap year
+  EXPECT_FALSE(parseIso8601_s("2000-03-01T00:00:00+99:99"));  // accepted before
+  EXPECT_TRUE(parseIso8601_s("2000-03-01T00:00:00-14:00"));
+}
+
 }  // namespace
 }  // namespace globe
