@@ -31,8 +31,9 @@ namespace globe::cli {
 
 namespace {
 
-// One hour of path at 60 Hz (docs/reliability.md): longer runs are a mistake, not a benchmark.
-constexpr uint64_t kMaxBenchFrames = 216000;
+// One hour of path at 60 Hz, both ends included (3600 x 60 + 1; docs/reliability.md): longer runs
+// are a mistake, not a benchmark. 216 000 refused the hour the docs allow.
+constexpr uint64_t kMaxBenchFrames = 216001;
 
 struct BenchOptions {
   DeviceFlags device;

@@ -120,6 +120,7 @@ Result<MovieSummary> renderSequence(FrameSource& source, const CameraPath& path,
 
 Result<MovieSummary> renderMp4(FrameSource& source, const CameraPath& path, const MovieSettings& s,
                                const MovieProgressFn& progress) {
+  removeStaleTemporaries(s.out);  // a killed earlier run's .NAME.mp4.tmpPID
   AtomicFile file(s.out);
   auto writer = Mp4Writer::open(file.tempPath(), s.width, s.height, s.fps);
   if (!writer) return writer.error();

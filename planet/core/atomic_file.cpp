@@ -3,6 +3,7 @@
 #include "planet/core/fault_injection.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -123,14 +124,33 @@ Status writeFileAtomically(const std::string& path, std::string_view content, co
   return file.commit();
 }
 
+void removeStaleTemporaries(const std::string& targetPath) {
+  const fs::path p(targetPath);
+  const std::string prefix = "." + p.filename().string() + ".tmp";
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(p.parent_path().empty() ? fs::path(".") : p.parent_path(), ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) continue;
+    const std::string pid = name.substr(prefix.size());
+    if (pid.find_first_not_of("0123456789") != std::string::npos || pid.size() > 9) continue;
+    const auto id = static_cast<pid_t>(std::stol(pid));
+    if (id != ::getpid() && ::kill(id, 0) != 0 && errno == ESRCH) fs::remove(entry.path(), ec);
+  }
+}
+
 Status writeFilesAtomically(const std::string& dir, std::span<const NamedContent> files) {
   std::vector<std::unique_ptr<AtomicFile>> written;
   for (const NamedContent& f : files) {
     const std::string path = (fs::path(dir) / f.name).string();
     if (auto s = checkWritable(path, ""); !s) return Error::inFile(path, s.error().message);
+    removeStaleTemporaries(path);
     written.push_back(std::make_unique<AtomicFile>(path));
     if (auto s = f.produce ? written.back()->write(f.produce) : written.back()->write(f.content); !s) return s;
   }
+  // The old last file goes first: a set interrupted between renames then lacks its last file instead
+  // of mixing new files with an old one (a killed bench: new frames.csv beside an old report.html).
+  if (!written.empty() && std::remove(written.back()->targetPath().c_str()) != 0 && errno != ENOENT)
+    return Error::inFile(written.back()->targetPath(), std::string("cannot replace: ") + std::strerror(errno));
   for (auto& file : written)
     if (auto s = file->commit(); !s) return s;
   return Ok{};

@@ -72,6 +72,11 @@ class CheckedFileWriter {
 // command can refuse before it spends time computing an output it cannot store.
 Status checkWritable(const std::string& path, const std::string& field);
 
+// Removes the temporaries AtomicFile left for `targetPath` (".NAME.tmpPID") in runs that were
+// killed (SIGKILL skips every destructor): those whose process no longer exists. A temporary of a
+// run still going is kept. For command outputs, whose reruns would otherwise accumulate them.
+void removeStaleTemporaries(const std::string& targetPath);
+
 // Writes `content` to `path` atomically. Every write, the fsync and the close are checked: on any
 // failure (ENOSPC, EFBIG, EIO) the Error names `path` and the reason, and the old file is untouched.
 Status writeFileAtomically(const std::string& path, std::string_view content, const std::string& field);
@@ -86,8 +91,11 @@ struct NamedContent {
 };
 
 // Writes every file into `dir` so that a failure changes none of them: all temporaries are written
-// first, then renamed in order (so the last file's existence means the earlier ones are complete).
-// On failure the existing files are untouched and no temporaries remain. The one way to write a
+// first, then the old last file is removed and the temporaries renamed in order, the last one last. So
+// whatever stops the process (kill -9 too), the directory holds the old set, the new set, or a set
+// without its last file (incomplete, never a mix of old and new files with every name present). On a
+// reported failure the existing files are untouched and no temporaries remain; temporaries a killed
+// earlier run left for these names are removed first (removeStaleTemporaries). The one way to write a
 // multi-file output (trade.csv + pareto.svg; the bench report should use it too).
 Status writeFilesAtomically(const std::string& dir, std::span<const NamedContent> files);
 

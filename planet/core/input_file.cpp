@@ -31,6 +31,13 @@ std::string mib(std::size_t bytes) { return std::to_string(bytes >> 20) + " MiB"
 
 }  // namespace
 
+Status checkInputFileKind(const std::string& path, const std::string& what, bool directoryToo) {
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0) return Error::inFile(path, "cannot open " + what + ": " + std::strerror(errno));
+  if (S_ISREG(info.st_mode) || (directoryToo && S_ISDIR(info.st_mode))) return Ok{};
+  return Error::inFile(path, "cannot read " + what + ": it is " + fileKind(info.st_mode));
+}
+
 Result<std::string> readInputFile(const std::string& path, const std::string& what, std::size_t maxBytes) {
   // O_NONBLOCK: opening a FIFO for reading would otherwise wait for a writer forever.
   FileDescriptor file{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};

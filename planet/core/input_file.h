@@ -17,4 +17,9 @@ inline constexpr std::size_t kMaxInputFileBytes = std::size_t{16} << 20;
 Result<std::string> readInputFile(const std::string& path, const std::string& what,
                                   std::size_t maxBytes = kMaxInputFileBytes);
 
+// The same kind check without reading: `path` must exist and be a regular file (or, when
+// `directoryToo`, a directory). stat() only, so a FIFO never blocks. For inputs read by a library
+// (GDAL) rather than by readInputFile.
+Status checkInputFileKind(const std::string& path, const std::string& what, bool directoryToo = false);
+
 }  // namespace globe

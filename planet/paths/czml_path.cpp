@@ -62,13 +62,14 @@ struct Samples {
 
 struct CzmlReader {
   std::string_view text;
+  const LineIndex& lines;
   const std::string& file;
   std::size_t packetStart = 0;
 
   // An error at the first `"key"` of the current packet (its start when not found).
   Error errorAt(std::string_view key, std::string message) const {
     std::size_t at = text.find(fmt::format("\"{}\"", key), packetStart);
-    TextPosition p = textPositionOf(text, at == std::string_view::npos ? packetStart : at);
+    TextPosition p = lines.positionOf(at == std::string_view::npos ? packetStart : at);
     return Error::at(file, p.line, p.column, std::string(key), std::move(message));
   }
 
@@ -209,7 +210,7 @@ Result<CameraPath> pathFromPacket(const CzmlReader& r, const json& packet) {
   times.erase(std::unique(times.begin(), times.end()), times.end());
   if (times.size() < 2)
     return r.errorAt("position", "a camera path needs at least 2 sample times in position or orientation");
-  const int line = textPositionOf(r.text, r.packetStart).line;
+  const int line = r.lines.positionOf(r.packetStart).line;
   std::vector<PathKeyframe> keys;
   for (double t : times) {
     GeodeticPose pose = poseOf(interpolated(*position, t), quaternionAt(*orientation, t));
@@ -218,13 +219,39 @@ Result<CameraPath> pathFromPacket(const CzmlReader& r, const json& packet) {
   return CameraPath::create(std::move(keys), r.file);
 }
 
-Error syntaxError(std::string_view text, const std::string& file, const json::parse_error& e) {
-  // nlohmann's text is "[json.exception.parse_error.101] parse error at line L, column C: what".
-  std::string what = e.what();
-  auto colon = what.find(": ", what.find("column"));
-  std::string message = colon == std::string::npos ? what : what.substr(colon + 2);
-  TextPosition p = textPositionOf(text, e.byte > 0 ? e.byte - 1 : 0);
-  return Error::at(file, p.line, p.column, "", "invalid JSON: " + message);
+// nlohmann's DOM builder, keeping where the first error is: a number beyond double's range (1e400)
+// otherwise escapes as an out_of_range exception with no position, and its raw text was printed.
+struct PositionedDomParser : nlohmann::detail::json_sax_dom_parser<json> {
+  using json_sax_dom_parser::json_sax_dom_parser;
+  std::size_t errorAt = 0;              // byte offset of the error
+  std::string lastKey, field, message;  // field: the key of an out-of-range number
+
+  bool key(json::string_t& k) {
+    lastKey = k;
+    return json_sax_dom_parser::key(k);
+  }
+  template <class Exception>
+  bool parse_error(std::size_t byte, const std::string& lastToken, const Exception& e) {
+    // nlohmann counts bytes read: one past the offending character, or past the whole number.
+    const std::size_t last = byte > 0 ? byte - 1 : 0;
+    errorAt = e.id == 406 && last + 1 >= lastToken.size() ? last + 1 - lastToken.size() : last;
+    // nlohmann's text is "[json.exception.KIND.ID] parse error at line L, column C: what".
+    std::string what = e.what();
+    auto colon = what.find(": ", what.find("column"));
+    if (e.id == 406) field = lastKey;
+    message = e.id == 406                  ? fmt::format("number {} is out of range (beyond a double)", lastToken)
+              : colon == std::string::npos ? what.substr(what.find(']') + 2)
+                                           : what.substr(colon + 2);
+    return false;
+  }
+};
+
+Result<json> parseJson(std::string_view text, const LineIndex& lines, const std::string& file) {
+  json doc;
+  PositionedDomParser dom(doc, /*allow_exceptions=*/false);
+  if (json::sax_parse(text.begin(), text.end(), &dom)) return doc;
+  TextPosition p = lines.positionOf(dom.errorAt);
+  return Error::at(file, p.line, p.column, dom.field, "invalid JSON: " + dom.message);
 }
 }  // namespace
 
@@ -233,12 +260,16 @@ std::optional<double> parseIso8601_s(std::string_view text) {
   int y = 0, mo = 0, d = 0, h = 0, mi = 0, consumed = 0;
   double sec = 0;
   if (std::sscanf(s.c_str(), "%4d-%2d-%2dT%2d:%2d:%lf%n", &y, &mo, &d, &h, &mi, &sec, &consumed) != 6) return {};
-  if (mo < 1 || mo > 12 || d < 1 || d > 31 || h > 24 || mi > 59 || !(sec >= 0 && sec < 61)) return {};
+  // The day must exist in its month (February 30 was accepted).
+  const bool leap = (y % 4 == 0 && y % 100 != 0) || y % 400 == 0;
+  const int monthDays[] = {31, leap ? 29 : 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+  if (mo < 1 || mo > 12 || d < 1 || d > monthDays[mo - 1] || h > 24 || mi > 59 || !(sec >= 0 && sec < 61)) return {};
   std::string_view zone = text.substr(static_cast<std::size_t>(consumed));
   double offset_s = 0;
   if (zone.size() == 6 && (zone[0] == '+' || zone[0] == '-') && zone[3] == ':') {
     int zh = 0, zm = 0;
     if (std::sscanf(std::string(zone.substr(1)).c_str(), "%2d:%2d", &zh, &zm) != 2) return {};
+    if (zh > 14 || zm > 59) return {};  // real offsets are within ±14:00 (+99:99 was accepted)
     offset_s = (zone[0] == '+' ? 1.0 : -1.0) * (zh * 3600.0 + zm * 60.0);
   } else if (zone != "Z") {
     return {};
@@ -248,17 +279,15 @@ std::optional<double> parseIso8601_s(std::string_view text) {
 }
 
 Result<CameraPath> parseCzmlPath(std::string_view text, const std::string& fileName) {
-  json doc;
-  try {
-    doc = json::parse(text.begin(), text.end());
-  } catch (const json::parse_error& e) {
-    return syntaxError(text, fileName, e);
-  }
+  const LineIndex lines(text);
+  auto parsed = parseJson(text, lines, fileName);
+  if (!parsed) return parsed.error();
+  const json& doc = *parsed;
   if (!doc.is_array()) return Error::at(fileName, 1, 1, "", "a CZML document must be a JSON array of packets");
   std::vector<std::size_t> offsets = packetOffsets(text);
   for (std::size_t i = 0; i < doc.size(); ++i) {
     if (!doc[i].is_object() || !doc[i].contains("position")) continue;
-    CzmlReader reader{text, fileName, i < offsets.size() ? offsets[i] : 0};
+    CzmlReader reader{text, lines, fileName, i < offsets.size() ? offsets[i] : 0};
     return pathFromPacket(reader, doc[i]);
   }
   return Error::at(fileName, 1, 1, "position", "no packet has a position (the camera's packet needs one)");

@@ -30,13 +30,11 @@ pugi::xml_node childNamed(const pugi::xml_node& parent, std::string_view name) {
   return {};
 }
 
-pugi::xml_node findTour(const pugi::xml_node& node) {
-  for (pugi::xml_node c : node.children()) {
-    if (c.type() != pugi::node_element) continue;
-    if (localName(c) == "Tour") return c;
-    if (pugi::xml_node t = findTour(c)) return t;
-  }
-  return {};
+// The first gx:Tour in document order. pugixml's find_node walks the tree iteratively (parent and
+// sibling links): a recursive search overflowed the stack on a file nested 1e5 elements deep.
+pugi::xml_node findTour(const pugi::xml_node& document) {
+  return document.find_node(
+      [](const pugi::xml_node& n) { return n.type() == pugi::node_element && localName(n) == "Tour"; });
 }
 
 std::string_view trimmed(std::string_view s) {
@@ -47,16 +45,17 @@ std::string_view trimmed(std::string_view s) {
 }
 
 struct KmlReader {
-  std::string_view text;
+  const LineIndex& lines;  // indexed once: every keyframe records its line
   const std::string& file;
 
+  TextPosition positionOf(const pugi::xml_node& node) const {
+    return lines.positionOf(static_cast<std::size_t>(std::max<std::ptrdiff_t>(node.offset_debug(), 0)));
+  }
   Error errorAt(const pugi::xml_node& node, std::string message) const {
-    TextPosition p = textPositionOf(text, static_cast<std::size_t>(std::max<std::ptrdiff_t>(node.offset_debug(), 0)));
+    TextPosition p = positionOf(node);
     return Error::at(file, p.line, p.column, node ? node.name() : "", std::move(message));
   }
-  int lineOf(const pugi::xml_node& node) const {
-    return textPositionOf(text, static_cast<std::size_t>(std::max<std::ptrdiff_t>(node.offset_debug(), 0))).line;
-  }
+  int lineOf(const pugi::xml_node& node) const { return positionOf(node).line; }
 
   // Reads the number in child `name` of `parent` into `out`; leaves `out` (the KML default) when
   // there is no such child.
@@ -188,11 +187,12 @@ Result<std::vector<PathKeyframe>> readPlaylist(const KmlReader& r, const pugi::x
 Result<CameraPath> parseKmlTour(std::string_view text, const std::string& fileName) {
   pugi::xml_document doc;
   pugi::xml_parse_result parsed = doc.load_buffer(text.data(), text.size());
+  const LineIndex lines(text);
   if (!parsed) {
-    TextPosition p = textPositionOf(text, static_cast<std::size_t>(std::max<std::ptrdiff_t>(parsed.offset, 0)));
+    TextPosition p = lines.positionOf(static_cast<std::size_t>(std::max<std::ptrdiff_t>(parsed.offset, 0)));
     return Error::at(fileName, p.line, p.column, "", fmt::format("invalid XML: {}", parsed.description()));
   }
-  KmlReader reader{text, fileName};
+  KmlReader reader{lines, fileName};
   pugi::xml_node tour = findTour(doc);
   if (!tour) return Error::at(fileName, 1, 0, "gx:Tour", "no tour in this KML file (expected a gx:Tour element)");
   pugi::xml_node playlist = childNamed(tour, "Playlist");

@@ -38,12 +38,14 @@ Result<BakedTileset> fromBakeJson(const std::string& dir, const std::string& pat
   if (!format) return Error::inFileField(path, "format", format.error().message);
   const auto& levels = j.value("levels", nlohmann::json());
   const auto& region = j.value("region", nlohmann::json());
-  if (!levels.is_array() || levels.size() != 2 || !levels[1].is_number_integer()) return bad("levels");
+  if (!levels.is_array() || levels.size() != 2 || !levels[0].is_number_integer() || !levels[1].is_number_integer())
+    return bad("levels");
   if (!region.is_array() || region.size() != 4) return bad("region");
   for (const auto& v : region)
     if (!v.is_number()) return bad("region");
   const int last = levels[1].get<int>();
-  if (last < 0 || last > kMaxTileLevel) return bad("levels");
+  // [10, 0] was accepted: the levels must be in order, like --levels A..B.
+  if (levels[0].get<int>() < 0 || levels[0].get<int>() > last || last > kMaxTileLevel) return bad("levels");
   const GeoRect rect{region[0].get<double>(), region[1].get<double>(), region[2].get<double>(),
                      region[3].get<double>()};
   if (!(rect.west_deg < rect.east_deg && rect.south_deg < rect.north_deg)) return bad("region");

@@ -1,6 +1,7 @@
 #include "planet/sources/gdal_raster.h"
 
 #include "planet/sources/baked_tileset.h"
+#include "planet/sources/raster_inputs.h"
 
 #include <cpl_conv.h>
 #include <cpl_error.h>
@@ -52,12 +53,23 @@ OGRCoordinateTransformation* threadTransform(std::uint64_t id, const std::string
 
 std::atomic<std::uint64_t> nextRasterId{1};
 
-// The latitude/longitude box of the pixel centres: 64 points along each border, to geographic.
-void findLatLonBox(RasterFacts& f, const std::string& wkt, bool needsTransform) {
+// Whether geographic point (lon, lat) has an image inside the raster's pixel centres.
+bool inRaster(const RasterFacts& f, const double inverse[6], OGRCoordinateTransformation* toRaster, double lon,
+              double lat) {
+  if (toRaster != nullptr && !toRaster->Transform(1, &lon, &lat)) return false;
+  const double px = inverse[0] + lon * inverse[1] + lat * inverse[2] - 0.5;
+  const double py = inverse[3] + lon * inverse[4] + lat * inverse[5] - 0.5;
+  return px >= 0.0 && px <= f.width - 1.0 && py >= 0.0 && py <= f.height - 1.0;
+}
+
+// The latitude/longitude box of the pixel centres: 1024 points along each border, to geographic.
+// A projected raster around a pole (EPSG:3413) has its extreme latitude inside, not on its border:
+// a pole whose image falls inside the raster extends the box to it, with every longitude.
+void findLatLonBox(RasterFacts& f, const std::string& wkt, const double inverse[6], bool needsTransform) {
   std::unique_ptr<OGRCoordinateTransformation> toGeographic = needsTransform ? makeTransform(wkt, false) : nullptr;
   f.lat_min_deg = f.lon_min_deg = std::numeric_limits<double>::infinity();
   f.lat_max_deg = f.lon_max_deg = -std::numeric_limits<double>::infinity();
-  const int n = 64;
+  const int n = 1024;
   for (int side = 0; side < 4; ++side) {
     for (int k = 0; k <= n; ++k) {
       const double t = double(k) / n;
@@ -73,6 +85,32 @@ void findLatLonBox(RasterFacts& f, const std::string& wkt, bool needsTransform) 
       f.lat_max_deg = std::max(f.lat_max_deg, y);
     }
   }
+  std::unique_ptr<OGRCoordinateTransformation> toRaster = needsTransform ? makeTransform(wkt, true) : nullptr;
+  for (double pole : {90.0, -90.0}) {
+    if (f.geographic || !inRaster(f, inverse, toRaster.get(), 0.0, pole)) continue;
+    f.lat_min_deg = std::min(f.lat_min_deg, pole);
+    f.lat_max_deg = std::max(f.lat_max_deg, pole);
+    f.lon_min_deg = -180.0;
+    f.lon_max_deg = 180.0;
+  }
+}
+
+// Before any pixel is read: the size and block count the min/max pass and the pyramid would work
+// through, and a georeferencing that is finite and no larger than the planet.
+Status checkExtent(GDALDataset* ds, const RasterFacts& f) {
+  const double pixels = double(f.width) * double(f.height);
+  if (pixels > kMaxRasterPixels)
+    return Error::inFile(
+        "", fmt::format("{} x {} pixels is beyond the limit of {:.0f} pixels", f.width, f.height, kMaxRasterPixels));
+  int bw = 0, bh = 0;
+  ds->GetRasterBand(1)->GetBlockSize(&bw, &bh);
+  const double blocks = std::ceil(f.width / double(std::max(bw, 1))) * std::ceil(f.height / double(std::max(bh, 1)));
+  if (blocks > kMaxRasterBlocks)
+    return Error::inFile("", fmt::format("{:.0f} blocks of {} x {} pixels is beyond the limit of {:.0f} blocks", blocks,
+                                         bw, bh, kMaxRasterBlocks));
+  for (double g : f.geo_transform)
+    if (!std::isfinite(g)) return Error::inFile("", "has a geotransform that is not finite");
+  return Ok{};
 }
 
 // Pixel size (metres) and the CRS's kind.
@@ -83,6 +121,11 @@ Status describeCrs(const OGRSpatialReference& srs, double radius_m, RasterFacts&
   const double sx = std::hypot(g[1], g[4]), sy = std::hypot(g[2], g[5]);
   if (f.geographic) {
     const double radiansPerUnit = srs.GetAngularUnits() * 1.0;  // radians per CRS unit
+    // 1e6-degree pixels passed before: a raster cannot span more than the globe (twice, for wraps).
+    const double degreesPerUnit = radiansPerUnit * 180.0 / std::numbers::pi;
+    if (!(sx * f.width * degreesPerUnit <= 720.0 && sy * f.height * degreesPerUnit <= 360.0))
+      return Error::inFile("", fmt::format("pixels of {:g} x {:g} degrees make it larger than the globe",
+                                           sx * degreesPerUnit, sy * degreesPerUnit));
     const double centreLat = g[3] + 0.5 * f.height * g[5];
     const double dx = sx * radiansPerUnit * radius_m * std::cos(centreLat * std::numbers::pi / 180.0);
     f.pixel_size_m = std::min(std::abs(dx), sy * radiansPerUnit * radius_m);
@@ -103,6 +146,13 @@ void registerGdalDrivers() {
     GDALAllRegister();
     // Our own tile cache (tile_cache.h) holds what is read; GDAL's block cache stays small.
     GDALSetCacheMax64(std::int64_t(16) << 20);
+    // GDAL's own safety options (docs/reliability.md): no directory listing beside each file opened,
+    // a bounded pool of VRT sources held open, no Python pixel functions or raw memory in VRTs.
+    CPLSetConfigOption("GDAL_DISABLE_READDIR_ON_OPEN", "EMPTY_DIR");
+    CPLSetConfigOption("GDAL_MAX_DATASET_POOL_SIZE", "64");
+    CPLSetConfigOption("GDAL_VRT_ENABLE_PYTHON", "NO");
+    CPLSetConfigOption("VRT_ALLOW_MEM_DRIVER", "NO");
+    CPLSetConfigOption("GDAL_MAX_BAND_COUNT", "1024");
     CPLSetErrorHandler(CPLQuietErrorHandler);  // failures come back as Errors, never on stderr
     registerBakedTilesetDriver();              // baked tileset directories (baked_tileset.h)
   });
@@ -113,6 +163,7 @@ Result<std::unique_ptr<GdalRaster>> GdalRaster::open(const std::string& path, do
   std::unique_ptr<GdalRaster> r(new GdalRaster());
   r->path_ = path;
   r->id_ = nextRasterId++;
+  if (Status s = checkRasterInputs(path); !s) return s.error();
   CPLErrorReset();
   r->dataset_ = GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY);
   GDALDataset* ds = asDataset(r->dataset_);
@@ -123,6 +174,7 @@ Result<std::unique_ptr<GdalRaster>> GdalRaster::open(const std::string& path, do
   f.height = ds->GetRasterYSize();
   if (f.width < 2 || f.height < 2) return Error::inFile(path, "needs at least 2 x 2 pixels");
   if (ds->GetGeoTransform(f.geo_transform) != CE_None) return Error::inFile(path, "has no georeferencing");
+  if (Status s = checkExtent(ds, f); !s) return Error::inFile(path, s.error().message);
   if (!GDALInvGeoTransform(f.geo_transform, r->inverse_)) return Error::inFile(path, "has a singular geotransform");
   const OGRSpatialReference* srs = ds->GetSpatialRef();
   if (srs == nullptr || srs->IsEmpty()) return Error::inFile(path, "has no CRS");
@@ -143,7 +195,12 @@ Result<std::unique_ptr<GdalRaster>> GdalRaster::open(const std::string& path, do
   if (band->ComputeRasterMinMax(FALSE, minMax) != CE_None) return Error::inFile(path, "has no valid pixel");
   f.min_value = minMax[0];
   f.max_value = minMax[1];
-  findLatLonBox(f, r->crs_wkt_, r->needs_transform_);
+  // ±Inf pixels (an undeclared no-data value) and float's extremes are no heights: refused here, by
+  // name, instead of a tile with maxHeight = inf downstream (and a physics step that never ends).
+  if (!(std::abs(f.min_value) <= kMaxRasterValue && std::abs(f.max_value) <= kMaxRasterValue))
+    return Error::inFile(path, fmt::format("pixel values {} .. {} are beyond ±{:g} (declare the no-data value)",
+                                           f.min_value, f.max_value, kMaxRasterValue));
+  findLatLonBox(f, r->crs_wkt_, r->inverse_, r->needs_transform_);
   return r;
 }
 
@@ -189,11 +246,10 @@ Result<RasterBlock> GdalRaster::read(int x0, int y0, int w, int h, int overview)
   if (band == nullptr) return Error::inFile(path_, fmt::format("has no overview {}", overview));
   if (band->RasterIO(GF_Read, x0, y0, w, h, block.values.data(), w, h, GDT_Float32, 0, 0) != CE_None)
     return Error::inFile(path_, "read failed: " + lastGdalMessage());
-  if (facts_.has_nodata) {
-    const float nodata = static_cast<float>(facts_.nodata);
-    for (float& v : block.values)
-      if (v == nodata) v = std::numeric_limits<float>::quiet_NaN();
-  }
+  // No-data, and anything no height can be (overviews are not covered by the min/max check), as NaN.
+  const float nodata = facts_.has_nodata ? static_cast<float>(facts_.nodata) : std::numeric_limits<float>::quiet_NaN();
+  for (float& v : block.values)
+    if (v == nodata || !(std::abs(v) <= kMaxRasterValue)) v = std::numeric_limits<float>::quiet_NaN();
   return block;
 }
 

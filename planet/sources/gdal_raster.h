@@ -15,6 +15,13 @@
 
 namespace globe {
 
+// Limits checked when a raster is opened, before any pixel is read (docs/reliability.md): the
+// min/max pass reads every pixel once, so an accepted raster must be one that pass can finish.
+inline constexpr double kMaxRasterPixels = double(1 << 28);  // 268 M pixels (16384 x 16384)
+inline constexpr double kMaxRasterBlocks = double(1 << 20);  // GDAL blocks (tiles or strips) of band 1
+inline constexpr double kMaxRasterValue = 1.0e6;             // |raw value|: 1000 km in metres
+inline constexpr int kMaxVrtDepth = 8;                       // VRTs naming VRTs, for the source check
+
 struct RasterFacts {
   int width = 0, height = 0;     // pixels
   double geo_transform[6] = {};  // GDAL's affine pixel -> CRS transform

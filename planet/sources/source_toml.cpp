@@ -29,10 +29,11 @@ void readPath(PlanetTomlReader& r, const toml::node& node, const std::string& fi
   source.path = path.lexically_normal().string();
   std::error_code ec;
   if (std::filesystem::is_directory(source.path, ec)) return;  // a baked tileset: checkBakedSource
-  if (!std::filesystem::is_regular_file(source.path, ec)) {
+  if (!std::filesystem::exists(source.path, ec)) {
     r.fail(node.source(), field, fmt::format("no such file '{}'", source.path));
     return;
   }
+  // A FIFO or device is named as such (by GdalRaster::open's input check), not "no such file".
   Result<std::unique_ptr<GdalRaster>> raster = GdalRaster::open(source.path, 6371000.0);
   if (!raster) r.fail(node.source(), field, fmt::format("'{}' {}", source.path, raster.error().message));
 }

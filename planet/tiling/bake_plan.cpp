@@ -1,7 +1,10 @@
 #include "planet/tiling/bake_plan.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <string_view>
 
 namespace globe {
 
@@ -13,15 +16,24 @@ Result<BakeFormat> parseBakeFormat(const std::string& text, const std::string& f
 
 const char* bakeFormatName(BakeFormat format) { return format == BakeFormat::Cog ? "cog" : "quantized-mesh"; }
 
+namespace {
+// A level: decimal digits only (sscanf's %d took "1e1" as 1, "0x3" as 0 and "3.5" as 3).
+std::optional<int> parseLevel(std::string_view text) {
+  int v = 0;
+  if (text.empty() || text.size() > 3 || text.find_first_not_of("0123456789") != std::string_view::npos) return {};
+  std::from_chars(text.data(), text.data() + text.size(), v);
+  return v;
+}
+}  // namespace
+
 Result<LevelRange> parseLevelRange(const std::string& text, const std::string& field) {
-  LevelRange r;
-  char extra = 0;
-  const int n = std::sscanf(text.c_str(), "%d..%d%c", &r.first, &r.last, &extra);
-  if (n == 1 && text.find("..") == std::string::npos) {
-    r.last = r.first;
-  } else if (n != 2) {
+  const std::string_view all(text);
+  const auto dots = all.find("..");
+  const auto first = parseLevel(all.substr(0, dots));
+  const auto last = dots == std::string_view::npos ? first : parseLevel(all.substr(dots + 2));
+  if (!first || !last)
     return Error::inField(field, "expected A..B (for example 0..5), got '" + escapeControlCharacters(text) + "'");
-  }
+  const LevelRange r{*first, *last};
   if (r.first < 0 || r.last > kMaxTileLevel || r.first > r.last) {
     return Error::inField(field, "levels must satisfy 0 <= A <= B <= " + std::to_string(kMaxTileLevel) + ", got '" +
                                      escapeControlCharacters(text) + "'");

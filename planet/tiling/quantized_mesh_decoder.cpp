@@ -89,6 +89,10 @@ std::optional<DecodedMesh> decodeQuantizedMesh(const std::string& bytes, std::st
   if (!r.vec(m.center) || !r.read(m.min_height) || !r.read(m.max_height) || !r.vec(m.sphere_center) ||
       !r.read(m.sphere_radius) || !r.vec(m.horizon_point) || !r.read(vertices))
     return fail("truncated header");
+  // Heights enter the terrain from here: inf made a tile of infinite bounds (physics never ended).
+  // 1000 km is the raster sources' limit too (kMaxRasterValue).
+  if (!(std::abs(m.min_height) <= 1.0e6f && std::abs(m.max_height) <= 1.0e6f && m.min_height <= m.max_height))
+    return fail("header heights are not finite, beyond 1000 km or out of order");
   if (!readDeltas(r, vertices, m.u) || !readDeltas(r, vertices, m.v) || !readDeltas(r, vertices, m.h))
     return fail("truncated vertex data");
   for (const std::vector<int>* values : {&m.u, &m.v, &m.h})

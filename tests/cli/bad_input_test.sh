@@ -140,7 +140,7 @@ cmp -s "$WORK/keep_bench/keyframe_00.25s.png" "$WORK/keyframe.orig" ||
 rm -rf "$WORK/keep_bench" "$WORK/keyframe.orig"
 # Paths and benches beyond the limits of docs/reliability.md ("Input limits"), refused up front.
 printf '%s\n' "t_s lat_deg lon_deg height_m heading_deg pitch_deg roll_deg" "0 0 0 100 0 0 0" "3000 0 0.01 100 0 0 0" >"$WORK/long.path"
-expect 2 "--rate: 3000 s of path at 100 Hz is 300001 frames, more than the limit of 216000" "" -- "$GLOBE" bench --path "$WORK/long.path" --rate 100 --out "$WORK/bench"
+expect 2 "--rate: 3000 s of path at 100 Hz is 300001 frames, more than the limit of 216001" "" -- "$GLOBE" bench --path "$WORK/long.path" --rate 100 --out "$WORK/bench"
 printf '%s\n' "t_s lat_deg lon_deg height_m heading_deg pitch_deg roll_deg" "0 0 1e308 100 0 0 0" "1 0 0 100 0 0 0" >"$WORK/far.path"
 expect 2 "far.path:2: lon_deg must be within \[-360, 360\]" "" -- "$GLOBE" bench --path "$WORK/far.path" --out "$WORK/bench"
 rm -f "$WORK/long.path" "$WORK/far.path"

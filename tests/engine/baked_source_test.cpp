@@ -225,6 +225,15 @@ TEST_F(BakedSourceTest, BadTilesetsAreOneLineErrorsNamingTheFile) {
   fs::remove(noLayer / "layer.json");
   expectOneLineError(writePlanet(bad / "nolayer.toml", sourceToml(noLayer.string())),
                      (noLayer / "layer.json").string());
+  // Levels out of order in bake.json ([13, 0] was accepted).
+  const fs::path swapped = bad / "swapped";
+  fs::copy(qmDir, swapped, fs::copy_options::recursive);
+  std::string manifest = readFileBytes(swapped / "bake.json");
+  const std::string levels = "\"levels\": [";
+  const std::size_t at = manifest.find(levels) + levels.size();
+  manifest.replace(at, manifest.find(']', at) - at, std::to_string(kLevel) + ", 0");
+  ASSERT_TRUE(writeFileAtomically((swapped / "bake.json").string(), manifest, "").ok());
+  expectOneLineError(writePlanet(bad / "swapped.toml", sourceToml(swapped.string())), "levels: missing or malformed");
   // A truncated tile.
   const fs::path corrupt = bad / "corrupt";
   fs::copy(qmDir, corrupt, fs::copy_options::recursive);

@@ -71,7 +71,9 @@ TEST(BakePlan, ParsesOptionsAndRefusesBadOnes) {
   EXPECT_FALSE(parseBakeFormat("png", "--format").ok());
   EXPECT_EQ(parseLevelRange("2..7", "--levels").value().last, 7);
   EXPECT_EQ(parseLevelRange("4", "--levels").value().first, 4);
-  for (const char* bad : {"7..2", "0..25", "-1..3", "a..b", "1..2..3", "1..2x", ""}) {
+  // 1e1, 0x3, 3.5 were read as 1, 0 and 3 (issue 40): levels are decimal digits only.
+  for (const char* bad : {"7..2", "0..25", "-1..3", "a..b", "1..2..3", "1..2x", "", "1e1", "0x3", "3.5", "0..3.5", "+2",
+                          " 2", "2..", "..2"}) {
     EXPECT_FALSE(parseLevelRange(bad, "--levels").ok()) << bad;
   }
   EXPECT_EQ(parseRegion("5,44,8,47", "--region").value().north_deg, 47.0);
