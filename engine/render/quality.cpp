@@ -24,8 +24,11 @@ TerrainSettings terrainSettingsFor(QualityPreset preset) {
       // the distance multiplier 0.5 it replaces, worst p95 screen error 5.2 px instead of 6.1, and the
       // flyover's median frame the same (docs/tradeoffs.md, "Tolerance vs distance ranges").
       s.ranges.tolerance_px = 16.0;
-      // No texel rule (--texel-px): refining the flyover's plains and sea until texels are within 8 px
-      // took its median from ~33 to 35 ms, 4 px to 39 ms (docs/lod.md, "Texel rule").
+      // The texel rule at 16 px (--texel-px): plains seen from 100 km no longer draw 32-texel
+      // surfaces magnified to 30+ px (SSIM against exact's structure 0.76 -> 0.89 there, 0.87 ->
+      // 0.88 at 10 km) for ~1 ms of the flyover's median (32.7 -> 33.5-34.0 ms); 8 px took it to
+      // 35 ms, 4 px to 39 ms (docs/lod.md, "Texel rule"; docs/rendering.md, "Colour").
+      s.ranges.texel_px = 16.0;
       // Depth 24 instead of 20: the same nodes above ~100 m, and at the 2 m camera p95 6.1 px
       // instead of 10.5 px for the same frame time (globe trade, 2026-11-22).
       s.ranges.maxDepth = 24;
