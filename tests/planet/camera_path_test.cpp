@@ -206,7 +206,8 @@ TEST(CameraPathFile, InMemoryKeyframesAreNamedByIndex) {
 
 void expectSameBits(const CameraPath& a, const CameraPath& b) {
   ASSERT_EQ(a.keyframes().size(), b.keyframes().size());
-  auto bits = [](double v) { return std::bit_cast<std::uint64_t>(v); };
+  // Bit for bit, except that -0 is written as 0 (a person editing the file should not meet "-0").
+  auto bits = [](double v) { return std::bit_cast<std::uint64_t>(v == 0.0 ? 0.0 : v); };
   for (std::size_t i = 0; i < a.keyframes().size(); ++i) {
     const auto &x = a.keyframes()[i], &y = b.keyframes()[i];
     EXPECT_EQ(bits(x.time_s), bits(y.time_s)) << i;
@@ -246,7 +247,7 @@ TEST(CameraPathFile, WriterRoundTripsBitExactly) {
   ASSERT_TRUE(p.ok()) << p.error().format();
   CameraPath back = parse(formatCameraPath(*p));
   expectSameBits(*p, back);
-  EXPECT_TRUE(std::signbit(back.keyframes()[0].pose.roll_deg));
+  EXPECT_FALSE(std::signbit(back.keyframes()[0].pose.roll_deg));
 
   // Through a file, atomically written.
   std::string file = (std::filesystem::temp_directory_path() / "globe_camera_path_roundtrip.path").string();
@@ -255,6 +256,17 @@ TEST(CameraPathFile, WriterRoundTripsBitExactly) {
   ASSERT_TRUE(loaded.ok()) << loaded.error().format();
   expectSameBits(*p, *loaded);
   std::filesystem::remove(file);
+}
+
+// Numbers as a person would write them: the shortest decimal that reads back to the same double.
+TEST(CameraPathFile, WriterUsesTheShortestRoundTrippingNumbers) {
+  auto p = parseCameraPath(
+      std::string(kCameraPathHeader) + "\n0 22.12 -0 1000 0.1 -0 0\n2.5 22.13 1e-7 1000 90 -30 0\n", "w.path");
+  ASSERT_TRUE(p.ok()) << p.error().format();
+  const std::string text = formatCameraPath(*p);
+  EXPECT_NE(text.find("\n0 22.12 0 1000 0.1 0 0\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\n2.5 22.13 1e-07 1000 90 -30 0\n"), std::string::npos) << text;
+  EXPECT_EQ(text.find("-0 "), std::string::npos) << text;
 }
 
 TEST(CameraPathFile, SunColumnsAreReadCheckedAndWritten) {
