@@ -43,9 +43,6 @@ bool endsWithMp4(const std::string& file) {
 // Everything checked before anything is written: bad input writes nothing.
 Result<MovieSettings> movieSettings(const MovieOptions& o, const PlanetDescription& planet) {
   MovieSettings s;
-  if (!isSupportedFrameRate(o.fps))
-    return Error::inField("--fps", fmt::format("must be 24, 25, 30, 50 or 60, got {}", o.fps));
-  s.fps = o.fps;
   auto size = parseSize(o.size, "--size");
   if (!size) return size.error();
   s.width = size->width;
@@ -63,6 +60,13 @@ Result<MovieSettings> movieSettings(const MovieOptions& o, const PlanetDescripti
     s.format = o.format == "exr" ? MovieFormat::exr : MovieFormat::png;
     if (auto st = checkOutputDirectory(o.out, "--out"); !st) return st.error();
   }
+  if (!isSupportedFrameRate(o.fps, s.format))
+    return Error::inField("--fps", s.format == MovieFormat::mp4
+                                       ? fmt::format("an MP4 takes 24, 25, 30, 50 or 60, got {} (an image sequence "
+                                                     "takes any rate from 1 to {})",
+                                                     o.fps, kMaxSequenceFrameRate)
+                                       : fmt::format("must be within [1, {}], got {}", kMaxSequenceFrameRate, o.fps));
+  s.fps = o.fps;
   s.out = o.out;
   auto terrain = terrainSettingsFromOptions(o.quality, planet, s.height);
   if (!terrain) return terrain.error();
@@ -121,7 +125,9 @@ void addMovieCommand(CLI::App& app, Runner& run) {
       "movie", "Render a camera path frame by frame (every frame converged) to a PNG/EXR sequence or an MP4");
   cmd->add_option("--path", o->path, "Camera path (.path, .kml tour or .czml)")->required();
   cmd->add_option("--planet", o->planet, "Planet file (TOML)")->capture_default_str();
-  cmd->add_option("--fps", o->fps, "Frames per second: 24, 25, 30, 50 or 60")->capture_default_str();
+  cmd->add_option("--fps", o->fps,
+                  "Frames per second: 24, 25, 30, 50 or 60 for an MP4, 1 to 1000 for an image sequence")
+      ->capture_default_str();
   cmd->add_option("--size", o->size, "Frame size WxH in pixels (even for MP4)")->capture_default_str();
   addQualityOptions(*cmd, o->quality, /*withGrid=*/false);
   addBudgetOptions(*cmd, o->budget);

@@ -17,7 +17,8 @@ namespace globe {
 
 namespace fs = std::filesystem;
 
-bool isSupportedFrameRate(int fps) {
+bool isSupportedFrameRate(int fps, MovieFormat format) {
+  if (format != MovieFormat::mp4) return fps >= 1 && fps <= kMaxSequenceFrameRate;
   return std::find(std::begin(kMovieFrameRates), std::end(kMovieFrameRates), fps) != std::end(kMovieFrameRates);
 }
 

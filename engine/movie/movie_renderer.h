@@ -18,15 +18,18 @@ enum class MovieFormat { png, exr, mp4 };
 
 struct MovieSettings {
   uint32_t width = 640, height = 360;
-  int fps = 30;  // one of kMovieFrameRates
+  int fps = 30;  // isSupportedFrameRate(fps, format)
   MovieFormat format = MovieFormat::png;
   std::string out;          // a directory for png/exr, a file for mp4
   std::string description;  // what the movie is made of (path, planet, quality), kept beside a sequence
   TerrainSettings terrain;  // quality preset; sun and colour ramp are set from the path and planet
 };
 
+// A video takes the broadcast rates players expect; an image sequence (a preview, frames for
+// another tool) any whole rate from 1 to kMaxSequenceFrameRate.
 inline constexpr int kMovieFrameRates[] = {24, 25, 30, 50, 60};
-bool isSupportedFrameRate(int fps);
+inline constexpr int kMaxSequenceFrameRate = 1000;
+bool isSupportedFrameRate(int fps, MovieFormat format);
 
 // Frames of a path `duration_s` long at `fps`: both ends included, floor(duration * fps) + 1.
 uint64_t movieFrameCount(double duration_s, int fps);

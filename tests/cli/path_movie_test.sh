@@ -44,8 +44,10 @@ expect 2 "bad_paths/syntax.czml:3:73: invalid JSON" "$WORK/bad.path" -- \
 expect 2 "FILE: import reads .kml" "$WORK/bad.path" -- "$GLOBE" path import "$DATA/short.path" --out "$WORK/bad.path"
 expect 2 "--out: must name a .path file" "$WORK/bad.txt" -- "$GLOBE" path import "$DATA/tour.kml" --out "$WORK/bad.txt"
 expect 2 "--out: must name a .kml file" "$WORK/bad.path" -- "$GLOBE" path export "$DATA/short.path" --out "$WORK/bad.path"
-expect 2 "--fps: must be 24, 25, 30, 50 or 60, got 29" "$WORK/m" -- \
-  "$GLOBE" movie --path "$DATA/short.path" --fps 29 --out "$WORK/m"
+expect 2 "--fps: an MP4 takes 24, 25, 30, 50 or 60, got 29" "$WORK/m.mp4" -- \
+  "$GLOBE" movie --path "$DATA/short.path" --fps 29 --out "$WORK/m.mp4"
+expect 2 "--fps: must be within \[1, 1000\], got 0" "$WORK/m" -- \
+  "$GLOBE" movie --path "$DATA/short.path" --fps 0 --out "$WORK/m"
 expect 2 "--size: H.264 needs an even width and height, got 65x48" "$WORK/m.mp4" -- \
   "$GLOBE" movie --path "$DATA/short.path" --size 65x48 --out "$WORK/m.mp4"
 expect 2 "--out: must be a directory .* or a .mp4 file" "$WORK/m.avi" -- \
@@ -71,6 +73,10 @@ grep -q "0 rendered, 13 kept" "$WORK/movie.out" || fail "a complete sequence was
 expect 2 "frames/movie.txt: --out: this directory holds frames of another movie" "" -- \
   "$GLOBE" movie --path "$DATA/short.path" --size 64x48 --fps 25 --quality fast --out "$WORK/frames"
 [[ $(ls "$WORK/frames" | grep -c '^frame_') -eq 13 ]] || fail "a refused resume changed the frames"
+# Any rate for an image sequence: a 2 fps preview of the 0.5 s descent is 2 frames.
+"$GLOBE" movie --path "$DATA/short.path" --size 64x48 --fps 2 --quality fast --out "$WORK/preview" >"$WORK/preview.out" ||
+  fail "movie --fps 2 (PNG preview)"
+[[ $(ls "$WORK/preview" | grep -c '^frame_[0-9]\{6\}\.png$') -eq 2 ]] || fail "expected 2 preview frames"
 "$GLOBE" movie --path "$DATA/short.path" --size 64x48 --fps 24 --quality fast --out "$WORK/short.mp4" >"$WORK/mp4.out" ||
   fail "movie (MP4)"
 cat "$WORK/mp4.out"

@@ -65,7 +65,12 @@ TEST(MovieFrames, CountAndNames) {
   EXPECT_EQ(movieFrameCount(0.3, 30), 10u);  // both ends: t = 0, 1/30, ..., 9/30
   EXPECT_EQ(movieFrameCount(20.0, 60), 1201u);
   EXPECT_EQ(movieFrameName(42, MovieFormat::png), "frame_000042.png");
-  EXPECT_FALSE(isSupportedFrameRate(29));
+  EXPECT_FALSE(isSupportedFrameRate(29, MovieFormat::mp4));
+  EXPECT_TRUE(isSupportedFrameRate(30, MovieFormat::mp4));
+  EXPECT_TRUE(isSupportedFrameRate(2, MovieFormat::png));  // a preview sequence
+  EXPECT_TRUE(isSupportedFrameRate(29, MovieFormat::exr));
+  EXPECT_FALSE(isSupportedFrameRate(0, MovieFormat::png));
+  EXPECT_FALSE(isSupportedFrameRate(1001, MovieFormat::png));
 }
 
 class MovieTest : public testing::GpuTest {
