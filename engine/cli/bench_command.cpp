@@ -7,6 +7,7 @@
 #include "engine/render/render_output.h"
 #include "engine/report/bench_baseline.h"
 #include "engine/report/bench_frame_spool.h"
+#include "engine/report/bench_metrics.h"
 #include "engine/report/bench_report.h"
 #include "engine/report/run_environment.h"
 #include "engine/vk/device.h"
@@ -192,6 +193,17 @@ BenchRunInfo runInfo(const BenchOptions& o, const vk::Device& device, const Terr
   return info;
 }
 
+// The run in one line, last: what a person wants to know without opening the report.
+void printBenchSummary(const BenchOptions& o, std::span<const BenchFrame> frames) {
+  const MetricSummary frame = summarizeMetric(frames, benchMetric("frame_ms"));
+  const MetricSummary gpu = summarizeMetric(frames, benchMetric("gpu_ms"));
+  std::printf(
+      "bench: %zu frames of %s (%s): frame median %.1f ms, p95 %.1f ms, %llu over %.1f ms; GPU median "
+      "%.1f ms; report %s/report.html\n",
+      frames.size(), o.path.c_str(), o.mode.c_str(), frame.median, frame.p95,
+      (unsigned long long)framesOverBudget(frames), kFrameBudgetMs, gpu.median, o.out.c_str());
+}
+
 int runBench(const BenchOptions& o) {
   const std::string startedUtc = utcNowIso8601();
   const std::string loadAtStart = loadAverage();
@@ -249,8 +261,6 @@ int runBench(const BenchOptions& o) {
     return kExitFailure;
   }
   if (int code = validationExitCode(device); code != kExitOk) return code;
-  std::printf("%llu frames of %s (%s) written to %s/report.html\n", (unsigned long long)in->frames, o.path.c_str(),
-              o.mode.c_str(), o.out.c_str());
   // Cold start, and where it went: device, terrain pipelines and buffers, warm-up, frame 0.
   const FrameStats& first = flight->firstFrame;
   std::printf(
@@ -260,6 +270,7 @@ int runBench(const BenchOptions& o) {
       (*terrain)->primeWall_ms(), (*terrain)->primedRounds(), first.nodes_selected);
   if (const SourceMosaic* sources = model.sources())
     std::printf("%s\n", sourceStreamingSummary(*sources, (*terrain)->generator().sourceLatencies_s()).c_str());
+  printBenchSummary(o, *rows);
   return kExitOk;
 }
 

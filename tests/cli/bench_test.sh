@@ -11,6 +11,9 @@ run() {  # run DIR: a short replay at a small size
 
 run "$WORK/a" || { fail "bench run a"; cat "$WORK/stderr"; }
 run "$WORK/b" || { fail "bench run b"; cat "$WORK/stderr"; }
+# The terminal's last line sums the run up: median, p95, frames over budget, where the report is.
+tail -1 "$WORK/stdout" | grep -qE '^bench: [0-9]+ frames of .*: frame median [0-9.]+ ms, p95 [0-9.]+ ms, [0-9]+ over 33.3 ms; GPU median [0-9.]+ ms; report .*/b/report.html$' ||
+  fail "no one-line summary last: $(tail -1 "$WORK/stdout")"
 for f in frames.csv summary.json timeline.svg report.html keyframe_00.00s.png keyframe_00.25s.png; do
   [[ -s "$WORK/a/$f" ]] || fail "missing $f"
 done
