@@ -233,9 +233,7 @@ int runBench(const BenchOptions& o) {
                 a->build_ms());
   HeadlessRenderer renderer(device, {in->size.width, in->size.height});
   const double pipelinesReady_ms = millisecondsSinceProcessStart();
-  std::error_code ec;
-  std::filesystem::create_directories(o.out, ec);
-  if (ec) return usageError(Error::inField("--out", "cannot create '" + o.out + "': " + ec.message()));
+  if (auto made = makeOutputDirectory(o.out, "--out"); !made) return usageError(made.error());
 
   BenchFrameSpool spool;
   const Status spoolOpened = spool.open(o.out);

@@ -1,12 +1,14 @@
 #include "options.h"
 
 #include "commands.h"
+#include "planet/core/atomic_file.h"
 #include "planet/core/data_directory.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <charconv>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <optional>
@@ -54,9 +56,15 @@ Status checkOutputDirectory(const std::string& dir, const std::string& field) {
   std::error_code ec;
   if (std::filesystem::exists(path, ec) && !std::filesystem::is_directory(path, ec))
     return Error::inField(field, "'" + dir + "' exists and is not a directory");
-  std::filesystem::path parent = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-  if (!std::filesystem::is_directory(parent, ec))
-    return Error::inField(field, "directory '" + parent.string() + "' does not exist");
+  return checkCreatableDirectory(dir, field);
+}
+
+Status makeOutputDirectory(const std::string& dir, const std::string& field) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(dir, ec)) return Ok{};
+  std::filesystem::create_directories(dir, ec);
+  if (ec) return Error::inField(field, "cannot create '" + dir + "': " + ec.message());
+  std::printf("made directory '%s' (%s)\n", dir.c_str(), field.c_str());
   return Ok{};
 }
 

@@ -34,9 +34,12 @@ inline constexpr double kMinTexelPx = 0.5;
 // "WxH" with 16 <= W, H <= 16384 and W * H * kRenderBytesPerPixel within kMaxImageMemoryMiB.
 Result<ImageSize> parseSize(const std::string& text, const std::string& field);
 
-// An output directory: created later by the command, so it must be a directory or not exist yet, and
-// its parent must exist. Errors name `field`.
+// An output directory: made later by the command (with any missing parents: makeOutputDirectory),
+// so it must be a directory or one that can be made. Errors name `field`. (Output files: checkWritable,
+// planet/core/atomic_file.h; their missing directories are made when they are written.)
 Status checkOutputDirectory(const std::string& dir, const std::string& field);
+// Makes `dir` when missing, once the command's input is known good, and says so on stdout.
+Status makeOutputDirectory(const std::string& dir, const std::string& field);
 
 // Output files must end in .png or .exr.
 Status checkImageExtension(const std::string& path, const std::string& field);

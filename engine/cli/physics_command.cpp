@@ -194,10 +194,8 @@ int runPhysics(const PhysicsOptions& o) {
     frame = std::move(*image);
   }
   const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::error_code ec;
-  std::filesystem::create_directories(o.out, ec);
-  if (ec) {
-    printError(Error::inField("--out", "cannot create '" + o.out + "': " + ec.message()).format());
+  if (auto made = makeOutputDirectory(o.out, "--out"); !made) {
+    printError(made.error().format());
     return kExitFailure;
   }
   const NamedContent files[] = {{"bodies.csv", formatBodiesCsv(bodies)},

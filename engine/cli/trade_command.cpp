@@ -415,10 +415,8 @@ int runTrade(const TradeOptions& o) {
   if (!rows) return usageError(rows.error());  // a configuration the terrain rejects
   double total_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  std::error_code ec;
-  std::filesystem::create_directories(o.out, ec);
-  if (ec) {  // checked writable above: this is an I/O failure, not bad input
-    printError(Error::inField("--out", "cannot create '" + o.out + "': " + ec.message()).format());
+  if (auto made = makeOutputDirectory(o.out, "--out"); !made) {  // checked above: an I/O failure
+    printError(made.error().format());
     return kExitFailure;
   }
   std::string title = "globe trade: " + in->planet.name + ", " + std::to_string(in->size.width) + "x" +

@@ -47,6 +47,7 @@ Status writeElevationExr(const ElevationModel& model, const ElevationExportOptio
     if (!model.shape().isSphere()) header.insert("globe.flattening", Imf::DoubleAttribute(model.shape().flattening()));
     header.insert("globe.sea_level_m", Imf::DoubleAttribute(model.seaLevel_m()));
     header.insert("globe.units", Imf::StringAttribute("metres"));
+    if (auto made = makeParentDirectories(file.targetPath()); !made) return made.error();
     CheckedExrStream stream(file.tempPath(), file.targetPath());
     auto out = std::make_unique<Imf::OutputFile>(stream, header);
     if (options.keep != nullptr) options.keep->assign(static_cast<std::size_t>(width) * height, 0.0f);

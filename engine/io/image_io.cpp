@@ -80,6 +80,7 @@ Status writeExr(const std::string& path, const ImageRgba& image) {
     fb.insert("B", slice(Imf::HALF, b.data(), sizeof(Imath::half)));
     std::vector<float> z = image.z;
     if (hasZ) fb.insert("Z", slice(Imf::FLOAT, z.data(), sizeof(float)));
+    if (auto made = makeParentDirectories(path); !made) return made.error();
     CheckedExrStream stream(file.tempPath(), path);
     {
       Imf::OutputFile out(stream, header);

@@ -123,6 +123,7 @@ Result<MovieSummary> renderMp4(FrameSource& source, const CameraPath& path, cons
                                const MovieProgressFn& progress) {
   removeStaleTemporaries(s.out);  // a killed earlier run's .NAME.mp4.tmpPID
   AtomicFile file(s.out);
+  if (auto made = makeParentDirectories(s.out); !made) return made.error();
   auto writer = Mp4Writer::open(file.tempPath(), s.width, s.height, s.fps);
   if (!writer) return writer.error();
   MovieSummary summary;

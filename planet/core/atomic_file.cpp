@@ -34,15 +34,33 @@ Status AtomicFile::commit() {
   return Ok{};
 }
 
+Status checkCreatableDirectory(const std::string& dir, const std::string& field) {
+  std::error_code ec;
+  fs::path existing = dir.empty() ? fs::path(".") : fs::path(dir);
+  while (!fs::exists(existing, ec) && existing.has_parent_path() && existing != existing.parent_path())
+    existing = existing.parent_path();
+  if (!fs::exists(existing, ec)) existing = ".";
+  if (!fs::is_directory(existing, ec)) return Error::inField(field, "'" + existing.string() + "' is not a directory");
+  if (::access(existing.c_str(), W_OK) != 0)
+    return Error::inField(field, "directory '" + existing.string() + "' is not writable");
+  return Ok{};
+}
+
 Status checkWritable(const std::string& path, const std::string& field) {
   fs::path p(path);
   if (p.filename().empty()) return Error::inField(field, "'" + path + "' is a directory, expected a file name");
-  fs::path dir = p.parent_path().empty() ? fs::path(".") : p.parent_path();
+  if (auto s = checkCreatableDirectory(p.parent_path().string(), field); !s) return s;
   std::error_code ec;
-  if (!fs::is_directory(dir, ec)) return Error::inField(field, "directory '" + dir.string() + "' does not exist");
-  if (::access(dir.c_str(), W_OK) != 0)
-    return Error::inField(field, "directory '" + dir.string() + "' is not writable");
   if (fs::is_directory(p, ec)) return Error::inField(field, "'" + path + "' is a directory, expected a file name");
+  return Ok{};
+}
+
+Status makeParentDirectories(const std::string& target) {
+  fs::path dir = fs::path(target).parent_path();
+  std::error_code ec;
+  if (dir.empty() || fs::is_directory(dir, ec)) return Ok{};
+  fs::create_directories(dir, ec);
+  if (ec) return Error::inFile(target, "cannot create directory '" + dir.string() + "': " + ec.message());
   return Ok{};
 }
 
@@ -109,9 +127,13 @@ Status writeAll(const std::string& tempPath, std::string_view content, const std
 
 }  // namespace
 
-Status AtomicFile::write(std::string_view content) { return writeAll(temp_, content, target_, ""); }
+Status AtomicFile::write(std::string_view content) {
+  if (auto s = makeParentDirectories(target_); !s) return s;
+  return writeAll(temp_, content, target_, "");
+}
 
 Status AtomicFile::write(const std::function<void(CheckedFileWriter&)>& produce) {
+  if (auto s = makeParentDirectories(target_); !s) return s;
   CheckedFileWriter file(temp_, target_);
   produce(file);
   return file.finish();
@@ -120,6 +142,7 @@ Status AtomicFile::write(const std::function<void(CheckedFileWriter&)>& produce)
 Status writeFileAtomically(const std::string& path, std::string_view content, const std::string& field) {
   if (auto s = checkWritable(path, field); !s) return s;
   AtomicFile file(path);
+  if (auto s = makeParentDirectories(path); !s) return s;
   if (auto s = writeAll(file.tempPath(), content, path, field); !s) return s;
   return file.commit();
 }

@@ -68,9 +68,16 @@ class CheckedFileWriter {
   std::string error_;
 };
 
-// Fails with a one-line Error when `path`'s directory does not exist or is not writable, so a
+// Fails with a one-line Error when `path` could not be written: its directory is not writable, or
+// is missing and could not be made (its nearest existing ancestor is a file or not writable), so a
 // command can refuse before it spends time computing an output it cannot store.
 Status checkWritable(const std::string& path, const std::string& field);
+// The same for a directory `dir` that is to exist: it does, or could be made.
+Status checkCreatableDirectory(const std::string& dir, const std::string& field);
+// Makes `target`'s missing parent directories: when an output is first written (AtomicFile::write
+// and writeFileAtomically do it; writers of tempPath() call it first), never on a check, so bad
+// input leaves nothing behind.
+Status makeParentDirectories(const std::string& target);
 
 // Removes the temporaries AtomicFile left for `targetPath` (".NAME.tmpPID") in runs that were
 // killed (SIGKILL skips every destructor): those whose process no longer exists. A temporary of a

@@ -81,5 +81,14 @@ bad missing "${H}0 1 2 3 4 5 6\n1 1 2 3 4 5\n" "missing.path:3: "
 "$GLOBE" bench --path "$WORK/nonexistent.path" --out "$WORK/out-none" >/dev/null 2>"$WORK/err" && fail "missing file: exit 0"
 [[ ! -e "$WORK/out-none" ]] || fail "missing file: wrote output"
 
+# From an empty directory, outputs at their defaults: out/ is made (and said so), from any directory.
+mkdir -p "$WORK/empty" && (
+  cd "$WORK/empty" &&
+    "$GLOBE" render --size 64x36 >"$WORK/empty.out" 2>&1 &&
+    "$GLOBE" bench --path "$SRC/tests/data/short.path" --size 96x64 --rate 20 --keyframes 0 >>"$WORK/empty.out" 2>&1
+) || { fail "render/bench from an empty directory"; cat "$WORK/empty.out"; }
+[[ -s "$WORK/empty/out/render.png" && -s "$WORK/empty/out/bench/report.html" ]] || fail "outputs not made under out/"
+grep -q "made directory 'out/bench'" "$WORK/empty.out" || fail "the new directory was not announced"
+
 echo "bench: $failures failure(s)"
 exit $((failures > 0))

@@ -109,7 +109,7 @@ expect_usage "--width: must be even" "$O" "$GLOBE" planet export --width 65537 -
 expect_usage "--width: must be even" "$O" "$GLOBE" planet export --width 101 --out "$O"
 expect_usage "width" "$O" "$GLOBE" planet export --width abc --out "$O"
 expect_usage "--out: '.*o.png' must end in .exr" "$WORK/o.png" "$GLOBE" planet export --width 64 --out "$WORK/o.png"
-expect_usage "--out: directory '/nonexistent-dir' does not exist" "" "$GLOBE" planet export --width 64 --out /nonexistent-dir/o.exr
+expect_usage "--out: '/dev/null' is not a directory" "" "$GLOBE" planet export --width 64 --out /dev/null/o.exr
 expect_usage "--png: '.*p.jpg' must end in .png" "$O" "$GLOBE" planet export --width 64 --out "$O" --png "$WORK/p.jpg"
 expect_usage "bad.toml:1:1: radius: unknown key .*and 5 more" "$O" "$GLOBE" planet export "$WORK/bad.toml" --width 64 --out "$O"
 expect_usage "cannot open planet file" "$O" "$GLOBE" planet export "$WORK/none.toml" --width 64 --out "$O"

@@ -35,8 +35,8 @@ bad size --size 3x3
 bad planet --planet "$WORK/missing.toml"
 bad frames --frames 5000
 bad unknown --frobnicate
-"$GLOBE" trade --out "$WORK/missing_dir/x" --quick >"$WORK/bad.out" 2>"$WORK/bad.err"
-[[ $? -eq 2 ]] || fail "missing parent directory: not exit 2"
+"$GLOBE" trade --out /dev/null/x --quick >"$WORK/bad.out" 2>"$WORK/bad.err"
+[[ $? -eq 2 ]] || fail "parent directory a device: not exit 2"
 # --quality on the rendering commands.
 "$GLOBE" render --quality best --out "$WORK/r.png" >"$WORK/bad.out" 2>"$WORK/bad.err"
 [[ $? -eq 2 ]] || fail "render --quality best: not exit 2"

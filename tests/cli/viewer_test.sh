@@ -124,7 +124,7 @@ expect_usage "--screenshot: '.*shot.jpg' must end in .png or .exr" --screenshot 
 expect_usage "--screenshot-dir: '/nonexistent' is not a directory" --screenshot-dir /nonexistent
 expect_usage "--record-dir: '/nonexistent' is not a directory" --record-dir /nonexistent
 expect_usage "--grid: must be a power of two" --grid 33
-expect_usage "--frame-times: directory '/nonexistent' does not exist" --frame-times /nonexistent/t.csv
+expect_usage "--frame-times: '/dev/null' is not a directory" --frame-times /dev/null/t.csv
 expect_usage "missing.path: cannot open camera path file" --path "$WORK/missing.path"
 expect_usage "--hold: needs --path" --hold
 expect_usage "--mode: .*" --mode cube

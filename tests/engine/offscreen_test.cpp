@@ -102,9 +102,9 @@ TEST_F(OffscreenTest, PngAndExrRoundTrip) {
 
 TEST_F(OffscreenTest, UnwritableOutputIsAnErrorAndWritesNothing) {
   ImageRgba image{2, 2, std::vector<float>(16, 0.5f), {}};
-  auto s = writePng("/nonexistent-dir/x.png", image);
+  auto s = writePng("/dev/null/x.png", image);  // a directory that cannot be made
   ASSERT_FALSE(s.ok());
-  EXPECT_NE(s.error().format().find("does not exist"), std::string::npos);
+  EXPECT_NE(s.error().format().find("not a directory"), std::string::npos) << s.error().format();
   auto dir = std::filesystem::path(GLOBE_BINARY_DIR) / "test_output";
   std::filesystem::create_directories(dir);
   auto bad = writeImage((dir / "x.jpg").string(), image, "--out");
