@@ -150,12 +150,22 @@ std::string summaryJson(const PhysicsSimulation& sim, const GpuCollisionMeshSour
       meshError.p50_m, meshError.p99_m, meshError.max_m, meshError.samples, wall_s, loadAverage());
 }
 
-// A frame looking down at the first body from 25 m, with the bodies drawn in.
+// The body the frame looks at: the first resting above the sea (bodies on the sea floor are hidden
+// under the water), else the first.
+GeodeticPoint framedBody(const ElevationModel& model, const PhysicsWorld& world) {
+  for (uint32_t i = 0; i < uint32_t(world.bodyCount()); ++i) {
+    const GeodeticPoint p = model.shape().geodeticFromGeocentric(world.state(i).position_m);
+    if (p.height_m > model.seaLevel_m()) return p;
+  }
+  return model.shape().geodeticFromGeocentric(world.state(0).position_m);
+}
+
+// A frame looking down from 25 m at a body on land, with the bodies drawn in.
 Result<ImageRgba> renderBodies(vk::Device& device, const ElevationModel& model, const PhysicsInputs& in,
                                const PhysicsWorld& world, uint32_t cells) {
   auto settings = terrainSettingsFromOptions({"", cells, 0}, in.planet, 720);
   if (!settings) return settings.error();
-  const GeodeticPoint first = model.shape().geodeticFromGeocentric(world.state(0).position_m);
+  const GeodeticPoint first = framedBody(model, world);
   const glm::dvec2 latLon(first.latitude_deg, first.longitude_deg);
   const GeodeticPose pose{latLon.x - 0.0002, latLon.y, 25.0, 0.0, -50.0, 0.0};
   const glm::dvec3 down = directionFromLatLon(pose.latitude_deg, pose.longitude_deg);

@@ -53,6 +53,8 @@ else
   done
   grep -q '"steps": 1440,' "$OUT/summary.json" || fail "12 s are 1440 steps of 1/120 s"
   [[ -s "$WORK/frame.png" ]] || fail "no rendered frame"
+  # The frame looks at a body on land, not at bare sea over the ones on the sea floor.
+  grep -qE '^[1-9][0-9]* bodies in view' "$WORK/run.log" || fail "no body in the rendered frame: $(grep 'in view' "$WORK/run.log")"
   ls -A "$OUT" | grep -q '\.tmp' && fail "a temporary file was left in $OUT"
   echo "ok: run -> $(tail -1 "$WORK/run.log")"
 fi
