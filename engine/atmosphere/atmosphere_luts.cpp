@@ -88,9 +88,7 @@ AtmosphereLuts::AtmosphereLuts(vk::Device& device, const AtmosphereParameters& a
   irradiance_ = vk::Buffer(device, kIrradianceBytes, storage, vk::MemoryUse::HostVisible, "atmosphere irradiance");
   scattering_ = vk::Buffer(device, kScatteringBytes, storage, vk::MemoryUse::HostVisible, "atmosphere scattering");
   if (!cacheDirectory.empty()) {
-    const std::uint64_t key =
-        mix64(atmosphereHash(atmosphere, radius_m) ^ kernelHash()) ^ std::uint64_t(scatteringOrders);
-    cacheFile_ = fmt::format("{}/{:016x}.bin", cacheDirectory, key);
+    cacheFile_ = cacheFileFor(atmosphere, radius_m, cacheDirectory, scatteringOrders);
     fromCache_ = readCache();
   }
   if (!fromCache_) {
@@ -98,6 +96,13 @@ AtmosphereLuts::AtmosphereLuts(vk::Device& device, const AtmosphereParameters& a
     if (!cacheFile_.empty()) writeCache();
   }
   build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string AtmosphereLuts::cacheFileFor(const AtmosphereParameters& atmosphere, double radius_m,
+                                         const std::string& cacheDirectory, int scatteringOrders) {
+  const std::uint64_t key =
+      mix64(atmosphereHash(atmosphere, radius_m) ^ kernelHash()) ^ std::uint64_t(scatteringOrders);
+  return fmt::format("{}/{:016x}.bin", cacheDirectory, key);
 }
 
 void AtmosphereLuts::compute(vk::Device& device, int scatteringOrders) {

@@ -28,6 +28,10 @@ class AtmosphereLuts {
   // `scatteringOrders`: 1 = single scattering only, up to 4 (the default).
   AtmosphereLuts(vk::Device& device, const AtmosphereParameters& atmosphere, double radius_m,
                  const std::string& cacheDirectory = atmosphereCacheDirectory(), int scatteringOrders = 4);
+  // The cache file these tables are read from or written to (whether it exists or not).
+  static std::string cacheFileFor(const AtmosphereParameters& atmosphere, double radius_m,
+                                  const std::string& cacheDirectory = atmosphereCacheDirectory(),
+                                  int scatteringOrders = 4);
 
   // Bindings of the renderer's shaders: the parameters (uniform) and the three tables (storage).
   VkDescriptorBufferInfo parameters() const { return parameters_.descriptor(); }

@@ -226,6 +226,7 @@ int runBench(const BenchOptions& o) {
   if (auto s = vk::checkImageExtent(device, {in->size.width, in->size.height}, "--size"); !s)
     return usageError(s.error());
   const double deviceReady_ms = millisecondsSinceProcessStart();
+  announceAtmosphereTables(model, settings);
   auto terrain = Terrain::create(device, model, settings);
   if (!terrain) return usageError(budgetOptionError(terrain.error()));
   if (const AtmosphereLuts* a = (*terrain)->atmosphere())

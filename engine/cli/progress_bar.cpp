@@ -1,12 +1,27 @@
 #include "progress_bar.h"
 
+#include "engine/atmosphere/atmosphere_luts.h"
+#include "engine/render/terrain.h"
+#include "planet/elevation/elevation.h"
+
 #include <unistd.h>
+
+#include <filesystem>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 namespace globe::cli {
+
+void announceAtmosphereTables(const ElevationModel& model, const TerrainSettings& settings) {
+  if (::isatty(STDERR_FILENO) != 1 || settings.atmosphere == AtmosphereDetail::kOff || !model.atmosphere()) return;
+  const std::string file = AtmosphereLuts::cacheFileFor(*model.atmosphere(), model.radius_m());
+  std::error_code ec;
+  if (std::filesystem::exists(file, ec)) return;
+  std::fprintf(stderr, "computing the atmosphere's tables: once per atmosphere (~20 s on a CPU), then read from %s\n",
+               file.c_str());
+}
 
 ProgressBar::ProgressBar(std::string label)
     : label_(std::move(label)), enabled_(::isatty(STDERR_FILENO) == 1), start_(std::chrono::steady_clock::now()) {}

@@ -4,7 +4,17 @@
 #include <chrono>
 #include <string>
 
+namespace globe {
+class ElevationModel;
+struct TerrainSettings;
+}  // namespace globe
+
 namespace globe::cli {
+
+// On a terminal, says what the next long silent step is (the atmosphere tables' first build: ~20 s
+// on lavapipe) before Terrain::create, when these settings draw the atmosphere and its tables are
+// not cached yet.
+void announceAtmosphereTables(const ElevationModel& model, const TerrainSettings& settings);
 
 class ProgressBar {
  public:

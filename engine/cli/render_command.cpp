@@ -12,6 +12,7 @@
 #include "planet/core/atomic_file.h"
 #include "planet/elevation/planet_file.h"
 #include "planet/streaming/payload_reference.h"
+#include "progress_bar.h"
 #include "render_terrain.h"
 
 #include <algorithm>
@@ -23,6 +24,7 @@ namespace globe::cli {
 Result<ImageRgba> renderTerrain(vk::Device& device, const Camera& camera, const ElevationModel& model,
                                 TerrainSettings settings, uint32_t width, uint32_t height) {
   // The caller put the sun in settings.style.sunDirection.
+  announceAtmosphereTables(model, settings);
   auto terrain = Terrain::create(device, model, settings);
   if (!terrain) return budgetOptionError(terrain.error());
   HeadlessRenderer renderer(device, {width, height});
