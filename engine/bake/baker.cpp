@@ -5,8 +5,14 @@
 #include "planet/core/atomic_file.h"
 #include "planet/core/input_file.h"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <mutex>
@@ -19,8 +25,36 @@ namespace {
 
 const char* extensionOf(BakeFormat format) { return format == BakeFormat::Cog ? ".tif" : ".terrain"; }
 
+// An exclusive lock on DIR/.bake.lock while a bake checks and writes the manifests: two bakes
+// started together into one directory otherwise both found no bake.json and both wrote theirs, the
+// second's hiding the first's tiles (issue 40). Released when the object goes (or the process dies).
+class ManifestLock {
+ public:
+  explicit ManifestLock(const std::string& dir) : path_((fs::path(dir) / ".bake.lock").string()) {
+    fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+    if (fd_ >= 0 && ::flock(fd_, LOCK_EX) != 0) error_ = std::strerror(errno);
+    if (fd_ < 0) error_ = std::strerror(errno);
+  }
+  ~ManifestLock() {
+    if (fd_ >= 0) ::close(fd_);  // releases the flock
+  }
+  ManifestLock(const ManifestLock&) = delete;
+  ManifestLock& operator=(const ManifestLock&) = delete;
+  Status status() const {
+    if (error_.empty()) return Ok{};
+    return Error::inFile(path_, "cannot lock the bake's manifests: " + error_);
+  }
+
+ private:
+  std::string path_;
+  int fd_ = -1;
+  std::string error_;
+};
+
 // bake.json must match the bake a directory already holds, or the resume would mix two bakes.
 Status writeManifests(const BakeDescription& description, const BakePlan& plan, const std::string& dir) {
+  const ManifestLock lock(dir);
+  if (auto s = lock.status(); !s) return s;
   const std::string manifest = bakeJson(description);
   const std::string path = (fs::path(dir) / "bake.json").string();
   std::error_code ec;

@@ -63,6 +63,24 @@ grep -q " 0 of .* tiles written" "$WORK/again.log" && echo "ok: a rerun skips ev
 [[ $? -ne 0 ]] && grep -q "another bake" "$WORK/mixed.err" && echo "ok: another planet into the same directory is refused" ||
   fail "mixing bakes was not refused: $(cat "$WORK/mixed.err")"
 
+# ---- two bakes of different regions started together into one empty directory: one is refused ----
+for trial in 1 2 3 4; do
+  race="$WORK/race_$trial"
+  "$GLOBE" bake --planet "$PLANET" --format quantized-mesh --levels 0..4 --region 5,40,12,47 --out "$race" \
+    >/dev/null 2>"$race.a.err" &
+  a=$!
+  "$GLOBE" bake --planet "$PLANET" --format quantized-mesh --levels 0..4 --region 20,10,30,20 --out "$race" \
+    >/dev/null 2>"$race.b.err" &
+  b=$!
+  wait $a; ca=$?
+  wait $b; cb=$?
+  if (((ca == 0) + (cb == 0) == 1)) && cat "$race.a.err" "$race.b.err" | grep -q "another bake"; then
+    echo "ok: race $trial: one bake refused"
+  else
+    fail "race $trial: exits $ca and $cb: $(cat "$race.a.err" "$race.b.err")"
+  fi
+done
+
 # ---- a killed bake: no half-written tile, resumes to the same tiles ----
 BIG=(--planet "$PLANET" --format quantized-mesh --levels 0..8 --region 0,40,5,45)
 "$GLOBE" bake "${BIG[@]}" --out "$WORK/clean" >/dev/null || fail "clean bake failed"
