@@ -82,6 +82,11 @@ struct Mp4Writer::Impl {
     if (std::string(encoder->name) == "libx264") {
       av_opt_set(codec->priv_data, "preset", "medium", 0);
       av_opt_set(codec->priv_data, "crf", "18", 0);  // visually lossless for rendered terrain
+      // x264 0.164's AVX-512 macroblock-tree code reads uninitialised heap: the same frames gave
+      // a different file per run (issue 40 item 10; MALLOC_PERTURB_ values change the output,
+      // asm=avx2 or no-mbtree make it constant). AVX2 is a subset of AVX-512, so this only
+      // narrows the instruction set where the defect is.
+      if (__builtin_cpu_supports("avx512f")) av_opt_set(codec->priv_data, "x264-params", "asm=avx2", 0);
     } else {
       codec->bit_rate = int64_t(width) * height * fps / 4;  // ~0.25 bit per pixel and frame
     }
