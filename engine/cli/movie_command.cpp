@@ -1,6 +1,7 @@
 // globe movie: a camera path rendered frame by frame at a fixed rate, every frame converged, as a
 // PNG/EXR sequence or an MP4 (engine/movie).
 #include "commands.h"
+#include "engine/movie/lod_log.h"
 #include "engine/movie/movie_renderer.h"
 #include "engine/render/quality.h"
 #include "options.h"
@@ -113,6 +114,9 @@ int runMovie(const MovieOptions& o) {
               settings->width, settings->height, (unsigned long long)m.rendered, (unsigned long long)m.kept, rate,
               device.name().c_str());
   if (!m.encoder.empty()) std::printf("encoder: %s\n", m.encoder.c_str());
+  if (m.replayed)
+    std::printf("replayed %llu earlier frames unwritten: %s lacked their LOD state (docs/camera-paths.md)\n",
+                (unsigned long long)m.replayed, kLodLogName);
   return kExitOk;
 }
 

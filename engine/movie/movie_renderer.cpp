@@ -1,5 +1,6 @@
 #include "engine/movie/movie_renderer.h"
 
+#include "engine/movie/lod_log.h"
 #include "engine/movie/mp4_writer.h"
 #include "engine/render/headless_renderer.h"
 #include "engine/render/render_output.h"
@@ -99,20 +100,56 @@ Result<std::unique_ptr<FrameSource>> makeFrameSource(vk::Device& device, const P
   return source;
 }
 
+// Brings the terrain's LOD state to what an uninterrupted run had after frame `k - 1` (nothing
+// for k = 0: `initial`): from the log, else by rendering the frames since the latest logged one
+// again without writing them (a log deleted or cut short). Returns the frames replayed.
+Result<uint64_t> restoreStateBefore(uint64_t k, FrameSource& source, const CameraPath& path, const MovieSettings& s,
+                                    LodLog& log, const LodRanges::Observations& initial) {
+  if (k == 0) {
+    source.terrain->restoreLodObservations(initial);
+    return uint64_t{0};
+  }
+  if (const LodRanges::Observations* logged = log.after(k - 1)) {
+    source.terrain->restoreLodObservations(*logged);
+    return uint64_t{0};
+  }
+  const std::optional<uint64_t> latest = log.latestBefore(k - 1);
+  source.terrain->restoreLodObservations(latest ? *log.after(*latest) : initial);
+  const double aspect = double(s.width) / double(s.height);
+  uint64_t replayed = 0;
+  for (uint64_t j = latest ? *latest + 1 : 0; j < k; ++j, ++replayed) {
+    source.render(path, path.startTime_s() + double(j) / s.fps, aspect);
+    if (Status st = log.record(j, source.terrain->lodObservations()); !st) return st.error();
+  }
+  return replayed;
+}
+
 Result<MovieSummary> renderSequence(FrameSource& source, const CameraPath& path, const MovieSettings& s,
                                     const MovieProgressFn& progress) {
+  Result<LodLog> log = LodLog::open(s.out);
+  if (!log) return log.error();
+  const LodRanges::Observations initial = source.terrain->lodObservations();
   MovieSummary summary;
   summary.frames = movieFrameCount(path.duration_s(), s.fps);
   const double aspect = double(s.width) / double(s.height);
+  std::optional<uint64_t> lastRendered;  // the terrain's state is the one after this frame
   for (uint64_t k = 0; k < summary.frames; ++k) {
     const fs::path file = fs::path(s.out) / movieFrameName(k, s.format);
     if (frameExists(file)) {
       ++summary.kept;
     } else {
+      if (!(k > 0 && lastRendered == k - 1)) {
+        Result<uint64_t> replayed = restoreStateBefore(k, source, path, s, *log, initial);
+        if (!replayed) return replayed.error();
+        summary.replayed += *replayed;
+      }
       ImageRgba image = source.render(path, path.startTime_s() + double(k) / s.fps, aspect);
+      // Logged before the frame is written: a frame on disk always has its state logged.
+      if (Status st = log->record(k, source.terrain->lodObservations()); !st) return st.error();
       Status written = s.format == MovieFormat::exr ? writeExr(file.string(), image) : writePng(file.string(), image);
       if (!written) return written.error();
       ++summary.rendered;
+      lastRendered = k;
     }
     if (progress) progress(k + 1, summary.frames, *source.terrain);
   }

@@ -40,6 +40,7 @@ struct MovieSummary {
   uint64_t frames = 0;    // in the movie
   uint64_t rendered = 0;  // by this run
   uint64_t kept = 0;      // already in the directory (resumed)
+  uint64_t replayed = 0;  // rendered again but not written: the LOD state before a missing frame (LodLog)
   double seconds = 0;     // wall time of this run's rendering and writing
   std::string encoder;    // MP4 only: the libavcodec encoder used
 };

@@ -136,6 +136,9 @@ class Terrain {
   std::span<const std::string> warnings() const { return warnings_; }
   // The deepest level the frame budget currently allows (the configured max depth unless limited).
   int depthCap() const { return budgeted_.depthCap(); }
+  // What the LOD ranges learned from payloads so far, and setting it back (LodRanges::Observations).
+  LodRanges::Observations lodObservations() const { return selector_.ranges().observations(); }
+  void restoreLodObservations(const LodRanges::Observations& o) { selector_.ranges().restore(o); }
   // Generation rounds the warm-up ran (0 before the first update or with primeRounds 0).
   uint32_t primedRounds() const { return primedRounds_; }
   double primeWall_ms() const { return primeWall_ms_; }  // wall time the warm-up took

@@ -262,6 +262,14 @@ void LodRanges::recomputeBands() {
   }
 }
 
+void LodRanges::restore(const Observations& o) {
+  maxDiagonal_ = o.maxDiagonal;
+  maxError_ = o.maxError;
+  maxCalibrated_ = o.maxCalibrated;
+  recompute();
+  refresh();
+}
+
 void LodRanges::resetObservedDiagonals() {
   maxDiagonal_.fill(0.0);
   maxError_.fill(-1.0);

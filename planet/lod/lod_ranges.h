@@ -142,6 +142,18 @@ class LodRanges {
   // Forget observed diagonals (e.g. after switching planets).
   void resetObservedDiagonals();
 
+  // Everything the ranges learned from payloads (observeDiagonal, observeError): with the
+  // configuration, their whole state. Ranges only grow, so they depend on every node seen before;
+  // a resumed movie restores what an uninterrupted run had learned by then (issue 40 item 9).
+  struct Observations {
+    std::array<double, kMaxNodeLevel + 1> maxDiagonal{};
+    std::array<double, kMaxNodeLevel + 1> maxError{};
+    std::array<double, kMaxNodeLevel + 1> maxCalibrated{};
+    bool operator==(const Observations&) const = default;
+  };
+  Observations observations() const { return {maxDiagonal_, maxError_, maxCalibrated_}; }
+  void restore(const Observations& o);
+
  private:
   bool recompute();  // true when any range changed (with roughness: marks the fields for refresh())
   void recomputeBands();
