@@ -148,6 +148,34 @@ std::vector<EncodedTile> encodeBatch(const PlanetDescription& planet, HeightSamp
   return out;
 }
 
+// Encodes and writes `batch` (tiles not on disk yet): their directories, a killed run's
+// temporaries of them removed, then the tiles, each atomically through `write`.
+Status writeBatch(const PlanetDescription& planet, HeightSampler& heights, const BakeSettings& settings,
+                  const std::vector<TileId>& batch, const TileWriter& write, BakeSummary& summary) {
+  if (batch.empty()) return Ok{};
+  const char* ext = extensionOf(settings.format);
+  std::error_code ec;
+  for (const TileId& t : batch) {
+    fs::create_directories((fs::path(settings.out_dir) / tilePath(t, ext)).parent_path(), ec);
+    if (ec) return Error::inFile(settings.out_dir, "cannot create tile directory: " + ec.message());
+  }
+  removeStaleTemporaries(settings.out_dir, batch, ext);
+  std::vector<EncodedTile> encoded = encodeBatch(planet, heights, settings, batch, summary);
+  const auto writeStart = std::chrono::steady_clock::now();
+  for (std::size_t k = 0; k < batch.size(); ++k) {
+    if (!encoded[k].status) return encoded[k].status.error();
+    const std::string path = (fs::path(settings.out_dir) / tilePath(batch[k], ext)).string();
+    if (auto s = write(path, encoded[k].bytes); !s) return s.error();
+    ++summary.written;
+    summary.bytes += encoded[k].bytes.size();
+    summary.vertices += encoded[k].stats.vertices;
+    summary.max_simplification_error_m =
+        std::max(summary.max_simplification_error_m, encoded[k].stats.simplification_error_m);
+  }
+  summary.write_s += secondsSince(writeStart);
+  return Ok{};
+}
+
 }  // namespace
 
 Result<BakeSummary> runBake(const PlanetDescription& planet, HeightSampler& heights, const BakeSettings& settings,
@@ -168,40 +196,24 @@ Result<BakeSummary> runBake(const PlanetDescription& planet, HeightSampler& heig
 
   BakeSummary summary;
   summary.plan_tiles = plan.tileCount();
+  summary.shard_tiles = plan.tileCountOf(settings.shard);
   const char* ext = extensionOf(settings.format);
-  std::vector<TileId> todo;
-  for (const TileId& t : plan.tilesOf(settings.shard)) {
-    ++summary.shard_tiles;
-    if (fs::exists(fs::path(settings.out_dir) / tilePath(t, ext), ec)) {
-      ++summary.skipped;
-    } else {
-      todo.push_back(t);
-    }
-  }
-  for (const TileId& t : todo) {
-    fs::create_directories((fs::path(settings.out_dir) / tilePath(t, ext)).parent_path(), ec);
-    if (ec) return Error::inFile(settings.out_dir, "cannot create tile directory: " + ec.message());
-  }
-  removeStaleTemporaries(settings.out_dir, todo, ext);
-
   const std::size_t batchTiles =
       std::max<std::size_t>(1, GpuHeightSampler::kBatchDirections / samplesPerTile(settings.format));
-  for (std::size_t first = 0; first < todo.size(); first += batchTiles) {
-    const std::span<const TileId> batch(todo.data() + first, std::min(batchTiles, todo.size() - first));
-    std::vector<EncodedTile> encoded = encodeBatch(planet, heights, settings, batch, summary);
-    const auto writeStart = std::chrono::steady_clock::now();
-    for (std::size_t k = 0; k < batch.size(); ++k) {
-      if (!encoded[k].status) return encoded[k].status.error();
-      const std::string path = (fs::path(settings.out_dir) / tilePath(batch[k], ext)).string();
-      if (auto s = write(path, encoded[k].bytes); !s) return s.error();
-      ++summary.written;
-      summary.bytes += encoded[k].bytes.size();
-      summary.vertices += encoded[k].stats.vertices;
-      summary.max_simplification_error_m =
-          std::max(summary.max_simplification_error_m, encoded[k].stats.simplification_error_m);
+  std::vector<TileId> batch;
+  // The shard is walked a batch of missing tiles at a time: memory stays one batch whatever the plan
+  // (listing levels 0..14 of the planet first took 3 GB before a tile was written, issue 40).
+  for (std::uint64_t j = 0; j < summary.shard_tiles;) {
+    batch.clear();
+    for (; j < summary.shard_tiles && batch.size() < batchTiles; ++j) {
+      const TileId t = plan.tileOf(settings.shard, j);
+      if (fs::exists(fs::path(settings.out_dir) / tilePath(t, ext), ec))
+        ++summary.skipped;
+      else
+        batch.push_back(t);
     }
-    summary.write_s += secondsSince(writeStart);
-    if (progress) progress(double(first + batch.size()) / double(todo.size()));
+    if (auto s = writeBatch(planet, heights, settings, batch, write, summary); !s) return s.error();
+    if (progress) progress(double(j) / double(summary.shard_tiles));
   }
   return summary;
 }

@@ -9,8 +9,10 @@
 #include "planet/analysis/terrain_queries.h"
 #include "planet/core/atomic_file.h"
 #include "planet/elevation/planet_file.h"
+#include "planet/physics/collision_mesh.h"
 #include "planet/physics/mesh_error.h"
 #include "planet/physics/physics_scenario.h"
+#include "progress_bar.h"
 #include "render_terrain.h"
 
 #include <fmt/format.h>
@@ -54,6 +56,31 @@ struct PhysicsInputs {
   uint64_t steps = 0;
 };
 
+// Sizes the run before it starts (issue 40): the meshes the bodies need at once must fit the pool,
+// else every step regenerates meshes (100000 scattered bodies at the default budget ran for hours),
+// and one body's must stay few enough to find (level 24 with a 10 km radius is 2.5e9 nodes a body).
+constexpr double kMaxMeshesPerBody = 65536.0;
+
+Status checkMeshesFit(const PhysicsInputs& in, const PhysicsOptions& o) {
+  const CollisionMeshEstimate e = estimateCollisionMeshes(in.scenario, o.level, o.radius_m, in.planet.radius_m);
+  const double mib = 1024.0 * 1024.0;
+  const double meshMiB = double(collisionMeshBytes(o.gridCells)) / mib;
+  if (e.perBody > kMaxMeshesPerBody || e.perBody * meshMiB > o.budget_MiB)
+    return Error::inField("--radius",
+                          fmt::format("{:g} m at level {} reaches about {:.3g} collision meshes around each "
+                                      "body ({:.3g} MiB, the pool holds {:g}): lower --radius or --level",
+                                      o.radius_m, o.level, e.perBody, e.perBody * meshMiB, o.budget_MiB));
+  if (e.total * meshMiB > o.budget_MiB)
+    return Error::inField(
+        "--budget",
+        fmt::format("{} {} bodies need about {:.3g} collision meshes of level {} at once "
+                    "({:.0f} MiB), more than the pool's {:g} MiB: raise --budget to {:.0f}, "
+                    "or lower --bodies, --level or --radius{}",
+                    o.bodies, o.clustered ? "clustered" : "scattered", e.total, o.level, e.total * meshMiB,
+                    o.budget_MiB, std::ceil(e.total * meshMiB * 1.5), o.clustered ? "" : ", or use --clustered"));
+  return Ok{};
+}
+
 Result<PhysicsInputs> checkInputs(const PhysicsOptions& o) {
   PhysicsInputs in;
   if (o.bodies < 1 || o.bodies > 100000) return Error::inField("--bodies", "must be within [1, 100000]");
@@ -89,6 +116,7 @@ Result<PhysicsInputs> checkInputs(const PhysicsOptions& o) {
   in.scenario.shapes = *shapes;
   in.scenario.clustered = o.clustered;
   in.steps = uint64_t(std::llround(o.seconds / in.simulation.physics.step_s));
+  if (auto s = checkMeshesFit(in, o); !s) return s.error();
   return in;
 }
 
@@ -194,7 +222,13 @@ int runPhysics(const PhysicsOptions& o) {
   sim.prepare();
   const StartupStats startup{std::chrono::duration<double>(std::chrono::steady_clock::now() - loadStart).count(),
                              sim.pool().stats().generatedAsync};
-  for (uint64_t s = 0; s < in->steps; ++s) sim.step();
+  {
+    ProgressBar bar("physics steps");
+    for (uint64_t s = 0; s < in->steps; ++s) {
+      sim.step();
+      bar.update(double(s + 1) / double(in->steps));
+    }
+  }
   const std::vector<BodyReport> bodies = reportBodies(model, sim.world(), placed);
   const MeshErrorStats meshError = measureMeshError(model, o.level, o.gridCells, 2000, uint64_t(o.seed));
   std::optional<ImageRgba> frame;

@@ -1,6 +1,7 @@
 #pragma once
 // A one-line progress bar on stderr, redrawn in place with '\r', with the time left estimated from
-// the rate so far. Drawn only when stderr is a terminal, so logs and test output stay clean.
+// the rate so far, when stderr is a terminal. Otherwise (a log, a batch job) a line every 30 s
+// with the fraction done and the time left, so work that ends sooner prints nothing.
 #include <chrono>
 #include <string>
 
@@ -29,10 +30,13 @@ class ProgressBar {
   void finish();
 
  private:
+  static constexpr std::chrono::seconds kLogInterval{30};
+  void logLine(double fraction);  // not a terminal: a line per kLogInterval
   std::string label_;
   bool enabled_ = false;
   int last_percent_ = -1;
   std::chrono::steady_clock::time_point start_;
+  std::chrono::steady_clock::time_point lastLine_;
 };
 
 }  // namespace globe::cli

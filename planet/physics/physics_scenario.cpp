@@ -1,6 +1,7 @@
 #include "planet/physics/physics_scenario.h"
 
 #include "planet/camera/camera.h"
+#include "planet/lod/lod_ranges.h"
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
@@ -52,6 +53,22 @@ glm::dquat randomOrientation(std::mt19937_64& rng) {
 }
 
 }  // namespace
+
+CollisionMeshEstimate estimateCollisionMeshes(const ScenarioSettings& settings, int level, double interestRadius_m,
+                                              double planetRadius_m) {
+  const double width_m = nominalNodeWidth(level, planetRadius_m);
+  const auto nodesAcross = [width_m](double radius_m) {
+    const double n = 2.0 * radius_m / width_m + 1.0;
+    return n * n;
+  };
+  const double reach_m = interestRadius_m + settings.maxSize_m;
+  CollisionMeshEstimate e;
+  e.perBody = nodesAcross(reach_m);
+  e.total = double(settings.bodies) * e.perBody;
+  if (settings.clustered) e.total = std::min(e.total, nodesAcross(settings.clusterRadius_m + reach_m));
+  e.total = std::min(e.total, 30.0 * std::pow(4.0, level));  // the level's nodes
+  return e;
+}
 
 std::vector<PlacedBody> placeBodies(const ElevationModel& model, const ScenarioSettings& settings) {
   std::mt19937_64 rng(settings.seed);

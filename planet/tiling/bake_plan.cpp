@@ -81,17 +81,22 @@ BakePlan::BakePlan(LevelRange levels, const GeoRect& region) {
   }
 }
 
-std::vector<TileId> BakePlan::tilesOf(const Shard& shard) const {
-  std::vector<TileId> tiles;
-  std::uint64_t index = 0;
+std::uint64_t BakePlan::tileCountOf(const Shard& shard) const {
+  // Plan indices K, K + N, K + 2N, ... below the total.
+  return total_ > shard.index ? (total_ - shard.index + shard.count - 1) / shard.count : 0;
+}
+
+TileId BakePlan::tileOf(const Shard& shard, std::uint64_t j) const { return tileAt(shard.index + j * shard.count); }
+
+TileId BakePlan::tileAt(std::uint64_t index) const {
   for (const TileRange& r : ranges_) {
-    for (std::uint32_t y = r.y0; y <= r.y1; ++y) {
-      for (std::uint32_t x = r.x0; x <= r.x1; ++x, ++index) {
-        if (index % shard.count == shard.index) tiles.push_back({r.level, x, y});
-      }
+    if (index < r.count()) {
+      const std::uint64_t width = std::uint64_t(r.x1 - r.x0) + 1;
+      return {r.level, r.x0 + std::uint32_t(index % width), r.y0 + std::uint32_t(index / width)};
     }
+    index -= r.count();
   }
-  return tiles;
+  return {};  // past the plan: callers stay below tileCount()
 }
 
 std::string tilePath(const TileId& tile, const char* extension) {

@@ -41,8 +41,13 @@ class BakePlan {
 
   const std::vector<TileRange>& ranges() const { return ranges_; }  // one per level, first..last
   std::uint64_t tileCount() const { return total_; }
-  // The tiles of `shard`, in plan order.
-  std::vector<TileId> tilesOf(const Shard& shard) const;
+  // A plan reaches 2^49 tiles (levels 0..24, the whole planet), so it is never listed: a shard's
+  // tiles are computed one at a time. The tiles of `shard`: how many, and the j-th in plan order
+  // (j < tileCountOf(shard)).
+  std::uint64_t tileCountOf(const Shard& shard) const;
+  TileId tileOf(const Shard& shard, std::uint64_t j) const;
+  // The tile at `index` (< tileCount()) in plan order.
+  TileId tileAt(std::uint64_t index) const;
 
  private:
   std::vector<TileRange> ranges_;

@@ -33,6 +33,10 @@ expect_bad "--render" --render "$WORK/frame.txt"
 expect_bad "--out" --out /nonexistent/dir/out
 expect_bad "no-such.toml" --planet "$WORK/no-such.toml"
 expect_bad "--seed" --seed -3
+# Sized before the run (issue 40 item 12: both ran for minutes with no output).
+expect_bad "--radius: 10000 m at level 24 reaches about .* collision meshes around each body" --level 24 --radius 10000
+expect_bad "--budget: 100000 scattered bodies need about .* MiB\\), more than the pool's 256 MiB: raise --budget" \
+  --bodies 100000
 printf 'name = "heavy"\nradius_m = 1000000.0\nsurface_gravity_m_s2 = -1\n[[layers]]\nname = "a"\noctaves = 1\nwavelength_m = 1e5\namplitude_m = 10\n' >"$WORK/bad_gravity.toml"
 expect_bad "bad_gravity.toml:3:.*surface_gravity_m_s2" --planet "$WORK/bad_gravity.toml"
 

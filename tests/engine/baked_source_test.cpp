@@ -291,7 +291,9 @@ TEST_F(BakeWithSourcesTest, ARegionOfEarthDemBakesFromTheDem) {
   // Every kept vertex is the DEM mosaic's height (within half of the tile's height step), and the
   // DEM covers every one.
   double worstVertex = 0.0, leastDemWeight = 1.0;
-  for (const TileId& t : BakePlan(s.levels, s.region).tilesOf({})) {
+  const BakePlan plan(s.levels, s.region);
+  for (std::uint64_t i = 0; i < plan.tileCount(); ++i) {
+    const TileId t = plan.tileAt(i);
     auto mesh = decodeQuantizedMesh(readFileBytes(fs::path(s.out_dir) / tilePath(t, ".terrain")));
     ASSERT_TRUE(mesh.has_value());
     for (std::size_t k = 0; k < mesh->vertexCount(); ++k) {

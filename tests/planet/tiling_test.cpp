@@ -94,14 +94,40 @@ TEST(BakePlan, ShardsPartitionThePlan) {
   EXPECT_EQ(plan.ranges().front().count(), 2u) << "level 0 is whole";
   std::set<std::tuple<int, std::uint32_t, std::uint32_t>> seen;
   std::size_t largest = 0, smallest = SIZE_MAX;
+  std::tuple<int, std::uint32_t, std::uint32_t> previous{-1, 0, 0};
+  for (std::uint64_t i = 0; i < plan.tileCount(); ++i) {  // plan order: level, then y, then x
+    const TileId t = plan.tileAt(i);
+    const std::tuple<int, std::uint32_t, std::uint32_t> key{t.level, t.y, t.x};
+    EXPECT_LT(previous, key) << i;
+    previous = key;
+  }
   for (std::uint32_t k = 0; k < 7; ++k) {
-    const auto tiles = plan.tilesOf({k, 7});
-    largest = std::max(largest, tiles.size());
-    smallest = std::min(smallest, tiles.size());
-    for (const TileId& t : tiles) EXPECT_TRUE(seen.insert({t.level, t.x, t.y}).second) << "a tile in two shards";
+    const std::uint64_t count = plan.tileCountOf({k, 7});
+    largest = std::max<std::size_t>(largest, count);
+    smallest = std::min<std::size_t>(smallest, count);
+    for (std::uint64_t j = 0; j < count; ++j) {
+      const TileId t = plan.tileOf({k, 7}, j);
+      EXPECT_TRUE(seen.insert({t.level, t.x, t.y}).second) << "a tile in two shards";
+    }
   }
   EXPECT_EQ(seen.size(), plan.tileCount());
   EXPECT_LE(largest - smallest, 1u) << "round robin balances the shards";
+}
+
+// The whole planet to level 24 is 2^49.4 tiles: never listed, a shard's last tile is computed at once.
+TEST(BakePlan, HugePlansAreNeverListed) {
+  const BakePlan plan({0, 24}, {-180.0, -90.0, 180.0, 90.0});
+  std::uint64_t total = 0;
+  for (int level = 0; level <= 24; ++level) total += 2ull << (2 * level);
+  EXPECT_EQ(plan.tileCount(), total);
+  const Shard last{999999, 1000000};
+  const std::uint64_t count = plan.tileCountOf(last);
+  EXPECT_EQ(count, (total - 999999 + 999999) / 1000000);
+  const TileId t = plan.tileOf(last, count - 1);
+  EXPECT_EQ(t.level, 24);
+  EXPECT_LT(t.x, tilesAcross(24));
+  EXPECT_LT(t.y, tilesDown(24));
+  EXPECT_EQ(plan.tileAt(total - 1), (TileId{24, tilesAcross(24) - 1, tilesDown(24) - 1}));
   EXPECT_EQ(tilePath({3, 8, 5}, ".terrain"), "3/8/5.terrain");
 }
 
