@@ -9,8 +9,9 @@ rows=[r for f in sys.argv[1:] for r in csv.DictReader(open(f))]
 cams=[c for c in ['orbit','100km','10km','1km','2m','path@7s','path@12s'] if any(r['camera']==c for r in rows)]
 get=lambda cfg,c:[x for x in rows if x['config']==cfg and x['camera']==c][0]
 cfgs=list(dict.fromkeys(r['config'] for r in rows))
-dist=[c for c in cfgs if get(c,'2m')['lod']=='distance']
-tol=[c for c in cfgs if get(c,'2m')['lod'].startswith('tolerance')]
+lod={r['config']:r['lod'] for r in rows}  # a config's rule, from whichever cameras were swept
+dist=[c for c in cfgs if lod[c]=='distance']
+tol=[c for c in cfgs if lod[c].startswith('tolerance')]
 def frontier(cam):
     # Distance rows that no other distance row beats on both triangles and error: a row held back by
     # the frame budget (millions of triangles, hundreds of px) is dominated and left out.
@@ -36,4 +37,4 @@ for t in tol:
         d=distTris(c,e)
         if d is None: ok=False; cells.append(f"{tt/1e3:.0f}k @ {e:.2f} px (beyond)"); continue
         st+=tt; sd+=d; cells.append(f"{tt/1e3:.0f}k vs {d/1e3:.0f}k @ {e:.2f} px")
-    print(f"| {t} | {get(t,'2m')['lod']} | "+" | ".join(cells)+(f" | {st/1e3:.0f}k | {sd/1e3:.0f}k | {100*(1-st/sd):.0f} % |" if ok else " | – | – | – |"))
+    print(f"| {t} | {lod[t]} | "+" | ".join(cells)+(f" | {st/1e3:.0f}k | {sd/1e3:.0f}k | {100*(1-st/sd):.0f} % |" if ok else " | – | – | – |"))
