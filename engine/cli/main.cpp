@@ -1,6 +1,7 @@
 // globe: the user-facing command line.
 #include "commands.h"
 #include "engine/vk/vk_check.h"
+#include "planet/core/error.h"
 
 #include <cstdio>
 #include <exception>
@@ -17,11 +18,13 @@ double millisecondsSinceProcessStart() {
 }
 
 namespace {
+// One line whatever the message holds: line breaks become spaces, other control characters and
+// bytes that are not UTF-8 (echoed from hostile input) \xNN.
 void printLine(const char* kind, const std::string& message) {
   std::string line = message;
   for (char& c : line)
     if (c == '\n' || c == '\r') c = ' ';
-  std::fprintf(stderr, "globe: %s: %s\n", kind, line.c_str());
+  std::fprintf(stderr, "globe: %s: %s\n", kind, escapeControlCharacters(line).c_str());
 }
 }  // namespace
 

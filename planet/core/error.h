@@ -36,8 +36,9 @@ struct Error {
   std::string format() const;
 };
 
-// `text` with every control character (bytes < 0x20 and DEL, newlines too) shown as \xNN: for input
-// text printed to a terminal (planet names, keys), which must not carry escape sequences.
+// `text` with every control character (bytes < 0x20 and DEL, newlines too) and every byte that is
+// not part of well-formed UTF-8 shown as \xNN: for input text printed to a terminal (planet names,
+// keys, messages), which must carry neither escape sequences nor raw bytes. UTF-8 characters stay.
 std::string escapeControlCharacters(std::string_view text);
 
 // How many errors of one file a command prints: a hostile file can hold millions.

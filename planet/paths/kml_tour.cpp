@@ -37,6 +37,15 @@ pugi::xml_node findTour(const pugi::xml_node& document) {
       [](const pugi::xml_node& n) { return n.type() == pugi::node_element && localName(n) == "Tour"; });
 }
 
+// An element's text: all its text and CDATA children joined. A comment splits the text into two
+// children (`22<!-- c -->.1` is 22.1 to XML); the first alone read 22.
+std::string textOf(const pugi::xml_node& node) {
+  std::string text;
+  for (pugi::xml_node c : node.children())
+    if (c.type() == pugi::node_pcdata || c.type() == pugi::node_cdata) text += c.value();
+  return text;
+}
+
 std::string_view trimmed(std::string_view s) {
   const char* blanks = " \t\r\n";
   auto b = s.find_first_not_of(blanks);
@@ -62,12 +71,13 @@ struct KmlReader {
   std::optional<Error> read(const pugi::xml_node& parent, std::string_view name, double& out) const {
     pugi::xml_node node = childNamed(parent, name);
     if (!node) return std::nullopt;
-    std::string_view s = trimmed(node.child_value());
+    const std::string text = textOf(node);
+    std::string_view s = trimmed(text);
     if (!s.empty() && s[0] == '+') s.remove_prefix(1);
     double v = 0;
     auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
     if (s.empty() || ec != std::errc() || end != s.data() + s.size() || !std::isfinite(v))
-      return errorAt(node, fmt::format("'{}' is not a finite number", trimmed(node.child_value())));
+      return errorAt(node, fmt::format("'{}' is not a finite number", trimmed(text)));
     out = v;
     return std::nullopt;
   }
@@ -79,15 +89,25 @@ struct KmlReader {
     return std::nullopt;
   }
 
+  // altitudeMode or gx:altitudeMode (KML 2.2 and Google's extension). Both may be given; when they
+  // disagree the view is ambiguous and refused (it was resolved silently by whichever came first).
   Result<KmlAltitudeMode> altitudeMode(const pugi::xml_node& view) const {
-    pugi::xml_node node = childNamed(view, "altitudeMode");
-    if (!node) return KmlAltitudeMode::clampToGround;  // the KML default
-    auto mode = parseKmlAltitudeMode(trimmed(node.child_value()));
-    if (!mode)
-      return errorAt(node, fmt::format("unknown altitude mode '{}' (expected clampToGround, relativeToGround or "
-                                       "absolute)",
-                                       trimmed(node.child_value())));
-    return *mode;
+    std::optional<KmlAltitudeMode> found;
+    pugi::xml_node first;
+    for (pugi::xml_node node : view.children()) {
+      if (node.type() != pugi::node_element || localName(node) != "altitudeMode") continue;
+      const std::string text = textOf(node);
+      auto mode = parseKmlAltitudeMode(trimmed(text));
+      if (!mode)
+        return errorAt(node, fmt::format("unknown altitude mode '{}' (expected clampToGround, relativeToGround or "
+                                         "absolute)",
+                                         trimmed(text)));
+      if (found && *mode != *found)
+        return errorAt(node, fmt::format("'{}' contradicts {} '{}' on line {}", trimmed(text), first.name(),
+                                         trimmed(textOf(first)), lineOf(first)));
+      if (!found) found = *mode, first = node;
+    }
+    return found.value_or(KmlAltitudeMode::clampToGround);  // the KML default
   }
 };
 
@@ -164,7 +184,8 @@ Result<std::vector<PathKeyframe>> readPlaylist(const KmlReader& r, const pugi::x
     auto viewResult = readView(r, item);
     if (!viewResult) return viewResult.error();
     const ImportedPose& view = *viewResult;
-    std::string_view mode = trimmed(childNamed(item, "flyToMode").child_value());
+    const std::string modeText = textOf(childNamed(item, "flyToMode"));
+    std::string_view mode = trimmed(modeText);
     if (!mode.empty() && mode != "bounce" && mode != "smooth")
       return r.errorAt(childNamed(item, "flyToMode"), fmt::format("'{}' is not bounce or smooth", mode));
     const bool bounce = mode != "smooth";

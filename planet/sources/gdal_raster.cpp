@@ -192,7 +192,13 @@ Result<std::unique_ptr<GdalRaster>> GdalRaster::open(const std::string& path, do
   f.nodata = band->GetNoDataValue(&hasNoData);
   f.has_nodata = hasNoData != 0;
   double minMax[2] = {0.0, 0.0};
-  if (band->ComputeRasterMinMax(FALSE, minMax) != CE_None) return Error::inFile(path, "has no valid pixel");
+  CPLErrorReset();
+  const CPLErr scanned = band->ComputeRasterMinMax(FALSE, minMax);
+  // A block that cannot be read (a truncated or corrupt file) fails the scan with GDAL's reason;
+  // only a scan that read every block and found nothing is "no valid pixel".
+  if (CPLGetLastErrorType() >= CE_Failure)
+    return Error::inFile(path, "GDAL cannot read its pixels (truncated or corrupt?): " + lastGdalMessage());
+  if (scanned != CE_None) return Error::inFile(path, "has no valid pixel");
   f.min_value = minMax[0];
   f.max_value = minMax[1];
   // ±Inf pixels (an undeclared no-data value) and float's extremes are no heights: refused here, by

@@ -60,6 +60,9 @@ echo "55,000 FlyTos imported in $seconds s"
 # Generous: 0.4 s measured (docs/reliability.md); quadratic it took 158 s.
 (($(echo "$seconds < 20" | bc))) || fail "55,000 FlyTos took $seconds s"
 [[ $(grep -vc '^#\|^t_s' long.path) -eq 55000 ]] || fail "long.path does not hold 55,000 keyframes"
+# Bytes that are not UTF-8 are echoed escaped, never raw (issue 40 minor item).
+one_error 2 "unknown quality 'fa\\\\xffst'" -- "$GLOBE" render --quality $'fa\xffst' --out x.png
+
 one_error 2 "big.czml:2:52: cartographicDegrees: invalid JSON: number 1e400 is out of range" -- \
   "$GLOBE" path import big.czml --out big.path
 
@@ -125,6 +128,10 @@ check_refuses nested.vrt "'nested.vrt' its source '.*fifo.raw': cannot read rast
 check_refuses big.vrt "100000 x 100000 pixels is beyond the limit of 268435456 pixels"
 check_refuses nan_gt.vrt "has a geotransform that is not finite"
 check_refuses wide.vrt "pixels of 1e\+06 x 1e\+06 degrees make it larger than the globe"
+# A GeoTIFF cut short: GDAL's read error, not "no valid pixel" (issue 40 minor item).
+gdal_translate -q -co TILED=YES "$SRC/assets/planets/dem/jacksboro.vrt" whole.tif || fail "gdal_translate jacksboro"
+head -c $(($(stat -c %s whole.tif) * 6 / 10)) whole.tif >cut.tif
+check_refuses cut.tif "'cut.tif' GDAL cannot read its pixels \(truncated or corrupt\?\): .*TIFFReadEncodedTile"
 
 # --- Temporaries of killed runs -----------------------------------------------------------------
 # A run killed with SIGKILL leaves .NAME.tmpPID; the next run removes those of dead processes only.

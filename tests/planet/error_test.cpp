@@ -26,6 +26,23 @@ TEST(Error, EscapesControlCharacters) {
 TEST(Error, EscapeControlCharactersLeavesOtherTextAlone) {
   EXPECT_EQ(escapeControlCharacters("Terra \xc3\xa9 1"), "Terra \xc3\xa9 1");  // UTF-8 stays
   EXPECT_EQ(escapeControlCharacters("a\x1b[2Jb\x7f"), "a\\x1b[2Jb\\x7f");
+  EXPECT_EQ(escapeControlCharacters("\xce\x94"
+                                    "E \xc2\xb1 \xf0\x9f\x8c\x8d"),
+            "\xce\x94"
+            "E \xc2\xb1 \xf0\x9f\x8c\x8d");  // ΔE ± (globe)
+}
+
+// Bytes that are not UTF-8, echoed from a hostile file, reached the terminal raw (issue 40).
+TEST(Error, EscapesBytesThatAreNotUtf8) {
+  EXPECT_EQ(escapeControlCharacters("a\xff\xfe"
+                                    "b"),
+            "a\\xff\\xfe"
+            "b");
+  EXPECT_EQ(escapeControlCharacters("cut \xc3"), "cut \\xc3");                     // a sequence cut short
+  EXPECT_EQ(escapeControlCharacters("\xc0\xaf"), "\\xc0\\xaf");                    // an overlong '/'
+  EXPECT_EQ(escapeControlCharacters("\xed\xa0\x80"), "\\xed\\xa0\\x80");           // a surrogate
+  EXPECT_EQ(escapeControlCharacters("\xf4\x90\x80\x80"), "\\xf4\\x90\\x80\\x80");  // past U+10FFFF
+  EXPECT_EQ(escapeControlCharacters("\xe2\x82"), "\\xe2\\x82");
 }
 
 TEST(Error, ListIsCappedWithACountOfTheRest) {

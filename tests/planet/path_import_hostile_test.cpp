@@ -1,6 +1,7 @@
 // Hostile camera path files (issue 40): a KML tour nested 1e5 elements deep is read without
 // overflowing the stack, 55,000 FlyTos import in linear time, and a CZML number beyond a double's
 // range names file, line, column and field instead of printing the JSON library's exception.
+#include "planet/camera/camera_path_file.h"
 #include "planet/paths/czml_path.h"
 #include "planet/paths/kml_tour.h"
 
@@ -72,6 +73,44 @@ TEST(PathImportHostile, CzmlDatesAndZonesMustExist) {
   EXPECT_TRUE(parseIso8601_s("2000-02-29T00:00:00Z"));        // a leap year
   EXPECT_FALSE(parseIso8601_s("2000-03-01T00:00:00+99:99"));  // accepted before
   EXPECT_TRUE(parseIso8601_s("2000-03-01T00:00:00-14:00"));
+}
+
+// XML text split by a comment is one value: `22<!-- c -->.1` was read as 22.
+TEST(PathImportHostile, KmlNumberSplitByACommentIsWhole) {
+  std::string one = flyTo(0, -98);
+  one.replace(one.find("<latitude>22</latitude>"), 23, "<latitude>22<!-- c -->.1</latitude>");
+  auto path = parseKmlTour(kmlAround(one + flyTo(5, -97.9), "<Document>", "</Document>"), "comment.kml");
+  ASSERT_TRUE(path.ok()) << path.error().format();
+  EXPECT_NEAR(path->keyframes().front().pose.latitude_deg, 22.1, 1e-9);
+}
+
+// altitudeMode and gx:altitudeMode that disagree were resolved silently by the first.
+TEST(PathImportHostile, KmlConflictingAltitudeModesAreRefused) {
+  std::string one = flyTo(0, -98);
+  const std::string mode = "<altitudeMode>absolute</altitudeMode>\n";
+  one.insert(one.find(mode) + mode.size(), "<gx:altitudeMode>relativeToGround</gx:altitudeMode>\n");
+  auto path = parseKmlTour(kmlAround(one + flyTo(5, -97.9), "", ""), "modes.kml");
+  ASSERT_FALSE(path.ok());
+  EXPECT_EQ(path.error().format(),
+            "modes.kml:13:2: gx:altitudeMode: 'relativeToGround' contradicts altitudeMode 'absolute' on line 12");
+  // Both saying the same is fine.
+  std::string same = flyTo(0, -98);
+  same.insert(same.find(mode) + mode.size(), "<gx:altitudeMode>absolute</gx:altitudeMode>\n");
+  EXPECT_TRUE(parseKmlTour(kmlAround(same + flyTo(5, -97.9), "", ""), "same.kml").ok());
+}
+
+// `path export` of extreme but valid paths gives KML that `path import` reads back.
+TEST(PathImportHostile, ExportedExtremePathsImportAgain) {
+  for (const char* rows : {"0 90 180 1e-9 720 -90 180 ground\n1e-9 89 -180 1e12 -700 -10 -170 ground\n",
+                           "0 1e-300 1e-310 0.01 1e6 -89.9999 1e5 sphere\n3600 89.9999999 -0 5e11 0 45 0 sphere\n"}) {
+    const std::string text =
+        std::string("t_s lat_deg lon_deg height_m heading_deg pitch_deg roll_deg height_ref\n") + rows;
+    auto path = parseCameraPath(text, "extreme.path");
+    ASSERT_TRUE(path.ok()) << path.error().format();
+    auto back = parseKmlTour(formatKmlTour(*path, "extreme"), "extreme.kml");
+    ASSERT_TRUE(back.ok()) << back.error().format();
+    EXPECT_EQ(back->keyframes().size(), path->keyframes().size());
+  }
 }
 
 }  // namespace
