@@ -1,10 +1,12 @@
 // globe trade: measures the speed/accuracy trade of the terrain settings (docs/tradeoffs.md). Each
 // configuration is rendered converged at each camera; frame time, selection time, triangles, memory
 // and generation cost are recorded, and the read-back depth is compared with the exact planet
-// (engine/render/screen_error.h). Writes DIR/trade.csv and DIR/pareto.svg, both or neither.
+// (engine/render/screen_error.h), the picture with the converged `exact` image (trade_images.h).
+// Writes DIR/trade.csv, DIR/pareto.svg and DIR/pareto-image.svg, all or none.
 #include "commands.h"
 #include "engine/render/headless_renderer.h"
 #include "engine/render/quality.h"
+#include "engine/render/render_output.h"
 #include "engine/render/screen_error.h"
 #include "engine/report/bench_metrics.h"
 #include "engine/report/trade_report.h"
@@ -13,6 +15,7 @@
 #include "planet/camera/camera_path_file.h"
 #include "planet/elevation/planet_file.h"
 #include "progress_bar.h"
+#include "trade_images.h"
 
 #include <algorithm>
 #include <chrono>
@@ -303,17 +306,19 @@ TradeRow tradeRow(const TradeConfig& config, const TradeCamera& camera, const Te
   return row;
 }
 
-// What one run renders with: the device, its renderer and the shared inputs.
+// What one run renders with: the device, its renderer, the shared inputs and, per camera, the
+// converged `exact` image pictures are compared with.
 struct TradeRig {
   vk::Device& device;
   HeadlessRenderer& renderer;
   const ElevationModel& model;
   const TradeInputs& in;
+  std::vector<ImageRgba> references;
 };
 
 // One configuration at one camera: converged, then `frames` timed frames, then the screen error.
-Result<TradeRow> measure(TradeRig& rig, const TradeConfig& config, const TradeCamera& camera,
-                         const SurfaceTruth& truth) {
+Result<TradeRow> measure(TradeRig& rig, const TradeConfig& config, const TradeCamera& camera, const SurfaceTruth& truth,
+                         const ImageRgba& reference) {
   TerrainSettings settings = config.settings;
   settings.style.sunDirection = defaultSunDirection(camera.camera.position_m);
   settings.viewHeight_px = double(rig.in.size.height);
@@ -331,6 +336,7 @@ Result<TradeRow> measure(TradeRig& rig, const TradeConfig& config, const TradeCa
   TradeRow row = tradeRow(config, camera, settings, rig.in, std::move(frame_ms), std::move(select_ms), stats);
   const GpuPayloadGenerator& gen = (*terrain)->generator();
   row.genPerNode_ms = gen.nodesGenerated() ? gen.gpuTime_ms() / double(gen.nodesGenerated()) : 0.0;
+  compareWithReference(row, toImage(rig.renderer.readback(), camera.camera), reference);
   // Multisampled depth is resolved from sample 0, off the pixel centre the truth is cast through:
   // the error is measured on a one-sample frame of the same nodes.
   if (settings.antialiasing == vk::Antialiasing::kMsaa4) {
@@ -364,7 +370,7 @@ Result<std::vector<TradeRow>> measureAll(TradeRig& rig, const std::vector<TradeC
   for (const TradeConfig& config : configs) {
     std::vector<TradeRow> perCamera;
     for (size_t ci = 0; ci < cameras.size(); ++ci) {
-      auto row = measure(rig, config, cameras[ci], truths[ci]);
+      auto row = measure(rig, config, cameras[ci], truths[ci], rig.references[ci]);
       if (!row) return row.error();
       perCamera.push_back(std::move(*row));
       progress.update(double(++done) / double(configs.size() * cameras.size()));
@@ -376,12 +382,13 @@ Result<std::vector<TradeRow>> measureAll(TradeRig& rig, const std::vector<TradeC
 }
 
 void printWorstRows(const std::vector<TradeRow>& rows) {
-  std::printf("%-34s %9s %9s %9s %9s %9s %7s\n", "config (worst camera)", "median_ms", "p95_ms", "err_p50", "err_p95",
-              "err_max", "triMax");
+  std::printf("%-34s %9s %9s %9s %9s %9s %7s %6s %5s\n", "config (worst camera)", "median_ms", "p95_ms", "err_p50",
+              "err_p95", "err_max", "triMax", "ssim", "dE");
   for (const TradeRow& r : rows)
     if (r.camera == "worst")
-      std::printf("%-34s %9.2f %9.2f %9.3f %9.3f %9.2f %7llu%s\n", r.config.c_str(), r.frameMedian_ms, r.frameP95_ms,
-                  r.error.p50_px, r.error.p95_px, r.error.max_px, (unsigned long long)r.triangles,
+      std::printf("%-34s %9.2f %9.2f %9.3f %9.3f %9.2f %7llu %6.3f %5.1f%s\n", r.config.c_str(), r.frameMedian_ms,
+                  r.frameP95_ms, r.error.p50_px, r.error.p95_px, r.error.max_px, (unsigned long long)r.triangles,
+                  r.imageSsim, r.imageColourDe,
                   r.converged ? "" : "  (not converged: the pool could not hold the view)");
 }
 
@@ -409,8 +416,13 @@ int runTrade(const TradeOptions& o) {
 
   vk::Device device(deviceOptions(o.device));
   HeadlessRenderer renderer(device, {in->size.width, in->size.height});
-  TradeRig rig{device, renderer, model, *in};
+  TradeRig rig{device, renderer, model, *in, {}};
   if (auto s = warmUp(rig, configs.front(), cameras->front()); !s) return usageError(s.error());
+  std::vector<Camera> views;
+  for (const TradeCamera& c : *cameras) views.push_back(c.camera);
+  auto references = renderExactReferences(device, renderer, model, in->planet, views, double(in->size.height));
+  if (!references) return usageError(references.error());
+  rig.references = std::move(*references);
   auto rows = measureAll(rig, configs, *cameras, truths);
   if (!rows) return usageError(rows.error());  // a configuration the terrain rejects
   double total_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -427,8 +439,8 @@ int runTrade(const TradeOptions& o) {
   }
   if (int code = validationExitCode(device); code != kExitOk) return code;
   printWorstRows(*rows);
-  std::printf("truth ray casting %.1f s, total %.1f s; wrote %s/trade.csv and %s/pareto.svg\n", truth_ms * 1e-3,
-              total_s, o.out.c_str(), o.out.c_str());
+  std::printf("truth ray casting %.1f s, total %.1f s; wrote %s/trade.csv, %s/pareto.svg and %s/pareto-image.svg\n",
+              truth_ms * 1e-3, total_s, o.out.c_str(), o.out.c_str(), o.out.c_str());
   return kExitOk;
 }
 
@@ -438,10 +450,11 @@ void addTradeCommand(CLI::App& app, Runner& run) {
   auto opts = std::make_shared<TradeOptions>();
   opts->planet = defaultPlanetPath();
   opts->path = defaultAssetPath("paths/flyover.path");
-  CLI::App* cmd =
-      app.add_subcommand("trade", "Measure the speed/accuracy trade of the terrain settings (trade.csv, pareto.svg)");
+  CLI::App* cmd = app.add_subcommand(
+      "trade", "Measure the speed/accuracy trade of the terrain settings (trade.csv, pareto.svg, pareto-image.svg)");
   cmd->add_option("--planet", opts->planet, "Planet file (TOML)")->capture_default_str();
-  cmd->add_option("--out", opts->out, "Output directory (trade.csv, pareto.svg)")->capture_default_str();
+  cmd->add_option("--out", opts->out, "Output directory (trade.csv, pareto.svg, pareto-image.svg)")
+      ->capture_default_str();
   cmd->add_flag("--quick", opts->quick, "Few configurations, two cameras, 320x180: about a minute");
   addQualityOptions(*cmd, opts->quality, /*withGrid=*/false);  // the baseline configuration
   cmd->add_flag("--lod-sweep", opts->lodSweep,

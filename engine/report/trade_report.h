@@ -6,6 +6,7 @@
 #include "planet/analysis/screen_error.h"
 #include "planet/core/error.h"
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -31,10 +32,15 @@ struct TradeRow {
   double resident_mib = 0;
   double genPerNode_ms = 0;  // GPU time of payload generation per node
   ScreenError error;
+  // The picture against the converged `exact` image of the same camera (image_compare.h): SSIM of
+  // luma and CIEDE2000 of the mean colours. NaN when not measured.
+  double imageSsim = std::numeric_limits<double>::quiet_NaN();
+  double imageColourDe = std::numeric_limits<double>::quiet_NaN();
 };
 
 // The "worst" row of `rows` of one configuration (non-empty): max of each time and error column,
-// max triangles / memory; generation cost is the mean over cameras.
+// max triangles / memory, the lowest SSIM and largest colour difference; generation cost is the
+// mean over cameras.
 TradeRow aggregateTradeRows(const std::vector<TradeRow>& rows);
 
 // Indices (into `points`, (frame ms, error px)) of the Pareto frontier: no other point is at least
@@ -44,8 +50,11 @@ std::vector<size_t> paretoFrontier(const std::vector<std::pair<double, double>>&
 std::string tradeCsv(const std::vector<TradeRow>& rows);
 // Plots the "worst" rows: x = median frame time (ms), y = p95 error (px, log scale).
 std::string paretoSvg(const std::vector<TradeRow>& rows, const std::string& title);
+// The same in the picture: y = 1 - SSIM against `exact` at the worst camera (log scale).
+std::string paretoImageSvg(const std::vector<TradeRow>& rows, const std::string& title);
 
-// Writes DIR/trade.csv and DIR/pareto.svg; both appear only if both could be written.
+// Writes DIR/trade.csv, DIR/pareto.svg and, when the rows carry image metrics, DIR/pareto-image.svg;
+// all appear only if all could be written.
 Status writeTradeReport(const std::string& dir, const std::vector<TradeRow>& rows, const std::string& title);
 
 }  // namespace globe

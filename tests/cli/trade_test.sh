@@ -10,13 +10,16 @@ fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
 "$GLOBE" trade --quick --size 96x64 --configs 1 --frames 1 --stride 2 --out "$WORK/t" --validate \
   >"$WORK/stdout" 2>"$WORK/stderr" || { fail "trade run"; cat "$WORK/stderr"; }
-for f in trade.csv pareto.svg; do [[ -s "$WORK/t/$f" ]] || fail "missing $f"; done
+for f in trade.csv pareto.svg pareto-image.svg; do [[ -s "$WORK/t/$f" ]] || fail "missing $f"; done
 header=$(head -1 "$WORK/t/trade.csv")
-expected="config,camera,grid_cells,distance_multiplier,max_depth,morph_fraction,generation,positions,lod,tolerance_px,width,height,converged,frame_median_ms,frame_p95_ms,select_ms,triangles,nodes,resident_mib,gen_ms_per_node,err_p50_px,err_p95_px,err_max_px,err_p50_m,err_p95_m,err_max_m,silhouette_mismatches,silhouette_max_px,samples,samples_both_hit,truth_unresolved"
+expected="config,camera,grid_cells,distance_multiplier,max_depth,morph_fraction,generation,positions,lod,tolerance_px,width,height,converged,frame_median_ms,frame_p95_ms,select_ms,triangles,nodes,resident_mib,gen_ms_per_node,err_p50_px,err_p95_px,err_max_px,err_p50_m,err_p95_m,err_max_m,silhouette_mismatches,silhouette_max_px,samples,samples_both_hit,truth_unresolved,ssim,colour_de2000"
 [[ "$header" == "$expected" ]] || fail "trade.csv header: $header"
 rows=$(($(wc -l <"$WORK/t/trade.csv") - 1))
 [[ $rows -eq 3 ]] || fail "trade.csv has $rows rows, expected 3 (two cameras and the worst)"
 grep -q ',worst,' "$WORK/t/trade.csv" || fail "no worst row"
+# Every row compares its picture with the exact image: an SSIM in (0, 1] and a colour difference.
+awk -F, 'NR > 1 && !($(NF-1) > 0 && $(NF-1) <= 1 && $NF >= 0 && $NF != "") { bad = 1 } END { exit bad }' \
+  "$WORK/t/trade.csv" || fail "image columns: $(cut -d, -f1,2,32,33 "$WORK/t/trade.csv")"
 grep -q '<svg' "$WORK/t/pareto.svg" || fail "pareto.svg has no <svg"
 grep -q '</svg>' "$WORK/t/pareto.svg" || fail "pareto.svg has no </svg>"
 ls -a "$WORK/t" | grep -q '\.tmp' && fail "temporary files left"

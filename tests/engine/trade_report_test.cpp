@@ -47,5 +47,32 @@ TEST(TradeReport, WorstRowAndFiles) {
   EXPECT_NE(svg.find("t &lt;&amp;&gt;"), std::string::npos);
 }
 
+// The picture's columns: the worst row takes the lowest SSIM and the largest colour difference; a
+// row without them leaves the cells empty; the image plot shows 1 - SSIM.
+TEST(TradeReport, ImageColumnsAndPlot) {
+  TradeRow a;
+  a.config = "fast";
+  a.camera = "1km";
+  a.frameMedian_ms = 10;
+  a.imageSsim = 0.8;
+  a.imageColourDe = 2.5;
+  TradeRow b = a;
+  b.camera = "10km";
+  b.imageSsim = 0.9;
+  b.imageColourDe = 4.0;
+  TradeRow w = aggregateTradeRows({a, b});
+  EXPECT_DOUBLE_EQ(w.imageSsim, 0.8);
+  EXPECT_DOUBLE_EQ(w.imageColourDe, 4.0);
+  const std::string csv = tradeCsv({a, w});
+  EXPECT_NE(csv.find(",truth_unresolved,ssim,colour_de2000\n"), std::string::npos);
+  EXPECT_NE(csv.find(",0.8000,2.50\n"), std::string::npos);
+  TradeRow none;
+  none.config = "old";
+  EXPECT_NE(tradeCsv({none}).find(",,\n"), std::string::npos);
+  const std::string svg = paretoImageSvg({a, b, w}, "image");
+  EXPECT_NE(svg.find("1 - SSIM"), std::string::npos);
+  EXPECT_NE(svg.find(">fast</text>"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace globe
