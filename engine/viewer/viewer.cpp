@@ -331,6 +331,9 @@ void Viewer::State::reportReload(const ReloadOutcome& outcome) {
       terrainWarnings.reset();
       message = "reloaded " + file;
       printLine("planet reloaded: " + file + when);
+    } else if (outcome.buildingTables) {
+      message = "building the new planet's atmosphere tables (once; ~20 s on a CPU)";
+      printLine("planet changed: " + file + when + "; building its atmosphere tables, the last planet stays meanwhile");
     } else {
       printLine("planet unchanged: " + file + when);
     }

@@ -69,26 +69,57 @@ void ViewerScene::moveSun(const glm::dvec3& position_m, double azimuth_deg, doub
 }
 
 std::optional<ReloadOutcome> ViewerScene::pollReload(PlanetFileWatcher::Clock::time_point now) {
-  if (!watcher_ || !watcher_->changed(now)) return std::nullopt;
-  PlanetFileCheck check = checkPlanetFile(watcher_->path());
-  ReloadOutcome outcome;
-  if (!check.ok()) {
-    outcome.errors = std::move(check.errors);
+  if (watcher_ && watcher_->changed(now)) {
+    PlanetFileCheck check = checkPlanetFile(watcher_->path());
+    if (!check.ok()) {
+      ReloadOutcome outcome;
+      outcome.errors = std::move(check.errors);
+      return outcome;
+    }
+    if (check.planet == planet_ && !pending_) {
+      ReloadOutcome outcome;
+      outcome.unchanged = true;  // saved without a change (or back to the planet on screen)
+      return outcome;
+    }
+    pending_ = std::move(check.planet);  // the latest valid save wins
+  }
+  if (!pending_ || (tableBuild_ && !tableBuild_->done())) return std::nullopt;
+  if (tableBuild_) {
+    // A failed build leaves the tables to the new terrain (computed on this thread, as before);
+    // validation messages count as the viewer's own.
+    if (const auto& failure = tableBuild_->failure(); failure && failure->starts_with("validation: "))
+      device_.validation().record(VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT, *failure);
+    tableBuild_.reset();
+  } else if (options_.mode == ViewerMode::kTerrain) {
+    const ElevationModel next(*pending_);
+    if (atmosphereTablesMissing(next, options_.terrain)) {
+      tableBuild_ = std::make_unique<AtmosphereTableBuild>(device_, *next.atmosphere(), next.radius_m());
+      ReloadOutcome outcome;
+      outcome.buildingTables = true;
+      return outcome;
+    }
+  }
+  PlanetDescription next = std::move(*pending_);
+  pending_.reset();
+  if (next == planet_) {
+    ReloadOutcome outcome;
+    outcome.unchanged = true;
     return outcome;
   }
-  if (check.planet == planet_) {
-    outcome.unchanged = true;  // saved without a change (or back to the planet on screen)
-    return outcome;
-  }
+  return switchTo(std::move(next));
+}
+
+ReloadOutcome ViewerScene::switchTo(PlanetDescription next) {
   // A new planet: everything derived from the old one goes. The old terrain's payload buffer and
   // per-frame buffers may still be read by frames in flight, so wait for them; destroying the
   // Terrain frees its whole pool at once (no slot can outlive it), and the new Terrain generates
   // the payloads the view asks for from scratch. A reload is a rare, user-initiated event: one
   // device wait is cheaper to reason about than retiring a Terrain through the release queue.
+  ReloadOutcome outcome;
   GLOBE_VK_CHECK(vkDeviceWaitIdle(device_.device()));
   terrain_.reset();
   PlanetDescription previous = std::move(planet_);
-  planet_ = std::move(check.planet);
+  planet_ = std::move(next);
   model_ = std::make_unique<ElevationModel>(planet_);
   if (options_.mode == ViewerMode::kTerrain) {
     if (Status s = buildTerrain(); !s) {

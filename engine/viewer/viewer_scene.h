@@ -7,6 +7,7 @@
 #include "engine/render/sphere_grid.h"
 #include "engine/render/sphere_preview.h"
 #include "engine/render/terrain.h"
+#include "engine/viewer/atmosphere_table_build.h"
 #include "engine/viewer/planet_file_watcher.h"
 #include "engine/vk/device.h"
 #include "planet/analysis/frame_stats.h"
@@ -34,9 +35,10 @@ struct ViewerSceneOptions {
 
 // What a reload did, for the frame loop's messages.
 struct ReloadOutcome {
-  bool reloaded = false;      // the new planet is live
-  bool unchanged = false;     // the file is valid and describes the planet already shown
-  std::vector<Error> errors;  // the file is invalid; the last good planet stays
+  bool reloaded = false;        // the new planet is live
+  bool unchanged = false;       // the file is valid and describes the planet already shown
+  bool buildingTables = false;  // valid and new: its atmosphere tables are being built, the old planet stays
+  std::vector<Error> errors;    // the file is invalid; the last good planet stays
 };
 
 class ViewerScene {
@@ -47,8 +49,10 @@ class ViewerScene {
   ViewerScene(const ViewerScene&) = delete;
   ViewerScene& operator=(const ViewerScene&) = delete;
 
-  // Checks the planet file (at most every 250 ms) and reloads it when it changed. A reload waits
-  // for the device to go idle (the old terrain's buffers may be in use by frames in flight).
+  // Checks the planet file (at most every 250 ms) and reloads it when it changed. A planet whose
+  // atmosphere tables are not cached has them built first off the frame thread
+  // (AtmosphereTableBuild), the old planet drawn meanwhile; the reload itself waits for the device
+  // to go idle (the old terrain's buffers may be in use by frames in flight).
   std::optional<ReloadOutcome> pollReload(PlanetFileWatcher::Clock::time_point now);
 
   // CPU part of viewer frame `frame`; `completedFrame` as for Terrain::update. Terrain only.
@@ -96,6 +100,9 @@ class ViewerScene {
  private:
   ViewerScene(vk::Device& device, ViewerSceneOptions options);
   Status buildTerrain();
+  // Makes `next` the planet on screen (a new model and terrain); back to the old one when the
+  // terrain refuses it.
+  ReloadOutcome switchTo(PlanetDescription next);
 
   vk::Device& device_;
   ViewerSceneOptions options_;
@@ -105,6 +112,8 @@ class ViewerScene {
   std::unique_ptr<SpherePreview> preview_;  // sphere mode
   std::unique_ptr<SphereGrid> grid_;
   std::optional<PlanetFileWatcher> watcher_;
+  std::optional<PlanetDescription> pending_;          // valid, new, waiting for its tables
+  std::unique_ptr<AtmosphereTableBuild> tableBuild_;  // pending_'s tables, being built
   TerrainDebugView debug_ = TerrainDebugView::kShaded;
   bool sphereGrid_ = false;
   FrameStats stats_;
