@@ -28,7 +28,18 @@ Result<ImageRgba> renderTerrain(vk::Device& device, const Camera& camera, const 
   auto terrain = Terrain::create(device, model, settings);
   if (!terrain) return budgetOptionError(terrain.error());
   HeadlessRenderer renderer(device, {width, height});
-  FrameStats stats = renderer.renderFrame(**terrain, camera, true);
+  // Converging can take tens of seconds (`exact`): the share of the payloads asked for so far that
+  // are done, never moving back though each round may reveal finer nodes to ask for.
+  ProgressBar bar("converging");
+  uint64_t done = 0;
+  double shown = 0.0;
+  FrameStats stats = renderer.renderFrame(**terrain, camera, true, [&](const FrameStats& round) {
+    done += round.gen_completed;
+    const double waiting = double(round.queue_length) + double(round.gen_in_flight);
+    shown = std::max(shown, double(done) / std::max(1.0, double(done) + waiting));
+    bar.update(shown);
+  });
+  bar.finish();
   TerrainWarnings warnings;
   printNewWarnings(warnings, **terrain);
   std::printf("%u nodes (%u partial), %llu triangles, %u payloads resident (%.1f MiB), frame %.1f ms (GPU %.1f ms)\n",

@@ -43,7 +43,8 @@ HeadlessRenderer::HeadlessRenderer(vk::Device& device, VkExtent2D extent)
       fence_(vk::createFence(device.device())),
       queries_(vk::createTimestampQueryPool(device.device(), kQueryCount)) {}
 
-FrameStats HeadlessRenderer::renderFrame(Terrain& terrain, const Camera& camera, bool converge) {
+FrameStats HeadlessRenderer::renderFrame(Terrain& terrain, const Camera& camera, bool converge,
+                                         const std::function<void(const FrameStats&)>& onRound) {
   auto start = std::chrono::steady_clock::now();
   // Every earlier frame has completed: this loop waits for each frame before the next.
   ++frame_;
@@ -57,6 +58,7 @@ FrameStats HeadlessRenderer::renderFrame(Terrain& terrain, const Camera& camera,
       terrain.waitForGeneration();
       ++frame_;
       const FrameStats& progress = terrain.update(frame_, camera, frame_ - 1);
+      if (onRound) onRound(progress);
       if (progress.gen_dispatched == 0 && progress.gen_in_flight == 0 && progress.gen_completed == 0) break;
     }
     // Converged frames measure drawing alone (the source's "data instantly available" mode).

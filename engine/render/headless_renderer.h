@@ -6,6 +6,7 @@
 #include "engine/vk/offscreen_target.h"
 
 #include <array>
+#include <functional>
 #include <memory>
 
 namespace globe {
@@ -17,7 +18,10 @@ class HeadlessRenderer {
   // One frame at `camera`. With `converge`, first runs update/generation rounds (not drawn) until
   // the view needs nothing more — every payload resident, no fallback — isolating render cost.
   // Returns the frame's statistics.
-  FrameStats renderFrame(Terrain& terrain, const Camera& camera, bool converge);
+  // `onRound`, when given, is called after each converging round with its statistics (progress
+  // for a person waiting on a slow preset: `exact` converges for 10-40 s on lavapipe).
+  FrameStats renderFrame(Terrain& terrain, const Camera& camera, bool converge,
+                         const std::function<void(const FrameStats&)>& onRound = {});
 
   // The target follows the terrain's anti-aliasing: a frame of a terrain with another one than the
   // last frame's remakes it (TerrainSettings::antialiasing).
