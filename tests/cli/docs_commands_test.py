@@ -9,7 +9,8 @@ assets/, tests/ and scripts/ linked in, so the commands run as written from the 
 A block whose lines start with `$ ` runs only those lines (the rest is their output). Blocks fenced
 as ```text are synopses and not run; a block fenced with `file=NAME` (```toml file=bad.toml) is
 written to NAME for the commands after it. A command ending in `# exits N` must exit with N, every
-other one with 0. `globe` is a wrapper that makes the work small (docs_globe_wrapper.py): frame
+other one with 0, and none may hit a budget (a `globe: warning:` about a budget or a pool: each
+preset must fit its own defaults at every camera the docs show, issue 37 item 8). `globe` is a wrapper that makes the work small (docs_globe_wrapper.py): frame
 sizes, path rates, frame counts; the commands are otherwise the documents' own.
 """
 import os
@@ -79,6 +80,9 @@ def script_for(document, source):
                 f"dt=$(awk -v a=$t0 -v b=$EPOCHREALTIME 'BEGIN {{ printf \"%.1f\", b - a }}')\n"
                 f"if [[ $code -ne {code} ]]; then echo \"FAIL ({where}, exit $code, want {code}):\" {shlex.quote(command)}; "
                 f"tail -5 \"$LOGS/{runs}.log\"; failures=$((failures + 1))\n"
+                f"elif grep -q '^globe: warning: .*\\(budget\\|pool\\)' \"$LOGS/{runs}.log\"; then "
+                f"echo \"FAIL ({where}, a budget hit):\" {shlex.quote(command)}; grep '^globe: warning' \"$LOGS/{runs}.log\"; "
+                f"failures=$((failures + 1))\n"
                 f"else echo \"ok ($dt s) {where}:\" {shlex.quote(command[:110])}; fi"
             )
             runs += 1
