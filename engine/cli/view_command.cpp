@@ -42,6 +42,7 @@ struct ViewCommandOptions {
   std::string path;  // camera path to fly, or empty for the fly camera
   bool holdAtPathEnd = false;
   std::string frameTimes;  // CSV written at exit, or empty
+  std::string bookmarks;   // empty: defaultBookmarksPath()
 };
 
 // A directory option that must exist.
@@ -82,6 +83,10 @@ Status checkViewerOptions(const ViewCommandOptions& o, ViewerOptions& viewer) {
     if (auto s = checkWritable(o.frameTimes, "--frame-times"); !s) return s;
     viewer.frameTimesPath = o.frameTimes;
   }
+  viewer.bookmarksPath = o.bookmarks.empty() ? defaultBookmarksPath() : o.bookmarks;
+  auto bookmarks = loadBookmarks(viewer.bookmarksPath);
+  if (!bookmarks) return bookmarks.error();
+  viewer.bookmarks = std::move(*bookmarks);
   if (auto s = checkDirectory(o.recordDir, "--record-dir"); !s) return s;
   viewer.recordDirectory = o.recordDir;
   if (!o.record.empty()) {
@@ -225,8 +230,12 @@ void addViewCommand(CLI::App& app, Runner& run) {
   cmd->add_option("--path", opts->path,
                   "Fly this camera path (docs/camera-paths.md) in real time, then quit at its end");
   cmd->add_flag("--hold", opts->holdAtPathEnd, "With --path: stay open at the path's last pose");
-  cmd->add_option("--frame-times", opts->frameTimes,
-                  "Write per-frame times to FILE.csv at exit (frame, wall_s, path_t_s, frame_ms, nodes, triangles)");
+  cmd->add_option(
+      "--frame-times", opts->frameTimes,
+      "Write per-frame times to FILE.csv at exit (frame, times, nodes, triangles, GPU time, camera; docs/viewer.md)");
+  cmd->add_option("--bookmarks", opts->bookmarks,
+                  "Bookmarks file: M saves the view there, 1-9 go back (default "
+                  "$XDG_CONFIG_HOME/globe/bookmarks.txt or ~/.config/globe/bookmarks.txt)");
   addDeviceFlags(*cmd, opts->device);
   cmd->callback([opts, &run] { run = [opts] { return runView(*opts); }; });
 }

@@ -19,8 +19,9 @@ std::string fixed(double value, int decimals) {
 
 }  // namespace
 
-void FrameTimeLog::add(double wall_s, double path_t_s, double frame_ms, const FrameStats& stats) {
-  rows_.push_back({wall_s, path_t_s, frame_ms, stats.nodes_selected, stats.triangles});
+void FrameTimeLog::add(double wall_s, double path_t_s, double frame_ms, const FrameStats& stats,
+                       const GeodeticPose& pose) {
+  rows_.push_back({wall_s, path_t_s, frame_ms, stats.nodes_selected, stats.triangles, stats.gpu_ms, pose});
 }
 
 std::string FrameTimeLog::summaryLine() const {
@@ -37,11 +38,15 @@ std::string FrameTimeLog::summaryLine() const {
 }
 
 std::string FrameTimeLog::csv() const {
-  std::string out = "frame,wall_s,path_t_s,frame_ms,nodes_selected,triangles\n";
+  std::string out =
+      "frame,wall_s,path_t_s,frame_ms,nodes_selected,triangles,gpu_ms,height_m,latitude_deg,longitude_deg,"
+      "heading_deg,pitch_deg\n";
   for (std::size_t i = 0; i < rows_.size(); ++i) {
     const Row& r = rows_[i];
     out += std::to_string(i) + ',' + fixed(r.wall_s, 6) + ',' + fixed(r.path_t_s, 6) + ',' + fixed(r.frame_ms, 4) +
-           ',' + std::to_string(r.nodes) + ',' + std::to_string(r.triangles) + '\n';
+           ',' + std::to_string(r.nodes) + ',' + std::to_string(r.triangles) + ',' + fixed(r.gpu_ms, 4) + ',' +
+           fixed(r.pose.height_m, 4) + ',' + fixed(r.pose.latitude_deg, 7) + ',' + fixed(r.pose.longitude_deg, 7) +
+           ',' + fixed(r.pose.heading_deg, 3) + ',' + fixed(r.pose.pitch_deg, 3) + '\n';
   }
   return out;
 }

@@ -12,6 +12,7 @@ struct InputEvent {
     kMouseMove,    // cursor position (x, y) in window pixels, origin top-left
     kResize,       // request a window size (x, y) in pixels (scripts only)
     kWaitReload,   // hold the frame loop until the planet file changes (scripts only: live-reload tests)
+    kChar,         // a typed character: `code` is its Unicode code point (the go-to line)
   };
   Type type = Type::kKey;
   int code = 0;

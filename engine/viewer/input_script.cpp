@@ -50,11 +50,15 @@ int keyCodeFromName(const std::string& name) {
       {"ESC", GLFW_KEY_ESCAPE},
       {"SPACE", GLFW_KEY_SPACE},
       {"ENTER", GLFW_KEY_ENTER},
+      {"BACKSPACE", GLFW_KEY_BACKSPACE},
       {"TAB", GLFW_KEY_TAB},
       {"LEFT_SHIFT", GLFW_KEY_LEFT_SHIFT},
       {"SHIFT", GLFW_KEY_LEFT_SHIFT},
       {"RIGHT_SHIFT", GLFW_KEY_RIGHT_SHIFT},
       {"LEFT_CONTROL", GLFW_KEY_LEFT_CONTROL},
+      {"CONTROL", GLFW_KEY_LEFT_CONTROL},
+      {"CTRL", GLFW_KEY_LEFT_CONTROL},
+      {"RIGHT_CONTROL", GLFW_KEY_RIGHT_CONTROL},
       {"UP", GLFW_KEY_UP},
       {"DOWN", GLFW_KEY_DOWN},
       {"LEFT", GLFW_KEY_LEFT},
@@ -114,12 +118,22 @@ Result<InputScript> parseInputScript(const std::string& text, const std::string&
           e.event.y != std::floor(e.event.y))
         return fail("expected 'FRAME RESIZE W H' with whole W, H within [16, 16384] pixels");
       e.event.type = InputEvent::Type::kResize;
+    } else if (verb == "TEXT") {
+      // One character event per character, as typing them would send (the go-to line).
+      if (w.size() != 3) return fail("expected 'FRAME TEXT CHARACTERS' (no spaces)");
+      e.event.type = InputEvent::Type::kChar;
+      e.event.down = true;
+      for (unsigned char ch : w[2]) {
+        e.event.code = ch;
+        script.events.push_back(e);
+      }
+      continue;
     } else if (verb == "WAIT") {
       if (w.size() != 3 || upper(w[2]) != "RELOAD") return fail("expected 'FRAME WAIT RELOAD'");
       e.event.type = InputEvent::Type::kWaitReload;
     } else {
       return fail("unknown event '" + (w.size() > 1 ? w[1] : std::string()) +
-                  "' (expected KEY, MOUSE, RESIZE or WAIT)");
+                  "' (expected KEY, TEXT, MOUSE, RESIZE or WAIT)");
     }
     script.events.push_back(e);
   }

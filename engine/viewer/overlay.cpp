@@ -79,6 +79,50 @@ vk::UniqueDescriptorPool createOverlayDescriptorPool(VkDevice dev) {
   return vk::UniqueDescriptorPool(dev, pool);
 }
 
+// The keys, for the help panel (F2/I); docs/viewer.md has the same table.
+constexpr const char* kKeyHelp[][2] = {
+    {"W / S", "forward / back along the view"},
+    {"A / D", "left / right"},
+    {"Q / E", "down (stops at eye height, 2 m) / up"},
+    {"Shift", "10x faster"},
+    {"Ctrl", "10x slower; Ctrl+Q goes below eye height"},
+    {"left drag", "turn and pitch"},
+    {"G", "go to LAT,LON[,HEIGHT] (type, Enter; Esc cancels)"},
+    {"M", "bookmark the view"},
+    {"1 - 9", "go to bookmark N"},
+    {"H / K", "sun azimuth -/+ 15 degrees"},
+    {"U / J", "sun up / down 5 degrees"},
+    {"F1 / L", "debug view"},
+    {"F12 / P", "screenshot"},
+    {"R", "record a camera path"},
+    {"B", "drop a body"},
+    {"F2 / I", "this help"},
+    {"Esc", "quit"},
+};
+
+constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                                         ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                                         ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove;
+
+// Top right: the keys, then the bookmarks.
+void buildHelp(const OverlayView& v) {
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(viewport->WorkSize.x - 8, 8), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
+  ImGui::SetNextWindowBgAlpha(0.65f);
+  if (ImGui::Begin("keys", nullptr, kPanelFlags)) {
+    for (const auto& [key, action] : kKeyHelp) {
+      ImGui::TextUnformatted(key);
+      ImGui::SameLine(90);
+      ImGui::TextUnformatted(action);
+    }
+    ImGui::Separator();
+    ImGui::TextDisabled("bookmarks (%s):", v.bookmarksPath.c_str());
+    if (v.bookmarks.empty()) ImGui::TextDisabled("none yet: M saves the view");
+    for (const std::string& b : v.bookmarks) ImGui::TextUnformatted(b.c_str());
+  }
+  ImGui::End();
+}
+
 }  // namespace
 
 Overlay::Overlay(vk::Device& device, Window& window, const vk::Swapchain& swapchain) : device_(device) {
@@ -160,10 +204,7 @@ void Overlay::build(const OverlayView& v) {
     ImGui::GetBackgroundDrawList()->AddCircleFilled(ImVec2(d.x_px, d.y_px), d.radius_px, kBodyColours[d.shape % 3]);
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_Always);
   ImGui::SetNextWindowBgAlpha(0.55f);
-  ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
-                           ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
-                           ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove;
-  if (ImGui::Begin("globe", nullptr, flags)) {
+  if (ImGui::Begin("globe", nullptr, kPanelFlags)) {
     const FrameStats& s = v.stats;
     double fps = s.frame_ms > 0 ? 1000.0 / s.frame_ms : 0.0;
     if (s.gpu_ms > 0)
@@ -172,15 +213,18 @@ void Overlay::build(const OverlayView& v) {
       ImGui::Text("frame %.2f ms (%.0f fps)  select %.2f ms", s.frame_ms, fps, s.select_ms);
     ImGui::Text("altitude %s  lat %.5f  lon %.5f", formatDistance(v.altitude_m).c_str(), v.latitude_deg,
                 v.longitude_deg);
-    ImGui::Text("speed %s/s", formatDistance(v.speed_mps).c_str());
+    ImGui::Text("heading %.1f  pitch %.1f  speed %s/s", v.heading_deg, v.pitch_deg,
+                formatDistance(v.speed_mps).c_str());
     ImGui::Text("nodes %u (%u partial)  triangles %llu  draws %u", s.nodes_selected, s.nodes_partial,
                 static_cast<unsigned long long>(s.triangles), s.draw_calls);
     ImGui::Text("generation: queue %u  dispatched %u  in flight %u  done %u", s.queue_length, s.gen_dispatched,
                 s.gen_in_flight, s.gen_completed);
     ImGui::Text("memory %.1f MiB resident  evicted %u", s.resident_mib, s.evicted);
     ImGui::TextDisabled("%s | %s", v.planet.c_str(), v.deviceName.c_str());
-    ImGui::TextDisabled("F1/L view: %s | F12/P screenshot | R record path | B drop a body | Esc quit",
-                        v.debugView.c_str());
+    ImGui::TextDisabled("view: %s | F2/I keys | G go to | M bookmark | Esc quit", v.debugView.c_str());
+    if (v.typing)
+      ImGui::TextColored(ImVec4(1.0f, 0.9f, 0.4f, 1.0f), "go to: %s_  (LAT,LON[,HEIGHT]; Enter, Esc)", v.typed.c_str());
+    if (!v.hint.empty()) ImGui::TextColored(ImVec4(0.5f, 0.85f, 1.0f, 1.0f), "%s", v.hint.c_str());
     if (!v.recording.empty()) ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "%s", v.recording.c_str());
     if (!v.message.empty()) ImGui::TextUnformatted(v.message.c_str());
     if (!v.errors.empty()) {
@@ -191,6 +235,7 @@ void Overlay::build(const OverlayView& v) {
     }
   }
   ImGui::End();
+  if (v.help) buildHelp(v);
   ImGui::Render();
 }
 

@@ -33,7 +33,15 @@ struct OverlayView {
   double altitude_m = 0;  // camera height above the ground below it
   double latitude_deg = 0;
   double longitude_deg = 0;
-  double speed_mps = 0;   // fly speed at this altitude (metres per second)
+  double heading_deg = 0;              // clockwise from north
+  double pitch_deg = 0;                // above the horizontal
+  double speed_mps = 0;                // fly speed at this altitude (metres per second)
+  std::string hint;                    // what to do now (e.g. over open sea near the surface), or empty
+  bool help = false;                   // F2/I: the key help panel
+  bool typing = false;                 // G: the go-to line is open
+  std::string typed;                   // its text
+  std::vector<std::string> bookmarks;  // "N  LAT, LON, HEIGHT  NAME", for the help panel
+  std::string bookmarksPath;
   std::string debugView;  // F1/L state: "shaded", "LOD colours", "wireframe" (sphere: "grid"/"sphere")
   std::string deviceName;
   std::string planet;               // planet name and file

@@ -5,6 +5,7 @@
 // display encoding of shaders/include/display_encoding.h), draws the overlay on top and presents, with two frames in
 // flight. Input comes from the window and, for tests, from an input script. The planet file is watched and reloaded
 // when it changes (engine/viewer/viewer_scene.h); R records the flight as a camera path.
+#include "engine/viewer/bookmarks.h"
 #include "engine/viewer/input_script.h"
 #include "engine/viewer/viewer_scene.h"
 #include "engine/vk/device.h"
@@ -35,8 +36,10 @@ struct ViewerOptions {
   // Fly this camera path instead of the fly camera: path time follows the wall clock from the first
   // frame (1/60 s per frame with fixedStep), and the viewer quits once it has drawn the path's end.
   std::optional<CameraPath> path;
-  bool holdAtPathEnd = false;  // stay open at the path's last pose instead of quitting there
-  std::string frameTimesPath;  // per-frame times written here at exit (CSV) when not empty
+  bool holdAtPathEnd = false;       // stay open at the path's last pose instead of quitting there
+  std::string frameTimesPath;       // per-frame times written here at exit (CSV) when not empty
+  std::string bookmarksPath;        // where M saves the view (engine/viewer/bookmarks.h)
+  std::vector<Bookmark> bookmarks;  // read from it at the start
 };
 
 class Viewer {

@@ -207,4 +207,8 @@ double ViewerScene::groundRadius(const glm::dvec3& unitDirection) const {
   return terrain_->cameraGroundRadius(unitDirection);
 }
 
+bool ViewerScene::seaBelow(const glm::dvec3& unitDirection) const {
+  return terrain_ && model_->drawsWater() && model_->elevation_m(unitDirection) < model_->seaLevel_m();
+}
+
 }  // namespace globe

@@ -80,6 +80,8 @@ class ViewerScene {
   // A camera move from `from_m` towards `to_m` that never passes through the terrain (exact surface
   // ray cast, then above the drawn mesh too; TerrainQueries::guardedMove). Sphere mode: `to_m`.
   glm::dvec3 guardedCameraMove(const glm::dvec3& from_m, const glm::dvec3& to_m, double clearance_m) const;
+  // Open water below a unit direction: the planet has a sea and the ground there is below it (terrain only).
+  bool seaBelow(const glm::dvec3& unitDirection) const;
   double radius_m() const { return model_->radius_m(); }
   const Ellipsoid& shape() const { return model_->shape(); }
   // The geodetic normal below a planet-fixed point (the direction from the centre on a sphere).

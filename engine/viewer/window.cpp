@@ -51,6 +51,7 @@ Window::Window(uint32_t width_px, uint32_t height_px, const std::string& title) 
   glfwSetKeyCallback(window_, &Window::onKey);
   glfwSetMouseButtonCallback(window_, &Window::onMouseButton);
   glfwSetCursorPosCallback(window_, &Window::onCursor);
+  glfwSetCharCallback(window_, &Window::onChar);
   glfwSetFramebufferSizeCallback(window_, &Window::onFramebufferSize);
 }
 
@@ -105,6 +106,10 @@ void Window::onMouseButton(GLFWwindow* w, int button, int action, int) {
 
 void Window::onCursor(GLFWwindow* w, double x, double y) {
   self(w)->pending_.push_back({InputEvent::Type::kMouseMove, 0, false, x, y});
+}
+
+void Window::onChar(GLFWwindow* w, unsigned int codepoint) {
+  self(w)->pending_.push_back({InputEvent::Type::kChar, int(codepoint), true, 0, 0});
 }
 
 void Window::onFramebufferSize(GLFWwindow* w, int, int) { self(w)->resized_ = true; }

@@ -45,6 +45,7 @@ class Window {
   static void onKey(GLFWwindow* w, int key, int scancode, int action, int mods);
   static void onMouseButton(GLFWwindow* w, int button, int action, int mods);
   static void onCursor(GLFWwindow* w, double x, double y);
+  static void onChar(GLFWwindow* w, unsigned int codepoint);
   static void onFramebufferSize(GLFWwindow* w, int width, int height);
 
   GLFWwindow* window_ = nullptr;

@@ -84,7 +84,7 @@ elif [[ ! -f "$WORK/times.csv" ]]; then
   fail "--frame-times wrote no file"
 else
   frames=$(echo "$exit_line" | cut -d' ' -f2)
-  [[ $(head -1 "$WORK/times.csv") == "frame,wall_s,path_t_s,frame_ms,nodes_selected,triangles" ]] ||
+  [[ $(head -1 "$WORK/times.csv") == "frame,wall_s,path_t_s,frame_ms,nodes_selected,triangles,gpu_ms,height_m,latitude_deg,longitude_deg,heading_deg,pitch_deg" ]] ||
     fail "frame-times header: $(head -1 "$WORK/times.csv")"
   [[ $(($(wc -l <"$WORK/times.csv") - 1)) -eq $frames ]] || fail "frame-times rows differ from the $frames frames"
   [[ $frames -ge 2 ]] || fail "a path flight of $frames frame(s)"
@@ -132,6 +132,9 @@ expect_usage "--screenshot-format: .*" --screenshot-format jpg
 { cat "$(dirname "$SCRIPT")/../../assets/planets/earthlike.toml"; printf 'no_such_key = 1\n'; } >"$WORK/bad_planet.toml"
 expect_usage "bad_planet.toml:[0-9]+:1: .*no_such_key" --planet "$WORK/bad_planet.toml"
 expect_usage "--max-nodes: .*" --max-nodes 0.5
+printf '# mine\n1,2,3 short\n' >"$WORK/bad_bookmarks.txt"
+expect_usage "bad_bookmarks.txt:2: place: expected LAT,LON,HEIGHT,HEADING,PITCH,ROLL, got '1,2,3'" \
+  --bookmarks "$WORK/bad_bookmarks.txt"
 
 # A runaway planet within a frame budget: the viewer says so once (stderr and overlay), exit 0.
 RUNAWAY="$(dirname "$SCRIPT")/../data/runaway.toml"
