@@ -5,7 +5,7 @@
 // Compare with the CPU reference and libnoise: build/release/bin/planet_bench --benchmark_filter='Elevation|Libnoise'
 #include "bench_support.h"
 #include "engine/generation/elevation_sampler.h"
-#include "engine/generation/payload_generator.h"
+#include "engine/generation/gpu_payload_generator.h"
 #include "planet/elevation/planet_file.h"
 
 #include <benchmark/benchmark.h>

@@ -1,13 +1,13 @@
 // globe trade: measures the speed/accuracy trade of the terrain settings (docs/tradeoffs.md). Each
 // configuration is rendered converged at each camera; frame time, selection time, triangles, memory
 // and generation cost are recorded, and the read-back depth is compared with the exact planet
-// (engine/render/screen_error.h), the picture with the converged `exact` image (trade_images.h).
+// (engine/render/frame_screen_error.h), the picture with the converged `exact` image (trade_images.h).
 // Writes DIR/trade.csv, DIR/pareto.svg and DIR/pareto-image.svg, all or none.
 #include "commands.h"
+#include "engine/render/frame_screen_error.h"
 #include "engine/render/headless_renderer.h"
 #include "engine/render/quality.h"
 #include "engine/render/render_output.h"
-#include "engine/render/screen_error.h"
 #include "engine/report/bench_metrics.h"
 #include "engine/report/trade_report.h"
 #include "engine/vk/device.h"

@@ -10,7 +10,7 @@
 // the default: a slow GPU never stalls a physics step), or, with `latencySteps` N >= 1, exactly the
 // generations started N collect() calls ago, waiting for their fences if needed: then which step a
 // mesh arrives at never depends on GPU timing (deterministic runs). generateNow() waits for one node.
-#include "engine/generation/payload_generator.h"
+#include "engine/generation/gpu_payload_generator.h"
 #include "engine/vk/device.h"
 #include "engine/vk/vk_handles.h"
 #include "planet/physics/collision_mesh.h"

@@ -1,6 +1,6 @@
 #include "engine/render/headless_renderer.h"
 
-#include "engine/vk/fault_injection.h"
+#include "engine/vk/submit_faults.h"
 #include "engine/vk/vk_check.h"
 #include "engine/vk/vk_create.h"
 

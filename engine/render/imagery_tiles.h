@@ -5,7 +5,7 @@
 // (planet/imagery/imagery_selection.h), run every frame after the mesh's. The drawn nodes' cell
 // tables go to the GPU in one host-visible buffer per frame in flight; the _imagery fragment stages
 // sample the tile of each fragment's cell (terrain_fragment.glsl).
-#include "engine/generation/payload_generator.h"
+#include "engine/generation/gpu_payload_generator.h"
 #include "engine/vk/resources.h"
 #include "planet/camera/camera.h"
 #include "planet/elevation/elevation.h"

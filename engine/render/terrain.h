@@ -3,7 +3,7 @@
 // queue (planet/), GPU payload generation and the terrain draw (engine/). One object owns the
 // chain camera -> selection -> requests -> generation -> payloads -> draw -> stats, so the viewer,
 // the headless renderer and the benchmark run exactly the same frame.
-#include "engine/generation/payload_generator.h"
+#include "engine/generation/gpu_payload_generator.h"
 #include "engine/render/detail_texture_array.h"
 #include "engine/render/imagery_tiles.h"
 #include "engine/render/terrain_renderer.h"

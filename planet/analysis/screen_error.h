@@ -31,7 +31,7 @@ struct ScreenError {
 };
 
 // From per-pixel rendered ray distances (+inf = sky), width x height row-major (the read-back frame
-// overload is engine/render/screen_error.h; tests inject a known error here).
+// overload is engine/render/frame_screen_error.h; tests inject a known error here).
 ScreenError measureScreenError(const SurfaceTruth& truth, const std::vector<double>& renderedDistance_m,
                                const Camera& camera);
 

@@ -1,7 +1,7 @@
 #pragma once
 // The exact planet seen through a pixel: the view ray intersected with the CPU reference surface
 // (ElevationModel, double) by ray marching and bisection. This is the ground truth the screen-space
-// error of a rendered frame is measured against (engine/render/screen_error.h, docs/tradeoffs.md).
+// error of a rendered frame is measured against (engine/render/frame_screen_error.h, docs/tradeoffs.md).
 //
 // Marching (on an ellipsoid the height is the ellipsoidal one, along the normal below the point):
 // the ray enters the bounding sphere R + max elevation, then steps by the ray's height

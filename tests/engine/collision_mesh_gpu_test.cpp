@@ -2,7 +2,7 @@
 // payload of the same node (what is drawn), within one quantum of the CPU reference, seam-exact
 // between GPU meshes, deterministic hand-out in steps, and a short GPU physics run.
 #include "engine/collision/gpu_collision_mesh_source.h"
-#include "engine/generation/payload_generator.h"
+#include "engine/generation/gpu_payload_generator.h"
 #include "planet/physics/physics_scenario.h"
 #include "planet/streaming/payload_reference.h"
 #include "tests/support/gpu_test.h"

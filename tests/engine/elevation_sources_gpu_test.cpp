@@ -1,7 +1,7 @@
 // Real elevation sources on the GPU: payloads generated from the source terms the I/O thread
 // prepares equal the CPU reference (planet/streaming/payload_reference.h) to 1e-6 m, and a low
 // flight over the DEM never makes the frame loop wait for a tile (docs/elevation-data.md).
-#include "engine/generation/payload_generator.h"
+#include "engine/generation/gpu_payload_generator.h"
 #include "engine/render/headless_renderer.h"
 #include "engine/render/render_output.h"
 #include "engine/render/terrain.h"

@@ -1,6 +1,6 @@
 // Payload surface textures (docs/rendering.md, "Surface textures"): GPU texels against the CPU double
 // reference, agreement across node edges and face seams, and the pool's budget per slot.
-#include "engine/generation/payload_generator.h"
+#include "engine/generation/gpu_payload_generator.h"
 #include "planet/geometry/node_id.h"
 #include "planet/streaming/normal_map_reference.h"
 #include "planet/streaming/payload_pool.h"

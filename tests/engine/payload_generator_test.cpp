@@ -1,5 +1,5 @@
 // GPU payload generation against the CPU reference, seam agreement, and a flight through the pool.
-#include "engine/generation/payload_generator.h"
+#include "engine/generation/gpu_payload_generator.h"
 #include "planet/camera/camera.h"
 #include "planet/elevation/planet_file.h"
 #include "planet/geometry/triacontahedron.h"

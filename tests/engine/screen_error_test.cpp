@@ -1,7 +1,7 @@
-// The screen-space error metric (engine/render/screen_error.h) and its ground truth (planet/analysis/surface_ray.h):
-// the ray caster against analytic ray-sphere intersections, the metric against injected errors, and
-// a rendered frame of a sphere-shaped planet against its exact surface.
-#include "engine/render/screen_error.h"
+// The screen-space error metric (engine/render/frame_screen_error.h) and its ground truth
+// (planet/analysis/surface_ray.h): the ray caster against analytic ray-sphere intersections, the metric against
+// injected errors, and a rendered frame of a sphere-shaped planet against its exact surface.
+#include "engine/render/frame_screen_error.h"
 #include "engine/render/headless_renderer.h"
 #include "planet/analysis/surface_ray.h"
 #include "planet/elevation/planet_file.h"

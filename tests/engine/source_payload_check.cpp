@@ -1,6 +1,6 @@
 #include "tests/engine/source_payload_check.h"
 
-#include "engine/generation/payload_generator.h"
+#include "engine/generation/gpu_payload_generator.h"
 #include "planet/sources/request_preparer.h"
 #include "planet/streaming/payload_reference.h"
 #include "tests/support/payload_surface_check.h"

@@ -2,7 +2,7 @@
 // GPU payloads of a planet with [[sources]] against the CPU reference (fillPayloadReference): the
 // raster sources' test and the baked tilesets' (elevation_sources_gpu_test.cpp,
 // baked_source_test.cpp) share it.
-#include "engine/generation/payload_generator.h"
+#include "engine/generation/gpu_payload_generator.h"
 #include "engine/vk/device.h"
 #include "planet/elevation/elevation.h"
 #include "planet/geometry/node_id.h"

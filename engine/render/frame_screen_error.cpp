@@ -1,4 +1,4 @@
-#include "engine/render/screen_error.h"
+#include "engine/render/frame_screen_error.h"
 
 #include "engine/render/render_output.h"
 

@@ -1,4 +1,4 @@
-#include "engine/vk/fault_injection.h"
+#include "engine/vk/submit_faults.h"
 
 #include "planet/core/fault_injection.h"
 

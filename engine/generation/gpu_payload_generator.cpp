@@ -1,7 +1,7 @@
-#include "engine/generation/payload_generator.h"
+#include "engine/generation/gpu_payload_generator.h"
 
-#include "engine/vk/fault_injection.h"
 #include "engine/vk/resources.h"
+#include "engine/vk/submit_faults.h"
 #include "engine/vk/vk_check.h"
 #include "engine/vk/vk_create.h"
 #include "planet/geometry/face_mapping.h"
