@@ -204,6 +204,25 @@ void printBenchSummary(const BenchOptions& o, std::span<const BenchFrame> frames
       (unsigned long long)framesOverBudget(frames), kFrameBudgetMs, gpu.median, o.out.c_str());
 }
 
+// One sun for the whole flight, placed in the sky of the path's first keyframe (--sun, else the
+// path's own, else the default).
+Result<glm::dvec3> flightSun(const BenchOptions& o, const BenchInputs& in, const ElevationModel& model) {
+  const glm::dvec3 start = in.path.positionAt(
+      in.path.startTime_s(), [&](const glm::dvec3& d) { return model.radius_m() + model.visibleElevation_m(d); });
+  return sunFromOption(o.sun, start, in.path.keyframes().front().sun);
+}
+
+// The cold start, and where it went: device, terrain pipelines and buffers, warm-up, frame 0.
+void printColdStart(const BenchFlight& flight, const Terrain& terrain, double deviceReady_ms,
+                    double pipelinesReady_ms) {
+  const FrameStats& first = flight.firstFrame;
+  std::printf(
+      "first frame %.0f ms after process start: device %.0f ms, terrain set-up %.0f ms, frame 0 %.0f ms "
+      "(of which warm-up %.0f ms in %u rounds; %u nodes drawn)\n",
+      flight.firstFrame_ms, deviceReady_ms, pipelinesReady_ms - deviceReady_ms, first.frame_ms, terrain.primeWall_ms(),
+      terrain.primedRounds(), first.nodes_selected);
+}
+
 int runBench(const BenchOptions& o) {
   const std::string startedUtc = utcNowIso8601();
   const std::string loadAtStart = loadAverage();
@@ -213,13 +232,7 @@ int runBench(const BenchOptions& o) {
   if (model.sources() != nullptr && o.sourceRam_MiB > 0)
     model.sources()->cache().setBudget(std::size_t(o.sourceRam_MiB) << 20);
   TerrainSettings settings = in->settings;
-  // One sun for the whole flight, placed in the sky of the path's first keyframe (--sun, else the
-  // path's own, else the default).
-  auto sun = sunFromOption(
-      o.sun,
-      in->path.positionAt(in->path.startTime_s(),
-                          [&](const glm::dvec3& d) { return model.radius_m() + model.visibleElevation_m(d); }),
-      in->path.keyframes().front().sun);
+  auto sun = flightSun(o, *in, model);
   if (!sun) return usageError(sun.error());
   settings.style.sunDirection = *sun;
   vk::Device device(deviceOptions(o.device));
@@ -260,13 +273,7 @@ int runBench(const BenchOptions& o) {
     return kExitFailure;
   }
   if (int code = validationExitCode(device); code != kExitOk) return code;
-  // Cold start, and where it went: device, terrain pipelines and buffers, warm-up, frame 0.
-  const FrameStats& first = flight->firstFrame;
-  std::printf(
-      "first frame %.0f ms after process start: device %.0f ms, terrain set-up %.0f ms, frame 0 %.0f ms "
-      "(of which warm-up %.0f ms in %u rounds; %u nodes drawn)\n",
-      flight->firstFrame_ms, deviceReady_ms, pipelinesReady_ms - deviceReady_ms, first.frame_ms,
-      (*terrain)->primeWall_ms(), (*terrain)->primedRounds(), first.nodes_selected);
+  printColdStart(*flight, **terrain, deviceReady_ms, pipelinesReady_ms);
   if (const SourceMosaic* sources = model.sources())
     std::printf("%s\n", sourceStreamingSummary(*sources, (*terrain)->generator().sourceLatencies_s()).c_str());
   printBenchSummary(o, *rows);

@@ -76,66 +76,70 @@ int keyCodeFromName(const std::string& name) {
   return it == named.end() ? -1 : it->second;
 }
 
+namespace {
+
+// The events of one script line after its frame number (`w`: the line's words): appended to `out`;
+// the error message, or empty.
+std::string parseEvent(const std::vector<std::string>& w, std::vector<InputEvent>& out) {
+  InputEvent e;
+  std::string verb = w.size() > 1 ? upper(w[1]) : "";
+  if (verb == "KEY") {
+    if (w.size() != 4) return "expected 'FRAME KEY NAME down|up'";
+    e.code = keyCodeFromName(w[2]);
+    if (e.code < 0) return "unknown key '" + w[2] + "'";
+    e.type = InputEvent::Type::kKey;
+    if (!parseUpDown(w[3], e.down)) return "expected down or up, got '" + w[3] + "'";
+  } else if (verb == "MOUSE" && w.size() > 2 && upper(w[2]) == "MOVE") {
+    if (w.size() != 5 || !parseNumber(w[3], e.x) || !parseNumber(w[4], e.y))
+      return "expected 'FRAME MOUSE MOVE X Y' with X, Y in pixels";
+    e.type = InputEvent::Type::kMouseMove;
+  } else if (verb == "MOUSE") {
+    static const std::map<std::string, int> buttons = {
+        {"LEFT", GLFW_MOUSE_BUTTON_LEFT}, {"RIGHT", GLFW_MOUSE_BUTTON_RIGHT}, {"MIDDLE", GLFW_MOUSE_BUTTON_MIDDLE}};
+    if (w.size() != 4) return "expected 'FRAME MOUSE MOVE X Y' or 'FRAME MOUSE LEFT|RIGHT|MIDDLE down|up'";
+    auto it = buttons.find(upper(w[2]));
+    if (it == buttons.end()) return "unknown mouse button '" + w[2] + "'";
+    e.type = InputEvent::Type::kMouseButton;
+    e.code = it->second;
+    if (!parseUpDown(w[3], e.down)) return "expected down or up, got '" + w[3] + "'";
+  } else if (verb == "RESIZE") {
+    if (w.size() != 4 || !parseNumber(w[2], e.x) || !parseNumber(w[3], e.y) || e.x < 16 || e.y < 16 || e.x > 16384 ||
+        e.y > 16384 || e.x != std::floor(e.x) || e.y != std::floor(e.y))
+      return "expected 'FRAME RESIZE W H' with whole W, H within [16, 16384] pixels";
+    e.type = InputEvent::Type::kResize;
+  } else if (verb == "TEXT") {
+    // One character event per character, as typing them would send (the go-to line).
+    if (w.size() != 3) return "expected 'FRAME TEXT CHARACTERS' (no spaces)";
+    for (unsigned char ch : w[2]) out.push_back({InputEvent::Type::kChar, ch, true, 0, 0});
+    return "";
+  } else if (verb == "WAIT") {
+    if (w.size() != 3 || upper(w[2]) != "RELOAD") return "expected 'FRAME WAIT RELOAD'";
+    e.type = InputEvent::Type::kWaitReload;
+  } else {
+    return "unknown event '" + (w.size() > 1 ? w[1] : std::string()) + "' (expected KEY, TEXT, MOUSE, RESIZE or WAIT)";
+  }
+  out.push_back(e);
+  return "";
+}
+
+}  // namespace
+
 Result<InputScript> parseInputScript(const std::string& text, const std::string& file) {
   InputScript script;
   std::istringstream in(text);
   std::string line;
-  int lineNo = 0;
-  while (std::getline(in, line)) {
-    ++lineNo;
+  std::vector<InputEvent> events;
+  for (int lineNo = 1; std::getline(in, line); ++lineNo) {
     if (auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
     std::istringstream words(line);
     std::vector<std::string> w;
     for (std::string word; words >> word;) w.push_back(word);
     if (w.empty()) continue;
-    auto fail = [&](const std::string& message) { return Error::atLine(file, lineNo, message); };
-    ScriptedEvent e;
-    if (!parseFrame(w[0], e.frame)) return fail("expected a frame number, got '" + w[0] + "'");
-    std::string verb = w.size() > 1 ? upper(w[1]) : "";
-    if (verb == "KEY") {
-      if (w.size() != 4) return fail("expected 'FRAME KEY NAME down|up'");
-      int code = keyCodeFromName(w[2]);
-      if (code < 0) return fail("unknown key '" + w[2] + "'");
-      e.event.type = InputEvent::Type::kKey;
-      e.event.code = code;
-      if (!parseUpDown(w[3], e.event.down)) return fail("expected down or up, got '" + w[3] + "'");
-    } else if (verb == "MOUSE" && w.size() > 2 && upper(w[2]) == "MOVE") {
-      if (w.size() != 5 || !parseNumber(w[3], e.event.x) || !parseNumber(w[4], e.event.y))
-        return fail("expected 'FRAME MOUSE MOVE X Y' with X, Y in pixels");
-      e.event.type = InputEvent::Type::kMouseMove;
-    } else if (verb == "MOUSE") {
-      static const std::map<std::string, int> buttons = {
-          {"LEFT", GLFW_MOUSE_BUTTON_LEFT}, {"RIGHT", GLFW_MOUSE_BUTTON_RIGHT}, {"MIDDLE", GLFW_MOUSE_BUTTON_MIDDLE}};
-      if (w.size() != 4) return fail("expected 'FRAME MOUSE MOVE X Y' or 'FRAME MOUSE LEFT|RIGHT|MIDDLE down|up'");
-      auto it = buttons.find(upper(w[2]));
-      if (it == buttons.end()) return fail("unknown mouse button '" + w[2] + "'");
-      e.event.type = InputEvent::Type::kMouseButton;
-      e.event.code = it->second;
-      if (!parseUpDown(w[3], e.event.down)) return fail("expected down or up, got '" + w[3] + "'");
-    } else if (verb == "RESIZE") {
-      if (w.size() != 4 || !parseNumber(w[2], e.event.x) || !parseNumber(w[3], e.event.y) || e.event.x < 16 ||
-          e.event.y < 16 || e.event.x > 16384 || e.event.y > 16384 || e.event.x != std::floor(e.event.x) ||
-          e.event.y != std::floor(e.event.y))
-        return fail("expected 'FRAME RESIZE W H' with whole W, H within [16, 16384] pixels");
-      e.event.type = InputEvent::Type::kResize;
-    } else if (verb == "TEXT") {
-      // One character event per character, as typing them would send (the go-to line).
-      if (w.size() != 3) return fail("expected 'FRAME TEXT CHARACTERS' (no spaces)");
-      e.event.type = InputEvent::Type::kChar;
-      e.event.down = true;
-      for (unsigned char ch : w[2]) {
-        e.event.code = ch;
-        script.events.push_back(e);
-      }
-      continue;
-    } else if (verb == "WAIT") {
-      if (w.size() != 3 || upper(w[2]) != "RELOAD") return fail("expected 'FRAME WAIT RELOAD'");
-      e.event.type = InputEvent::Type::kWaitReload;
-    } else {
-      return fail("unknown event '" + (w.size() > 1 ? w[1] : std::string()) +
-                  "' (expected KEY, TEXT, MOUSE, RESIZE or WAIT)");
-    }
-    script.events.push_back(e);
+    uint64_t frame = 0;
+    if (!parseFrame(w[0], frame)) return Error::atLine(file, lineNo, "expected a frame number, got '" + w[0] + "'");
+    events.clear();
+    if (std::string why = parseEvent(w, events); !why.empty()) return Error::atLine(file, lineNo, why);
+    for (const InputEvent& e : events) script.events.push_back({frame, e});
   }
   std::stable_sort(script.events.begin(), script.events.end(),
                    [](const ScriptedEvent& a, const ScriptedEvent& b) { return a.frame < b.frame; });

@@ -110,6 +110,55 @@ Error fieldError(std::string field, std::string message) {
   return Error::inField(std::move(field), std::move(message));
 }
 
+// The errors of layer `i` (its fields, the precision rule once the radius is valid, a duplicate name).
+void appendLayerErrors(const PlanetDescription& planet, std::size_t i, bool radius_ok, std::vector<Error>& errors) {
+  auto fail = [&errors](std::string field, std::string message) {
+    errors.push_back(fieldError(std::move(field), std::move(message)));
+  };
+  const ElevationLayer& l = planet.layers[i];
+  const std::string p = fmt::format("layers[{}].", i);
+  bool octaves_ok = true;
+  if (l.octaves < 1 || l.octaves > kMaxOctavesPerLayer) {
+    fail(p + "octaves", fmt::format("must be in [1, {}]", kMaxOctavesPerLayer));
+    octaves_ok = false;
+  }
+  if (!(std::isfinite(l.wavelength_m) && l.wavelength_m > 0.0)) {
+    fail(p + "wavelength_m", "must be finite and > 0");
+    octaves_ok = false;
+  }
+  if (!(std::isfinite(l.lacunarity) && l.lacunarity > 1.0 && l.lacunarity <= 16.0)) {
+    fail(p + "lacunarity", "must be > 1 and <= 16");
+    octaves_ok = false;
+  }
+  if (!(std::isfinite(l.gain) && l.gain > 0.0 && l.gain <= 1.0)) fail(p + "gain", "must be > 0 and <= 1");
+  if (!inRange(l.amplitude_m, 0.0, 1e6)) fail(p + "amplitude_m", "must be within [0, 1e6] m");
+  if (!inRange(l.offset_m, -1e6, 1e6)) fail(p + "offset_m", "must be within [-1e6, 1e6] m");
+  if (l.modulated_by >= static_cast<int>(i) || l.modulated_by < -1) {
+    fail(p + "modulated_by", "must name an earlier layer");
+  }
+  if (l.modulated_by >= 0) {
+    if (!inRange(l.modulation_low_m, -1e7, 1e7)) fail(p + "modulation_low_m", "must be within [-1e7, 1e7] m");
+    if (!inRange(l.modulation_high_m, -1e7, 1e7) || !(l.modulation_high_m > l.modulation_low_m)) {
+      fail(p + "modulation_high_m", "must be > modulation_low_m and within [-1e7, 1e7] m");
+    }
+    if (!inRange(l.modulation_floor, 0.0, 1.0)) fail(p + "modulation_floor", "must be within [0, 1]");
+  }
+  // The precision rule only means something once the radius and the octave chain are valid.
+  const double finest = octaves_ok ? finestWavelength_m(l) : 1.0;
+  if (radius_ok && octaves_ok && !(planet.radius_m / finest <= kMaxLatticeCoordinate)) {
+    fail(p + "octaves", fmt::format("too many octaves for double precision at this radius: finest "
+                                    "wavelength {:g} m, radius / wavelength must be <= 2^40 (at most {} "
+                                    "octaves here)",
+                                    finest, maxOctavesForPrecision(planet.radius_m, l)));
+  }
+  for (std::size_t j = 0; j < i; ++j) {
+    if (planet.layers[j].name == l.name) {
+      fail(p + "name", fmt::format("duplicate layer name '{}'", l.name));
+      break;
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<Error> validatePlanetAll(const PlanetDescription& planet) {
@@ -130,50 +179,7 @@ std::vector<Error> validatePlanetAll(const PlanetDescription& planet) {
   if (planet.layers.empty() || planet.layers.size() > static_cast<std::size_t>(kMaxElevationLayers)) {
     fail("layers", fmt::format("need 1 to {} layers", kMaxElevationLayers));
   }
-  for (std::size_t i = 0; i < planet.layers.size(); ++i) {
-    const ElevationLayer& l = planet.layers[i];
-    const std::string p = fmt::format("layers[{}].", i);
-    bool octaves_ok = true;
-    if (l.octaves < 1 || l.octaves > kMaxOctavesPerLayer) {
-      fail(p + "octaves", fmt::format("must be in [1, {}]", kMaxOctavesPerLayer));
-      octaves_ok = false;
-    }
-    if (!(std::isfinite(l.wavelength_m) && l.wavelength_m > 0.0)) {
-      fail(p + "wavelength_m", "must be finite and > 0");
-      octaves_ok = false;
-    }
-    if (!(std::isfinite(l.lacunarity) && l.lacunarity > 1.0 && l.lacunarity <= 16.0)) {
-      fail(p + "lacunarity", "must be > 1 and <= 16");
-      octaves_ok = false;
-    }
-    if (!(std::isfinite(l.gain) && l.gain > 0.0 && l.gain <= 1.0)) fail(p + "gain", "must be > 0 and <= 1");
-    if (!inRange(l.amplitude_m, 0.0, 1e6)) fail(p + "amplitude_m", "must be within [0, 1e6] m");
-    if (!inRange(l.offset_m, -1e6, 1e6)) fail(p + "offset_m", "must be within [-1e6, 1e6] m");
-    if (l.modulated_by >= static_cast<int>(i) || l.modulated_by < -1) {
-      fail(p + "modulated_by", "must name an earlier layer");
-    }
-    if (l.modulated_by >= 0) {
-      if (!inRange(l.modulation_low_m, -1e7, 1e7)) fail(p + "modulation_low_m", "must be within [-1e7, 1e7] m");
-      if (!inRange(l.modulation_high_m, -1e7, 1e7) || !(l.modulation_high_m > l.modulation_low_m)) {
-        fail(p + "modulation_high_m", "must be > modulation_low_m and within [-1e7, 1e7] m");
-      }
-      if (!inRange(l.modulation_floor, 0.0, 1.0)) fail(p + "modulation_floor", "must be within [0, 1]");
-    }
-    // The precision rule only means something once the radius and the octave chain are valid.
-    const double finest = octaves_ok ? finestWavelength_m(l) : 1.0;
-    if (radius_ok && octaves_ok && !(planet.radius_m / finest <= kMaxLatticeCoordinate)) {
-      fail(p + "octaves", fmt::format("too many octaves for double precision at this radius: finest "
-                                      "wavelength {:g} m, radius / wavelength must be <= 2^40 (at most {} "
-                                      "octaves here)",
-                                      finest, maxOctavesForPrecision(planet.radius_m, l)));
-    }
-    for (std::size_t j = 0; j < i; ++j) {
-      if (planet.layers[j].name == l.name) {
-        fail(p + "name", fmt::format("duplicate layer name '{}'", l.name));
-        break;
-      }
-    }
-  }
+  for (std::size_t i = 0; i < planet.layers.size(); ++i) appendLayerErrors(planet, i, radius_ok, errors);
   appendColourRampErrors(planet.colour_ramp, errors);
   appendWaterErrors(planet.water, errors);
   appendLandCoverErrors(planet.land_cover, errors);
