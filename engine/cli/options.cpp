@@ -99,24 +99,10 @@ int validationExitCode(vk::Device& device) {
   return kExitFailure;
 }
 
-void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid) {
-  if (withGrid) {
-    cmd.add_option("--grid", options.gridCells,
-                   "Grid cells per node side (power of two, 16..256; default: the quality preset's)")
-        ->check(CLI::Range(16U, 256U));
-  }
-  cmd.add_option("--quality", options.quality,
-                 "fast, balanced or exact (docs/tradeoffs.md; default: the planet's default_quality)")
-      ->check(nonEmptyValue());
-  cmd.add_option(
-         "--aa", options.antialiasing,
-         "Anti-aliasing: none, fxaa or msaa4 (docs/rendering.md, \"Anti-aliasing\"; default: the quality preset's)")
-      ->check(CLI::Validator(
-          [](const std::string& text) -> std::string {
-            auto aa = vk::parseAntialiasing(text, "--aa");
-            return aa ? std::string() : aa.error().message;
-          },
-          "AA"));
+namespace {
+
+// --tolerance, --texel-px and --roughness: how far the LOD refines (docs/lod.md).
+void addLodOptions(CLI::App& cmd, QualityOptions& options) {
   cmd.add_option("--tolerance", options.tolerance_px,
                  "Screen error in pixels the LOD keeps within (0.05..1000; docs/lod.md; default: the preset's LOD)")
       ->check(CLI::Validator(
@@ -142,6 +128,29 @@ void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid) {
                  "With tolerance-driven ranges: on (refine rough relief further than plains and sea) or off "
                  "(one range per depth) (docs/lod.md, \"Roughness\"; default: off)")
       ->check(CLI::IsMember({"on", "off"}));
+}
+
+}  // namespace
+
+void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid) {
+  if (withGrid) {
+    cmd.add_option("--grid", options.gridCells,
+                   "Grid cells per node side (power of two, 16..256; default: the quality preset's)")
+        ->check(CLI::Range(16U, 256U));
+  }
+  cmd.add_option("--quality", options.quality,
+                 "fast, balanced or exact (docs/tradeoffs.md; default: the planet's default_quality)")
+      ->check(nonEmptyValue());
+  cmd.add_option(
+         "--aa", options.antialiasing,
+         "Anti-aliasing: none, fxaa or msaa4 (docs/rendering.md, \"Anti-aliasing\"; default: the quality preset's)")
+      ->check(CLI::Validator(
+          [](const std::string& text) -> std::string {
+            auto aa = vk::parseAntialiasing(text, "--aa");
+            return aa ? std::string() : aa.error().message;
+          },
+          "AA"));
+  addLodOptions(cmd, options);
   cmd.add_option("--detail-textures", options.detailTextures,
                  "On a planet with land cover: on (splat the classes' detail textures per fragment) or off (the "
                  "classes' colours per vertex) (docs/rendering.md, \"Land cover\"; default: the preset's)")

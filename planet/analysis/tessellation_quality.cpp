@@ -40,6 +40,27 @@ double sphericalCornerAngle_rad(const glm::dvec3& corner, const glm::dvec3& next
   return angle;
 }
 
+namespace {
+
+// A cell's corner angles and edges into the extremes of `m` and the deviation sum; returns the angle sum.
+double addCorners(const std::array<glm::dvec3, 4>& p, TessellationMetrics& m, double& sumAngleDeviation_deg) {
+  double angleSum = 0.0;
+  for (size_t k = 0; k < 4; ++k) {
+    const double angle = sphericalCornerAngle_rad(p[k], p[(k + 1) % 4], p[(k + 3) % 4]);
+    angleSum += angle;
+    const double angle_deg = angle * (180.0 / std::numbers::pi);
+    m.angleMin_deg = std::min(m.angleMin_deg, angle_deg);
+    m.angleMax_deg = std::max(m.angleMax_deg, angle_deg);
+    sumAngleDeviation_deg += std::abs(angle_deg - 90.0);
+    const double edge = angleBetween_rad(p[k], p[(k + 1) % 4]);
+    m.edgeMin_rad = std::min(m.edgeMin_rad, edge);
+    m.edgeMax_rad = std::max(m.edgeMax_rad, edge);
+  }
+  return angleSum;
+}
+
+}  // namespace
+
 TessellationMetrics measureTessellation(int faceCount, const UnitPointFunction& mapping, int cellsPerEdge) {
   assert(faceCount > 0 && cellsPerEdge > 0);
   const int n = cellsPerEdge;
@@ -74,18 +95,7 @@ TessellationMetrics measureTessellation(int faceCount, const UnitPointFunction& 
         const std::array<glm::dvec3, 4> p = {grid[j * stride + i], grid[j * stride + i + 1],
                                              grid[(j + 1) * stride + i + 1], grid[(j + 1) * stride + i]};
         const double area = sphericalTriangleArea_sr(p[0], p[1], p[2]) + sphericalTriangleArea_sr(p[0], p[2], p[3]);
-        double angleSum = 0.0;
-        for (size_t k = 0; k < 4; ++k) {
-          const double angle = sphericalCornerAngle_rad(p[k], p[(k + 1) % 4], p[(k + 3) % 4]);
-          angleSum += angle;
-          const double angle_deg = angle * (180.0 / std::numbers::pi);
-          m.angleMin_deg = std::min(m.angleMin_deg, angle_deg);
-          m.angleMax_deg = std::max(m.angleMax_deg, angle_deg);
-          sumAngleDeviation_deg += std::abs(angle_deg - 90.0);
-          const double edge = angleBetween_rad(p[k], p[(k + 1) % 4]);
-          m.edgeMin_rad = std::min(m.edgeMin_rad, edge);
-          m.edgeMax_rad = std::max(m.edgeMax_rad, edge);
-        }
+        const double angleSum = addCorners(p, m, sumAngleDeviation_deg);
         // Girard: the area of a spherical polygon is its angle sum minus (corners − 2) π.
         m.maxExcessMismatch_sr = std::max(m.maxExcessMismatch_sr, std::abs(angleSum - 2.0 * std::numbers::pi - area));
         m.areaMin_sr = std::min(m.areaMin_sr, area);
