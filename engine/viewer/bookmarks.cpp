@@ -1,5 +1,6 @@
 #include "engine/viewer/bookmarks.h"
 
+#include "planet/camera/camera_path_file.h"
 #include "planet/core/atomic_file.h"
 #include "planet/core/input_file.h"
 
@@ -13,9 +14,6 @@
 namespace globe {
 
 namespace {
-
-// Shortest round-trip text, never "-0".
-std::string number(double v) { return fmt::format("{}", v == 0.0 ? 0.0 : v); }
 
 // `decimals` places at most, trailing zeros dropped, never "-0": a flown pose holds 20.000744638056165
 // and -1.85e-13, awkward to read or edit.
@@ -97,9 +95,10 @@ std::string defaultBookmarksPath() {
 Result<GeodeticPose> parseGoTo(const std::string& typed, const GeodeticPose& current) {
   std::string text = trim(typed);
   const auto commas = std::count(text.begin(), text.end(), ',');
-  if (commas == 1) text += "," + number(current.height_m);
+  if (commas == 1) text += "," + shortestNumberText(current.height_m);
   if (commas <= 2)
-    text += "," + number(current.heading_deg) + "," + number(current.pitch_deg) + "," + number(current.roll_deg);
+    text += "," + shortestNumberText(current.heading_deg) + "," + shortestNumberText(current.pitch_deg) + "," +
+            shortestNumberText(current.roll_deg);
   if (commas == 0 || commas == 3 || commas == 4 || commas > 5)
     return Error::inField("go to", "expected LAT,LON[,HEIGHT[,HEADING,PITCH,ROLL]], got '" + trim(typed) + "'");
   return parsePose(text, "go to");

@@ -101,8 +101,8 @@ void FlyCamera::flyFree(const glm::dvec3& step_m, double floor_m) {
   if (heightAt(position_m_) < floor_m) position_m_ = atHeight(position_m_, floor_m);  // never below the floor
 }
 
-void FlyCamera::keepHorizon(double dt_s) {
-  const double height_m = std::max(altitude_m(), 0.0);
+void FlyCamera::keepHorizon(double height_m, double dt_s) {
+  height_m = std::max(height_m, 0.0);
   const glm::dvec3 up = upAt(position_m_);
   const double groundRadius_m = glm::length(position_m_) - height_m;
   const double dip = std::acos(std::clamp(groundRadius_m / (groundRadius_m + height_m), -1.0, 1.0));
@@ -138,9 +138,11 @@ void FlyCamera::update(const FlyControls& c, double dt_s) {
       followTerrain(move * (speed * dt_s), before_m, floor_m);
     else
       flyFree(move * (speed * dt_s), floor_m);
-    if (altitude_m() < std::min(before_m, kHorizonKeepHeight_m) + 1e-9 && overSea()) keepHorizon(dt_s);
+    const double after_m = altitude_m();
+    if (after_m < std::min(before_m, kHorizonKeepHeight_m) + 1e-9 && overSea()) keepHorizon(after_m, dt_s);
+  } else if (altitude_m() < kMinClearance_m) {
+    position_m_ = atHeight(position_m_, kMinClearance_m);  // a reload's new ground under a still camera
   }
-  if (altitude_m() < kMinClearance_m) position_m_ = atHeight(position_m_, kMinClearance_m);  // a reload's new ground
   clampPitch();  // the vertical turned with the motion
 }
 

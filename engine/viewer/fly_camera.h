@@ -84,8 +84,8 @@ class FlyCamera {
   void followTerrain(const glm::dvec3& step_m, double height_m, double floor_m);
   // Higher up: a straight move; what the terrain stops of it slides on over the ground.
   void flyFree(const glm::dvec3& step_m, double floor_m);
-  // Raises the pitch towards the horizon while descending over the sea.
-  void keepHorizon(double dt_s);
+  // Raises the pitch towards the horizon while descending over the sea (`height_m` above it).
+  void keepHorizon(double height_m, double dt_s);
 
   Ellipsoid shape_;
   GroundQuery ground_;

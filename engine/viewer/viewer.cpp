@@ -205,11 +205,12 @@ bool Viewer::State::processInput() {
 Camera Viewer::State::stepCamera(double wall_s, Clock::time_point now) {
   const double step_s = options.fixedStep ? kViewerFixedStep_s : std::min(wall_s, 0.25);
   Camera cam = frameCamera(step_s, now);
+  framePose = currentPose(cam);
   if (recordToggleRequested) {
     recordToggleRequested = false;
     toggleRecording(cam);
   } else if (recorder.recording()) {
-    recorder.advance(step_s, currentPose(cam));
+    recorder.advance(step_s, framePose);
   }
   stepBodies(step_s, cam);
   if (sunMove != glm::dvec2(0.0)) {
@@ -279,7 +280,7 @@ Status Viewer::run() {
     s.ring.submit(s.frame, s.swapchain.renderFinished(*image));
     if (!s.swapchain.present(*image)) s.swapchainStale = true;
     lastCamera = cam;
-    s.logFrame(runStart, cam);
+    s.logFrame(runStart);
     ++s.frame;
     if (s.pathEnded && !s.options.holdAtPathEnd) s.quit = true;  // the path's end is drawn
     s.takeRequestedScreenshot(cam);

@@ -27,8 +27,8 @@ void Viewer::State::goToAskedPlace(double aspect) {
   printViewerLine(message + " (frame " + std::to_string(frame) + ")");
 }
 
-void Viewer::State::describeCamera(OverlayView& view, const Camera& cam) const {
-  const GeodeticPose pose = currentPose(cam);
+void Viewer::State::describeCamera(OverlayView& view) const {
+  const GeodeticPose& pose = framePose;
   view.altitude_m = options.path ? pose.height_m : camera.altitude_m();
   view.latitude_deg = pose.latitude_deg;
   view.longitude_deg = pose.longitude_deg;
@@ -50,13 +50,13 @@ void Viewer::State::describeCamera(OverlayView& view, const Camera& cam) const {
   }
 }
 
-void Viewer::State::logFrame(Clock::time_point runStart, const Camera& cam) {
+void Viewer::State::logFrame(Clock::time_point runStart) {
   const Clock::time_point now = Clock::now();
   const double frame_ms = std::chrono::duration<double, std::milli>(now - lastPresent).count();
   lastPresent = now;
   if (options.path && !pathClockStart) pathClockStart = now;
   frameTimes.add(std::chrono::duration<double>(now - runStart).count(), options.path ? pathTime_s : 0.0, frame_ms,
-                 stats, currentPose(cam));
+                 stats, framePose);
 }
 
 Status Viewer::State::writeFrameTimes() const {
@@ -166,7 +166,7 @@ void Viewer::State::buildOverlay(double wall_s, const Camera& cam) {
   OverlayView view;
   view.stats = stats;  // the previous frame's complete statistics (draws are counted in record)
   view.stats.frame_ms = wall_s * 1000.0;
-  describeCamera(view, cam);
+  describeCamera(view);
   view.debugView = scene->debugViewName();
   view.deviceName = device.name();
   view.planet = scene->planet().name + " (" + scene->planetPath() + ")";

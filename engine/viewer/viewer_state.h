@@ -59,8 +59,8 @@ struct Viewer::State {
   void stopRecording();
   void waitForReload();
   Camera frameCamera(double step_s, Clock::time_point now);
-  void describeCamera(OverlayView& view, const Camera& cam) const;
-  void logFrame(Clock::time_point runStart, const Camera& cam);
+  void describeCamera(OverlayView& view) const;  // from framePose
+  void logFrame(Clock::time_point runStart);
   void goToAskedPlace(double aspect);
   Status writeFrameTimes() const;
   bool processInput();  // false: quit
@@ -82,8 +82,9 @@ struct Viewer::State {
   GpuFrameTimer gpuTimer;
   ViewerPlaces places;  // go to (G), bookmarks (M, 1-9)
   PathRecorder recorder;
-  bool help = false;  // F2/I: the key help panel
-  double gpu_ms = 0;  // of the last completed frame
+  bool help = false;         // F2/I: the key help panel
+  double gpu_ms = 0;         // of the last completed frame
+  GeodeticPose framePose{};  // the frame's camera as a pose (height above the ground), once per frame
 
   InputState input;
   uint64_t frame = 0;  // frames submitted so far = number of the next frame

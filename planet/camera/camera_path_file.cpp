@@ -186,11 +186,7 @@ Result<CameraPath> loadCameraPath(const std::string& path) {
   return parseCameraPath(*content, path);
 }
 
-namespace {
-// The shortest decimal that reads back to the same double (fmt's default: 22.12, not
-// 22.120000000000001), and 0 for -0: what a person editing the file expects to see.
-std::string shortest(double v) { return fmt::format("{}", v == 0.0 ? 0.0 : v); }
-}  // namespace
+std::string shortestNumberText(double v) { return fmt::format("{}", v == 0.0 ? 0.0 : v); }
 
 std::string formatCameraPath(const CameraPath& path) {
   // The optional columns only when a keyframe needs them, so ground-only paths keep the seven.
@@ -209,14 +205,14 @@ std::string formatCameraPath(const CameraPath& path) {
   for (const PathKeyframe& k : path.keyframes()) {
     const GeodeticPose& p = k.pose;
     for (double v : {k.time_s, p.latitude_deg, p.longitude_deg, p.height_m, p.heading_deg, p.pitch_deg, p.roll_deg})
-      out += shortest(v) + ' ';
+      out += shortestNumberText(v) + ' ';
     out.pop_back();
     if (anySphere) out += k.heightReference == HeightReference::sphere ? " sphere" : " ground";
     if (anyStop) out += k.stop ? " 1" : " 0";
     // A keyframe without a sun in a path where others have one (built in memory): 0, 45.
     if (anySun) {
       const SunAngles sun = k.sun.value_or(SunAngles{0.0, 45.0});
-      out += ' ' + shortest(sun.azimuth_deg) + ' ' + shortest(sun.elevation_deg);
+      out += ' ' + shortestNumberText(sun.azimuth_deg) + ' ' + shortestNumberText(sun.elevation_deg);
     }
     out += '\n';
   }

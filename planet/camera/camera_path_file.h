@@ -32,6 +32,10 @@ Result<CameraPath> parseCameraPath(std::string_view text, const std::string& fil
 // printed as %.17g, so parsing it back gives bit-identical keyframes (including -0).
 std::string formatCameraPath(const CameraPath& path);
 
+// The shortest decimal that reads back to the same double (fmt's default: 22.12, not
+// 22.120000000000001), and 0 for -0: what a person editing a file expects to see.
+std::string shortestNumberText(double v);
+
 // Writes formatCameraPath(path) to `file` atomically (no half-written file on failure).
 Status saveCameraPath(const std::string& file, const CameraPath& path);
 
