@@ -31,6 +31,9 @@ PACKAGES=(
   # globe bake: COG tiles through GDAL (gdalinfo checks them); GNU parallel runs shards (docs/bake.md);
   # CesiumJS (npm, tests/cesium) in headless Chromium reads a baked tileset
   libgdal-dev gdal-bin parallel nodejs chromium
+  # the portable GPU bundle (scripts/gpu-bundle.sh): ldd (libc-bin) lists what it loads, xz packs it;
+  # glvnd's libraries for NVIDIA's Vulkan driver; PROJ's and GDAL's data for real elevation sources
+  libc-bin xz-utils libglvnd0 libglx0 proj-data gdal-data
   # NASA Blue Marble (earth.jpg): the Earth's colours the orbit view is compared with (globe compare)
   xplanet-images
 )

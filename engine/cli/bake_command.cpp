@@ -62,6 +62,7 @@ int runBakeCommand(const BakeOptions& o) {
   if (!planet) return kExitUsage;
   const ElevationModel model(*planet);
   vk::Device device(deviceOptions(o.device));
+  printDeviceChoice(device);
   GpuHeightSampler heights(device, model, o.threads);
   const auto start = std::chrono::steady_clock::now();
   Result<BakeSummary> summary = [&] {

@@ -236,6 +236,7 @@ int runBench(const BenchOptions& o) {
   if (!sun) return usageError(sun.error());
   settings.style.sunDirection = *sun;
   vk::Device device(deviceOptions(o.device));
+  printDeviceChoice(device);
   if (auto s = vk::checkImageExtent(device, {in->size.width, in->size.height}, "--size"); !s)
     return usageError(s.error());
   const double deviceReady_ms = millisecondsSinceProcessStart();

@@ -50,6 +50,10 @@ Result<MovieSettings> movieSettings(const MovieOptions& o, const PlanetDescripti
   s.height = size->height;
   if (endsWithMp4(o.out)) {
     s.format = MovieFormat::mp4;
+    if (!isFormatBuilt(MovieFormat::mp4))
+      return Error::inField("--out", "'" + o.out +
+                                         "': this globe was built without FFmpeg (GLOBE_WITH_FFMPEG=OFF), it writes "
+                                         "PNG/EXR sequences only: give a directory");
     if (s.width % 2 || s.height % 2)
       return Error::inField("--size", fmt::format("H.264 needs an even width and height, got {}", o.size));
     if (auto st = checkWritable(o.out, "--out"); !st) return st.error();
@@ -91,6 +95,7 @@ int runMovie(const MovieOptions& o) {
   std::optional<RemoveOnSignal> cleanup;
   if (settings->format == MovieFormat::mp4) cleanup.emplace(AtomicFile(o.out).tempPath());
   vk::Device device(deviceOptions(o.device));
+  printDeviceChoice(device);
   ProgressBar progress("movie " + std::filesystem::path(o.path).filename().string());
   TerrainWarnings warnings;
   auto summary = renderMovie(device, *planet, *path, *settings, [&](uint64_t done, uint64_t total, const Terrain& t) {
@@ -126,7 +131,9 @@ void addMovieCommand(CLI::App& app, Runner& run) {
   auto o = std::make_shared<MovieOptions>();
   o->planet = defaultPlanetPath();
   CLI::App* cmd = app.add_subcommand(
-      "movie", "Render a camera path frame by frame (every frame converged) to a PNG/EXR sequence or an MP4");
+      "movie", isFormatBuilt(MovieFormat::mp4)
+                   ? "Render a camera path frame by frame (every frame converged) to a PNG/EXR sequence or an MP4"
+                   : "Render a camera path frame by frame (every frame converged) to a PNG/EXR sequence");
   cmd->add_option("--path", o->path, "Camera path (.path, .kml tour or .czml)")->required();
   cmd->add_option("--planet", o->planet, "Planet file (TOML)")->capture_default_str();
   cmd->add_option("--fps", o->fps,
@@ -135,9 +142,11 @@ void addMovieCommand(CLI::App& app, Runner& run) {
   cmd->add_option("--size", o->size, "Frame size WxH in pixels (even for MP4)")->capture_default_str();
   addQualityOptions(*cmd, o->quality, /*withGrid=*/false);
   addBudgetOptions(*cmd, o->budget);
-  cmd->add_option("--out", o->out,
-                  "A directory (frame_000000.png ..., resumable) or a .mp4 file (H.264 through FFmpeg's libraries)")
-      ->capture_default_str();
+  const char* outHelp = isFormatBuilt(MovieFormat::mp4)
+                            ? "A directory (frame_000000.png ..., resumable) or a .mp4 file (H.264 through FFmpeg's "
+                              "libraries)"
+                            : "A directory (frame_000000.png ..., resumable); this build writes no MP4";
+  cmd->add_option("--out", o->out, outHelp)->capture_default_str();
   cmd->add_option("--format", o->format, "Frame files of a sequence: png (8-bit sRGB) or exr (half RGB + Z)")
       ->capture_default_str();
   addDeviceFlags(*cmd, o->device);

@@ -90,6 +90,12 @@ vk::DeviceOptions deviceOptions(const DeviceFlags& flags) {
   return o;
 }
 
+void printDeviceChoice(const vk::Device& device) {
+  std::printf("device: %s (%s; driver %s, %s)\n", device.name().c_str(), device.choice().c_str(),
+              device.driverName().c_str(), device.driverInfo().c_str());
+  std::fflush(stdout);
+}
+
 int validationExitCode(vk::Device& device) {
   size_t n = device.validation().count();
   if (n == 0) return kExitOk;

@@ -70,6 +70,8 @@ struct QualityOptions {
 // --grid, with the same help and checks on every rendering command; read them back with terrainSettingsFromOptions.
 void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid = true);
 vk::DeviceOptions deviceOptions(const DeviceFlags& flags);
+// One stdout line: the device a command runs on and why that one (docs/getting-started.md).
+void printDeviceChoice(const vk::Device& device);
 
 // With validation on, any message makes the command fail after it has reported them.
 int validationExitCode(vk::Device& device);

@@ -213,6 +213,7 @@ int runPhysics(const PhysicsOptions& o) {
   const ElevationModel model(in->planet);
   if (in->scenario.clustered) in->scenario.clusterCentre = valleyNear(model);
   vk::Device device(deviceOptions(o.device));
+  printDeviceChoice(device);
   GpuCollisionMeshSource source(device, model, o.gridCells, in->simulation.pool.maxInFlight);
   PhysicsSimulation sim(model, source, in->simulation);
   std::vector<PlacedBody> placed = placeBodies(model, in->scenario);

@@ -120,6 +120,7 @@ int runRender(const RenderOptions& o) {
   settings->style.sunDirection = *sun;
 
   vk::Device device(deviceOptions(o.device));
+  printDeviceChoice(device);
   if (auto s = vk::checkImageExtent(device, {size->width, size->height}, "--size"); !s) return usageError(s.error());
   ImageRgba image;
   if (o.mode == "sphere") {

@@ -415,6 +415,7 @@ int runTrade(const TradeOptions& o) {
   for (const SurfaceTruth& t : truths) truth_ms += t.cast_ms;
 
   vk::Device device(deviceOptions(o.device));
+  printDeviceChoice(device);
   HeadlessRenderer renderer(device, {in->size.width, in->size.height});
   TradeRig rig{device, renderer, model, *in, {}};
   if (auto s = warmUp(rig, configs.front(), cameras->front()); !s) return usageError(s.error());

@@ -145,6 +145,7 @@ int runViewer(const ViewCommandOptions& o, const ImageSize& size, ViewerOptions 
   deviceOpts.swapchain = true;
   deviceOpts.createSurface = [&window](VkInstance instance) { return window.createSurface(instance); };
   vk::Device device(deviceOpts);
+  printDeviceChoice(device);
 
   Status status = Ok{};
   uint64_t frames = 0;

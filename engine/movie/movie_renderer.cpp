@@ -1,7 +1,9 @@
 #include "engine/movie/movie_renderer.h"
 
 #include "engine/movie/lod_log.h"
+#ifdef GLOBE_HAS_MP4
 #include "engine/movie/mp4_writer.h"
+#endif
 #include "engine/render/headless_renderer.h"
 #include "engine/render/render_output.h"
 #include "planet/core/atomic_file.h"
@@ -21,6 +23,15 @@ namespace fs = std::filesystem;
 bool isSupportedFrameRate(int fps, MovieFormat format) {
   if (format != MovieFormat::mp4) return fps >= 1 && fps <= kMaxSequenceFrameRate;
   return std::find(std::begin(kMovieFrameRates), std::end(kMovieFrameRates), fps) != std::end(kMovieFrameRates);
+}
+
+bool isFormatBuilt(MovieFormat format) {
+#ifdef GLOBE_HAS_MP4
+  constexpr bool mp4 = true;
+#else
+  constexpr bool mp4 = false;
+#endif
+  return format != MovieFormat::mp4 || mp4;
 }
 
 uint64_t movieFrameCount(double duration_s, int fps) {
@@ -158,6 +169,11 @@ Result<MovieSummary> renderSequence(FrameSource& source, const CameraPath& path,
 
 Result<MovieSummary> renderMp4(FrameSource& source, const CameraPath& path, const MovieSettings& s,
                                const MovieProgressFn& progress) {
+#ifndef GLOBE_HAS_MP4
+  (void)source, (void)path, (void)progress;
+  return Error::inField("--out",
+                        "'" + s.out + "': this globe was built without FFmpeg, it writes PNG/EXR sequences only");
+#else
   removeStaleTemporaries(s.out);  // a killed earlier run's .NAME.mp4.tmpPID
   AtomicFile file(s.out);
   if (auto made = makeParentDirectories(s.out); !made) return made.error();
@@ -176,6 +192,7 @@ Result<MovieSummary> renderMp4(FrameSource& source, const CameraPath& path, cons
   if (Status st = (*writer)->finish(); !st) return st.error();
   if (Status st = file.commit(); !st) return st.error();
   return summary;
+#endif
 }
 }  // namespace
 

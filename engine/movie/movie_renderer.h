@@ -30,6 +30,8 @@ struct MovieSettings {
 inline constexpr int kMovieFrameRates[] = {24, 25, 30, 50, 60};
 inline constexpr int kMaxSequenceFrameRate = 1000;
 bool isSupportedFrameRate(int fps, MovieFormat format);
+// False for mp4 in a build without FFmpeg (GLOBE_WITH_FFMPEG=OFF, the portable bundle's).
+bool isFormatBuilt(MovieFormat format);
 
 // Frames of a path `duration_s` long at `fps`: both ends included, floor(duration * fps) + 1.
 uint64_t movieFrameCount(double duration_s, int fps);

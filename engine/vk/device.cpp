@@ -10,6 +10,7 @@
 #include <cstring>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 namespace globe::vk {
 
@@ -38,6 +39,21 @@ bool hasDeviceExtension(VkPhysicalDevice physical, const char* name) {
   GLOBE_VK_CHECK(vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, extensions.data()));
   return std::any_of(extensions.begin(), extensions.end(),
                      [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+}
+
+const char* typeName(VkPhysicalDeviceType type) {
+  switch (type) {
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+      return "discrete GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+      return "integrated GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+      return "virtual GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+      return "CPU";
+    default:
+      return "other device";
+  }
 }
 
 int typeRank(VkPhysicalDeviceType type) {
@@ -131,26 +147,41 @@ VkInstance createInstance(const DeviceOptions& options, const VkDebugUtilsMessen
   return instance;
 }
 
-// The devices whose name contains `deviceName` (case-insensitive; all when it is empty), best type
-// first.
-std::vector<VkPhysicalDevice> matchingDevices(VkInstance instance, const std::string& deviceName) {
+std::vector<VkPhysicalDevice> physicalDevices(VkInstance instance) {
   uint32_t count = 0;
   GLOBE_VK_CHECK(vkEnumeratePhysicalDevices(instance, &count, nullptr));
   std::vector<VkPhysicalDevice> physicals(count);
   GLOBE_VK_CHECK(vkEnumeratePhysicalDevices(instance, &count, physicals.data()));
+  return physicals;
+}
+
+// Every device's name, quoted, in the loader's order.
+std::string deviceNames(const std::vector<VkPhysicalDevice>& physicals) {
+  std::string names;
+  for (VkPhysicalDevice p : physicals) {
+    VkPhysicalDeviceProperties props;
+    vkGetPhysicalDeviceProperties(p, &props);
+    names += std::string(names.empty() ? "" : ", ") + "'" + props.deviceName + "'";
+  }
+  return names;
+}
+
+// The devices whose name contains `deviceName` (case-insensitive; all when it is empty), best type
+// first.
+std::vector<VkPhysicalDevice> matchingDevices(VkInstance instance, const std::string& deviceName) {
+  const std::vector<VkPhysicalDevice> physicals = physicalDevices(instance);
   if (physicals.empty()) throw std::runtime_error("no Vulkan device found (is mesa-vulkan-drivers installed?)");
 
-  std::string available;
   std::vector<VkPhysicalDevice> candidates;
   for (VkPhysicalDevice p : physicals) {
     VkPhysicalDeviceProperties props;
     vkGetPhysicalDeviceProperties(p, &props);
-    available += std::string(available.empty() ? "" : ", ") + "'" + props.deviceName + "'";
-    if (!deviceName.empty() && lower(props.deviceName).find(lower(deviceName)) == std::string::npos) continue;
-    candidates.push_back(p);
+    if (deviceName.empty() || lower(props.deviceName).find(lower(deviceName)) != std::string::npos)
+      candidates.push_back(p);
   }
   if (candidates.empty())
-    throw std::runtime_error("no Vulkan device matches '" + deviceName + "' (available: " + available + ")");
+    throw std::runtime_error("no Vulkan device matches '" + deviceName + "' (available: " + deviceNames(physicals) +
+                             ")");
   std::stable_sort(candidates.begin(), candidates.end(), [](VkPhysicalDevice a, VkPhysicalDevice b) {
     VkPhysicalDeviceProperties pa, pb;
     vkGetPhysicalDeviceProperties(a, &pa);
@@ -173,16 +204,35 @@ std::string missingRequirement(VkPhysicalDevice p, VkSurfaceKHR surface) {
   return missing;
 }
 
+struct DeviceChoice {
+  VkPhysicalDevice physical = VK_NULL_HANDLE;
+  std::string why;  // Device::choice()
+};
+
 // Forced by name, else the best type that has what globe needs.
-VkPhysicalDevice choosePhysicalDevice(VkInstance instance, VkSurfaceKHR surface, const std::string& deviceName) {
+DeviceChoice choosePhysicalDevice(VkInstance instance, VkSurfaceKHR surface, const std::string& deviceName) {
   std::string lastMissing;
   std::string lastName;
+  std::string skipped;
   for (VkPhysicalDevice p : matchingDevices(instance, deviceName)) {
     lastMissing = missingRequirement(p, surface);
-    if (lastMissing.empty()) return p;
     VkPhysicalDeviceProperties props;
     vkGetPhysicalDeviceProperties(p, &props);
+    if (lastMissing.empty()) {
+      const std::vector<VkPhysicalDevice> all = physicalDevices(instance);
+      const std::string names = deviceNames(all);
+      const size_t count = all.size();
+      std::string why = typeName(props.deviceType);
+      if (!deviceName.empty())
+        why += ", forced by name '" + deviceName + "' among " + names;
+      else if (count == 1)
+        why += ", the only Vulkan device";
+      else
+        why += ", the best of " + std::to_string(count) + " Vulkan devices (" + names + "; --device NAME forces one)";
+      return {p, why + skipped};
+    }
     lastName = props.deviceName;
+    skipped += "; '" + lastName + "' lacks " + lastMissing;
   }
   throw std::runtime_error("Vulkan device '" + lastName + "' lacks " + lastMissing + ", which globe requires");
 }
@@ -243,7 +293,9 @@ Device::Device(const DeviceOptions& options) {
       surface_ = options.createSurface(instance_);
       if (surface_ == VK_NULL_HANDLE) throw std::runtime_error("could not create a Vulkan surface for the window");
     }
-    physical_ = choosePhysicalDevice(instance_, surface_, options.deviceName);
+    DeviceChoice chosen = choosePhysicalDevice(instance_, surface_, options.deviceName);
+    physical_ = chosen.physical;
+    choice_ = std::move(chosen.why);
     vkGetPhysicalDeviceProperties(physical_, &properties_);
     vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
     // Driver name and version (Vulkan 1.2 core): benchmark figures depend on them.

@@ -44,6 +44,9 @@ class Device {
   // VkPhysicalDeviceDriverProperties: e.g. "llvmpipe" and "Mesa 22.3.6 (LLVM 15.0.6)".
   const std::string& driverName() const { return driverName_; }
   const std::string& driverInfo() const { return driverInfo_; }
+  // Why this device: "discrete GPU, the first of 2 Vulkan devices ('NVIDIA H200', 'llvmpipe ...')"
+  // or "forced by name 'llvm' ...": printed by the commands, so a run on the wrong device shows.
+  const std::string& choice() const { return choice_; }
   ValidationRecorder& validation() { return recorder_; }
   bool validationEnabled() const { return messenger_ != VK_NULL_HANDLE; }
 
@@ -73,6 +76,7 @@ class Device {
   VkPhysicalDeviceMemoryProperties memory_{};
   std::string driverName_;
   std::string driverInfo_;
+  std::string choice_;
   UniqueCommandPool oneShotPool_;
   UniqueFence oneShotFence_;
   ValidationRecorder recorder_;

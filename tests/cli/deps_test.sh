@@ -67,7 +67,7 @@ if [[ -f "$BUILD_DIR/CMakeCache.txt" ]]; then
 fi
 
 # Tools the build and the tests run.
-for tool in glslangValidator cmake ctest ninja c++ pkg-config Xvfb xauth bash dpkg clang-format readelf git gdalinfo node npm chromium parallel; do
+for tool in glslangValidator cmake ctest ninja c++ pkg-config Xvfb xauth bash dpkg clang-format readelf git gdalinfo node npm chromium parallel xz strip ldd tar; do
   p=$(command -v "$tool") || { echo "FAIL: tool $tool not found"; failures=$((failures + 1)); continue; }
   check_file "$p" "tool $tool"
   checked=$((checked + 1))
