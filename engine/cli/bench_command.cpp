@@ -118,6 +118,7 @@ Result<BenchInputs> checkBenchInputs(const BenchOptions& o) {
                                                 path->duration_s(), o.rate_hz, frames, kMaxBenchFrames));
   auto settings = terrainSettingsFromOptions(o.quality, *planet, size->height);
   if (!settings) return settings.error();
+  if (auto s = checkImageMemory(*size, settings->antialiasing, false); !s) return s.error();
   if (auto s = applyBudgetOptions(o.budget, *settings); !s) return s.error();
   if (auto s = checkOutputDirectory(o.out, "--out"); !s) return s.error();
   return BenchInputs{std::move(baseline), std::move(*planet), std::move(*path), *size, std::move(*keyTimes), frames,

@@ -75,6 +75,7 @@ Result<MovieSettings> movieSettings(const MovieOptions& o, const PlanetDescripti
   s.out = o.out;
   auto terrain = terrainSettingsFromOptions(o.quality, planet, s.height);
   if (!terrain) return terrain.error();
+  if (auto st = checkImageMemory(*size, terrain->antialiasing, s.format == MovieFormat::mp4); !st) return st.error();
   s.terrain = *terrain;
   if (auto st = applyBudgetOptions(o.budget, s.terrain); !st) return st.error();
   s.description = fmt::format("path={} planet={} size={}x{} fps={} format={} quality={}{}", o.path, o.planet, s.width,

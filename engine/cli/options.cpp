@@ -46,6 +46,19 @@ Result<ImageSize> parseSize(const std::string& text, const std::string& field) {
   return ImageSize{static_cast<uint32_t>(*w), static_cast<uint32_t>(*h)};
 }
 
+Status checkImageMemory(ImageSize size, vk::Antialiasing aa, bool mp4) {
+  std::uint64_t perPixel = aa == vk::Antialiasing::kMsaa4  ? kMsaa4BytesPerPixel
+                           : aa == vk::Antialiasing::kFxaa ? kFxaaBytesPerPixel
+                                                           : kRenderBytesPerPixel;
+  if (mp4) perPixel += kMp4BytesPerPixel;
+  const std::uint64_t needMiB = (std::uint64_t(size.width) * size.height * perPixel) >> 20;
+  if (needMiB <= kMaxImageMemoryMiB) return Ok{};
+  return Error::inField("--size", fmt::format("{}x{} with --aa {}{} would need about {} MiB of image memory, more than "
+                                              "the limit of {} MiB",
+                                              size.width, size.height, vk::antialiasingName(aa),
+                                              mp4 ? " into an MP4" : "", needMiB, kMaxImageMemoryMiB));
+}
+
 CLI::Validator nonEmptyValue() {
   return CLI::Validator([](const std::string& value) { return value.empty() ? std::string("must not be empty") : ""; },
                         "", "NONEMPTY");

@@ -1,6 +1,7 @@
 #pragma once
 // Option parsing shared by the subcommands: sizes, device selection, error reporting.
 #include "engine/render/quality.h"
+#include "engine/vk/antialiasing.h"
 #include "engine/vk/device.h"
 #include "planet/camera/camera.h"
 #include "planet/core/error.h"
@@ -20,9 +21,14 @@ struct ImageSize {
 // Image sides: 16384 is the common maxImageDimension2D of Vulkan devices.
 inline constexpr std::uint64_t kMinImageSidePx = 16;
 inline constexpr std::uint64_t kMaxImageSidePx = 16384;
-// Host + device memory per output pixel of a render (colour, depth, readback, encoding), from issue
-// 21: 16384x16384 reached 17 GB. The cap keeps a render within a small machine's memory (8192x8192).
-inline constexpr std::uint64_t kRenderBytesPerPixel = 64;
+// Host + device memory per output pixel (colour and depth targets, read-back, the float image, the
+// file's encoding), peak resident memory measured at 2048x2048 and 4096x4096 on lavapipe
+// (docs/reliability.md, "Image memory"): 57 bytes with --aa none, 65 with fxaa, 88 with msaa4, and
+// 40 more for an MP4 (x264's frames). The cap keeps a command within a small machine's memory.
+inline constexpr std::uint64_t kRenderBytesPerPixel = 60;
+inline constexpr std::uint64_t kFxaaBytesPerPixel = 68;
+inline constexpr std::uint64_t kMsaa4BytesPerPixel = 92;
+inline constexpr std::uint64_t kMp4BytesPerPixel = 40;
 inline constexpr std::uint64_t kMaxImageMemoryMiB = 4096;
 
 // --tolerance: below 0.05 px the ranges reach the max depth everywhere; above 1000 px nothing refines.
@@ -33,6 +39,9 @@ inline constexpr double kMinTexelPx = 0.5;
 
 // "WxH" with 16 <= W, H <= 16384 and W * H * kRenderBytesPerPixel within kMaxImageMemoryMiB.
 Result<ImageSize> parseSize(const std::string& text, const std::string& field);
+// Once the anti-aliasing is known: the image memory of `size` with it (and an MP4 encoder) within
+// kMaxImageMemoryMiB, else an Error on --size naming both.
+Status checkImageMemory(ImageSize size, vk::Antialiasing aa, bool mp4);
 
 // An output directory: made later by the command (with any missing parents: makeOutputDirectory),
 // so it must be a directory or one that can be made. Errors name `field`. (Output files: checkWritable,

@@ -99,6 +99,7 @@ int runRender(const RenderOptions& o) {
   if (!planet) return usageError(planet.error());
   auto settings = terrainSettingsFromOptions(o.quality, *planet, size->height);
   if (!settings) return usageError(settings.error());
+  if (auto s = checkImageMemory(*size, settings->antialiasing, false); !s) return usageError(s.error());
   if (auto s = applyBudgetOptions(o.budget, *settings); !s) return usageError(s.error());
 
   ElevationModel model(*planet);

@@ -69,7 +69,16 @@ expect 2 "--png-width: .*0" "$WORK/p.png" -- "$GLOBE" planet export --width 64 -
 # Sizes that wrap modulo 2^32 or need more memory than the limit.
 expect 2 "--size: width and height must be within" "$O" -- "$GLOBE" render --size 4294967312x16 --out "$O"
 expect 2 "--size: expected WxH" "$O" -- "$GLOBE" render --size 99999999999999999999999x16 --out "$O"
-expect 2 "--size: 16384x16384 would need about 16384 MiB" "$O" -- "$GLOBE" render --size 16384x16384 --out "$O"
+expect 2 "--size: 16384x16384 would need about 15360 MiB" "$O" -- "$GLOBE" render --size 16384x16384 --out "$O"
+# The estimate follows the anti-aliasing and the encoder (issue 40: an 8192x8192 movie peaked at 4.6 GB).
+expect 2 "--size: 8192x8192 with --aa fxaa would need about 4352 MiB of image memory, more than the limit of 4096 MiB" \
+  "$O" -- "$GLOBE" render --quality exact --size 8192x8192 --out "$O"
+expect 2 "--size: 8192x8192 with --aa msaa4 would need about 5888 MiB" "" -- \
+  "$GLOBE" bench --aa msaa4 --size 8192x8192 --out "$WORK/bench_msaa"
+[[ -e "$WORK/bench_msaa" ]] && { echo "FAIL: bench --size 8192x8192 --aa msaa4 made its directory"; failures=$((failures + 1)); }
+PATHS="$(dirname "$GLOBE")/../share/globe/assets/paths"
+expect 2 "--size: 7000x7000 with --aa none into an MP4 would need about 4673 MiB" "$WORK/big.mp4" -- \
+  "$GLOBE" movie --path "$PATHS/still.path" --size 7000x7000 --out "$WORK/big.mp4"
 # Input files that are not regular files: refused at once (timeout: a FIFO used to block forever).
 mkfifo "$WORK/fifo.toml" "$WORK/fifo.path"
 expect 2 "fifo.toml: cannot read planet file: it is a FIFO" "$O" -- timeout 60 "$GLOBE" render --planet "$WORK/fifo.toml" --out "$O" --size 64x64
