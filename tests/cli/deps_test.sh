@@ -28,9 +28,12 @@ while ((${#queue[@]})); do
 done
 
 failures=0
+declare -A SEEN=()  # files already checked: the binaries share most libraries, and dpkg -S is slow
 check_file() {  # check_file PATH WHY
   local path="$1" why="$2" real owners pkg
   real=$(readlink -f "$path")
+  [[ -n "${SEEN[$real]:-}" ]] && return
+  SEEN[$real]=1
   # "pkg1:arch, pkg2, ...: /path": every owner (a directory has many).
   owners=$(dpkg -S "$real" 2>/dev/null | head -1 | sed -E 's/: \/.*$//')
   [[ -z "$owners" ]] && owners=$(dpkg -S "$path" 2>/dev/null | head -1 | sed -E 's/: \/.*$//')
