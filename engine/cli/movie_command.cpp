@@ -131,10 +131,10 @@ int runMovie(const MovieOptions& o) {
 void addMovieCommand(CLI::App& app, Runner& run) {
   auto o = std::make_shared<MovieOptions>();
   o->planet = defaultPlanetPath();
+  const bool mp4 = isFormatBuilt(MovieFormat::mp4);
   CLI::App* cmd = app.add_subcommand(
-      "movie", isFormatBuilt(MovieFormat::mp4)
-                   ? "Render a camera path frame by frame (every frame converged) to a PNG/EXR sequence or an MP4"
-                   : "Render a camera path frame by frame (every frame converged) to a PNG/EXR sequence");
+      "movie", std::string("Render a camera path frame by frame (every frame converged) to a PNG/EXR sequence") +
+                   (mp4 ? " or an MP4" : ""));
   cmd->add_option("--path", o->path, "Camera path (.path, .kml tour or .czml)")->required();
   cmd->add_option("--planet", o->planet, "Planet file (TOML)")->capture_default_str();
   cmd->add_option("--fps", o->fps,
@@ -143,11 +143,10 @@ void addMovieCommand(CLI::App& app, Runner& run) {
   cmd->add_option("--size", o->size, "Frame size WxH in pixels (even for MP4)")->capture_default_str();
   addQualityOptions(*cmd, o->quality, /*withGrid=*/false);
   addBudgetOptions(*cmd, o->budget);
-  const char* outHelp = isFormatBuilt(MovieFormat::mp4)
-                            ? "A directory (frame_000000.png ..., resumable) or a .mp4 file (H.264 through FFmpeg's "
-                              "libraries)"
-                            : "A directory (frame_000000.png ..., resumable); this build writes no MP4";
-  cmd->add_option("--out", o->out, outHelp)->capture_default_str();
+  cmd->add_option("--out", o->out,
+                  std::string("A directory (frame_000000.png ..., resumable)") +
+                      (mp4 ? " or a .mp4 file (H.264 through FFmpeg's libraries)" : "; this build writes no MP4"))
+      ->capture_default_str();
   cmd->add_option("--format", o->format, "Frame files of a sequence: png (8-bit sRGB) or exr (half RGB + Z)")
       ->capture_default_str();
   addDeviceFlags(*cmd, o->device);

@@ -28,6 +28,10 @@ std::optional<std::uint64_t> parsePixels(std::string_view digits) {
   return value;
 }
 
+// Whole MiB of `bytesPerPixel` a pixel (sides <= 16384 and bytesPerPixel < 256: no overflow).
+std::uint64_t imageMemoryMiB(std::uint64_t width, std::uint64_t height, std::uint64_t bytesPerPixel) {
+  return (width * height * bytesPerPixel) >> 20;
+}
 }  // namespace
 
 Result<ImageSize> parseSize(const std::string& text, const std::string& field) {
@@ -38,7 +42,7 @@ Result<ImageSize> parseSize(const std::string& text, const std::string& field) {
   if (*w < kMinImageSidePx || *h < kMinImageSidePx || *w > kMaxImageSidePx || *h > kMaxImageSidePx)
     return Error::inField(field, fmt::format("width and height must be within [{}, {}] pixels, got '{}'",
                                              kMinImageSidePx, kMaxImageSidePx, text));
-  const std::uint64_t needMiB = (*w * *h * kRenderBytesPerPixel) >> 20;
+  const std::uint64_t needMiB = imageMemoryMiB(*w, *h, kRenderBytesPerPixel);
   if (needMiB > kMaxImageMemoryMiB)
     return Error::inField(
         field, fmt::format("{} would need about {} MiB of image memory, more than the limit of {} MiB", text, needMiB,
@@ -51,7 +55,7 @@ Status checkImageMemory(ImageSize size, vk::Antialiasing aa, bool mp4) {
                            : aa == vk::Antialiasing::kFxaa ? kFxaaBytesPerPixel
                                                            : kRenderBytesPerPixel;
   if (mp4) perPixel += kMp4BytesPerPixel;
-  const std::uint64_t needMiB = (std::uint64_t(size.width) * size.height * perPixel) >> 20;
+  const std::uint64_t needMiB = imageMemoryMiB(size.width, size.height, perPixel);
   if (needMiB <= kMaxImageMemoryMiB) return Ok{};
   return Error::inField("--size", fmt::format("{}x{} with --aa {}{} would need about {} MiB of image memory, more than "
                                               "the limit of {} MiB",
