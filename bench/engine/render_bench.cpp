@@ -5,7 +5,7 @@
 // Knobs: GLOBE_BENCH_QUALITY (fast|balanced|exact, default balanced), then overrides
 // GLOBE_BENCH_GRID (cells per node side) and GLOBE_BENCH_RANGE (LOD distance multiplier);
 // GLOBE_BENCH_LAND_COVER=off drops the planet's land cover (the colour ramp instead);
-// GLOBE_BENCH_DETAIL=on|off overrides the preset's detail textures (TerrainSettings::detailTextures).
+// GLOBE_BENCH_DETAIL=on|near|off overrides the preset's detail textures (TerrainSettings::detailTextures).
 #include "bench_support.h"
 #include "engine/render/headless_renderer.h"
 #include "engine/render/quality.h"
@@ -48,7 +48,14 @@ void BM_TerrainFrame(benchmark::State& state) {
   TerrainSettings settings = terrainSettingsFor(quality);
   if (const char* g = std::getenv("GLOBE_BENCH_GRID")) settings.gridCells = uint32_t(std::atoi(g));
   if (const char* r = std::getenv("GLOBE_BENCH_RANGE")) settings.ranges.distanceMultiplier = std::atof(r);
-  if (const char* d = std::getenv("GLOBE_BENCH_DETAIL")) settings.detailTextures = std::string(d) == "on";
+  if (const char* d = std::getenv("GLOBE_BENCH_DETAIL")) {
+    auto detail = parseDetailTextures(d, "GLOBE_BENCH_DETAIL");
+    if (!detail) {
+      state.SkipWithError(detail.error().format().c_str());
+      return;
+    }
+    settings.detailTextures = *detail;
+  }
   GeodeticPose pose = standardCameraPose(index);
   glm::dvec3 down = directionFromLatLon(pose.latitude_deg, pose.longitude_deg);
   Camera camera = cameraFromPose(pose, model.radius_m() + model.elevation_m(down), model.shape(), 1280.0 / 720.0);

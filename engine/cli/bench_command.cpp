@@ -187,7 +187,7 @@ BenchRunInfo runInfo(const BenchOptions& o, const vk::Device& device, const Terr
       o.planet, o.path, o.mode, device.name(), o.size, settings.gridCells, o.commandLine, std::string(GLOBE_VERSION)};
   info.shading = std::string("aa ") + vk::antialiasingName(settings.antialiasing) + ", normal map scale " +
                  std::to_string(settings.normalMapScale) + ", atmosphere " + atmosphereDetailName(settings.atmosphere) +
-                 ", detail textures " + (settings.detailTextures ? "on" : "off");
+                 ", detail textures " + detailTexturesName(settings.detailTextures);
   info.driver = device.driverName() + " " + device.driverInfo();
   info.shaderCache = mesaShaderCacheState();
   info.commit = GLOBE_COMMIT;

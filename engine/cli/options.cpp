@@ -175,9 +175,10 @@ void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid) {
           "AA"));
   addLodOptions(cmd, options);
   cmd.add_option("--detail-textures", options.detailTextures,
-                 "On a planet with land cover: on (splat the classes' detail textures per fragment) or off (the "
-                 "classes' colours per vertex) (docs/rendering.md, \"Land cover\"; default: the preset's)")
-      ->check(CLI::IsMember({"on", "off"}));
+                 "On a planet with land cover: on (splat the classes' detail textures per fragment), near (only "
+                 "near the camera, faded out by 200 m) or off (the classes' colours per vertex) "
+                 "(docs/rendering.md, \"Land cover\"; default: the preset's)")
+      ->check(CLI::IsMember({"on", "near", "off"}));
   cmd.add_option("--imagery", options.imagery,
                  "on (the surface textures from imagery tiles of their own LOD: each texel covers at most 1.5 "
                  "pixels, whatever the mesh's level) or off (each node's own texture, --normal-map-scale) "
@@ -207,7 +208,11 @@ Result<TerrainSettings> terrainSettingsFromOptions(const QualityOptions& options
   if (options.tolerance_px > 0) settings.ranges.tolerance_px = options.tolerance_px;
   if (options.texel_px >= 0) settings.ranges.texel_px = options.texel_px;
   if (!options.roughness.empty()) settings.ranges.roughness = options.roughness == "on";
-  if (!options.detailTextures.empty()) settings.detailTextures = options.detailTextures == "on";
+  if (!options.detailTextures.empty()) {
+    auto detail = parseDetailTextures(options.detailTextures, "--detail-textures");
+    if (!detail) return detail.error();
+    settings.detailTextures = *detail;
+  }
   if (!options.imagery.empty()) settings.imagery = options.imagery == "on";
   if (!options.antialiasing.empty()) {
     auto aa = vk::parseAntialiasing(options.antialiasing, "--aa");

@@ -71,7 +71,7 @@ struct QualityOptions {
   uint32_t normalMapScale = kPresetNormalMapScale;  // --normal-map-scale
   std::string atmosphere;                           // --atmosphere; empty: the preset's
   std::string roughness;                            // --roughness on|off; empty: off
-  std::string detailTextures;                       // --detail-textures on|off; empty: the preset's
+  std::string detailTextures;                       // --detail-textures on|near|off; empty: the preset's
   std::string imagery;                              // --imagery on|off; empty: the preset's
 };
 // --quality, --tolerance, --texel-px, --roughness, --detail-textures, --imagery, --aa, --normal-map-scale, --atmosphere

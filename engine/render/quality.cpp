@@ -15,7 +15,7 @@ TerrainSettings terrainSettingsFor(QualityPreset preset) {
       // against 22.5 ms without; the cheapest preset keeps the cheap path (docs/rendering.md,
       // "Surface textures").
       s.normalMapScale = 0;
-      s.detailTextures = false;  // as balanced
+      s.detailTextures = DetailTextures::kOff;  // per vertex everywhere: the cheap path
       s.atmosphere = AtmosphereDetail::kSky;
       break;
     case QualityPreset::kBalanced:  // ~80k triangles at 1 km: 26 ms at 1280x720 on lavapipe (goal 33)
@@ -36,9 +36,10 @@ TerrainSettings terrainSettingsFor(QualityPreset preset) {
       // the flyover's median 32.9 ms on lavapipe where scale 4 (64 texels) spends 3.6 ms a frame
       // generating them and reaches 36.5 ms (docs/rendering.md, "Surface textures").
       s.normalMapScale = 2;
-      // Land cover colours per vertex: the splat's detail textures took the flight's median from 21
-      // to 33 ms on lavapipe (docs/rendering.md, "Land cover").
-      s.detailTextures = false;
+      // The land cover's detail textures near the ground only (below ~100 m they are what the surface
+      // shows; everywhere they took the flight's median from 21 to 33 ms on lavapipe): farther away
+      // the classes' colours per vertex (docs/rendering.md, "Land cover", "Ground detail").
+      s.detailTextures = DetailTextures::kNear;
       // The sky only: light and aerial perspective through the atmosphere cost +75-95 % of the
       // flight's CPU on lavapipe (docs/rendering.md, "Atmosphere").
       s.atmosphere = AtmosphereDetail::kSky;

@@ -30,6 +30,24 @@ Result<AtmosphereDetail> parseAtmosphereDetail(const std::string& text, const st
   return Error::inField(field, "unknown atmosphere detail '" + text + "' (off, sky, full)");
 }
 
+Result<DetailTextures> parseDetailTextures(const std::string& text, const std::string& field) {
+  for (DetailTextures d : {DetailTextures::kOff, DetailTextures::kNear, DetailTextures::kOn})
+    if (text == detailTexturesName(d)) return d;
+  return Error::inField(field, "unknown detail textures '" + text + "' (off, near, on)");
+}
+
+const char* detailTexturesName(DetailTextures detail) {
+  switch (detail) {
+    case DetailTextures::kOff:
+      return "off";
+    case DetailTextures::kNear:
+      return "near";
+    case DetailTextures::kOn:
+      break;
+  }
+  return "on";
+}
+
 const char* atmosphereDetailName(AtmosphereDetail detail) {
   switch (detail) {
     case AtmosphereDetail::kOff:
@@ -73,7 +91,7 @@ Result<std::unique_ptr<Terrain>> Terrain::create(vk::Device& device, const Eleva
   if (lod.ranges.tolerance_px > 0.0 && lod.ranges.roughness)
     selector->ranges().setRoughness(reliefRoughnessMap(model, int(settings.gridCells), lod.ranges.maxDepth));
   std::unique_ptr<Terrain> terrain(new Terrain(device, model, settings, std::move(*selector)));
-  if (model.landCover().class_count > 0 && settings.detailTextures) {
+  if (model.landCover().class_count > 0 && settings.detailTextures != DetailTextures::kOff) {
     Result<DetailTextureSet> textures = loadDetailTextures(model.landCoverDescription(), model.seed());
     if (!textures) return textures.error();
     terrain->detail_ = std::make_unique<DetailTextureArray>(device, *textures);
@@ -124,6 +142,7 @@ void Terrain::attachPool(std::unique_ptr<PayloadPool> pool) {
   if (!imagery_ && settings_.normalMapScale > 0)
     meshMaps_.emplace(ImageryConfig{}, model_.radius_m(), model_.bounds().min_m, model_.bounds().max_m, model_.shape());
   if (detail_) style.detailTextures = detail_->descriptor();
+  if (settings_.detailTextures == DetailTextures::kNear) style.detailRange_m = kGroundDetailRange_m;
   if (settings_.atmosphere != AtmosphereDetail::kOff && model_.atmosphere())
     atmosphere_ = std::make_unique<AtmosphereLuts>(device_, *model_.atmosphere(), model_.radius_m());
   style.atmosphere = atmosphere_.get();

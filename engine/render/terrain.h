@@ -31,15 +31,26 @@ enum class AtmosphereDetail { kOff, kSky, kFull };
 Result<AtmosphereDetail> parseAtmosphereDetail(const std::string& text, const std::string& field);
 const char* atmosphereDetailName(AtmosphereDetail detail);
 
+// On a planet with land cover, where the classes' detail textures are splatted (the _cover pipelines,
+// docs/rendering.md "Land cover"): kOn on every node; kNear only on the nodes near the camera, faded
+// out with distance (kGroundDetailRange_m), so the ground shows detail below ~100 m at no cost to views
+// from higher up; kOff nowhere (the classes' colours per vertex).
+enum class DetailTextures { kOff, kNear, kOn };
+// "off", "near" or "on"; anything else is an Error naming `field`.
+Result<DetailTextures> parseDetailTextures(const std::string& text, const std::string& field);
+const char* detailTexturesName(DetailTextures detail);
+// kNear: view depth (metres) beyond which no detail is drawn; it fades in from a third of it.
+inline constexpr double kGroundDetailRange_m = 200.0;
+
 struct TerrainSettings {
   uint32_t gridCells = 32;  // cells per node side: power of two in [16, 256]
   // Normal map cells per grid cell (1, 2 or 4): each payload's normal and colour map has
   // normalMapScale * gridCells cells per side (docs/rendering.md, "Surface textures"). 0: no maps, the
   // light and colour per vertex (cheaper per fragment on lavapipe).
   uint32_t normalMapScale = 1;
-  // On a planet with land cover: splat the classes' detail textures per fragment (the _cover
-  // pipelines); off, the payloads' land cover colours per vertex only (docs/rendering.md, "Land cover").
-  bool detailTextures = true;
+  // On a planet with land cover: where the classes' detail textures are splatted per fragment (the
+  // _cover pipelines); elsewhere the payloads' land cover colours (docs/rendering.md, "Land cover").
+  DetailTextures detailTextures = DetailTextures::kOn;
   // Imagery LOD (engine/render/imagery_tiles.h): the normal and colour maps come from tiles of their
   // own, refined by texel magnification apart from the mesh (normalMapScale is then ignored: mesh
   // payloads carry no maps). Off: each payload's own map, at the mesh's level. Stored positions only

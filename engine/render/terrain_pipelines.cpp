@@ -8,7 +8,12 @@
 namespace globe {
 
 TerrainShading surfaceShading(const TerrainStyle& style, bool atmosphere, bool water) {
-  return {style.normalMapScale > 0 || style.imagery, atmosphere, water, style.holes, style.landCover(), style.imagery};
+  return {style.normalMapScale > 0 || style.imagery,
+          atmosphere,
+          water,
+          style.holes,
+          style.coverEverywhere(),
+          style.imagery};
 }
 
 std::string terrainFragmentShader(const TerrainShading& s) {

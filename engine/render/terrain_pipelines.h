@@ -27,7 +27,8 @@ struct TerrainShading {
   bool imagery = false;  // the maps from the imagery tiles (with normalMaps)
 };
 
-// The surface pipelines' shading (the wireframe's has neither water nor holes nor land cover).
+// The surface pipelines' shading (the wireframe's has neither water nor holes nor land cover); with
+// the land cover near the camera only (TerrainStyle::coverNear), the pipelines without it.
 TerrainShading surfaceShading(const TerrainStyle& style, bool atmosphere, bool water);
 
 // terrain[_atmosphere][_maps[_imagery]][_water][_holes][_cover].frag: the variants of shaders/CMakeLists.txt.

@@ -38,16 +38,19 @@ static_assert(sizeof(gpu::TerrainFrame) <= kFrameHeaderBytes);
 
 // Draw groups: the index buffer's four ranges (full grid, half grid, full skirt strip, half skirt
 // strip) for nodes without sea, then the same four for nodes with sea, drawn with the water shader
-// (their skirts too: a skirt shows through sub-pixel gaps, and below the sea it must be sea).
+// (their skirts too: a skirt shows through sub-pixel gaps, and below the sea it must be sea); then
+// the same eight for the nodes near the camera drawn with the land cover's splat
+// (TerrainStyle::detailRange_m; their skirts are drawn with the others').
 constexpr uint32_t kIndexRanges = 4;
-constexpr uint32_t kDrawGroups = 2 * kIndexRanges;
-constexpr uint32_t kWaterGroups = kIndexRanges;  // groups 4..7: nodes with sea
+constexpr uint32_t kWaterGroups = kIndexRanges;       // groups 4..7: nodes with sea
+constexpr uint32_t kDetailGroups = 2 * kIndexRanges;  // groups 8..15: the same near the camera
+constexpr uint32_t kDrawGroups = 2 * kDetailGroups;
 // Grids before skirts, so that the pass marks split them.
-constexpr std::array<uint32_t, kDrawGroups> kGroupOrder{0, 1, 4, 5, 2, 3, 6, 7};
+constexpr std::array<uint32_t, 12> kGroupOrder{0, 1, 4, 5, 8, 9, 12, 13, 2, 3, 6, 7};
 
-// The group of a node's grid (range 0) or skirts (range 2).
-uint32_t drawGroup(const DrawNode& n, uint32_t range) {
-  return range + (n.partial ? 1u : 0u) + (n.water ? kWaterGroups : 0u);
+// The group of a node's grid (range 0) or skirts (range 2); `detail`: drawn with the splat.
+uint32_t drawGroup(const DrawNode& n, uint32_t range, bool detail) {
+  return range + (n.partial ? 1u : 0u) + (n.water ? kWaterGroups : 0u) + (detail && range < 2 ? kDetailGroups : 0u);
 }
 
 // Triangles of an n x n grid (vertex i + j (n+1)), every cell split along (i, j)-(i+1, j+1).
@@ -100,27 +103,31 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
       // surface and the hole's rim are seen from below through the hole too.
       // The reprojected positions (a measurement only) are drawn without the atmosphere.
       atmosphere_(positions == VertexPositions::kStored && style.aerialPerspective ? style.atmosphere : nullptr),
-      pendingOptional_(
-          std::async(std::launch::async,
-                     [&device, style, positions, target = TargetFormat{colourFormat, samples},
-                      atmosphere = atmosphere_ != nullptr] {
-                       OptionalPipelines made;
-                       if (style.water.enabled) {
-                         const TerrainShading water = surfaceShading(style, atmosphere, true);
-                         made.water = std::make_unique<vk::GraphicsPipeline>(
-                             device, terrainDesc(target, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT,
-                                                 positions, water));
-                         made.waterSkirts = std::make_unique<vk::GraphicsPipeline>(
-                             device, terrainDesc(target, false, VK_CULL_MODE_NONE, positions, water));
-                       }
-                       VkPhysicalDeviceFeatures features{};
-                       vkGetPhysicalDeviceFeatures(device.physical(), &features);
-                       if (features.fillModeNonSolid) {
-                         made.wireframe = std::make_unique<vk::GraphicsPipeline>(
-                             device, terrainDesc(target, true, VK_CULL_MODE_NONE, positions, {false, atmosphere}));
-                       }
-                       return made;
-                     })),
+      pendingOptional_(std::async(
+          std::launch::async,
+          [&device, style, positions, target = TargetFormat{colourFormat, samples},
+           atmosphere = atmosphere_ != nullptr] {
+            OptionalPipelines made;
+            if (style.water.enabled) {
+              TerrainShading water = surfaceShading(style, atmosphere, true);
+              const VkCullModeFlags cull = style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
+              made.water =
+                  std::make_unique<vk::GraphicsPipeline>(device, terrainDesc(target, false, cull, positions, water));
+              made.waterSkirts = std::make_unique<vk::GraphicsPipeline>(
+                  device, terrainDesc(target, false, VK_CULL_MODE_NONE, positions, water));
+              water.cover = true;
+              if (style.coverNear())
+                made.waterDetail =
+                    std::make_unique<vk::GraphicsPipeline>(device, terrainDesc(target, false, cull, positions, water));
+            }
+            VkPhysicalDeviceFeatures features{};
+            vkGetPhysicalDeviceFeatures(device.physical(), &features);
+            if (features.fillModeNonSolid) {
+              made.wireframe = std::make_unique<vk::GraphicsPipeline>(
+                  device, terrainDesc(target, true, VK_CULL_MODE_NONE, positions, {false, atmosphere}));
+            }
+            return made;
+          })),
       solid_(device,
              terrainDesc({colourFormat, samples}, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT,
                          positions, surfaceShading(style, atmosphere_ != nullptr, false))),
@@ -132,6 +139,14 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
   water_ = std::move(optional.water);
   waterSkirts_ = std::move(optional.waterSkirts);
   wireframe_ = std::move(optional.wireframe);
+  waterDetail_ = std::move(optional.waterDetail);
+  if (style.coverNear()) {
+    TerrainShading detail = surfaceShading(style, atmosphere_ != nullptr, false);
+    detail.cover = true;
+    solidDetail_ = std::make_unique<vk::GraphicsPipeline>(
+        device, terrainDesc({colourFormat, samples}, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT,
+                            positions, detail));
+  }
   if (atmosphere_) view_ = std::make_unique<AtmosphereView>(device, *atmosphere_);
   if (style.atmosphere) {
     // Without an atmosphere the background stays the clear colour: black space.
@@ -282,8 +297,8 @@ DrawStats TerrainRenderer::recordTerrain(VkCommandBuffer cmd, const Camera& came
   gpu::TerrainReprojectionNode* reprojection =
       positions_ == VertexPositions::kReprojected ? beginReprojection(frameIndex, camera) : nullptr;
   const uint32_t pageCount = std::max(payloads.pageCount(), 1u);
+  orderNearFirst(nodes, camera.position_m, view);
   groupInstances(nodes, payloads, pageCount, skirts);
-  orderNearFirst(nodes, camera.position_m);
   const uint32_t partial = writeInstances(bytes, origin_m, nodes, payloads, pageCount, skirts, reprojection);
   DrawStats stats = recordDraws(cmd, payloads, pageCount, frameIndex, view, reprojection != nullptr, imagery, nextMark);
   stats.nodes = uint32_t(nodes.size());
@@ -346,7 +361,14 @@ TerrainDebugView TerrainRenderer::writeFrameConstants(unsigned char* bytes, cons
   frame.skyZenith = toGpu(style_.zenithColour, 0.0f);
   frame.skyHorizon = toGpu(style_.horizonColour, 0.0f);
   frame.centreFromCamera = toGpu(glm::vec3(-camera.position_m), 0.0f);  // once per frame, in double
-  frame.detailLevels = {float(detailTiling_.fineLevel), float(detailTiling_.coarseLevel), 0.0f, 0.0f};
+  // The splat's fade near the camera (coverNear): 0 to 1 over view depths [range / 3, range], as
+  // a / depth + b of the fragment's reversed-Z depth (= near / view depth); 0, 0: never faded.
+  glm::vec2 fade(0.0f);
+  if (style_.coverNear()) {
+    const double start_m = style_.detailRange_m / 3.0, width_m = style_.detailRange_m - start_m;
+    fade = glm::vec2(float(camera.near_m / width_m), float(-start_m / width_m));
+  }
+  frame.detailLevels = {float(detailTiling_.fineLevel), float(detailTiling_.coarseLevel), fade.x, fade.y};
   std::memcpy(bytes, &frame, sizeof(frame));
   return view;
 }
@@ -359,22 +381,32 @@ void TerrainRenderer::groupInstances(std::span<const DrawNode> nodes, const Payl
   instancesOf_.assign(size_t(kDrawGroups) * pageCount, 0);
   for (size_t k = 0; k < nodes.size(); ++k) {
     const uint32_t page = payloads.page(nodes[k].slot);
-    ++instancesOf_[size_t(drawGroup(nodes[k], 0)) * pageCount + page];
+    ++instancesOf_[size_t(drawGroup(nodes[k], 0, detailNode_[k])) * pageCount + page];
     if (skirts)
-      instancesOf_[size_t(drawGroup(nodes[k], 2)) * pageCount + page] += uint32_t(std::popcount(skirtMask_[k]));
+      instancesOf_[size_t(drawGroup(nodes[k], 2, false)) * pageCount + page] += uint32_t(std::popcount(skirtMask_[k]));
   }
   firstInstance_.assign(instancesOf_.size(), 0);
   for (size_t g = 1; g < instancesOf_.size(); ++g) firstInstance_[g] = firstInstance_[g - 1] + instancesOf_[g - 1];
 }
 
-void TerrainRenderer::orderNearFirst(std::span<const DrawNode> nodes, const glm::dvec3& camera_m) {
+void TerrainRenderer::orderNearFirst(std::span<const DrawNode> nodes, const glm::dvec3& camera_m,
+                                     TerrainDebugView view) {
   // Near nodes first within each draw: the depth test then rejects most hidden fragments before
   // they are shaded (lavapipe skips a block's shader when its whole depth mask fails).
   distances_.resize(nodes.size());
   order_.resize(nodes.size());
+  detailNode_.assign(nodes.size(), 0);
   for (size_t k = 0; k < nodes.size(); ++k) {
     distances_[k] = glm::length(nodes[k].centre_m - camera_m);
     order_[k] = uint32_t(k);
+    // The splat's fade is by view depth, at most the distance: a node is near when its centre is
+    // within twice the range (view depth >= half the distance within a field of view of 120
+    // degrees) plus a generous radius (1.5 node widths, for the relief), so every fragment of the
+    // nodes drawn without it is faded out already. The land cover view needs every node's masks.
+    if (style_.coverNear()) {
+      const double radius_m = 1.5 * nominalNodeWidth(nodes[k].id.level, style_.radius_m);
+      detailNode_[k] = view == TerrainDebugView::kLandCover || distances_[k] - radius_m < 2.0 * style_.detailRange_m;
+    }
   }
   std::sort(order_.begin(), order_.end(), [&](uint32_t a, uint32_t b) { return distances_[a] < distances_[b]; });
 }
@@ -409,7 +441,8 @@ uint32_t TerrainRenderer::writeInstances(unsigned char* bytes, const glm::dvec3&
     }
     partial += n.partial ? 1u : 0u;
     const uint32_t page = payloads.page(n.slot);
-    const size_t grid = size_t(drawGroup(n, 0)) * pageCount + page, skirt = size_t(drawGroup(n, 2)) * pageCount + page;
+    const size_t grid = size_t(drawGroup(n, 0, detailNode_[k])) * pageCount + page;
+    const size_t skirt = size_t(drawGroup(n, 2, false)) * pageCount + page;
     if (reprojection) reprojection[next[grid]] = mapping;
     instances[next[grid]++] = inst;
     for (uint32_t e = 0; skirts && e < 4; ++e) {
@@ -426,21 +459,16 @@ DrawStats TerrainRenderer::recordDraws(VkCommandBuffer cmd, const PayloadPages& 
                                        uint32_t frameIndex, TerrainDebugView view, bool reprojected,
                                        const ImageryBinding* imagery, uint32_t& nextMark) const {
   DrawStats stats;
-  const bool wireframe = view == TerrainDebugView::kWireframe, debugView = view != TerrainDebugView::kShaded;
+  const bool wireframe = view == TerrainDebugView::kWireframe;
   vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
   for (const uint32_t group : kGroupOrder) {
     const uint32_t r = group % kIndexRanges;                      // the group's index range
-    if (group == 2) writeMarks(cmd, nextMark, kMarkSkirtsBegin);  // groups 0, 1, 4, 5 are grids; the rest skirts
+    if (group == 2) writeMarks(cmd, nextMark, kMarkSkirtsBegin);  // kGroupOrder: grids, then from group 2 on skirts
     for (uint32_t page = 0; page < pageCount; ++page) {
       const size_t g = size_t(group) * pageCount + page;
       if (instancesOf_[g] == 0) continue;
-      // Grids are drawn with back faces culled, skirts from both sides; the wireframe view shows
-      // both. Nodes with sea use the water shader unless a debug view colours them by level.
-      const vk::GraphicsPipeline& pipeline = wireframe ? *wireframe_
-                                             : group >= kWaterGroups && water_ && !debugView
-                                                 ? (r < 2 ? *water_ : *waterSkirts_)
-                                             : r < 2 ? solid_
-                                                     : skirts_;
+      const vk::GraphicsPipeline& pipeline = groupPipeline(group, view);
+      const bool cover = style_.coverEverywhere() || (group >= kDetailGroups && !wireframe);
       const gpu::TerrainDrawPush push{r % 2 == 0 ? cells_ : cells_ / 2, 0};
       std::array<VkDescriptorBufferInfo, 9 + 1> buffers{instanceDescriptor(frameIndex), payloads.window(page),
                                                         constantsDescriptor(frameIndex)};
@@ -455,7 +483,7 @@ DrawStats TerrainRenderer::recordDraws(VkCommandBuffer cmd, const PayloadPages& 
           buffers[count++] = b;
       }
       if (imagery && !wireframe) buffers[count++] = imagery->cells;  // the wireframe's pipeline has no maps
-      const ImageSet images = wireframe ? ImageSet{} : drawImages(payloads, page, imagery);
+      const ImageSet images = wireframe ? ImageSet{} : drawImages(payloads, page, imagery, cover);
       pipeline.bind(cmd, std::span(buffers.data(), count), &push, sizeof(push),
                     std::span(images.images.data(), images.count));
       vkCmdDrawIndexed(cmd, count_[r], instancesOf_[g], first_[r], 0, firstInstance_[g]);
@@ -466,11 +494,22 @@ DrawStats TerrainRenderer::recordDraws(VkCommandBuffer cmd, const PayloadPages& 
   return stats;
 }
 
+const vk::GraphicsPipeline& TerrainRenderer::groupPipeline(uint32_t group, TerrainDebugView view) const {
+  // Grids are drawn with back faces culled, skirts from both sides; the wireframe view shows both.
+  // Nodes with sea use the water shader unless a debug view colours them by level.
+  if (view == TerrainDebugView::kWireframe) return *wireframe_;
+  const uint32_t r = group % kIndexRanges;
+  const bool detail = group >= kDetailGroups;
+  if (group % kDetailGroups >= kWaterGroups && water_ && view == TerrainDebugView::kShaded)
+    return r >= 2 ? *waterSkirts_ : detail ? *waterDetail_ : *water_;
+  return r >= 2 ? skirts_ : detail ? *solidDetail_ : solid_;
+}
+
 TerrainRenderer::ImageSet TerrainRenderer::drawImages(const PayloadPages& payloads, uint32_t page,
-                                                      const ImageryBinding* imagery) const {
+                                                      const ImageryBinding* imagery, bool cover) const {
   ImageSet set;
   // The detail textures, for the land cover pipelines.
-  if (style_.landCover()) set.images[set.count++] = {{GLOBE_TERRAIN_DETAIL_BINDING}, style_.detailTextures};
+  if (cover) set.images[set.count++] = {{GLOBE_TERRAIN_DETAIL_BINDING}, style_.detailTextures};
   if (imagery) {
     for (const vk::ImageDescriptor& image : imagery->textures) set.images[set.count++] = image;
   } else if (style_.normalMapScale > 0 && payloads.surfaces) {

@@ -90,11 +90,19 @@ struct TerrainStyle {
   // by the caller, alive as long as the renderer). With an image view the payloads' masks are read
   // and the fragment stages splat the textures (terrain_fragment.glsl); null: no land cover.
   VkDescriptorImageInfo detailTextures{};
+  // With land cover: 0 splats the detail textures on every node; > 0 only on the nodes that may come
+  // within this view depth (metres) of the camera, faded out from a third of it to it, so that the
+  // nodes beyond draw without the splat's cost and look the same (DetailTextures::kNear).
+  double detailRange_m = 0.0;
   // Imagery LOD (engine/render/imagery_tiles.h): the fragment stages shade from the imagery tiles'
   // maps (record() gets their binding) instead of the payloads' own (normalMapScale is then 0: the
   // mesh payloads have no maps). Stored vertex positions only.
   bool imagery = false;
   bool landCover() const { return detailTextures.imageView != VK_NULL_HANDLE; }
+  // Land cover splatted on every node (the surface pipelines all have it).
+  bool coverEverywhere() const { return landCover() && detailRange_m <= 0.0; }
+  // Land cover splatted near the camera only (pipelines with and without it).
+  bool coverNear() const { return landCover() && detailRange_m > 0.0; }
 };
 
 // One node to draw; the caller builds these from the selection and the payload pool.
@@ -189,8 +197,9 @@ class TerrainRenderer {
   std::array<uint32_t, 2> markSkirtedEdges(std::span<const DrawNode> nodes);
   TerrainDebugView writeFrameConstants(unsigned char* bytes, const Camera& camera, const glm::dvec3& origin_m,
                                        bool skirts) const;
-  // Fills order_: the indices of `nodes` by distance from the camera, nearest first.
-  void orderNearFirst(std::span<const DrawNode> nodes, const glm::dvec3& camera_m);
+  // Fills order_: the indices of `nodes` by distance from the camera, nearest first; and with
+  // coverNear(), detailNode_: which nodes may come within the detail range (all in the land cover view).
+  void orderNearFirst(std::span<const DrawNode> nodes, const glm::dvec3& camera_m, TerrainDebugView view);
   void groupInstances(std::span<const DrawNode> nodes, const PayloadPages& payloads, uint32_t pageCount, bool skirts);
   uint32_t writeInstances(unsigned char* bytes, const glm::dvec3& origin_m, std::span<const DrawNode> nodes,
                           const PayloadPages& payloads, uint32_t pageCount, bool skirts,
@@ -201,7 +210,9 @@ class TerrainRenderer {
     std::array<vk::ImageDescriptor, 1 + kImageryTilePages> images{};
     uint32_t count = 0;
   };
-  ImageSet drawImages(const PayloadPages& payloads, uint32_t page, const ImageryBinding* imagery) const;
+  ImageSet drawImages(const PayloadPages& payloads, uint32_t page, const ImageryBinding* imagery, bool cover) const;
+  // The pipeline of draw group `group` (terrain_renderer.cpp, drawGroup) in debug view `view`.
+  const vk::GraphicsPipeline& groupPipeline(uint32_t group, TerrainDebugView view) const;
   DrawStats recordDraws(VkCommandBuffer cmd, const PayloadPages& payloads, uint32_t pageCount, uint32_t frameIndex,
                         TerrainDebugView view, bool reprojected, const ImageryBinding* imagery,
                         uint32_t& nextMark) const;
@@ -218,7 +229,7 @@ class TerrainRenderer {
   // The water and wireframe pipelines, created on a second thread while the others are (pipeline
   // creation is most of the renderer's set-up: docs/benchmark.md, "Cold start").
   struct OptionalPipelines {
-    std::unique_ptr<vk::GraphicsPipeline> water, waterSkirts, wireframe;
+    std::unique_ptr<vk::GraphicsPipeline> water, waterSkirts, wireframe, waterDetail;
   };
   std::future<OptionalPipelines> pendingOptional_;
   vk::GraphicsPipeline solid_;                         // grids, back faces culled
@@ -226,6 +237,8 @@ class TerrainRenderer {
   std::unique_ptr<vk::GraphicsPipeline> water_;        // grids of nodes with sea (planets with water only)
   std::unique_ptr<vk::GraphicsPipeline> waterSkirts_;  // their skirts, both sides
   std::unique_ptr<vk::GraphicsPipeline> wireframe_;
+  // coverNear(): the grids of the nodes near the camera, with the land cover's splat (water: with sea).
+  std::unique_ptr<vk::GraphicsPipeline> solidDetail_, waterDetail_;
   std::unique_ptr<vk::GraphicsPipeline> sky_;           // with an atmosphere only: the camera inside it
   std::unique_ptr<vk::GraphicsPipeline> skyFromSpace_;  // the same, the camera outside it
   vk::Buffer indices_;
@@ -242,6 +255,7 @@ class TerrainRenderer {
   std::vector<uint8_t> skirtMask_;                // per drawn node: bit e = edge e has a skirt
   std::vector<double> distances_;                 // per drawn node: metres from the camera
   std::vector<uint32_t> order_;                   // drawn nodes' indices, nearest first
+  std::vector<uint8_t> detailNode_;               // per drawn node: 1 = drawn with the splat (coverNear())
   // Per draw group (index range x payload page): instance count, first instance, next free one.
   std::vector<uint32_t> instancesOf_, firstInstance_, nextInstance_;
 };

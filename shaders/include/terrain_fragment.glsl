@@ -18,7 +18,8 @@
 //   classes' tiled detail textures (splat texturing): the fine tile of the dominant class per
 //   fragment, the coarse tile from the vertex stage (terrain_cover*.vert; terrain_detail.h). The
 //   textures' mean is 0.5, so far away (coarse mips) the modulation is 1 and the colour is the
-//   payload's: no pop between distances.
+//   payload's: no pop between distances. With the splat near the camera only (DetailTextures::kNear)
+//   the modulation fades to 1 with view depth, so the nodes beyond, drawn without it, match.
 #include "display_encoding.glsl"
 #include "terrain_layout.h"
 
@@ -187,7 +188,9 @@ void main() {
   bool debug = frame.options.y != GLOBE_TERRAIN_SHADED;
   vec3 modulation = vec3(1.0);
 #ifdef GLOBE_TERRAIN_COVER
-  modulation = mix(detailModulation(), vec3(1.0), bvec3(debug));
+  // gl_FragCoord.z is near / view depth (reversed Z, infinite far plane): the fade is by view depth.
+  float fade = clamp(frame.detailLevels.z / gl_FragCoord.z + frame.detailLevels.w, 0.0, 1.0);
+  modulation = mix(mix(detailModulation(), vec3(1.0), fade), vec3(1.0), bvec3(debug));
 #endif
   // The vertex colour is lit and display-encoded, ~ the square root of linear (display_encoding.h):
   // the square root of the modulation scales it as the albedo's would.

@@ -80,7 +80,8 @@ struct TerrainFrame {
   GLOBE_VEC4 skyHorizon;      // 208: rgb = the sky at the horizon (linear)
   GLOBE_VEC4 centreFromCamera;  // 224: xyz = float(planet centre - camera), metres (a direction for the sea's normal)
   GLOBE_VEC4 detailLevels;      // 240: x, y = quadtree levels whose node is one tile of the fine, coarse detail
-                                //      texture (TerrainDetailTiling); zw unused
+                                //      texture (TerrainDetailTiling); z, w = the splat's fade with distance:
+                                //      clamp(z / gl_FragCoord.z + w, 0, 1) (0, 0: no fade)
 };
 
 // One cell of a drawn node's imagery table (std430, 32 bytes; the node's cells in rows along v).

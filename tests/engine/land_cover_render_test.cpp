@@ -17,6 +17,7 @@ class LandCoverRenderTest : public GpuTest {
                    const ElevationModel& model = earthlikeModel()) {
     TerrainSettings settings;
     settings.gridCells = 16;
+    settings.detailTextures = detail_;
     settings.style.debug = view;
     const glm::dvec3 down = directionFromLatLon(pose.latitude_deg, pose.longitude_deg);
     settings.style.sunDirection = down;  // the sun overhead
@@ -28,6 +29,7 @@ class LandCoverRenderTest : public GpuTest {
     renderer.renderFrame(**terrain, camera, true);
     return toImage(renderer.readback(), camera);
   }
+  DetailTextures detail_ = DetailTextures::kOn;
 };
 
 // The key colour of class i (terrain_level_colour.glsl: level i's), linear.
@@ -93,6 +95,25 @@ TEST_F(LandCoverRenderTest, DetailTexturesVaryTheGroundAtTwoMetres) {
   const double smooth = groundVariation(render(pose, TerrainDebugView::kShaded, 160, 120, flat));
   std::printf("[ info ] mean neighbour difference of the ground's green: %.4f textured, %.4f flat\n", textured, smooth);
   EXPECT_GT(textured, 1.5 * smooth);
+}
+
+// The balanced preset's ground detail (DetailTextures::kNear): the splat on the nodes near the camera
+// only, faded out with view depth. At 2 m it varies the ground as the splat everywhere does; from
+// 1 km the image is the one without the splat, bit for bit (the nodes drawn with it, if any, are
+// faded out completely, and the others are drawn as without it).
+TEST_F(LandCoverRenderTest, GroundDetailNearTheCameraOnly) {
+  const GeodeticPose ground{17.08, -106.55, 2.0, 80.0, -30.0, 0.0};
+  const GeodeticPose high{22.05, -98.4, 1000.0, 60.0, -8.0, 0.0};
+  detail_ = DetailTextures::kOff;
+  const double without = groundVariation(render(ground, TerrainDebugView::kShaded, 160, 120));
+  const ImageRgba highWithout = render(high, TerrainDebugView::kShaded, 160, 120);
+  detail_ = DetailTextures::kNear;
+  const double near = groundVariation(render(ground, TerrainDebugView::kShaded, 160, 120));
+  const ImageRgba highNear = render(high, TerrainDebugView::kShaded, 160, 120);
+  std::printf("[ info ] mean neighbour difference of the ground's green at 2 m: %.4f near, %.4f without\n", near,
+              without);
+  EXPECT_GT(near, 1.5 * without);
+  EXPECT_TRUE(highNear.rgba == highWithout.rgba) << "the splat changed the view from 1 km";
 }
 
 }  // namespace
