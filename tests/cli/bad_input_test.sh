@@ -62,7 +62,7 @@ expect 2 "--aa: unknown anti-aliasing 'smaa'" "" -- "$GLOBE" bench --aa smaa --o
 expect 2 "--atmosphere: unknown atmosphere detail 'haze' \(off, sky, full\)" "$O" -- "$GLOBE" render --atmosphere haze --out "$O" --size 64x64
 expect 2 "--atmosphere: unknown atmosphere detail ''" "" -- "$GLOBE" view --atmosphere "" --frames 1
 expect 2 "--roughness: maybe not in \{on,off\}" "$O" -- "$GLOBE" render --roughness maybe --out "$O" --size 64x64
-expect 2 "--detail-textures: yes not in \{on,off\}" "$O" -- "$GLOBE" render --detail-textures yes --out "$O" --size 64x64
+expect 2 "--detail-textures: yes not in \{on,near,off\}" "$O" -- "$GLOBE" render --detail-textures yes --out "$O" --size 64x64
 expect 2 "--imagery: maybe not in \{on,off\}" "$O" -- "$GLOBE" render --imagery maybe --out "$O" --size 64x64
 expect 2 "--stride: .*0" "" -- "$GLOBE" trade --quick --stride 0 --out "$WORK/trade"
 expect 2 "--png-width: .*0" "$WORK/p.png" -- "$GLOBE" planet export --width 64 --out "$WORK/m.exr" --png "$WORK/p.png" --png-width 0
