@@ -285,49 +285,53 @@ double fillNormalMap(PayloadJob job, uint scratchBase) {
   return double(lowest);
 }
 
-void main() {
-  uint jobIndex = gl_WorkGroupID.x;
-  if (jobIndex >= push.jobCount) return;
-  PayloadJob job = jobs[jobIndex];
+// One sample's planet-centred position (double) for direction `dir`: the elevation with the job's
+// source terms, on the sea surface where the ground is below it (kWaterSurface). h: the ground's
+// elevation, drawn: the surface's, firstLayer: the first layer's value (the land cover's climate).
+dvec3 samplePosition(PayloadJob job, dvec3 dir, uint index, out double h, out double drawn, out double firstLayer) {
+#ifdef GLOBE_PAYLOAD_FLOAT
+  // What an all-float pipeline computes: the direction rounded to float, the elevation and the
+  // planet-centred position in float (a 0.5 m grid at Earth radius), then made relative.
+  vec3 dirFloat = vec3(dir);
+  float firstFloat;
+  float hFloat = globeApplySourcesFloat(globeElevationWithFirstLayerFloat(dirFloat, firstFloat), job.sourceBase, index);
+  firstLayer = double(firstFloat);
+  float drawnFloat = kWaterSurface != 0u ? max(hFloat, float(GLOBE_ELEVATION_PARAMS.sea_level_m)) : hFloat;
+  vec3 pFloat = dirFloat * (float(GLOBE_ELEVATION_PARAMS.radius_m) + drawnFloat);
+  if (kGlobeEllipsoid != 0u) {  // a specialization constant: no branch is left
+    float a = float(GLOBE_ELEVATION_PARAMS.radius_m), b = float(GLOBE_ELEVATION_PARAMS.polar_radius_m);
+    vec3 scaled = dirFloat * vec3(a * a, a * a, b * b);
+    pFloat = scaled / sqrt(dot(scaled, dirFloat)) + dirFloat * drawnFloat;
+  }
+  h = double(hFloat);
+  drawn = double(drawnFloat);
+  return dvec3(pFloat);
+#else
+  // The geodetic surface point plus the elevation along the normal (= globe::Ellipsoid::position).
+  h = globeApplySources(globeElevationWithFirstLayer(dir, firstLayer), job.sourceBase, index);
+  drawn = kWaterSurface != 0u ? max(h, GLOBE_ELEVATION_PARAMS.sea_level_m) : h;
+  precise dvec3 p = globePosition(dir, drawn);
+  return p;
+#endif
+}
+
+// Pass 1: every sample's position (vertices and the ring), quantised relative to the node centre
+// into the slot, in double into the scratch; this invocation's min/max vertex radius and lowest
+// ground go to the shared arrays.
+void meshPositions(PayloadJob job, uint slotBase, uint scratchBase) {
   int n = int(push.cells);
   int s = n + 3;
   uint samples = uint(s * s);
-  uint slotBase = job.slot * GLOBE_PAYLOAD_SLOT_VEC4(push.cells);
-  uint scratchBase = jobIndex * max(samples, surfaceEvaluations());
   dvec3 centre = job.centre.xyz;
   double q = job.centre.w;
-
   double localMin = 1.0e300lf;
   double localMax = 0.0lf;
   double localLowest = 1.0e300lf;
   for (uint index = gl_LocalInvocationID.x; index < samples; index += GLOBE_PAYLOAD_WORKGROUP) {
     int i = int(index % uint(s)) - 1;
     int j = int(index / uint(s)) - 1;
-    dvec3 dir = sampleDirection(job, push.cells, i, j);
-#ifdef GLOBE_PAYLOAD_FLOAT
-    // What an all-float pipeline computes: the direction rounded to float, the elevation and the
-    // planet-centred position in float (a 0.5 m grid at Earth radius), then made relative.
-    vec3 dirFloat = vec3(dir);
-    float firstFloat;
-    float hFloat = globeApplySourcesFloat(globeElevationWithFirstLayerFloat(dirFloat, firstFloat), job.sourceBase, index);
-    double firstLayer = double(firstFloat);
-    float drawnFloat = kWaterSurface != 0u ? max(hFloat, float(GLOBE_ELEVATION_PARAMS.sea_level_m)) : hFloat;
-    vec3 pFloat = dirFloat * (float(GLOBE_ELEVATION_PARAMS.radius_m) + drawnFloat);
-    if (kGlobeEllipsoid != 0u) {  // a specialization constant: no branch is left
-      float a = float(GLOBE_ELEVATION_PARAMS.radius_m), b = float(GLOBE_ELEVATION_PARAMS.polar_radius_m);
-      vec3 scaled = dirFloat * vec3(a * a, a * a, b * b);
-      pFloat = scaled / sqrt(dot(scaled, dirFloat)) + dirFloat * drawnFloat;
-    }
-    double h = double(hFloat);
-    double drawn = double(drawnFloat);
-    dvec3 p = dvec3(pFloat);
-#else
-    // The geodetic surface point plus the elevation along the normal (= globe::Ellipsoid::position).
-    double firstLayer;
-    double h = globeApplySources(globeElevationWithFirstLayer(dir, firstLayer), job.sourceBase, index);
-    double drawn = kWaterSurface != 0u ? max(h, GLOBE_ELEVATION_PARAMS.sea_level_m) : h;
-    precise dvec3 p = globePosition(dir, drawn);
-#endif
+    double h, drawn, firstLayer;
+    dvec3 p = samplePosition(job, sampleDirection(job, push.cells, i, j), index, h, drawn, firstLayer);
     // w: the drawn elevation, which the sample's colour is taken at (a sea floor is coloured as the
     // shore above it: the water's own colour is drawn over it).
     scratch[scratchBase + index] = dvec4(p, scratchSurfaceWord(drawn, firstLayer));
@@ -344,9 +348,14 @@ void main() {
   sharedMin[gl_LocalInvocationID.x] = localMin;
   sharedMax[gl_LocalInvocationID.x] = localMax;
   sharedLowest[gl_LocalInvocationID.x] = localLowest;
-  memoryBarrierBuffer();
-  barrier();
+}
 
+// Pass 2: every sample's normal (central differences of the double positions), albedo and surface
+// word, and with land cover its masks; returns this invocation's largest morph deviation.
+double meshNormals(PayloadJob job, uint slotBase, uint scratchBase) {
+  int n = int(push.cells);
+  int s = n + 3;
+  uint samples = uint(s * s);
   uint normalBase = slotBase + samples;
   uint coverBase = slotBase + GLOBE_PAYLOAD_COVER_OFFSET(push.cells);
   double localError = 0.0lf;
@@ -369,10 +378,11 @@ void main() {
     payloads[normalBase + index] = vec4(vec3(normal), packPayloadSurface(albedo, globeSourceHole(job.sourceBase, index)));
     if (kLandCover != 0u) payloadTexels[coverBase * 2u + index] = masks;
   }
-  sharedError[gl_LocalInvocationID.x] = localError;
-  if (kNormalMapScale > 0u)  // the texels' grids reuse the scratch: the mesh passes are done with it
-    sharedLowest[gl_LocalInvocationID.x] = min(sharedLowest[gl_LocalInvocationID.x], fillNormalMap(job, scratchBase));
+  return localError;
+}
 
+// The workgroup's reduction of the shared arrays into the job's result.
+void writeResult(uint jobIndex) {
   for (uint stride = GLOBE_PAYLOAD_WORKGROUP / 2u; stride > 0u; stride >>= 1) {
     barrier();
     if (gl_LocalInvocationID.x < stride) {
@@ -388,4 +398,20 @@ void main() {
   }
   if (gl_LocalInvocationID.x == 0u)
     results[jobIndex] = PayloadResult(sharedMin[0], sharedMax[0], sharedError[0], sharedLowest[0]);
+}
+
+void main() {
+  uint jobIndex = gl_WorkGroupID.x;
+  if (jobIndex >= push.jobCount) return;
+  PayloadJob job = jobs[jobIndex];
+  uint samples = (push.cells + 3u) * (push.cells + 3u);
+  uint slotBase = job.slot * GLOBE_PAYLOAD_SLOT_VEC4(push.cells);
+  uint scratchBase = jobIndex * max(samples, surfaceEvaluations());
+  meshPositions(job, slotBase, scratchBase);
+  memoryBarrierBuffer();
+  barrier();
+  sharedError[gl_LocalInvocationID.x] = meshNormals(job, slotBase, scratchBase);
+  if (kNormalMapScale > 0u)  // the texels' grids reuse the scratch: the mesh passes are done with it
+    sharedLowest[gl_LocalInvocationID.x] = min(sharedLowest[gl_LocalInvocationID.x], fillNormalMap(job, scratchBase));
+  writeResult(jobIndex);
 }

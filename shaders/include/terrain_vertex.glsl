@@ -109,35 +109,104 @@ uint terrainSample(uint slotBase, uint cells, int i, int j) {
   return slotBase + uint(j + 1) * (cells + 3u) + uint(i + 1);
 }
 
+// Which vertex of the drawn grid `vertexIndex` is, (gi, gj); a skirt strip's vertex (past the grid's)
+// is its edge's grid vertex, with the edge's outward step, and `skirt` when it is a flared bottom one.
+void terrainGridVertex(uint vertexIndex, uint drawnCells, uint edge, out uvec2 g, out ivec2 outward, out bool skirt) {
+  uint side = drawnCells + 1u;
+  outward = ivec2(0);
+  skirt = false;
+  if (vertexIndex < side * side) {
+    g = uvec2(vertexIndex % side, vertexIndex / side);
+    return;
+  }
+  uint s = vertexIndex - side * side, t = s % side;
+  skirt = s >= side;
+  if (edge == 0u) { g = uvec2(t, 0u); outward = ivec2(0, -1); }
+  else if (edge == 1u) { g = uvec2(drawnCells, t); outward = ivec2(1, 0); }
+  else if (edge == 2u) { g = uvec2(t, drawnCells); outward = ivec2(0, 1); }
+  else { g = uvec2(0u, t); outward = ivec2(-1, 0); }
+}
+
+// What a vertex carries that morphs towards its parent's mesh.
+struct TerrainMorphed {
+  vec3 position;  // relative to the origin (to the camera with GLOBE_TERRAIN_REPROJECT), metres
+  vec3 normal;
+  float elevation;
+  vec4 surface;  // unpackPayloadSurface: albedo, hole mask
+  vec2 mapUv;
+  vec4 cover0, cover1;
+};
+
+// An odd vertex g (in the drawn grid, `stride` payload samples apart) slides by k to the midpoint of
+// its even neighbours (never outside the drawn grid: the border vertices 0 and n are even), and its
+// attributes with it: at k = 1 it has what the parent's triangle interpolates there.
+void terrainMorphOdd(TerrainInstance inst, uint instanceIndex, uint base, uint cells, uint stride, uvec2 g, float k,
+                     inout TerrainMorphed m) {
+  bool oddI = (g.x & 1u) != 0u, oddJ = (g.y & 1u) != 0u;
+  uint normals = (cells + 3u) * (cells + 3u);
+  uvec2 a = uvec2(oddI ? g.x - 1u : g.x, oddJ ? g.y - 1u : g.y);
+  uvec2 b = uvec2(oddI ? g.x + 1u : g.x, oddJ ? g.y + 1u : g.y);
+  uint ia = terrainSample(base, cells, int(a.x * stride), int(a.y * stride));
+  uint ib = terrainSample(base, cells, int(b.x * stride), int(b.y * stride));
+  vec4 sa = payload[ia], sb = payload[ib];
+#ifdef GLOBE_TERRAIN_REPROJECT
+  dvec4 uv = reprojectionNodes[instanceIndex].uv;
+  float sea = frame.waterShallow.w;
+  vec3 wa = terrainReprojected(uv, cells, int(a.x * stride), int(a.y * stride), max(sa.w, sea));
+  vec3 wb = terrainReprojected(uv, cells, int(b.x * stride), int(b.y * stride), max(sb.w, sea));
+#else
+  precise vec3 wa = inst.offset.xyz + sa.xyz;
+  precise vec3 wb = inst.offset.xyz + sb.xyz;
+#endif
+  precise vec3 mid = (wa + wb) * 0.5;
+  precise vec3 morphed = m.position + (mid - m.position) * k;
+  m.position = morphed;
+  vec4 na = payload[ia + normals], nb = payload[ib + normals];
+  m.normal = mix(m.normal, na.xyz + nb.xyz, k);
+  m.elevation = mix(m.elevation, 0.5 * (sa.w + sb.w), k);
+  m.surface = mix(m.surface, 0.5 * (unpackPayloadSurface(na.w) + unpackPayloadSurface(nb.w)), k);
+  m.mapUv = mix(m.mapUv, vec2((a + b) * stride) / (2.0 * float(cells)), k);
+#ifdef GLOBE_TERRAIN_COVER
+  vec4 a0, a1, b0, b1;
+  terrainCoverMasks(base, ia - base, a0, a1);
+  terrainCoverMasks(base, ib - base, b0, b1);
+  m.cover0 = mix(m.cover0, 0.5 * (a0 + b0), k);
+  m.cover1 = mix(m.cover1, 0.5 * (a1 + b1), k);
+#endif
+}
+
+// A skirt's flared bottom vertex: a little beyond the edge (towards the neighbour, along the ring
+// sample) and below it. Hidden under the neighbour's surface; it only shows through sub-pixel gaps
+// between nodes (float rounding, quantum differences between levels, T-junctions at morphed edges),
+// which it fills with this node's colour. `world`: the unmorphed position, `sample0` its payload's.
+vec3 terrainSkirtFlare(vec3 position, vec3 world, vec3 sample0, uint base, uint cells, ivec2 at, ivec2 outward,
+                       uint stride) {
+#ifdef GLOBE_TERRAIN_REPROJECT
+  vec3 up = vec3(normalize(dvec3(world) + reprojection.camera.xyz));
+#else
+  vec3 up = normalize(world - frame.planetCentre.xyz);
+#endif
+  vec3 ring = payload[terrainSample(base, cells, at.x + outward.x, at.y + outward.y)].xyz;
+  vec3 out_m = (ring - sample0) * float(stride);
+  precise vec3 flared = position + out_m * frame.skirt.x - up * (length(out_m) * frame.skirt.y);
+  return flared;
+}
+
 TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCells) {
   TerrainInstance inst = instances[instanceIndex];
   uint cells = frame.options.x;
   uint stride = inst.info.y;
-  uint side = drawnCells + 1u;
-  uint gi, gj;
-  ivec2 outward = ivec2(0);
-  bool skirt = false;  // a flared bottom vertex of a skirt strip
-  if (vertexIndex < side * side) {
-    gi = vertexIndex % side;
-    gj = vertexIndex / side;
-  } else {
-    uint s = vertexIndex - side * side;
-    uint edge = inst.info.w, t = s % side;
-    skirt = s >= side;
-    if (edge == 0u) { gi = t; gj = 0u; outward = ivec2(0, -1); }
-    else if (edge == 1u) { gi = drawnCells; gj = t; outward = ivec2(1, 0); }
-    else if (edge == 2u) { gi = t; gj = drawnCells; outward = ivec2(0, 1); }
-    else { gi = 0u; gj = t; outward = ivec2(-1, 0); }
-  }
+  uvec2 g;
+  ivec2 outward;
+  bool skirt;  // a flared bottom vertex of a skirt strip
+  terrainGridVertex(vertexIndex, drawnCells, inst.info.w, g, outward, skirt);
   uint base = inst.info.x;
   uint normals = (cells + 3u) * (cells + 3u);
-  int si = int(gi * stride), sj = int(gj * stride);
+  int si = int(g.x * stride), sj = int(g.y * stride);
   vec4 sample0 = payload[terrainSample(base, cells, si, sj)];
 #ifdef GLOBE_TERRAIN_REPROJECT
-  dvec4 uv = reprojectionNodes[instanceIndex].uv;
   // Heights are the ground's: the drawn surface is the sea above lower ground (-FLT_MAX: no sea).
-  float sea = frame.waterShallow.w;
-  vec3 world = terrainReprojected(uv, cells, si, sj, max(sample0.w, sea));
+  vec3 world = terrainReprojected(reprojectionNodes[instanceIndex].uv, cells, si, sj, max(sample0.w, frame.waterShallow.w));
   vec3 rel0 = world;
 #else
   precise vec3 world = inst.offset.xyz + sample0.xyz;
@@ -145,66 +214,21 @@ TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCell
 #endif
   float k = terrainMorphFactor(length(rel0), inst, vec2(si, sj) / float(cells));
 
-  vec3 position = world;
   vec4 normal0 = payload[terrainSample(base, cells, si, sj) + normals];
-  vec3 normal = normal0.xyz;
-  float elevation = sample0.w;
-  vec4 surface = unpackPayloadSurface(normal0.w);
-  vec2 mapUv = vec2(si, sj) / float(cells);
-  vec4 cover0 = vec4(0.0), cover1 = vec4(0.0);
+  TerrainMorphed m;
+  m.position = world;
+  m.normal = normal0.xyz;
+  m.elevation = sample0.w;
+  m.surface = unpackPayloadSurface(normal0.w);
+  m.mapUv = vec2(si, sj) / float(cells);
+  m.cover0 = vec4(0.0);
+  m.cover1 = vec4(0.0);
 #ifdef GLOBE_TERRAIN_COVER
-  terrainCoverMasks(base, terrainSample(0u, cells, si, sj), cover0, cover1);
+  terrainCoverMasks(base, terrainSample(0u, cells, si, sj), m.cover0, m.cover1);
 #endif
-  bool oddI = (gi & 1u) != 0u, oddJ = (gj & 1u) != 0u;
-  if (k > 0.0 && (oddI || oddJ)) {
-    // Even neighbours whose midpoint the vertex slides to (never outside the drawn grid: the
-    // border vertices 0 and n are even).
-    uvec2 a = uvec2(oddI ? gi - 1u : gi, oddJ ? gj - 1u : gj);
-    uvec2 b = uvec2(oddI ? gi + 1u : gi, oddJ ? gj + 1u : gj);
-    uint ia = terrainSample(base, cells, int(a.x * stride), int(a.y * stride));
-    uint ib = terrainSample(base, cells, int(b.x * stride), int(b.y * stride));
-    vec4 sa = payload[ia], sb = payload[ib];
-#ifdef GLOBE_TERRAIN_REPROJECT
-    vec3 wa = terrainReprojected(uv, cells, int(a.x * stride), int(a.y * stride), max(sa.w, sea));
-    vec3 wb = terrainReprojected(uv, cells, int(b.x * stride), int(b.y * stride), max(sb.w, sea));
-#else
-    precise vec3 wa = inst.offset.xyz + sa.xyz;
-    precise vec3 wb = inst.offset.xyz + sb.xyz;
-#endif
-    precise vec3 mid = (wa + wb) * 0.5;
-    precise vec3 morphed = world + (mid - world) * k;
-    position = morphed;
-    vec4 na = payload[ia + normals], nb = payload[ib + normals];
-    normal = mix(normal, na.xyz + nb.xyz, k);
-    elevation = mix(elevation, 0.5 * (sa.w + sb.w), k);
-    // Colour and hole mask slide like the position: at k = 1 the vertex has the colour the
-    // parent's triangle interpolates there.
-    surface = mix(surface, 0.5 * (unpackPayloadSurface(na.w) + unpackPayloadSurface(nb.w)), k);
-    mapUv = mix(mapUv, vec2((a + b) * stride) / (2.0 * float(cells)), k);
-#ifdef GLOBE_TERRAIN_COVER
-    vec4 a0, a1, b0, b1;
-    terrainCoverMasks(base, ia - base, a0, a1);
-    terrainCoverMasks(base, ib - base, b0, b1);
-    cover0 = mix(cover0, 0.5 * (a0 + b0), k);
-    cover1 = mix(cover1, 0.5 * (a1 + b1), k);
-#endif
-  }
-
-  if (skirt) {
-#ifdef GLOBE_TERRAIN_REPROJECT
-    vec3 up = vec3(normalize(dvec3(world) + reprojection.camera.xyz));
-#else
-    vec3 up = normalize(world - frame.planetCentre.xyz);
-#endif
-    // Flared skirt: a little beyond the edge (towards the neighbour, along the ring sample) and
-    // below it. Hidden under the neighbour's surface; it only shows through sub-pixel gaps
-    // between nodes (float rounding, quantum differences between levels, T-junctions at morphed
-    // edges), which it fills with this node's colour.
-    vec3 ring = payload[terrainSample(base, cells, si + outward.x, sj + outward.y)].xyz;
-    vec3 out_m = (ring - sample0.xyz) * float(stride);
-    precise vec3 flared = position + out_m * frame.skirt.x - up * (length(out_m) * frame.skirt.y);
-    position = flared;
-  }
+  if (k > 0.0 && ((g.x | g.y) & 1u) != 0u) terrainMorphOdd(inst, instanceIndex, base, cells, stride, g, k, m);
+  vec3 position = m.position;
+  if (skirt) position = terrainSkirtFlare(position, world, sample0.xyz, base, cells, ivec2(si, sj), outward, stride);
 
   TerrainVertex v;
 #ifdef GLOBE_TERRAIN_REPROJECT
@@ -214,23 +238,23 @@ TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCell
 #endif
   v.relative = rel;
   v.clip = frame.clipFromCamera * vec4(rel, 1.0);
-  v.normal = normal;
-  v.albedo = surface.rgb;
-  v.elevation = elevation;
-  v.hole = surface.a;
+  v.normal = m.normal;
+  v.albedo = m.surface.rgb;
+  v.elevation = m.elevation;
+  v.hole = m.surface.a;
   v.morph = k;
   v.level = inst.info.z;
-  v.mapUv = mapUv;
+  v.mapUv = m.mapUv;
   v.mapBase = inst.imagery.y;
   v.mapBlend = stride == 2u ? 1.0 : k;
   v.imageryCell = inst.imagery.x;
-  v.cover0 = cover0;
-  v.cover1 = cover1;
+  v.cover0 = m.cover0;
+  v.cover1 = m.cover1;
   v.detailUv = vec4(0.0);
   v.nodeLevel = inst.info.z + stride - 1u;  // a partial node is drawn one level up but spans its own square
 #ifdef GLOBE_TERRAIN_COVER
   float level = float(v.nodeLevel);
-  v.detailUv = inst.detail + vec4(mapUv * exp2(frame.detailLevels.x - level), mapUv * exp2(frame.detailLevels.y - level));
+  v.detailUv = inst.detail + vec4(m.mapUv * exp2(frame.detailLevels.x - level), m.mapUv * exp2(frame.detailLevels.y - level));
 #endif
   return v;
 }
