@@ -5,6 +5,9 @@
 
 #include <cstdio>
 #include <exception>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 namespace globe::cli {
 
@@ -36,10 +39,23 @@ void printNewWarnings(TerrainWarnings& seen, const Terrain& terrain) {
   for (const std::string& warning : seen.takeNew(terrain)) printWarning(warning);
 }
 
+// glibc returns freed heap tops to the system (trim, and mmap for blocks over 128 KiB), so a driver
+// that allocates and frees the same large buffers every draw (lavapipe's vertex outputs) takes
+// fresh pages, and a page fault each, every frame: 8-11 % of the frame near the ground, where ~400
+// nodes are drawn (docs/rendering.md, "Frame time"). Kept instead: the peak is the peak anyway.
+void keepFreedMemory() {
+#ifdef __GLIBC__
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TOP_PAD, 16 << 20);
+#endif
+}
+
 }  // namespace globe::cli
 
 int main(int argc, char** argv) {
   using namespace globe::cli;
+  keepFreedMemory();
   CLI::App app{
       "globe: a planetary-scale globe engine (Vulkan).\n"
       "Set GLOBE_DEVICE=NAME (or --device) to force a Vulkan device by name."};
