@@ -1,5 +1,5 @@
 // Face mapping of the rhombic triacontahedron, verbatim port of globe::RhombusFaceMapping
-// (planet/face_mapping.{h,cpp}): (face corners, u, v) -> point on the flat rhombus -> unit sphere.
+// (planet/geometry/face_mapping.{h,cpp}): (face corners, u, v) -> point on the flat rhombus -> unit sphere.
 // Requires shaderFloat64 (GL_ARB_gpu_shader_fp64, implied by Vulkan GLSL with the feature enabled).
 //
 // Seam exactness: for dyadic u, v (k / 2^L) a point on a face edge is the same double from both faces

@@ -1,4 +1,4 @@
-// Layout of one node payload and of a generation job, shared by C++ (engine/payload_generator.*,
+// Layout of one node payload and of a generation job, shared by C++ (engine/generation/gpu_payload_generator.*,
 // the terrain renderer) and GLSL (shaders/payload_generate.comp, shaders/terrain.vert).
 // Compiles as both: C++ sees namespace globe::gpu, GLSL plain declarations.
 //

@@ -1,4 +1,4 @@
-// Per-frame data of the terrain renderer (engine/terrain_renderer.*, shaders/terrain.vert|frag),
+// Per-frame data of the terrain renderer (engine/render/terrain_renderer.*, shaders/terrain.vert|frag),
 // shared by C++ and GLSL like payload_layout.h: C++ sees namespace globe::gpu, GLSL plain structs.
 //
 // One host-visible storage buffer per frame in flight holds a TerrainFrame followed by one

@@ -1,5 +1,5 @@
 #version 450
-// Test kernel (tests/engine/atmosphere_view_test.cpp): for camera-relative points, the aerial
+// Test kernel (tests/engine/atmosphere_render_test.cpp): for camera-relative points, the aerial
 // perspective of the exact evaluation and as the terrain's vertex stage has it (the per-frame table
 // within its reach, include/terrain_atmosphere.glsl). Bindings 3-8 are the terrain's.
 #extension GL_GOOGLE_include_directive : require
