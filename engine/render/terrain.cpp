@@ -1,6 +1,5 @@
 #include "engine/render/terrain.h"
 
-
 #include "engine/vk/vk_check.h"
 #include "planet/elevation/relief_roughness.h"
 #include "planet/sources/source_mosaic.h"
