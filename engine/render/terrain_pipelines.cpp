@@ -7,13 +7,17 @@
 
 namespace globe {
 
-TerrainShading surfaceShading(const TerrainStyle& style, bool atmosphere, bool water) {
+TerrainShading surfaceShading(const TerrainStyle& style, bool atmosphere, bool water, bool nearCamera) {
   return {style.normalMapScale > 0 || style.imagery,
           atmosphere,
           water,
           style.holes,
-          style.coverEverywhere(),
+          style.coverEverywhere() || (nearCamera && style.coverNear()),
           style.imagery};
+}
+
+VkCullModeFlags gridCullMode(const TerrainStyle& style) {
+  return style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
 }
 
 std::string terrainFragmentShader(const TerrainShading& s) {

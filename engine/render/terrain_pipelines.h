@@ -27,9 +27,13 @@ struct TerrainShading {
   bool imagery = false;  // the maps from the imagery tiles (with normalMaps)
 };
 
-// The surface pipelines' shading (the wireframe's has neither water nor holes nor land cover); with
-// the land cover near the camera only (TerrainStyle::coverNear), the pipelines without it.
-TerrainShading surfaceShading(const TerrainStyle& style, bool atmosphere, bool water);
+// The surface pipelines' shading (the wireframe's has neither water nor holes nor land cover). The
+// land cover's splat where the style splats everywhere, or for `nearCamera` (the pipelines of the
+// nodes near the camera when it splats there only, TerrainStyle::coverNear).
+TerrainShading surfaceShading(const TerrainStyle& style, bool atmosphere, bool water, bool nearCamera = false);
+
+// Grids are drawn with back faces culled, except on a planet with kept holes (seen through them).
+VkCullModeFlags gridCullMode(const TerrainStyle& style);
 
 // terrain[_atmosphere][_maps[_imagery]][_water][_holes][_cover].frag: the variants of shaders/CMakeLists.txt.
 std::string terrainFragmentShader(const TerrainShading& s);

@@ -103,34 +103,32 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
       // surface and the hole's rim are seen from below through the hole too.
       // The reprojected positions (a measurement only) are drawn without the atmosphere.
       atmosphere_(positions == VertexPositions::kStored && style.aerialPerspective ? style.atmosphere : nullptr),
-      pendingOptional_(std::async(
-          std::launch::async,
-          [&device, style, positions, target = TargetFormat{colourFormat, samples},
-           atmosphere = atmosphere_ != nullptr] {
-            OptionalPipelines made;
-            if (style.water.enabled) {
-              TerrainShading water = surfaceShading(style, atmosphere, true);
-              const VkCullModeFlags cull = style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
-              made.water =
-                  std::make_unique<vk::GraphicsPipeline>(device, terrainDesc(target, false, cull, positions, water));
-              made.waterSkirts = std::make_unique<vk::GraphicsPipeline>(
-                  device, terrainDesc(target, false, VK_CULL_MODE_NONE, positions, water));
-              water.cover = true;
-              if (style.coverNear())
-                made.waterDetail =
-                    std::make_unique<vk::GraphicsPipeline>(device, terrainDesc(target, false, cull, positions, water));
-            }
-            VkPhysicalDeviceFeatures features{};
-            vkGetPhysicalDeviceFeatures(device.physical(), &features);
-            if (features.fillModeNonSolid) {
-              made.wireframe = std::make_unique<vk::GraphicsPipeline>(
-                  device, terrainDesc(target, true, VK_CULL_MODE_NONE, positions, {false, atmosphere}));
-            }
-            return made;
-          })),
-      solid_(device,
-             terrainDesc({colourFormat, samples}, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT,
-                         positions, surfaceShading(style, atmosphere_ != nullptr, false))),
+      pendingOptional_(std::async(std::launch::async,
+                                  [&device, style, positions, target = TargetFormat{colourFormat, samples},
+                                   atmosphere = atmosphere_ != nullptr] {
+                                    OptionalPipelines made;
+                                    if (style.water.enabled) {
+                                      const TerrainShading water = surfaceShading(style, atmosphere, true);
+                                      made.water = std::make_unique<vk::GraphicsPipeline>(
+                                          device, terrainDesc(target, false, gridCullMode(style), positions, water));
+                                      made.waterSkirts = std::make_unique<vk::GraphicsPipeline>(
+                                          device, terrainDesc(target, false, VK_CULL_MODE_NONE, positions, water));
+                                      if (style.coverNear())
+                                        made.waterDetail = std::make_unique<vk::GraphicsPipeline>(
+                                            device, terrainDesc(target, false, gridCullMode(style), positions,
+                                                                surfaceShading(style, atmosphere, true, true)));
+                                    }
+                                    VkPhysicalDeviceFeatures features{};
+                                    vkGetPhysicalDeviceFeatures(device.physical(), &features);
+                                    if (features.fillModeNonSolid) {
+                                      made.wireframe = std::make_unique<vk::GraphicsPipeline>(
+                                          device,
+                                          terrainDesc(target, true, VK_CULL_MODE_NONE, positions, {false, atmosphere}));
+                                    }
+                                    return made;
+                                  })),
+      solid_(device, terrainDesc({colourFormat, samples}, false, gridCullMode(style), positions,
+                                 surfaceShading(style, atmosphere_ != nullptr, false))),
       skirts_(device, terrainDesc({colourFormat, samples}, false, VK_CULL_MODE_NONE, positions,
                                   surfaceShading(style, atmosphere_ != nullptr, false))) {
   assert(gridCells >= 16 && gridCells <= 256 && (gridCells & (gridCells - 1)) == 0);
@@ -141,11 +139,9 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
   wireframe_ = std::move(optional.wireframe);
   waterDetail_ = std::move(optional.waterDetail);
   if (style.coverNear()) {
-    TerrainShading detail = surfaceShading(style, atmosphere_ != nullptr, false);
-    detail.cover = true;
     solidDetail_ = std::make_unique<vk::GraphicsPipeline>(
-        device, terrainDesc({colourFormat, samples}, false, style.holes ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT,
-                            positions, detail));
+        device, terrainDesc({colourFormat, samples}, false, gridCullMode(style), positions,
+                            surfaceShading(style, atmosphere_ != nullptr, false, true)));
   }
   if (atmosphere_) view_ = std::make_unique<AtmosphereView>(device, *atmosphere_);
   if (style.atmosphere) {
