@@ -20,19 +20,20 @@ namespace globe {
 namespace {
 
 // The elevation kernel's constants, then the water-surface switch (GLOBE_PAYLOAD_SPEC_WATER_SURFACE),
-// the normal map's scale (GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE) and the land cover switch.
-std::array<uint32_t, GLOBE_PAYLOAD_SPEC_LAND_COVER + 1> payloadSpecialization(const ElevationModel& model,
-                                                                              bool waterSurface,
-                                                                              uint32_t normalMapScale) {
+// the normal map's scale (GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE), the land cover switch and the overlay's.
+std::array<uint32_t, GLOBE_PAYLOAD_SPEC_OVERLAY + 1> payloadSpecialization(const ElevationModel& model,
+                                                                           bool waterSurface, uint32_t normalMapScale) {
   static_assert(GLOBE_PAYLOAD_SPEC_WATER_SURFACE == GLOBE_ELEVATION_SPEC_COUNT);
   static_assert(GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE == GLOBE_PAYLOAD_SPEC_WATER_SURFACE + 1);
   static_assert(GLOBE_PAYLOAD_SPEC_LAND_COVER == GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE + 1);
-  std::array<uint32_t, GLOBE_PAYLOAD_SPEC_LAND_COVER + 1> values{};
+  static_assert(GLOBE_PAYLOAD_SPEC_OVERLAY == GLOBE_PAYLOAD_SPEC_LAND_COVER + 1);
+  std::array<uint32_t, GLOBE_PAYLOAD_SPEC_OVERLAY + 1> values{};
   const ElevationSpecialization elevation = elevationSpecialization(model.params());
   std::copy(elevation.begin(), elevation.end(), values.begin());
   values[GLOBE_PAYLOAD_SPEC_WATER_SURFACE] = waterSurface && model.drawsWater() ? 1u : 0u;
   values[GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE] = normalMapScale;
   values[GLOBE_PAYLOAD_SPEC_LAND_COVER] = model.landCover().class_count > 0 ? 1u : 0u;
+  values[GLOBE_PAYLOAD_SPEC_OVERLAY] = model.overlay() != nullptr ? 1u : 0u;
   return values;
 }
 
@@ -52,7 +53,7 @@ GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationMode
       normalMapScale_(normalMapScale),
       maxJobs_(std::min<uint32_t>(maxJobsPerSubmit, GLOBE_PAYLOAD_MAX_BATCH)),
       pipeline_(device,
-                precision == GenerationPrecision::kFloat ? "payload_generate_float.comp" : "payload_generate.comp", 9,
+                precision == GenerationPrecision::kFloat ? "payload_generate_float.comp" : "payload_generate.comp", 10,
                 2 * sizeof(uint32_t), /*uniformMask=*/(1u << 0) | (1u << 7) | (1u << 8),
                 payloadSpecialization(model, waterSurface, normalMapScale), kSurfaceStorageSlots),
       elevation_(device, sizeof(gpu::ElevationParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::HostVisible,
@@ -101,9 +102,15 @@ GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationMode
     const VkDeviceSize termBytes = model.sources() != nullptr ? VkDeviceSize(maxJobs_) * samples * 32 : 32;
     batch.sourceTerms = vk::Buffer(device, termBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::HostVisible,
                                    "payload source terms");
+    // Likewise a planet without imagery binds one word it never reads.
+    const VkDeviceSize overlayBytes =
+        model.overlay() != nullptr ? VkDeviceSize(maxJobs_) * overlayPointsPerJob() * 4 : 4;
+    batch.overlay = vk::Buffer(device, overlayBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::HostVisible,
+                               "payload overlay colours");
     batch.submitted.reserve(maxJobs_);
   }
-  if (model.sources() != nullptr) preparer_ = std::make_unique<SourceRequestPreparer>(model, cells, waterSurface_);
+  if (model.sources() != nullptr || model.overlay() != nullptr)
+    preparer_ = std::make_unique<SourceRequestPreparer>(model, cells, waterSurface_, normalMapScale);
 }
 
 GpuPayloadGenerator::~GpuPayloadGenerator() {
@@ -188,6 +195,20 @@ void GpuPayloadGenerator::submitBatches(std::vector<PreparedRequest>& requests, 
   requests.erase(requests.begin(), requests.begin() + std::ptrdiff_t(first));
 }
 
+size_t GpuPayloadGenerator::overlayPointsPerJob() const {
+  return GLOBE_PAYLOAD_OVERLAY_POINTS(cells_, cells_ * normalMapScale_);
+}
+
+void GpuPayloadGenerator::copyOverlay(Batch& batch, size_t job, const std::vector<std::uint32_t>& words) const {
+  if (model_.overlay() == nullptr) return;
+  auto* to = static_cast<std::uint32_t*>(batch.overlay.mapped()) + job * overlayPointsPerJob();
+  // A job the overlay does not touch (or a request made without the I/O thread) blends nothing.
+  if (words.size() == overlayPointsPerJob())
+    std::memcpy(to, words.data(), words.size() * sizeof(std::uint32_t));
+  else
+    std::memset(to, 0, overlayPointsPerJob() * sizeof(std::uint32_t));
+}
+
 void GpuPayloadGenerator::record(Batch& batch, std::span<PreparedRequest> requests) {
   const size_t count = requests.size();
   const size_t samples = size_t(cells_ + 3) * size_t(cells_ + 3);
@@ -209,7 +230,9 @@ void GpuPayloadGenerator::record(Batch& batch, std::span<PreparedRequest> reques
     const bool hasTerms = !r.terms.empty();
     gpuJobs[k].sourceBase = hasTerms ? uint32_t(k * samples) : GLOBE_NO_SOURCE_TERMS;
     if (hasTerms) std::memcpy(terms + k * samples, r.terms.data(), samples * sizeof(glm::dvec4));
-    batch.sourceQueued.push_back(hasTerms ? r.queued : std::chrono::steady_clock::time_point::max());
+    copyOverlay(batch, k, r.overlay);
+    const bool prepared = hasTerms || !r.overlay.empty();
+    batch.sourceQueued.push_back(prepared ? r.queued : std::chrono::steady_clock::time_point::max());
     batch.sourcePad_m.push_back(sourceDetailPad_m(r.terms));
     slotCentres_[r.request.slot] = {gpuJobs[k].centre.x, gpuJobs[k].centre.y, gpuJobs[k].centre.z};
   }
@@ -227,7 +250,7 @@ void GpuPayloadGenerator::record(Batch& batch, std::span<PreparedRequest> reques
     pipeline_.bind(batch.cmd,
                    {elevation_.descriptor(), faces_.descriptor(), batch.jobs.descriptor(), pages_.window(page),
                     batch.scratch.descriptor(), batch.results.descriptor(), batch.sourceTerms.descriptor(),
-                    colourRamp_.descriptor(), landCover_.descriptor()},
+                    colourRamp_.descriptor(), landCover_.descriptor(), batch.overlay.descriptor()},
                    push, sizeof(push), textures_.storage(normalMapScale_ > 0 ? page : 0));
     vkCmdDispatchBase(batch.cmd, uint32_t(run), 0, 0, uint32_t(end - run), 1, 1);
     run = end;

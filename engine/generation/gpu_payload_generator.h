@@ -97,9 +97,11 @@ class GpuPayloadGenerator final : public PayloadGenerator {
     vk::Buffer results;
     vk::Buffer scratch;
     vk::Buffer sourceTerms;  // S * S dvec4 per job with sources (elevation_sources.glsl)
+    vk::Buffer overlay;      // GLOBE_PAYLOAD_OVERLAY_POINTS words per job on a planet with imagery
     std::vector<GenerationJob> submitted;
-    std::vector<std::chrono::steady_clock::time_point> sourceQueued;  // per job; max() = no sources
-    std::vector<double> sourcePad_m;                                  // per job: sourceDetailPad_m of its terms
+    // Per job: when its request was queued for the source I/O thread; max() = not read from sources.
+    std::vector<std::chrono::steady_clock::time_point> sourceQueued;
+    std::vector<double> sourcePad_m;  // per job: sourceDetailPad_m of its terms
     bool busy = false;
     uint32_t index = 0;  // query slots 2*index, 2*index+1
   };
@@ -109,6 +111,10 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   // Removes what it submitted.
   void submitBatches(std::vector<PreparedRequest>& requests, bool mayWait);
   void record(Batch& batch, std::span<PreparedRequest> requests);
+  // Overlay words a job takes in a batch (GLOBE_PAYLOAD_OVERLAY_POINTS), and job `job`'s copied in
+  // (or zeros when it has none).
+  size_t overlayPointsPerJob() const;
+  void copyOverlay(Batch& batch, size_t job, const std::vector<std::uint32_t>& words) const;
   void submitPrepared();
   // Submits a recorded batch; a failed submit (not a lost device) reports its jobs failed instead.
   void submit(Batch& batch);

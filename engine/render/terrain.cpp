@@ -74,8 +74,12 @@ Status validateTerrainSettings(const TerrainSettings& s) {
 }
 
 Result<std::unique_ptr<Terrain>> Terrain::create(vk::Device& device, const ElevationModel& model,
-                                                 const TerrainSettings& settings) {
-  if (auto s = validateTerrainSettings(settings); !s) return s.error();
+                                                 const TerrainSettings& requested) {
+  if (auto s = validateTerrainSettings(requested); !s) return s.error();
+  TerrainSettings settings = requested;
+  // A planet's [[imagery]] lives in the mesh payloads' surface textures (docs/imagery.md), which the
+  // procedural imagery tiles would replace: its maps come from the payloads then.
+  if (model.overlay() != nullptr) settings.imagery = false;
   LodConfig lod;
   lod.radius_m = model.radius_m();
   lod.flattening = model.shape().flattening();

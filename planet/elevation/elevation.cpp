@@ -1,6 +1,7 @@
 #include "planet/elevation/elevation.h"
 
 #include "planet/sources/source_mosaic.h"
+#include "planet/sources/surface_overlay.h"
 
 #include <algorithm>
 #include <cassert>
@@ -151,6 +152,10 @@ ElevationModel::ElevationModel(const PlanetDescription& planet)
       bounds_(elevationBounds(planet)),
       shape_(planetShape(planet)),
       atmosphere_(planet.atmosphere) {
+  if (!planet.imagery.empty()) {
+    overlay_ = std::make_shared<const SurfaceOverlay>(planet.imagery, planet.radius_m);
+    if (overlay_->empty()) overlay_.reset();
+  }
   if (planet.sources.empty()) return;
   sources_ = std::make_shared<const SourceMosaic>(planet.sources, planet.radius_m, planet.seed);
   if (sources_->layers().empty()) return;

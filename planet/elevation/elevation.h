@@ -25,6 +25,7 @@
 namespace globe {
 
 class SourceMosaic;
+class SurfaceOverlay;
 struct SourceTerm;
 
 // The 32-bit noise seed of a layer, derived from the planet seed and the layer's index.
@@ -65,6 +66,8 @@ class ElevationModel {
   SourceTerm sourceTerm(const glm::dvec3& unit_direction, double sample_spacing_m = 0.0) const;
   // The mosaic of the planet's [[sources]], or nullptr for a procedural planet.
   const SourceMosaic* sources() const { return sources_.get(); }
+  // What the planet's [[imagery]] paints over the albedo, or nullptr when it has none.
+  const SurfaceOverlay* overlay() const { return overlay_.get(); }
   // The terrain point over a unit geodetic normal: shape().position(unit_direction, elevation_m), metres,
   // planet-centred; on a sphere unit_direction * (radius_m + elevation_m).
   glm::dvec3 surfacePosition(const glm::dvec3& unit_direction) const;
@@ -118,6 +121,7 @@ class ElevationModel {
   ElevationRange bounds_{};
   Ellipsoid shape_;
   std::shared_ptr<const SourceMosaic> sources_;  // shared by copies
+  std::shared_ptr<const SurfaceOverlay> overlay_;
   std::optional<AtmosphereParameters> atmosphere_;
 };
 

@@ -17,6 +17,7 @@
 #include "planet/core/error.h"
 #include "planet/elevation/colour_ramp.h"
 #include "planet/geometry/ellipsoid.h"
+#include "planet/sources/imagery_source.h"
 #include "planet/sources/source_description.h"
 #include "planet/surface/land_cover.h"
 
@@ -89,6 +90,8 @@ struct PlanetDescription {
   LandCover land_cover;
   // Real elevation rasters mosaicked over the layers ([[sources]], planet/sources/); empty = procedural only.
   std::vector<ElevationSource> sources;
+  // Colour rasters draped over the ground's albedo ([[imagery]], planet/sources/imagery_mosaic.h).
+  std::vector<ImagerySource> imagery;
   // [atmosphere]: precomputed scattering (docs/rendering.md, "Atmosphere"); none = black sky.
   std::optional<AtmosphereParameters> atmosphere;
 

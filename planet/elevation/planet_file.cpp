@@ -3,6 +3,7 @@
 
 #include "planet/atmosphere/atmosphere_toml.h"
 #include "planet/elevation/planet_toml_reader.h"
+#include "planet/sources/imagery_toml.h"
 #include "planet/sources/source_toml.h"
 #include "planet/surface/land_cover_toml.h"
 
@@ -33,6 +34,7 @@ constexpr std::string_view kTopKeys[] = {"name",
                                          "snow",
                                          "water",
                                          "sources",
+                                         "imagery",
                                          "atmosphere",
                                          "climate",
                                          "land_cover"};
@@ -376,6 +378,8 @@ PlanetFileCheck readPlanet(const toml::table& root, std::string_view source_name
       readAtmosphere(r, node, planet.atmosphere.emplace());
     } else if (k == "sources") {
       readSources(r, node, directory, planet.sources);
+    } else if (k == "imagery") {
+      readImagery(r, node, directory, planet.imagery);
     } else if (k == "climate") {
       readClimate(r, node, planet.land_cover.climate);
     } else if (k == "land_cover") {

@@ -51,6 +51,14 @@ std::string formatPlanetToml(const PlanetDescription& planet) {
                    number(src.vertical_scale), number(src.vertical_offset_m));
     if (src.blend_m >= 0.0) fmt::format_to(line, "blend_m = {}\n", number(src.blend_m));
   }
+  for (const ImagerySource& img : planet.imagery) {
+    fmt::format_to(line, "\n[[imagery]]\npath = {}\npriority = {}\nopacity = {}\n", tomlQuoted(img.path), img.priority,
+                   number(img.opacity));
+    if (const auto& e = img.extent)
+      fmt::format_to(line, "extent = [{}, {}, {}, {}]\n", number(e->lon_min_deg), number(e->lat_min_deg),
+                     number(e->lon_max_deg), number(e->lat_max_deg));
+    if (img.blend_m >= 0.0) fmt::format_to(line, "blend_m = {}\n", number(img.blend_m));
+  }
   const ColourRamp& ramp = planet.colour_ramp;
   for (const ColourRampStop& s : ramp.stops) {
     fmt::format_to(line, "\n[[colour_ramp]]\nelevation_m = {}\ncolour = {}\n", number(s.elevation_m), colour(s.colour));

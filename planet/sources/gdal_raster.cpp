@@ -138,6 +138,46 @@ Status describeCrs(const OGRSpatialReference& srs, double radius_m, RasterFacts&
   return Ok{};
 }
 
+// The file's own georeferencing, or the explicit extent (WGS 84) that replaces it.
+Status georeference(GDALDataset* ds, const GeographicExtent* extent, RasterFacts& f, OGRSpatialReference& srs) {
+  if (extent == nullptr) {
+    if (ds->GetGeoTransform(f.geo_transform) != CE_None) return Error::inFile("", "has no georeferencing");
+    const OGRSpatialReference* own = ds->GetSpatialRef();
+    if (own == nullptr || own->IsEmpty()) return Error::inFile("", "has no CRS");
+    srs = *own;
+    return Ok{};
+  }
+  const double width_deg = extent->lon_max_deg - extent->lon_min_deg;
+  const double height_deg = extent->lat_max_deg - extent->lat_min_deg;
+  const double g[6] = {extent->lon_min_deg, width_deg / f.width, 0.0, extent->lat_max_deg, 0.0, -height_deg / f.height};
+  std::copy(std::begin(g), std::end(g), f.geo_transform);
+  srs = wgs84();
+  return Ok{};
+}
+
+// The band's no-data value and the min/max pass over its pixels.
+Status scanBand(GDALRasterBand* band, RasterFacts& f) {
+  int hasNoData = 0;
+  f.nodata = band->GetNoDataValue(&hasNoData);
+  f.has_nodata = hasNoData != 0;
+  double minMax[2] = {0.0, 0.0};
+  CPLErrorReset();
+  const CPLErr scanned = band->ComputeRasterMinMax(FALSE, minMax);
+  // A block that cannot be read (a truncated or corrupt file) fails the scan with GDAL's reason;
+  // only a scan that read every block and found nothing is "no valid pixel".
+  if (CPLGetLastErrorType() >= CE_Failure)
+    return Error::inFile("", "GDAL cannot read its pixels (truncated or corrupt?): " + lastGdalMessage());
+  if (scanned != CE_None) return Error::inFile("", "has no valid pixel");
+  f.min_value = minMax[0];
+  f.max_value = minMax[1];
+  // ±Inf pixels (an undeclared no-data value) and float's extremes are no heights: refused here, by
+  // name, instead of a tile with maxHeight = inf downstream (and a physics step that never ends).
+  if (!(std::abs(f.min_value) <= kMaxRasterValue && std::abs(f.max_value) <= kMaxRasterValue))
+    return Error::inFile("", fmt::format("pixel values {} .. {} are beyond ±{:g} (declare the no-data value)",
+                                         f.min_value, f.max_value, kMaxRasterValue));
+  return Ok{};
+}
+
 }  // namespace
 
 void registerGdalDrivers() {
@@ -158,7 +198,8 @@ void registerGdalDrivers() {
   });
 }
 
-Result<std::unique_ptr<GdalRaster>> GdalRaster::open(const std::string& path, double radius_m) {
+Result<std::unique_ptr<GdalRaster>> GdalRaster::open(const std::string& path, double radius_m,
+                                                     const RasterOpenOptions& options) {
   registerGdalDrivers();
   std::unique_ptr<GdalRaster> r(new GdalRaster());
   r->path_ = path;
@@ -173,39 +214,23 @@ Result<std::unique_ptr<GdalRaster>> GdalRaster::open(const std::string& path, do
   f.width = ds->GetRasterXSize();
   f.height = ds->GetRasterYSize();
   if (f.width < 2 || f.height < 2) return Error::inFile(path, "needs at least 2 x 2 pixels");
-  if (ds->GetGeoTransform(f.geo_transform) != CE_None) return Error::inFile(path, "has no georeferencing");
+  if (options.band < 1 || options.band > ds->GetRasterCount())
+    return Error::inFile(path, fmt::format("has no band {} (it has {})", options.band, ds->GetRasterCount()));
+  r->band_ = options.band;
+  OGRSpatialReference srs;
+  if (Status s = georeference(ds, options.extent, f, srs); !s) return Error::inFile(path, s.error().message);
   if (Status s = checkExtent(ds, f); !s) return Error::inFile(path, s.error().message);
   if (!GDALInvGeoTransform(f.geo_transform, r->inverse_)) return Error::inFile(path, "has a singular geotransform");
-  const OGRSpatialReference* srs = ds->GetSpatialRef();
-  if (srs == nullptr || srs->IsEmpty()) return Error::inFile(path, "has no CRS");
   char* wkt = nullptr;
-  srs->exportToWkt(&wkt);
+  srs.exportToWkt(&wkt);
   r->crs_wkt_ = wkt != nullptr ? wkt : "";
   CPLFree(wkt);
-  if (Status s = describeCrs(*srs, radius_m, f); !s) return Error::inFile(path, s.error().message);
+  if (Status s = describeCrs(srs, radius_m, f); !s) return Error::inFile(path, s.error().message);
   OGRSpatialReference geographic = wgs84();
-  r->needs_transform_ = !(f.geographic && srs->IsSame(&geographic));
+  r->needs_transform_ = !(f.geographic && srs.IsSame(&geographic));
   if (r->needs_transform_ && makeTransform(r->crs_wkt_, true) == nullptr)
     return Error::inFile(path, fmt::format("PROJ cannot transform WGS 84 to its CRS '{}'", f.crs_name));
-  GDALRasterBand* band = ds->GetRasterBand(1);
-  int hasNoData = 0;
-  f.nodata = band->GetNoDataValue(&hasNoData);
-  f.has_nodata = hasNoData != 0;
-  double minMax[2] = {0.0, 0.0};
-  CPLErrorReset();
-  const CPLErr scanned = band->ComputeRasterMinMax(FALSE, minMax);
-  // A block that cannot be read (a truncated or corrupt file) fails the scan with GDAL's reason;
-  // only a scan that read every block and found nothing is "no valid pixel".
-  if (CPLGetLastErrorType() >= CE_Failure)
-    return Error::inFile(path, "GDAL cannot read its pixels (truncated or corrupt?): " + lastGdalMessage());
-  if (scanned != CE_None) return Error::inFile(path, "has no valid pixel");
-  f.min_value = minMax[0];
-  f.max_value = minMax[1];
-  // ±Inf pixels (an undeclared no-data value) and float's extremes are no heights: refused here, by
-  // name, instead of a tile with maxHeight = inf downstream (and a physics step that never ends).
-  if (!(std::abs(f.min_value) <= kMaxRasterValue && std::abs(f.max_value) <= kMaxRasterValue))
-    return Error::inFile(path, fmt::format("pixel values {} .. {} are beyond ±{:g} (declare the no-data value)",
-                                           f.min_value, f.max_value, kMaxRasterValue));
+  if (Status s = scanBand(ds->GetRasterBand(r->band_), f); !s) return Error::inFile(path, s.error().message);
   findLatLonBox(f, r->crs_wkt_, r->inverse_, r->needs_transform_);
   return r;
 }
@@ -233,9 +258,26 @@ bool GdalRaster::pixelAt(double latitude_deg, double longitude_deg, double& px, 
   return false;
 }
 
+int GdalRaster::bandCount() const {
+  std::lock_guard lock(read_mutex_);
+  return asDataset(dataset_)->GetRasterCount();
+}
+
+std::string GdalRaster::bandType() const {
+  std::lock_guard lock(read_mutex_);
+  return GDALGetDataTypeName(asDataset(dataset_)->GetRasterBand(band_)->GetRasterDataType());
+}
+
+std::string GdalRaster::bandColour(int band) const {
+  std::lock_guard lock(read_mutex_);
+  GDALDataset* ds = asDataset(dataset_);
+  if (band < 1 || band > ds->GetRasterCount()) return "";
+  return GDALGetColorInterpretationName(ds->GetRasterBand(band)->GetColorInterpretation());
+}
+
 std::vector<std::pair<int, int>> GdalRaster::overviewSizes() const {
   std::lock_guard lock(read_mutex_);
-  GDALRasterBand* band = asDataset(dataset_)->GetRasterBand(1);
+  GDALRasterBand* band = asDataset(dataset_)->GetRasterBand(band_);
   std::vector<std::pair<int, int>> sizes;
   for (int i = 0; i < band->GetOverviewCount(); ++i) {
     GDALRasterBand* overview = band->GetOverview(i);
@@ -247,7 +289,7 @@ std::vector<std::pair<int, int>> GdalRaster::overviewSizes() const {
 Result<RasterBlock> GdalRaster::read(int x0, int y0, int w, int h, int overview) const {
   RasterBlock block{x0, y0, w, h, std::vector<float>(std::size_t(w) * std::size_t(h))};
   std::lock_guard lock(read_mutex_);
-  GDALRasterBand* band = asDataset(dataset_)->GetRasterBand(1);
+  GDALRasterBand* band = asDataset(dataset_)->GetRasterBand(band_);
   if (overview >= 0) band = overview < band->GetOverviewCount() ? band->GetOverview(overview) : nullptr;
   if (band == nullptr) return Error::inFile(path_, fmt::format("has no overview {}", overview));
   if (band->RasterIO(GF_Read, x0, y0, w, h, block.values.data(), w, h, GDT_Float32, 0, 0) != CE_None)

@@ -35,7 +35,20 @@ struct RasterFacts {
   double lat_min_deg = 0.0, lat_max_deg = 0.0, lon_min_deg = 0.0, lon_max_deg = 0.0;
 };
 
-// Block of pixels read from band 1 as float, row-major, no-data as NaN.
+// Where a raster without georeferencing (a plain JPEG or PNG) lies: the outer edges of its pixels in
+// WGS 84 degrees (imagery's `extent`, planet/sources/imagery_source.h).
+struct GeographicExtent {
+  double lon_min_deg = 0.0, lat_min_deg = 0.0, lon_max_deg = 0.0, lat_max_deg = 0.0;
+  bool operator==(const GeographicExtent&) const = default;
+};
+
+// How to open a raster: which band, and an extent that replaces the file's georeferencing.
+struct RasterOpenOptions {
+  int band = 1;                              // 1-based, as GDAL counts
+  const GeographicExtent* extent = nullptr;  // when set: WGS 84 over this box, whatever the file says
+};
+
+// Block of pixels read from the opened band as float, row-major, no-data as NaN.
 struct RasterBlock {
   int x0 = 0, y0 = 0, width = 0, height = 0;
   std::vector<float> values;
@@ -45,7 +58,8 @@ class GdalRaster {
  public:
   // Opens `path` read-only and gathers its facts (the min/max pass reads the whole band once).
   // `radius_m` is the sphere's radius, for the pixel size of geographic rasters.
-  static Result<std::unique_ptr<GdalRaster>> open(const std::string& path, double radius_m);
+  static Result<std::unique_ptr<GdalRaster>> open(const std::string& path, double radius_m,
+                                                  const RasterOpenOptions& options = {});
   ~GdalRaster();
   GdalRaster(const GdalRaster&) = delete;
   GdalRaster& operator=(const GdalRaster&) = delete;
@@ -53,6 +67,12 @@ class GdalRaster {
   const RasterFacts& facts() const { return facts_; }
   const std::string& path() const { return path_; }
   std::uint64_t id() const { return id_; }  // unique per opened raster in this process
+  int band() const { return band_; }        // the band read (1-based)
+  int bandCount() const;                    // bands in the file
+  // GDAL's data type name of the band read ("Byte", "Float32", ...).
+  std::string bandType() const;
+  // GDAL's colour interpretation of band `band` of the file ("Red", "Alpha", "Palette", "Gray", ...).
+  std::string bandColour(int band) const;
 
   // Continuous pixel coordinates (pixel centre (i, j) at (i, j) exactly, i.e. GDAL's minus 0.5) of
   // a latitude/longitude; false when the point has no image in the raster's CRS or lies more than
@@ -60,10 +80,10 @@ class GdalRaster {
   // transformation).
   bool pixelAt(double latitude_deg, double longitude_deg, double& px, double& py, double margin_px = 0.0) const;
 
-  // Reads pixels [x0, x0 + w) x [y0, y0 + h) of band 1, or of its overview `overview` (>= 0: one
+  // Reads pixels [x0, x0 + w) x [y0, y0 + h) of the band, or of its overview `overview` (>= 0: one
   // of GDAL's reduced-resolution copies, overviewSizes()). Thread-safe (one read at a time per raster).
   Result<RasterBlock> read(int x0, int y0, int w, int h, int overview = -1) const;
-  // (width, height) of band 1's overviews, in GDAL's order; empty when the file has none.
+  // (width, height) of the band's overviews, in GDAL's order; empty when the file has none.
   std::vector<std::pair<int, int>> overviewSizes() const;
 
  private:
@@ -74,7 +94,8 @@ class GdalRaster {
   std::string crs_wkt_;           // for per-thread transformations
   bool needs_transform_ = false;  // false when the CRS is WGS84 geographic itself
   std::uint64_t id_ = 0;          // keys the per-thread transformations
-  void* dataset_ = nullptr;       // GDALDatasetH
+  int band_ = 1;
+  void* dataset_ = nullptr;  // GDALDatasetH
   mutable std::mutex read_mutex_;
 };
 

@@ -29,9 +29,9 @@ constexpr std::size_t kLevelEntryBytes = 16;  // int32 width, int32 height, doub
 
 float nan() { return std::numeric_limits<float>::quiet_NaN(); }
 
-// The cache file's name: the hash of the source's path, size and modification time, so an edited
-// or replaced raster never reads a stale pyramid.
-std::string cacheFileName(const std::string& path) {
+// The cache file's name: the hash of the source's path, band, size and modification time, so an
+// edited or replaced raster never reads a stale pyramid.
+std::string cacheFileName(const std::string& path, int band) {
   std::error_code ec;
   const auto size = fs::file_size(path, ec);
   const std::uint64_t bytes = ec ? 0 : std::uint64_t(size);
@@ -39,6 +39,7 @@ std::string cacheFileName(const std::string& path) {
   const std::uint64_t stamp = ec ? 0 : std::uint64_t(time.time_since_epoch().count());
   std::uint64_t h = mix64(bytes) ^ mix64(stamp + 1);
   for (const char c : path) h = mix64(h ^ std::uint8_t(c));
+  if (band != 1) h = mix64(h ^ std::uint64_t(band));  // band 1 keeps the name pyramids had before
   return fmt::format("{:016x}.pyramid", h);
 }
 
@@ -190,7 +191,7 @@ Status RasterPyramid::ensureBuilt() const {
   if (built_.load(std::memory_order_acquire)) return Ok{};
   std::lock_guard lock(buildMutex_);
   if (built_.load(std::memory_order_relaxed)) return Ok{};
-  const std::string file = (fs::path(cacheDirectory_) / cacheFileName(raster_.path())).string();
+  const std::string file = (fs::path(cacheDirectory_) / cacheFileName(raster_.path(), raster_.band())).string();
   if (!loadCache(file)) {
     if (Status s = build(file); !s) return s;
   }

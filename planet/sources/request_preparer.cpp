@@ -1,6 +1,7 @@
 #include "planet/sources/request_preparer.h"
 
 #include "planet/sources/source_mosaic.h"
+#include "planet/sources/surface_overlay.h"
 #include "planet/streaming/payload_reference.h"
 
 #include "planet/core/parallel_for.h"
@@ -40,14 +41,48 @@ std::vector<glm::dvec4> sourceTermsForJob(const ElevationModel& model, const gpu
   return sourceTermsAt(model, directions, 1, payloadSampleSpacing_m(job, cells, model.radius_m()));
 }
 
+std::vector<std::uint32_t> overlayColoursForJob(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
+                                                uint32_t mapScale) {
+  const SurfaceOverlay* overlay = model.overlay();
+  if (overlay == nullptr) return {};
+  const uint32_t m = cells * mapScale;
+  std::vector<std::uint32_t> words;
+  words.reserve(GLOBE_PAYLOAD_OVERLAY_POINTS(cells, m));
+  bool any = false;
+  auto add = [&](const glm::dvec3& dir, double texel_m) {
+    words.push_back(packOverlayColour(overlay->colourAt(dir, texel_m)));
+    any = any || (words.back() >> 24) != 0;
+  };
+  const int n = int(cells);
+  const double sample_m = payloadSampleSpacing_m(job, cells, model.radius_m());
+  for (int j = -1; j <= n + 1; ++j)
+    for (int i = -1; i <= n + 1; ++i) add(payloadSampleDirection(job, cells, i, j), sample_m);
+  // The surface grids as the kernel's scratch holds them: mip 0's lattice points 2g - 5, mip 1's 4g - 6.
+  if (m > 0) {
+    const double texel_m = payloadSampleSpacing_m(job, m, model.radius_m());
+    const struct {
+      int side, stride, offset;
+      double texel_m;
+    } grids[2] = {{int(GLOBE_SURFACE_GRID0_SIDE(m)), 2, 5, texel_m},
+                  {int(GLOBE_SURFACE_GRID1_SIDE(m)), 4, 6, 2.0 * texel_m}};
+    for (const auto& g : grids)
+      for (int b = 0; b < g.side; ++b)
+        for (int a = 0; a < g.side; ++a)
+          add(payloadSampleDirection(job, 2 * m, g.stride * a - g.offset, g.stride * b - g.offset), g.texel_m);
+  }
+  if (!any) words.clear();
+  return words;
+}
+
 double sourceDetailPad_m(const std::vector<glm::dvec4>& terms) {
   double pad = 0.0;
   for (const glm::dvec4& t : terms) pad = std::max(pad, t.w);
   return pad;
 }
 
-SourceRequestPreparer::SourceRequestPreparer(const ElevationModel& model, uint32_t cells, bool waterSurface)
-    : model_(model), cells_(cells), waterSurface_(waterSurface), thread_([this] { run(); }) {}
+SourceRequestPreparer::SourceRequestPreparer(const ElevationModel& model, uint32_t cells, bool waterSurface,
+                                             uint32_t mapScale)
+    : model_(model), cells_(cells), waterSurface_(waterSurface), mapScale_(mapScale), thread_([this] { run(); }) {}
 
 SourceRequestPreparer::~SourceRequestPreparer() {
   {
@@ -63,7 +98,7 @@ void SourceRequestPreparer::submit(std::span<const GenerationJob> requests) {
   const auto now = std::chrono::steady_clock::now();
   {
     std::lock_guard lock(mutex_);
-    for (const GenerationJob& r : requests) queued_.push_back(PreparedRequest{r, {}, {}, now});
+    for (const GenerationJob& r : requests) queued_.push_back(PreparedRequest{r, {}, {}, {}, now});
   }
   wake_.notify_one();
 }
@@ -109,6 +144,7 @@ void SourceRequestPreparer::run() {
     // The tile reads happen in here, on this thread.
     r.job = makePayloadJob(r.request.node, r.request.slot, model_, waterSurface_);
     r.terms = sourceTermsForJob(model_, r.job, cells_);
+    r.overlay = overlayColoursForJob(model_, r.job, cells_, mapScale_);
     lock.lock();
     --working_;
     ++prepared_;

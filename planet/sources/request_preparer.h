@@ -1,10 +1,10 @@
 #pragma once
 // The source I/O thread (docs/elevation-data.md, "Out of core"): for each generation request of a
-// planet with sources it reads and decodes the source tiles the node needs (through the tile
-// cache: disk -> RAM), resolves the mosaic at every payload sample and hands back the job (its
-// centre on the mosaicked surface) with the samples' source terms, which the GPU generator uploads
-// with the job (RAM -> VRAM). Requests are prepared in the order they came, which is the payload
-// pool's priority order (visible, then prefetch along the view and the next level, nearest first;
+// planet with sources or imagery it reads and decodes the source tiles the node needs (through the
+// tile cache: disk -> RAM), resolves the mosaic at every payload sample and hands back the job (its
+// centre on the mosaicked surface) with the samples' source terms and the overlay's colours, which
+// the GPU generator uploads with the job (RAM -> VRAM). Requests are prepared in the order they came, which is the
+// payload pool's priority order (visible, then prefetch along the view and the next level, nearest first;
 // planet/streaming/payload_pool.h) and bounded by its in-flight cap. The frame thread only ever
 // queues and takes with short locks; it never waits for a read (frameLoopWaits stays 0); until a
 // node's data arrives the pool keeps drawing its parent.
@@ -29,6 +29,8 @@ struct PreparedRequest {
   GenerationJob request;
   gpu::PayloadJob job{};          // slot = request.slot; sourceBase is the uploader's to set
   std::vector<glm::dvec4> terms;  // S * S (height_m, weight, hole, 0), or empty: no source touches it
+  // GLOBE_PAYLOAD_OVERLAY_POINTS packed overlay colours (payload_layout.h), or empty: no imagery here.
+  std::vector<std::uint32_t> overlay;
   std::chrono::steady_clock::time_point queued;
 };
 
@@ -43,6 +45,13 @@ std::vector<glm::dvec4> sourceTermsAt(const ElevationModel& model, std::span<con
 // lies in a source's box.
 std::vector<glm::dvec4> sourceTermsForJob(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells);
 
+// The packed overlay colours of `job` (GLOBE_PAYLOAD_OVERLAY_POINTS(cells, cells * mapScale) words:
+// the mesh samples, then the surface grids' lattice), each read for its own spacing (a sample's, a
+// texel's of mip 0, of mip 1: bit for bit what the parent's mip 0 reads); empty when the planet has
+// no overlay or nothing of it covers the node.
+std::vector<std::uint32_t> overlayColoursForJob(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
+                                                uint32_t mapScale);
+
 // How far a node's finer descendants may reach beyond its payload's radius range because of the
 // amplification detail its samples do not resolve: the largest detail bound of its terms (metres;
 // 0 without terms). The generator adds it to the padded range (paddedRadiusRange).
@@ -50,9 +59,10 @@ double sourceDetailPad_m(const std::vector<glm::dvec4>& terms);
 
 class SourceRequestPreparer {
  public:
-  // `model` (with sources) must outlive the preparer.
-  // `waterSurface`: the jobs are for payloads with the sea surface (makePayloadJob).
-  SourceRequestPreparer(const ElevationModel& model, uint32_t cells, bool waterSurface = false);
+  // `model` (with sources or an overlay) must outlive the preparer.
+  // `waterSurface`: the jobs are for payloads with the sea surface (makePayloadJob); `mapScale`: their
+  // surface textures' (0: none), for the overlay's lattice.
+  SourceRequestPreparer(const ElevationModel& model, uint32_t cells, bool waterSurface = false, uint32_t mapScale = 0);
   ~SourceRequestPreparer();
   SourceRequestPreparer(const SourceRequestPreparer&) = delete;
   SourceRequestPreparer& operator=(const SourceRequestPreparer&) = delete;
@@ -76,6 +86,7 @@ class SourceRequestPreparer {
   const ElevationModel& model_;
   uint32_t cells_;
   bool waterSurface_ = false;
+  uint32_t mapScale_ = 0;
   mutable std::mutex mutex_;
   std::condition_variable wake_;  // new requests or stop
   std::condition_variable idle_;  // queue drained

@@ -1,8 +1,10 @@
 #include "planet/sources/source_mosaic.h"
 
 #include "planet/camera/camera.h"
+#include "planet/core/smoothstep.h"
 #include "planet/elevation/gradient_noise.h"
 #include "planet/sources/amplification.h"
+#include "planet/sources/pixel_window.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,83 +13,6 @@
 
 namespace globe {
 namespace {
-
-double smoothstep01(double x) {
-  const double t = std::clamp(x, 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
-}
-
-// Pixels of one level of a source's pyramid read through the tile cache, remembering the last
-// tile (the 4 x 4 pixels a point needs almost always lie in one). `missing` is set when a tile
-// could not be had (a frame-loop thread, a failed read): the caller then ignores the source here.
-class PixelWindow {
- public:
-  PixelWindow(TileCache& cache, const TileSource& source, int level)
-      : cache_(cache), source_(source), level_(level), size_(source.level(level)) {}
-
-  // Raw value of pixel (x, y), clamped to the level; NaN for no-data.
-  float at(int x, int y) {
-    if (missing) return std::numeric_limits<float>::quiet_NaN();  // the caller ignores this read
-    x = std::clamp(x, 0, size_.width - 1);
-    y = std::clamp(y, 0, size_.height - 1);
-    const int tx = x / kSourceTilePixels, ty = y / kSourceTilePixels;
-    if (!tile_ || tx != tx_ || ty != ty_) {
-      tile_ = cache_.tile(source_, level_, tx, ty);
-      tx_ = tx;
-      ty_ = ty;
-      if (!tile_) {
-        missing = true;
-        return std::numeric_limits<float>::quiet_NaN();
-      }
-    }
-    return tile_->values[std::size_t(y - tile_->y0) * std::size_t(tile_->width) + std::size_t(x - tile_->x0)];
-  }
-  const PyramidLevel& size() const { return size_; }
-  bool missing = false;
-
- private:
-  TileCache& cache_;
-  const TileSource& source_;
-  int level_;
-  PyramidLevel size_;
-  std::shared_ptr<const RasterBlock> tile_;
-  int tx_ = -1, ty_ = -1;
-};
-
-// Local relief per pixel at pixel (x, y): the mean absolute central difference (no-data counts 0).
-double reliefAt(PixelWindow& w, int x, int y) {
-  auto diff = [](float a, float b) { return std::isnan(a) || std::isnan(b) ? 0.0 : std::abs(double(a) - double(b)); };
-  return 0.25 * (diff(w.at(x + 1, y), w.at(x - 1, y)) + diff(w.at(x, y + 1), w.at(x, y - 1)));
-}
-
-// What one source says at pixel coordinates (px, py): the coverage of its valid pixels and, where
-// it is > 0, the bilinear height of those pixels (raw units) and the local relief per pixel.
-struct LayerSample {
-  double coverage = 0.0, value = 0.0, relief = 0.0;
-};
-
-LayerSample sampleLayer(PixelWindow& w, double px, double py, bool wantRelief) {
-  const int x0 = std::min(int(std::floor(px)), w.size().width - 2);
-  const int y0 = std::min(int(std::floor(py)), w.size().height - 2);
-  const double tx = px - x0, ty = py - y0;
-  const double b[4] = {(1.0 - tx) * (1.0 - ty), tx * (1.0 - ty), (1.0 - tx) * ty, tx * ty};
-  const int dx[4] = {0, 1, 0, 1}, dy[4] = {0, 0, 1, 1};
-  LayerSample s;
-  double sum = 0.0, relief = 0.0;
-  for (int k = 0; k < 4; ++k) {
-    const float v = w.at(x0 + dx[k], y0 + dy[k]);
-    if (std::isnan(v)) continue;
-    s.coverage += b[k];
-    sum += b[k] * double(v);
-    if (wantRelief) relief += b[k] * reliefAt(w, x0 + dx[k], y0 + dy[k]);
-  }
-  if (s.coverage > 0.0) {
-    s.value = sum / s.coverage;
-    s.relief = relief / s.coverage;
-  }
-  s.coverage = std::min(s.coverage, 1.0);
-  return s;
-}
 
 // Inside a kept hole: the inverse-square-distance mean of the valid pixels within `radius` pixels,
 // or NaN. The surface under the hole then continues the source's own heights for a few pixels, so

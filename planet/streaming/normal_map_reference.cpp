@@ -1,6 +1,7 @@
 #include "planet/streaming/normal_map_reference.h"
 
 #include "planet/elevation/colour_ramp.h"
+#include "planet/sources/surface_overlay.h"
 #include "planet/streaming/payload_reference.h"
 
 #include <glm/geometric.hpp>
@@ -68,8 +69,9 @@ void appendTexels(const ElevationModel& model, const gpu::PayloadJob& job, int m
     const double texel_m = job.uv.z * e.radius_m * double(step) / double(m);
     const float coast =
         std::clamp(float(double(ground) - e.sea_level_m) / float(texel_m * GLOBE_SURFACE_COAST_SCALE), -1.0f, 1.0f);
-    texels.push_back(
-        {normal, payloadSampleAlbedo(model, dir, double(drawn), grid.firstLayers[at], cosSlope, masks), coast});
+    const glm::vec3 albedo = payloadSampleAlbedo(model, dir, double(drawn), grid.firstLayers[at], cosSlope, masks);
+    const double overlayTexel_m = payloadSampleSpacing_m(job, uint32_t(m), e.radius_m) * step;
+    texels.push_back({normal, overlaidAlbedo(model.overlay(), albedo, dir, overlayTexel_m), coast});
   }
 }
 

@@ -4,6 +4,7 @@
 #include "planet/geometry/triacontahedron.h"
 #include "planet/lod/lod_ranges.h"
 #include "planet/sources/source_mosaic.h"
+#include "planet/sources/surface_overlay.h"
 #include "planet/streaming/normal_map_reference.h"
 
 #include <glm/geometric.hpp>
@@ -256,8 +257,10 @@ RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::Payload
                                                      : ellipsoidGradientOf(model.params(), positions[vertex]);
       const double cosSlope = std::clamp(glm::dot(nrm, up), 0.0, 1.0);
       LandCoverMasks masks;
-      const glm::vec3 albedo = payloadSampleAlbedo(model, payloadSampleDirection(job, cells, vi, vj),
-                                                   elevations[vertex], firstLayers[vertex], cosSlope, masks);
+      const glm::dvec3 dir = payloadSampleDirection(job, cells, vi, vj);
+      const glm::vec3 albedo = overlaidAlbedo(
+          model.overlay(), payloadSampleAlbedo(model, dir, elevations[vertex], firstLayers[vertex], cosSlope, masks),
+          dir, payloadSampleSpacing_m(job, cells, model.radius_m()));
       const size_t index = size_t(j + 1) * size_t(s) + size_t(i + 1);
       if (writeCover) writeCoverMasks(slot, GLOBE_PAYLOAD_COVER_OFFSET(cells), index, masks);
       slot[normals + index] =

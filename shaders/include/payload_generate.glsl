@@ -31,6 +31,8 @@ layout(std430, binding = 5) writeonly buffer Results { PayloadResult results[]; 
 layout(std140, binding = 7) uniform ColourRamp { ColourRampParams colourRamp; };
 // The planet's land cover (class_count 0 and kLandCover 0 without); its masks go to payloadTexels.
 layout(std140, binding = 8) uniform LandCover { LandCoverParams landCover; };
+// The batch's overlay colours (payload_layout.h; kOverlay 1 only): imagery over the albedo.
+layout(std430, binding = GLOBE_PAYLOAD_OVERLAY_BINDING) readonly buffer Overlay { uint overlayColours[]; };
 
 layout(push_constant) uniform Push {
   uint cells;     // grid cells per side (power of two)
@@ -60,6 +62,17 @@ layout(constant_id = GLOBE_PAYLOAD_SPEC_WATER_SURFACE) const uint kWaterSurface 
 layout(constant_id = GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE) const uint kNormalMapScale = 0u;
 // 1: the planet has land cover (albedo from its masks, masks written); 0: the colour ramp.
 layout(constant_id = GLOBE_PAYLOAD_SPEC_LAND_COVER) const uint kLandCover = 0u;
+// 1: the planet has imagery (overlayColours); 0: nothing is read from that binding.
+layout(constant_id = GLOBE_PAYLOAD_SPEC_OVERLAY) const uint kOverlay = 0u;
+
+// `albedo` under the job's overlay colour at `point` (payload_layout.h: a mesh sample's index, or
+// S*S plus a surface lattice point's): mirrored by globe::overlaidAlbedo (planet/sources/surface_overlay.h).
+vec3 overlaid(vec3 albedo, uint point) {
+  if (kOverlay == 0u) return albedo;
+  uint perJob = GLOBE_PAYLOAD_OVERLAY_POINTS(push.cells, push.cells * kNormalMapScale);
+  vec4 c = unpackUnorm4x8(overlayColours[gl_WorkGroupID.x * perJob + point]);
+  return albedo * (1.0 - c.a) + c.rgb * c.rgb * c.a;
+}
 
 // What scratch.w holds for a sample: its drawn elevation (the colour ramp's input), or with land
 // cover the drawn elevation and the first layer's value as two floats (the climate's inputs).
@@ -248,6 +261,8 @@ float surfaceTexel(PayloadJob job, uint scratchBase, uint at, uint row, uint mip
   vec3 albedo = surfaceAlbedo(scratchSurfaceWord(double(drawn), double(words.y)),
                               kLandCover != 0u ? sampleDirection(job, 2u * m, lattice.x, lattice.y) : dvec3(0.0lf),
                               cosSlope, masks);
+  albedo = overlaid(albedo, GLOBE_PAYLOAD_SAMPLES_PER_SIDE(push.cells) * GLOBE_PAYLOAD_SAMPLES_PER_SIDE(push.cells) +
+                                (at - scratchBase));
   storeSurfaceTexel(mip, texel, encodeSurfaceTexel(job, normal, albedo, coastField(at, job, mip + 1u)));
   return ground;
 }
@@ -375,6 +390,7 @@ double meshNormals(PayloadJob job, uint slotBase, uint scratchBase) {
     uvec2 masks;
     vec3 albedo = surfaceAlbedo(scratch[at].w, kLandCover != 0u ? sampleDirection(job, push.cells, i, j) : dvec3(0.0lf),
                                 cosSlope, masks);
+    albedo = overlaid(albedo, uint((j + 1) * s + (i + 1)));
     payloads[normalBase + index] = vec4(vec3(normal), packPayloadSurface(albedo, globeSourceHole(job.sourceBase, index)));
     if (kLandCover != 0u) payloadTexels[coverBase * 2u + index] = masks;
   }

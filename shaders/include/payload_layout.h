@@ -122,13 +122,26 @@ struct uvec4_ {
 // water); 0 = the ground everywhere (collision meshes, bakes, dry planets).
 #define GLOBE_PAYLOAD_SPEC_WATER_SURFACE 26
 // Specialization constant: the normal map's scale s (map cells = s * grid cells), 0 = no map.
+// Binding of the payload kernel's overlay colours (GLOBE_PAYLOAD_SPEC_OVERLAY on): per job of the
+// batch, GLOBE_PAYLOAD_OVERLAY_POINTS words, job k's from k * that on. Each word is the imagery's
+// colour and coverage at one point (planet/sources/surface_overlay.h: sqrt of the linear albedo in
+// bytes 0-2, coverage in byte 3): the S*S mesh samples (index as the mesh's; the kernel reads a ring
+// sample's nearest vertex), then the surface grids' lattice points in the scratch's order
+// (GLOBE_SURFACE_EVALUATIONS). A job the overlay does not touch has zero words (coverage 0).
+#define GLOBE_PAYLOAD_OVERLAY_BINDING 9
+#define GLOBE_PAYLOAD_OVERLAY_POINTS(cells, mapCells)                                      \
+  (GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells) * GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells) + \
+   GLOBE_SURFACE_EVALUATIONS(mapCells))
 // Bindings of the payload kernel's surface texture (storage images of the job's page): mip 0, mip 1.
-#define GLOBE_PAYLOAD_SURFACE_BINDING 9
-#define GLOBE_PAYLOAD_PARENT_SURFACE_BINDING 10
+#define GLOBE_PAYLOAD_SURFACE_BINDING 10
+#define GLOBE_PAYLOAD_PARENT_SURFACE_BINDING 11
 #define GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE 27
 // Specialization constant: 1 = the planet has land cover (land_cover.h): the samples' albedo is the
 // masks' blend of the class colours and the masks are written; 0 = the colour ramp, no masks.
 #define GLOBE_PAYLOAD_SPEC_LAND_COVER 28
+// Specialization constant: 1 = the planet has imagery: each job's overlay colours
+// (GLOBE_PAYLOAD_OVERLAY_BINDING) are blended over the samples' and texels' albedo; 0 = none bound.
+#define GLOBE_PAYLOAD_SPEC_OVERLAY 29
 
 // One node to generate (std430, 96 bytes).
 struct PayloadJob {

@@ -8,8 +8,12 @@
 #include "tests/engine/source_payload_check.h"
 #include "tests/support/fake_payload_generator.h"
 #include "tests/support/gpu_test.h"
+#include "tests/support/imagery_fixture.h"
+#include "tests/support/temp_dir.h"
 
 #include "engine/vk/resources.h"
+#include "planet/camera/camera.h"
+#include "planet/elevation/planet_file.h"
 #include "planet/geometry/face_mapping.h"
 
 #include <glm/geometric.hpp>
@@ -124,6 +128,23 @@ TexelPlace texelPlace(uint32_t t, uint32_t m) {
   return {at * 4 - 2, 1, at};
 }
 
+// maps[base] is a parent's, maps[base + 1 + q] its quadrant q child's: each child's mip 1 must hold
+// the parent's mip 0 texels over its quadrant bit for bit.
+void expectChildrenShowParent(const std::vector<std::vector<StoredTexel>>& maps, size_t base, uint32_t m) {
+  const uint32_t half = m / 2, side0 = m + 4, side1 = half + 2;
+  for (uint32_t q = 0; q < 4; ++q) {
+    const std::vector<StoredTexel>& child = maps[base + 1 + q];
+    for (uint32_t d = 0; d < side1; ++d)
+      for (uint32_t c = 0; c < side1; ++c) {
+        const StoredTexel mine = child[side0 * side0 + d * side1 + c];
+        // Child mip-1 texel c lies at parent mip-0 texel c + 1 (+ half in the upper quadrants).
+        const uint32_t px = c + 1 + (q & 1u) * half, py = d + 1 + (q >> 1) * half;
+        const StoredTexel parents = maps[base][py * side0 + px];
+        ASSERT_TRUE(mine == parents) << "parent " << base << " quadrant " << q << " texel " << c << ", " << d;
+      }
+  }
+}
+
 class NormalMapTest : public GpuTest {};
 class NormalMapShapeTest : public GpuTest, public ::testing::WithParamInterface<PlanetShapeCase> {};
 INSTANTIATE_TEST_SUITE_P(Shapes, NormalMapShapeTest, ::testing::Values(kPlanetShapes[0], kPlanetShapes[1]),
@@ -227,7 +248,7 @@ TEST_P(NormalMapShapeTest, BorderTexelsAgreeAcrossNodeEdgesAndFaceSeams) {
 // own mip 0 texels over its quadrant, bit for bit, so the switch to the parent changes nothing.
 TEST_F(NormalMapTest, ChildParentLevelEqualsParentMap) {
   const ElevationModel& model = earthlikeModel();
-  const uint32_t scale = 2, m = kCells * scale, half = m / 2, side0 = m + 4, side1 = half + 2;
+  const uint32_t scale = 2, m = kCells * scale;
   std::vector<NodeId> nodes;
   for (const NodeId& parent : {NodeId{5, 9, 100, 301}, NodeId{22, 21, 77777, (1u << 21) - 1}}) {
     nodes.push_back(parent);
@@ -235,19 +256,61 @@ TEST_F(NormalMapTest, ChildParentLevelEqualsParentMap) {
       nodes.push_back({parent.face, uint8_t(parent.level + 1), parent.x * 2 + (q & 1u), parent.y * 2 + (q >> 1)});
   }
   const auto maps = generateMaps(device(), model, nodes, scale);
-  for (size_t base = 0; base < nodes.size(); base += 5) {
-    for (uint32_t q = 0; q < 4; ++q) {
-      const std::vector<StoredTexel>& child = maps[base + 1 + q];
-      for (uint32_t d = 0; d < side1; ++d)
-        for (uint32_t c = 0; c < side1; ++c) {
-          const StoredTexel mine = child[side0 * side0 + d * side1 + c];
-          // Child mip-1 texel c lies at parent mip-0 texel c + 1 (+ half in the upper quadrants).
-          const uint32_t px = c + 1 + (q & 1u) * half, py = d + 1 + (q >> 1) * half;
-          const StoredTexel parents = maps[base][py * side0 + px];
-          ASSERT_TRUE(mine == parents) << "parent " << base / 5 << " quadrant " << q << " texel " << c << ", " << d;
-        }
-    }
+  for (size_t base = 0; base < nodes.size(); base += 5) expectChildrenShowParent(maps, base, m);
+}
+
+// Imagery ([[imagery]], docs/imagery.md) in the surface textures: the GPU's texels match the CPU
+// reference (which blends the same overlay colours) within one 8-bit step, a child's mip 1 is still
+// its parent's mip 0 bit for bit, and the texels show the checkerboard where its georeference puts it
+// (a square's centre texel light or dark as the square is).
+TEST_F(NormalMapTest, ImageryInTheSurfaceTexturesMatchesTheReference) {
+  TempDir dir("normal_map_imagery");
+  Checkerboard board;  // 64 x 64 pixels of 0.001 degrees (~111 m), squares of 8
+  const double g[6] = {10.0, 0.001, 0.0, 20.0, 0.0, -0.001};
+  std::copy(std::begin(g), std::end(g), board.geo);
+  writeCheckerboard((dir / "board.tif").string(), board);
+  PlanetDescription planet = *loadPlanetFile(std::string(GLOBE_SOURCE_DIR) + "/assets/planets/earthlike.toml");
+  ImagerySource source{(dir / "board.tif").string()};
+  source.blend_m = 0.0;
+  planet.imagery.push_back(source);
+  const ElevationModel model(planet);
+  ASSERT_NE(model.overlay(), nullptr);
+  const uint32_t scale = 2, m = kCells * scale;
+  const FacePoint centre = RhombusFaceMapping::get().locate(directionFromLatLon(19.968, 10.032));
+  std::vector<NodeId> nodes;
+  for (int level : {6, 9, 11}) nodes.push_back(nodeAt(centre, level));
+  const NodeId parent = nodes.back();
+  for (uint32_t q = 0; q < 4; ++q)
+    nodes.push_back({parent.face, uint8_t(parent.level + 1), parent.x * 2 + (q & 1u), parent.y * 2 + (q >> 1)});
+  const auto maps = generateMaps(device(), model, nodes, scale);
+  for (size_t k = 0; k < nodes.size(); ++k) {
+    const auto reference = normalMapReference(model, makePayloadJob(nodes[k], 0, model), kCells, scale);
+    ASSERT_EQ(reference.size(), maps[k].size());
+    for (size_t t = 0; t < reference.size(); ++t)
+      ASSERT_LE(byteStep(maps[k][t], expectedTexel(reference[t], nodes[k].face), 2, 3), 1)
+          << "node " << k << " texel " << t;
   }
+  // Level 11's texels are ~80 m: every square (888 m) spans ten of them; the texel nearest each
+  // square's centre shows its colour (light luma ~1, dark red's ~0.35 after the sqrt encoding).
+  int light = 0, dark = 0;
+  const gpu::PayloadJob job = makePayloadJob(parent, 0, model);
+  for (uint32_t t = 0; t < (m + 4) * (m + 4); ++t) {
+    const TexelPlace place = texelPlace(t, m);
+    const glm::dvec2 ll = latLonFromPosition(payloadSampleDirection(job, 2 * m, place.lattice.x, place.lattice.y));
+    const double col = (ll.y - 10.0) / 0.008, row = (20.0 - ll.x) / 0.008;
+    if (col < 0.0 || row < 0.0 || col >= 8.0 || row >= 8.0) continue;
+    if (std::abs(col - std::floor(col) - 0.5) > 0.25 || std::abs(row - std::floor(row) - 0.5) > 0.25) continue;
+    const bool isLight = (int(col) + int(row)) % 2 == 0;
+    const int luma = maps[nodes.size() - 5][t][2];
+    (isLight ? light : dark)++;
+    if (isLight)
+      EXPECT_GT(luma, 240) << "texel " << t;
+    else
+      EXPECT_LT(luma, 110) << "texel " << t;
+  }
+  EXPECT_GT(light, 10);
+  EXPECT_GT(dark, 10);
+  expectChildrenShowParent(maps, nodes.size() - 5, m);
 }
 
 // The pool's slot count comes from the whole slot: mesh, land cover masks and surface texture layers.
