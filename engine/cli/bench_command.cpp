@@ -18,6 +18,7 @@
 #include "planet/elevation/planet_file.h"
 #include "planet/sources/source_mosaic.h"
 #include "planet/sources/source_report.h"
+#include "planet/sources/surface_overlay.h"
 #include "progress_bar.h"
 
 #include <fmt/format.h>
@@ -278,6 +279,9 @@ int runBench(const BenchOptions& o) {
   printColdStart(*flight, **terrain, deviceReady_ms, pipelinesReady_ms);
   if (const SourceMosaic* sources = model.sources())
     std::printf("%s\n", sourceStreamingSummary(*sources, (*terrain)->generator().sourceLatencies_s()).c_str());
+  if (const SurfaceOverlay* overlay = model.overlay())
+    std::printf("%s\n",
+                imageryStreamingSummary(overlay->imagery(), (*terrain)->generator().sourceLatencies_s()).c_str());
   printBenchSummary(o, *rows);
   return kExitOk;
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 namespace globe {
 namespace {
@@ -151,6 +152,39 @@ std::optional<std::string> PlanetTomlReader::string(const toml::node& node, cons
   if (const auto* s = node.as_string()) return s->get();
   fail(node.source(), field, fmt::format("expected a string, got {}", tomlTypeName(node.type())));
   return std::nullopt;
+}
+
+std::optional<std::string> PlanetTomlReader::path(const toml::node& node, const std::string& field,
+                                                  const std::string& directory, std::string_view emptyHint) {
+  auto v = string(node, field);
+  if (!v) return std::nullopt;
+  if (v->empty()) {
+    fail(node.source(), field, fmt::format("must not be empty{}", emptyHint));
+    return std::nullopt;
+  }
+  std::filesystem::path p(*v);
+  if (p.is_relative() && !directory.empty()) p = std::filesystem::path(directory) / p;
+  return p.lexically_normal().string();
+}
+
+std::optional<double> PlanetTomlReader::numberIn(const toml::node& node, const std::string& field, double low,
+                                                 double high) {
+  auto v = number(node, field);
+  if (v && (*v < low || *v > high)) {
+    fail(node.source(), field, fmt::format("must be in [{}, {}]", low, high));
+    return std::nullopt;
+  }
+  return v;
+}
+
+std::optional<std::int64_t> PlanetTomlReader::integerIn(const toml::node& node, const std::string& field,
+                                                        std::int64_t low, std::int64_t high) {
+  auto v = integer(node, field);
+  if (v && (*v < low || *v > high)) {
+    fail(node.source(), field, fmt::format("must be in [{}, {}]", low, high));
+    return std::nullopt;
+  }
+  return v;
 }
 
 std::optional<glm::vec3> PlanetTomlReader::colour(const toml::node& node, const std::string& field) {

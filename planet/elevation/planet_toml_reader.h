@@ -64,6 +64,16 @@ class PlanetTomlReader {
 
   std::optional<std::string> string(const toml::node& node, const std::string& field);
 
+  // A file path: a non-empty string, relative paths resolved against `directory` (the planet file's
+  // folder; "" = the current one), lexically normal. `emptyHint` follows "must not be empty".
+  std::optional<std::string> path(const toml::node& node, const std::string& field, const std::string& directory,
+                                  std::string_view emptyHint = "");
+
+  // A number (an integer) in [low, high]; outside it the error says "must be in [low, high]".
+  std::optional<double> numberIn(const toml::node& node, const std::string& field, double low, double high);
+  std::optional<std::int64_t> integerIn(const toml::node& node, const std::string& field, std::int64_t low,
+                                        std::int64_t high);
+
   // [r, g, b], linear; the range [0, 1] is checked by validation.
   std::optional<glm::vec3> colour(const toml::node& node, const std::string& field);
 

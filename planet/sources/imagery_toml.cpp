@@ -13,15 +13,9 @@ constexpr std::string_view kImageryKeys[] = {"path", "extent", "priority", "opac
 
 void readPath(PlanetTomlReader& r, const toml::node& node, const std::string& field, const std::string& directory,
               ImagerySource& source) {
-  auto v = r.string(node, field);
-  if (!v) return;
-  if (v->empty()) {
-    r.fail(node.source(), field, "must not be empty");
-    return;
-  }
-  std::filesystem::path path(*v);
-  if (path.is_relative() && !directory.empty()) path = std::filesystem::path(directory) / path;
-  source.path = path.lexically_normal().string();
+  auto path = r.path(node, field, directory);
+  if (!path) return;
+  source.path = *path;
   std::error_code ec;
   if (!std::filesystem::exists(source.path, ec))
     r.fail(node.source(), field, fmt::format("no such file '{}'", source.path));
@@ -50,17 +44,6 @@ void readExtent(PlanetTomlReader& r, const toml::node& node, const std::string& 
   source.extent = GeographicExtent{v[0], v[1], v[2], v[3]};
 }
 
-void readRanged(PlanetTomlReader& r, const toml::node& node, const std::string& field, double low, double high,
-                double& out) {
-  auto v = r.number(node, field);
-  if (!v) return;
-  if (*v < low || *v > high) {
-    r.fail(node.source(), field, fmt::format("must be in [{}, {}]", low, high));
-  } else {
-    out = *v;
-  }
-}
-
 void readKey(PlanetTomlReader& r, const std::string& k, const toml::node& node, const std::string& field,
              const std::string& directory, ImagerySource& source) {
   if (k == "path") {
@@ -68,17 +51,11 @@ void readKey(PlanetTomlReader& r, const std::string& k, const toml::node& node, 
   } else if (k == "extent") {
     readExtent(r, node, field, source);
   } else if (k == "priority") {
-    if (auto v = r.integer(node, field)) {
-      if (*v < -1000000 || *v > 1000000) {
-        r.fail(node.source(), field, "must be in [-1000000, 1000000]");
-      } else {
-        source.priority = int(*v);
-      }
-    }
+    if (auto v = r.integerIn(node, field, -1000000, 1000000)) source.priority = int(*v);
   } else if (k == "opacity") {
-    readRanged(r, node, field, 0.0, 1.0, source.opacity);
+    if (auto v = r.numberIn(node, field, 0.0, 1.0)) source.opacity = *v;
   } else if (k == "blend_m") {
-    readRanged(r, node, field, 0.0, 1.0e7, source.blend_m);
+    if (auto v = r.numberIn(node, field, 0.0, 1.0e7)) source.blend_m = *v;
   }
 }
 

@@ -1,5 +1,6 @@
 #include "planet/sources/source_report.h"
 
+#include "planet/sources/imagery_mosaic.h"
 #include "planet/sources/source_mosaic.h"
 
 #include <fmt/format.h>
@@ -32,6 +33,25 @@ bool boxesOverlap(const RasterFacts& a, const RasterFacts& b) {
   return false;
 }
 
+// One line per imagery raster, ranked finest first.
+void describeImagery(const PlanetDescription& planet, std::vector<std::string>& lines) {
+  if (planet.imagery.empty()) return;
+  const ImageryMosaic mosaic(planet.imagery, planet.radius_m);
+  const auto& layers = mosaic.layers();
+  for (std::size_t i = 0; i < layers.size(); ++i) {
+    const RasterFacts& f = layers[i].facts();
+    const ImagerySource& d = layers[i].description;
+    lines.push_back(fmt::format(
+        "imagery {} (rank {}): {}: {} x {} px, {}{}, CRS '{}'{}, {:.2f} m pixels, lat {:.5f} .. {:.5f}, "
+        "lon {:.5f} .. {:.5f}, opacity {:g}, blend {:.1f} m{}",
+        std::find(planet.imagery.begin(), planet.imagery.end(), d) - planet.imagery.begin(), i, d.path, f.width,
+        f.height, layers[i].grey ? "grey" : "RGB", layers[i].alpha ? " + alpha" : "", f.crs_name,
+        d.extent ? " (from extent)" : "", f.pixel_size_m, f.lat_min_deg, f.lat_max_deg, f.lon_min_deg, f.lon_max_deg,
+        d.opacity, layers[i].blend_m, layers[i].wrapsX ? ", wraps at the antimeridian" : ""));
+  }
+  if (layers.size() != planet.imagery.size()) lines.push_back("warning: an imagery raster no longer opens");
+}
+
 }  // namespace
 
 std::vector<std::string> describeSources(const PlanetDescription& planet) {
@@ -57,28 +77,46 @@ std::vector<std::string> describeSources(const PlanetDescription& planet) {
     }
   }
   if (layers.size() != planet.sources.size()) lines.push_back("warning: a source no longer opens");
+  describeImagery(planet, lines);
   return lines;
 }
 
-std::string sourceStreamingSummary(const SourceMosaic& mosaic, const std::vector<double>& latencies_s) {
-  const TileCacheStats s = mosaic.cache().stats();
-  double dataBytes = 0.0;
-  for (const auto& layer : mosaic.layers())
-    dataBytes += double(layer.raster->facts().width) * double(layer.raster->facts().height) * sizeof(float);
+namespace {
+
+// One streaming line for a tile cache over `dataBytes` of decoded rasters.
+std::string streamingSummary(const char* what, const TileCacheStats& s, double dataBytes,
+                             const std::vector<double>& latencies_s) {
   std::vector<double> sorted = latencies_s;
   std::sort(sorted.begin(), sorted.end());
   auto at = [&](double q) {
     return sorted.empty() ? 0.0 : sorted[std::min(sorted.size() - 1, std::size_t(q * double(sorted.size())))];
   };
   return fmt::format(
-      "sources: {} tiles read+decoded ({} of pyramid levels >= 1) in {:.3f} s ({:.0f} tiles/s), {} hits; "
+      "{}: {} tiles read+decoded ({} of pyramid levels >= 1) in {:.3f} s ({:.0f} tiles/s), {} hits; "
       "request->resident over {} payloads "
       "p50 {:.1f} ms p99 {:.1f} ms; RAM peak {:.2f} MiB = {:.1f} % of the data ({:.2f} MiB), {} evictions; "
       "frame-loop waits {}, frame-loop misses {}",
-      s.reads, s.coarseReads, s.readSeconds, s.readSeconds > 0.0 ? double(s.reads) / s.readSeconds : 0.0, s.hits,
+      what, s.reads, s.coarseReads, s.readSeconds, s.readSeconds > 0.0 ? double(s.reads) / s.readSeconds : 0.0, s.hits,
       sorted.size(), 1e3 * at(0.5), 1e3 * at(0.99), double(s.peakResidentBytes) / 1048576.0,
       dataBytes > 0.0 ? 100.0 * double(s.peakResidentBytes) / dataBytes : 0.0, dataBytes / 1048576.0, s.evictions,
       s.frameLoopWaits, s.frameThreadMisses);
+}
+
+}  // namespace
+
+std::string sourceStreamingSummary(const SourceMosaic& mosaic, const std::vector<double>& latencies_s) {
+  double dataBytes = 0.0;
+  for (const auto& layer : mosaic.layers())
+    dataBytes += double(layer.raster->facts().width) * double(layer.raster->facts().height) * sizeof(float);
+  return streamingSummary("sources", mosaic.cache().stats(), dataBytes, latencies_s);
+}
+
+std::string imageryStreamingSummary(const ImageryMosaic& mosaic, const std::vector<double>& latencies_s) {
+  double dataBytes = 0.0;
+  for (const auto& layer : mosaic.layers())
+    dataBytes +=
+        double(layer.facts().width) * double(layer.facts().height) * sizeof(float) * double(layer.bands.size());
+  return streamingSummary("imagery", mosaic.cache().stats(), dataBytes, latencies_s);
 }
 
 }  // namespace globe

@@ -18,15 +18,9 @@ constexpr double kMaxVerticalOffset_m = 1.0e7;
 
 void readPath(PlanetTomlReader& r, const toml::node& node, const std::string& field, const std::string& directory,
               ElevationSource& source) {
-  auto v = r.string(node, field);
-  if (!v) return;
-  if (v->empty()) {
-    r.fail(node.source(), field, "must not be empty");
-    return;
-  }
-  std::filesystem::path path(*v);
-  if (path.is_relative() && !directory.empty()) path = std::filesystem::path(directory) / path;
-  source.path = path.lexically_normal().string();
+  auto path = r.path(node, field, directory);
+  if (!path) return;
+  source.path = *path;
   std::error_code ec;
   if (std::filesystem::is_directory(source.path, ec)) return;  // a baked tileset: checkBakedSource
   if (!std::filesystem::exists(source.path, ec)) {
@@ -50,17 +44,6 @@ void readNoData(PlanetTomlReader& r, const toml::node& node, const std::string& 
   }
 }
 
-void readRanged(PlanetTomlReader& r, const toml::node& node, const std::string& field, double low, double high,
-                double& out) {
-  auto v = r.number(node, field);
-  if (!v) return;
-  if (*v < low || *v > high) {
-    r.fail(node.source(), field, fmt::format("must be in [{}, {}]", low, high));
-  } else {
-    out = *v;
-  }
-}
-
 void readSourceKey(PlanetTomlReader& r, const std::string& k, const toml::node& node, const std::string& field,
                    const std::string& directory, ElevationSource& source) {
   if (k == "path") {
@@ -74,20 +57,14 @@ void readSourceKey(PlanetTomlReader& r, const std::string& k, const toml::node& 
       r.fail(node.source(), field, fmt::format("expected a boolean, got {}", tomlTypeName(node.type())));
     }
   } else if (k == "priority") {
-    if (auto v = r.integer(node, field)) {
-      if (*v < -1000000 || *v > 1000000) {
-        r.fail(node.source(), field, "must be in [-1000000, 1000000]");
-      } else {
-        source.priority = int(*v);
-      }
-    }
+    if (auto v = r.integerIn(node, field, -1000000, 1000000)) source.priority = int(*v);
   } else if (k == "vertical_scale") {
-    readRanged(r, node, field, -kMaxVerticalScale, kMaxVerticalScale, source.vertical_scale);
+    if (auto v = r.numberIn(node, field, -kMaxVerticalScale, kMaxVerticalScale)) source.vertical_scale = *v;
     if (source.vertical_scale == 0.0) r.fail(node.source(), field, "must not be 0");
   } else if (k == "vertical_offset_m") {
-    readRanged(r, node, field, -kMaxVerticalOffset_m, kMaxVerticalOffset_m, source.vertical_offset_m);
+    if (auto v = r.numberIn(node, field, -kMaxVerticalOffset_m, kMaxVerticalOffset_m)) source.vertical_offset_m = *v;
   } else if (k == "blend_m") {
-    readRanged(r, node, field, 0.0, 1.0e7, source.blend_m);
+    if (auto v = r.numberIn(node, field, 0.0, 1.0e7)) source.blend_m = *v;
   }
 }
 

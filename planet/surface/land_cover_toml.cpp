@@ -81,15 +81,9 @@ bool hasPngSignature(const std::string& path) {
 }
 
 void readTexture(PlanetTomlReader& r, const toml::node& node, const std::string& field, ClassRead& read) {
-  auto v = r.string(node, field);
-  if (!v) return;
-  if (v->empty()) {
-    r.fail(node.source(), field, "must not be empty (leave the key out for the procedural detail)");
-    return;
-  }
-  std::filesystem::path path(*v);
-  if (path.is_relative() && !read.directory.empty()) path = std::filesystem::path(read.directory) / path;
-  read.cls.texture = path.lexically_normal().string();
+  auto path = r.path(node, field, read.directory, " (leave the key out for the procedural detail)");
+  if (!path) return;
+  read.cls.texture = *path;
   std::error_code ec;
   if (!std::filesystem::is_regular_file(read.cls.texture, ec)) {
     r.fail(node.source(), field, fmt::format("no such file '{}'", read.cls.texture));
