@@ -152,8 +152,8 @@ ElevationModel::ElevationModel(const PlanetDescription& planet)
       bounds_(elevationBounds(planet)),
       shape_(planetShape(planet)),
       atmosphere_(planet.atmosphere) {
-  if (!planet.imagery.empty()) {
-    overlay_ = std::make_shared<const SurfaceOverlay>(planet.imagery, planet.radius_m);
+  if (!planet.imagery.empty() || !planet.vectors.empty()) {
+    overlay_ = std::make_shared<const SurfaceOverlay>(planet.imagery, planet.vectors, planet.radius_m);
     if (overlay_->empty()) overlay_.reset();
   }
   if (planet.sources.empty()) return;

@@ -66,7 +66,7 @@ class ElevationModel {
   SourceTerm sourceTerm(const glm::dvec3& unit_direction, double sample_spacing_m = 0.0) const;
   // The mosaic of the planet's [[sources]], or nullptr for a procedural planet.
   const SourceMosaic* sources() const { return sources_.get(); }
-  // What the planet's [[imagery]] paints over the albedo, or nullptr when it has none.
+  // What the planet's [[imagery]] and [[vectors]] paint over the albedo, or nullptr when it has none.
   const SurfaceOverlay* overlay() const { return overlay_.get(); }
   // The terrain point over a unit geodetic normal: shape().position(unit_direction, elevation_m), metres,
   // planet-centred; on a sphere unit_direction * (radius_m + elevation_m).

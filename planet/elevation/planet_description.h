@@ -20,6 +20,7 @@
 #include "planet/sources/imagery_source.h"
 #include "planet/sources/source_description.h"
 #include "planet/surface/land_cover.h"
+#include "planet/vectors/vector_layer.h"
 
 namespace globe {
 
@@ -92,6 +93,8 @@ struct PlanetDescription {
   std::vector<ElevationSource> sources;
   // Colour rasters draped over the ground's albedo ([[imagery]], planet/sources/imagery_mosaic.h).
   std::vector<ImagerySource> imagery;
+  // Vector data painted over it ([[vectors]], planet/vectors/vector_overlay.h).
+  std::vector<VectorLayer> vectors;
   // [atmosphere]: precomputed scattering (docs/rendering.md, "Atmosphere"); none = black sky.
   std::optional<AtmosphereParameters> atmosphere;
 

@@ -6,6 +6,7 @@
 #include "planet/sources/imagery_toml.h"
 #include "planet/sources/source_toml.h"
 #include "planet/surface/land_cover_toml.h"
+#include "planet/vectors/vector_toml.h"
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
@@ -35,6 +36,7 @@ constexpr std::string_view kTopKeys[] = {"name",
                                          "water",
                                          "sources",
                                          "imagery",
+                                         "vectors",
                                          "atmosphere",
                                          "climate",
                                          "land_cover"};
@@ -380,6 +382,8 @@ PlanetFileCheck readPlanet(const toml::table& root, std::string_view source_name
       readSources(r, node, directory, planet.sources);
     } else if (k == "imagery") {
       readImagery(r, node, directory, planet.imagery);
+    } else if (k == "vectors") {
+      readVectors(r, node, directory, planet.vectors);
     } else if (k == "climate") {
       readClimate(r, node, planet.land_cover.climate);
     } else if (k == "land_cover") {

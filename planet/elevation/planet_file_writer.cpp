@@ -2,7 +2,9 @@
 
 #include "planet/atmosphere/atmosphere_toml.h"
 #include "planet/elevation/planet_toml_reader.h"
+#include "planet/sources/imagery_toml.h"
 #include "planet/surface/land_cover_toml.h"
+#include "planet/vectors/vector_toml.h"
 
 #include <fmt/format.h>
 #include <cassert>
@@ -51,14 +53,8 @@ std::string formatPlanetToml(const PlanetDescription& planet) {
                    number(src.vertical_scale), number(src.vertical_offset_m));
     if (src.blend_m >= 0.0) fmt::format_to(line, "blend_m = {}\n", number(src.blend_m));
   }
-  for (const ImagerySource& img : planet.imagery) {
-    fmt::format_to(line, "\n[[imagery]]\npath = {}\npriority = {}\nopacity = {}\n", tomlQuoted(img.path), img.priority,
-                   number(img.opacity));
-    if (const auto& e = img.extent)
-      fmt::format_to(line, "extent = [{}, {}, {}, {}]\n", number(e->lon_min_deg), number(e->lat_min_deg),
-                     number(e->lon_max_deg), number(e->lat_max_deg));
-    if (img.blend_m >= 0.0) fmt::format_to(line, "blend_m = {}\n", number(img.blend_m));
-  }
+  out += formatImageryToml(planet.imagery);
+  out += formatVectorsToml(planet.vectors);
   const ColourRamp& ramp = planet.colour_ramp;
   for (const ColourRampStop& s : ramp.stops) {
     fmt::format_to(line, "\n[[colour_ramp]]\nelevation_m = {}\ncolour = {}\n", number(s.elevation_m), colour(s.colour));

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <iterator>
 
 namespace globe {
 namespace {
@@ -94,6 +95,20 @@ void readImagery(PlanetTomlReader& r, const toml::node& node, const std::string&
            fmt::format("at most {} imagery rasters", kMaxImagerySources));
   }
   for (std::size_t i = 0; i < list->size(); ++i) readOne(r, *(*list)[i].as_table(), i, planetDirectory, imagery);
+}
+
+std::string formatImageryToml(const std::vector<ImagerySource>& imagery) {
+  std::string out;
+  auto line = std::back_inserter(out);
+  for (const ImagerySource& img : imagery) {
+    fmt::format_to(line, "\n[[imagery]]\npath = {}\npriority = {}\nopacity = {}\n", tomlQuoted(img.path), img.priority,
+                   img.opacity);
+    if (const auto& e = img.extent)
+      fmt::format_to(line, "extent = [{}, {}, {}, {}]\n", e->lon_min_deg, e->lat_min_deg, e->lon_max_deg,
+                     e->lat_max_deg);
+    if (img.blend_m >= 0.0) fmt::format_to(line, "blend_m = {}\n", img.blend_m);
+  }
+  return out;
 }
 
 }  // namespace globe

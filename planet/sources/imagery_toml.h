@@ -15,4 +15,7 @@ namespace globe {
 void readImagery(PlanetTomlReader& r, const toml::node& node, const std::string& planetDirectory,
                  std::vector<ImagerySource>& imagery);
 
+// The [[imagery]] tables of `imagery` as readImagery reads them back.
+std::string formatImageryToml(const std::vector<ImagerySource>& imagery);
+
 }  // namespace globe

@@ -46,20 +46,24 @@ std::vector<std::uint32_t> overlayColoursForJob(const ElevationModel& model, con
   const SurfaceOverlay* overlay = model.overlay();
   if (overlay == nullptr) return {};
   const uint32_t m = cells * mapScale;
+  const int n = int(cells);
+  std::vector<glm::dvec3> samples;
+  samples.reserve(std::size_t(n + 3) * std::size_t(n + 3));
+  for (int j = -1; j <= n + 1; ++j)
+    for (int i = -1; i <= n + 1; ++i) samples.push_back(payloadSampleDirection(job, cells, i, j));
+  const double sample_m = payloadSampleSpacing_m(job, cells, model.radius_m());
+  const double texel_m = m > 0 ? payloadSampleSpacing_m(job, m, model.radius_m()) : sample_m;
+  const bool vectors = overlay->vectorsMayTouch(samples, std::max(sample_m, 2.0 * texel_m));
   std::vector<std::uint32_t> words;
   words.reserve(GLOBE_PAYLOAD_OVERLAY_POINTS(cells, m));
   bool any = false;
-  auto add = [&](const glm::dvec3& dir, double texel_m) {
-    words.push_back(packOverlayColour(overlay->colourAt(dir, texel_m)));
+  auto add = [&](const glm::dvec3& dir, double spacing_m) {
+    words.push_back(packOverlayColour(overlay->colourAt(dir, spacing_m, vectors)));
     any = any || (words.back() >> 24) != 0;
   };
-  const int n = int(cells);
-  const double sample_m = payloadSampleSpacing_m(job, cells, model.radius_m());
-  for (int j = -1; j <= n + 1; ++j)
-    for (int i = -1; i <= n + 1; ++i) add(payloadSampleDirection(job, cells, i, j), sample_m);
+  for (const glm::dvec3& dir : samples) add(dir, sample_m);
   // The surface grids as the kernel's scratch holds them: mip 0's lattice points 2g - 5, mip 1's 4g - 6.
   if (m > 0) {
-    const double texel_m = payloadSampleSpacing_m(job, m, model.radius_m());
     const struct {
       int side, stride, offset;
       double texel_m;

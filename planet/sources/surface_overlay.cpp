@@ -1,17 +1,58 @@
 #include "planet/sources/surface_overlay.h"
 
+#include "planet/camera/camera.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace globe {
 
-SurfaceOverlay::SurfaceOverlay(const std::vector<ImagerySource>& imagery, double radius_m)
-    : imagery_(imagery, radius_m) {}
+SurfaceOverlay::SurfaceOverlay(const std::vector<ImagerySource>& imagery, const std::vector<VectorLayer>& vectors,
+                               double radius_m)
+    : imagery_(imagery, radius_m) {
+  if (vectors.empty()) return;
+  // The planet file loader has read every layer; one that no longer opens draws nothing.
+  if (Result<std::unique_ptr<VectorOverlay>> opened = VectorOverlay::open(vectors, radius_m); opened)
+    vectors_ = std::move(*opened);
+  for (const VectorLayer& v : vectors)
+    widestPx_ = std::max({widestPx_, v.width_m > 0.0 ? 0.0 : v.width_px, v.point_size_m > 0.0 ? 0.0 : v.point_size_px});
+}
 
-bool SurfaceOverlay::empty() const { return imagery_.layers().empty(); }
+SurfaceOverlay::~SurfaceOverlay() = default;
 
-ImageryColour SurfaceOverlay::colourAt(const glm::dvec3& unitDirection, double texel_m) const {
-  return imagery_.colourAt(unitDirection, texel_m);
+bool SurfaceOverlay::empty() const { return imagery_.layers().empty() && (!vectors_ || vectors_->empty()); }
+
+ImageryColour SurfaceOverlay::colourAt(const glm::dvec3& unitDirection, double texel_m, bool withVectors) const {
+  ImageryColour c = imagery_.colourAt(unitDirection, texel_m);
+  if (!withVectors || !vectors_ || !(texel_m > 0.0)) return c;
+  const OverlayColour v = vectors_->colourAt(unitDirection, texel_m, texel_m / kScreenPixelsPerTexel);
+  if (v.alpha <= 0.0f) return c;
+  // The vectors "over" the imagery.
+  const double a = double(v.alpha), under = c.alpha * (1.0 - a);
+  const double alpha = a + under;
+  c.albedo = (glm::dvec3(v.albedo) * a + c.albedo * under) / alpha;
+  c.alpha = alpha;
+  return c;
+}
+
+bool SurfaceOverlay::vectorsMayTouch(std::span<const glm::dvec3> directions, double texel_m) const {
+  if (!vectors_ || directions.empty()) return false;
+  double latMin = 90.0, latMax = -90.0, lonMin = 360.0, lonMax = -360.0;
+  for (const glm::dvec3& d : directions) {
+    const glm::dvec2 ll = latLonFromPosition(d);
+    latMin = std::min(latMin, ll.x);
+    latMax = std::max(latMax, ll.x);
+    lonMin = std::min(lonMin, ll.y);
+    lonMax = std::max(lonMax, ll.y);
+  }
+  // A node across the antimeridian or around a pole: every longitude (conservative).
+  if (lonMax - lonMin > 180.0 || latMax > 89.0 || latMin < -89.0) {
+    lonMin = -180.0;
+    lonMax = 180.0;
+  }
+  // The texel lattice reaches up to 2.5 texels beyond the node (payload_layout.h), past its samples.
+  const double margin_m = widestPx_ * texel_m / kScreenPixelsPerTexel + 3.0 * texel_m;
+  return vectors_->mayTouch(latMin, latMax, lonMin, lonMax, margin_m);
 }
 
 namespace {

@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <memory>
 
@@ -187,6 +188,40 @@ TEST_F(ImageryTest, PlanetFileLoadsImageryAndWritesItBack) {
   const ElevationModel model(*planet);
   ASSERT_NE(model.overlay(), nullptr);
   EXPECT_GT(model.overlay()->colourAt(directionFromLatLon(-4.5, 30.5), 0.0).alpha, 0.7);
+}
+
+// [[vectors]] beside [[imagery]]: the planet file writes both back, and the overlay lays the
+// vectors over the imagery ("over": a half-opaque fill mixes with the image beneath).
+TEST_F(ImageryTest, VectorsLieOverTheImageryAndRoundTrip) {
+  testing::Checkerboard board;
+  testing::writeCheckerboard(path("board.tif"), board);
+  std::ofstream(path("square.geojson"))
+      << R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {"kind": "park"},)"
+      << R"( "geometry": {"type": "Polygon", "coordinates": [[[30.2, -4.8], [30.4, -4.8], [30.4, -4.6], [30.2, -4.6],)"
+      << R"( [30.2, -4.8]]]}}]})";
+  const std::string file =
+      imageryPlanet(dir_->str(),
+                    "[[imagery]]\npath = \"board.tif\"\nextent = [30.0, -5.0, 31.0, -4.0]\n"
+                    "blend_m = 0.0\n\n[[vectors]]\npath = \"square.geojson\"\n"
+                    "fill = \"#0000ff\"\nfill_opacity = 0.5\nline = [1.0, 1.0, 0.0]\nwidth_m = 40.0\n"
+                    "colour_by = \"kind\"\ncolours = { lake = \"#00ffff\" }\n");
+  Result<PlanetDescription> planet = loadPlanetFile(file);
+  ASSERT_TRUE(planet.ok()) << planet.error().format();
+  ASSERT_EQ(planet->vectors.size(), 1u);
+  PlanetFileCheck again = checkPlanetToml(formatPlanetToml(*planet), "again.toml");
+  ASSERT_TRUE(again.errors.empty()) << again.errors[0].format();
+  EXPECT_EQ(again.planet.vectors, planet->vectors);
+  const ElevationModel model(*planet);
+  ASSERT_NE(model.overlay(), nullptr);
+  const glm::dvec3 inside = directionFromLatLon(-4.75, 30.3), outside = directionFromLatLon(-4.5, 30.7);
+  const ImageryColour image = model.overlay()->imagery().colourAt(inside, 10.0);
+  const ImageryColour both = model.overlay()->colourAt(inside, 10.0);
+  EXPECT_NEAR(both.alpha, 1.0, 1e-6);
+  EXPECT_NEAR(both.albedo.z, 0.5 * 1.0 + 0.5 * image.albedo.z, 1e-6);  // half the blue fill over the image
+  EXPECT_NEAR(both.albedo.x, 0.5 * image.albedo.x, 1e-6);
+  const ImageryColour edge = model.overlay()->colourAt(directionFromLatLon(-4.8, 30.3), 10.0);
+  EXPECT_NEAR(edge.albedo.x, 1.0, 0.02);  // the yellow outline, opaque, on top
+  EXPECT_EQ(model.overlay()->colourAt(outside, 10.0).albedo, model.overlay()->imagery().colourAt(outside, 10.0).albedo);
 }
 
 TEST_F(ImageryTest, BadImageryIsOneLineEach) {
