@@ -130,7 +130,7 @@ void GpuPayloadGenerator::reserveSlots(uint32_t slots, uint32_t maxSlotsPerPage)
   const VkPhysicalDeviceLimits& limits = device_.properties().limits;
   uint32_t perPage = std::max<uint32_t>(1, uint32_t(limits.maxStorageBufferRange / bytesPerSlot));
   // A page's surface textures are one array image: a layer per slot.
-  if (normalMapScale_ > 0) perPage = std::min(perPage, limits.maxImageArrayLayers);
+  if (normalMapScale_ > 0) perPage = std::min(perPage, limits.maxImageArrayLayers / surfaceLayersPerSlot());
   if (maxSlotsPerPage > 0) perPage = std::min(perPage, maxSlotsPerPage);
   // Every window must start at a multiple of the storage-buffer offset alignment (slot bytes are a
   // multiple of 16 and the alignment a power of two <= 256, so 16 slots always align).
@@ -138,7 +138,7 @@ void GpuPayloadGenerator::reserveSlots(uint32_t slots, uint32_t maxSlotsPerPage)
   if (slots > perPage && (VkDeviceSize(perPage) * bytesPerSlot) % limits.minStorageBufferOffsetAlignment != 0)
     throw std::runtime_error("payload pages of " + std::to_string(perPage) +
                              " slots break the storage-buffer offset alignment");
-  textures_ = SurfaceTextures(device_, cells_ * normalMapScale_, slots, perPage);
+  textures_ = SurfaceTextures(device_, cells_ * normalMapScale_, slots, perPage, surfaceLayersPerSlot());
   pages_ = {payloads_.handle(), payloads_.size(), VkDeviceSize(perPage) * bytesPerSlot, perPage,
             normalMapScale_ > 0 ? &textures_ : nullptr};
   slotCentres_.assign(slots, glm::dvec3(0.0));

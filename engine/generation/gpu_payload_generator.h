@@ -51,14 +51,16 @@ class GpuPayloadGenerator final : public PayloadGenerator {
 
   void generate(std::span<const GenerationJob> jobs) override;
   void collect(std::vector<GenerationResult>& finished) override;
-  size_t slotBytes() const override { return slotBytesFor(cells_, normalMapScale_); }
+  size_t slotBytes() const override { return slotBytesFor(cells_, normalMapScale_, surfaceLayersPerSlot()); }
   std::string lastFailure() const override { return lastFailure_; }
   // Bytes of one slot in the payload buffer: the mesh (payload_layout.h) and the land cover masks.
   static size_t bufferSlotBytes(uint32_t cells) { return size_t(GLOBE_PAYLOAD_SLOT_VEC4(cells)) * 16u; }
   // Bytes of one slot in all: its buffer part and, if normalMapScale > 0, its surface texture layers.
-  static size_t slotBytesFor(uint32_t cells, uint32_t normalMapScale = 0) {
-    return bufferSlotBytes(cells) + SurfaceTextures::bytesPerSlot(cells * normalMapScale);
+  static size_t slotBytesFor(uint32_t cells, uint32_t normalMapScale = 0, uint32_t layersPerSlot = 1) {
+    return bufferSlotBytes(cells) + SurfaceTextures::bytesPerSlot(cells * normalMapScale, layersPerSlot);
   }
+  // Surface texture layers per slot: 2 on a planet with an overlay (the colour layer, payload_layout.h).
+  uint32_t surfaceLayersPerSlot() const { return normalMapScale_ > 0 && model_.overlay() != nullptr ? 2u : 1u; }
 
   // Blocks until every submitted batch has finished (converged mode, shutdown, tests).
   void waitIdle();

@@ -31,12 +31,13 @@ vk::UniqueSampler createClampSampler(VkDevice device) {
 
 }  // namespace
 
-size_t SurfaceTextures::bytesPerSlot(uint32_t mapCells) {
-  return size_t(GLOBE_NORMAL_MAP_TEXELS(mapCells)) * 4;  // both mips, RGBA8
+size_t SurfaceTextures::bytesPerSlot(uint32_t mapCells, uint32_t layersPerSlot) {
+  return size_t(GLOBE_NORMAL_MAP_TEXELS(mapCells)) * 4 * layersPerSlot;  // both mips, RGBA8
 }
 
-SurfaceTextures::SurfaceTextures(vk::Device& device, uint32_t mapCells, uint32_t slots, uint32_t slotsPerPage)
-    : mapCells_(mapCells) {
+SurfaceTextures::SurfaceTextures(vk::Device& device, uint32_t mapCells, uint32_t slots, uint32_t slotsPerPage,
+                                 uint32_t layersPerSlot)
+    : mapCells_(mapCells), layersPerSlot_(mapCells > 0 ? layersPerSlot : 1) {
   if (mapCells > 0) {
     side_ = GLOBE_SURFACE_TEXTURE_SIDE(mapCells);
   } else {
@@ -44,7 +45,7 @@ SurfaceTextures::SurfaceTextures(vk::Device& device, uint32_t mapCells, uint32_t
   }
   assert(slotsPerPage > 0);
   for (uint32_t first = 0; first < std::max(slots, 1u); first += slotsPerPage)
-    pages_.push_back(makePage(device, std::min(slotsPerPage, std::max(slots, 1u) - first)));
+    pages_.push_back(makePage(device, std::min(slotsPerPage, std::max(slots, 1u) - first) * layersPerSlot_));
   sampler_ = createClampSampler(device.device());
   // Once, before any kernel writes: every page's image to GENERAL for good.
   device.submitAndWait([&](VkCommandBuffer cmd) {

@@ -140,6 +140,7 @@ void Terrain::attachPool(std::unique_ptr<PayloadPool> pool) {
   style.water = model_.water();
   style.seaLevel_m = model_.seaLevel_m();
   style.normalMapScale = meshMapScale(settings_);
+  style.surfaceLayersPerSlot = generator_->surfaceLayersPerSlot();
   style.imagery = imagery_ != nullptr;
   if (!imagery_ && settings_.normalMapScale > 0)
     meshMaps_.emplace(ImageryConfig{}, model_.radius_m(), model_.bounds().min_m, model_.bounds().max_m, model_.shape());

@@ -348,7 +348,7 @@ TerrainDebugView TerrainRenderer::writeFrameConstants(unsigned char* bytes, cons
                    : view == TerrainDebugView::kLandCover  ? GLOBE_TERRAIN_LAND_COVER
                                                            : GLOBE_TERRAIN_WIREFRAME,
                    skirts ? 1u : 0u, cells_ * style_.normalMapScale};
-  frame.skirt = {style_.skirtOutward, style_.skirtDrop, 0.0f, 0.0f};
+  frame.skirt = {style_.skirtOutward, style_.skirtDrop, style_.surfaceLayersPerSlot == 2 ? 1.0f : 0.0f, 0.0f};
   const Water& w = style_.water;
   // Without water the sea level is -FLT_MAX: nothing is below it (terrain_vertex.glsl).
   const float seaLevel_m = w.enabled ? float(style_.seaLevel_m) : -std::numeric_limits<float>::max();
@@ -427,7 +427,7 @@ uint32_t TerrainRenderer::writeInstances(unsigned char* bytes, const glm::dvec3&
                      morphDistance(n.morph.end_m[3])};
     inst.info = {payloads.localSlot(n.slot) * slotVec4, n.partial ? 2u : 1u,
                  uint32_t(n.id.level) - (n.partial ? 1u : 0u), 0u};
-    inst.imagery = {n.imageryCell, payloads.localSlot(n.slot), 0u, 0u};
+    inst.imagery = {n.imageryCell, payloads.localSlot(n.slot) * style_.surfaceLayersPerSlot, 0u, 0u};
     const std::array<glm::dvec3, 3>& frame = RhombusFaceMapping::get().faceFrame(n.id.face);
     inst.frameEast = toGpu(glm::vec3(frame[0]), 0.0f);
     inst.frameUp = toGpu(glm::vec3(frame[2]), 0.0f);

@@ -86,6 +86,10 @@ struct TerrainStyle {
   // fragment stages shade from them (PayloadPages::surfaces). 0: payloads without maps (e.g. filled
   // on the CPU), lit per vertex from the mesh's normals and albedo.
   uint32_t normalMapScale = 0;
+  // Surface texture layers per slot (GpuPayloadGenerator::surfaceLayersPerSlot): 2 on a planet with an
+  // overlay, whose colour layer holds the albedo per texel (payload_layout.h); 1: luma per texel,
+  // chroma per vertex.
+  uint32_t surfaceLayersPerSlot = 1;
   // The planet's land cover: the classes' detail textures (DetailTextureArray::descriptor(), owned
   // by the caller, alive as long as the renderer). With an image view the payloads' masks are read
   // and the fragment stages splat the textures (terrain_fragment.glsl); null: no land cover.

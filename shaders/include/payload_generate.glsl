@@ -65,6 +65,9 @@ layout(constant_id = GLOBE_PAYLOAD_SPEC_LAND_COVER) const uint kLandCover = 0u;
 // 1: the planet has imagery (overlayColours); 0: nothing is read from that binding.
 layout(constant_id = GLOBE_PAYLOAD_SPEC_OVERLAY) const uint kOverlay = 0u;
 
+// Surface texture layers per slot: with an overlay each slot's colour layer follows its surface layer.
+const uint kSurfaceLayers = kOverlay != 0u ? 2u : 1u;
+
 // `albedo` under the job's overlay colour at `point` (payload_layout.h: a mesh sample's index, or
 // S*S plus a surface lattice point's): mirrored by globe::overlaidAlbedo (planet/sources/surface_overlay.h).
 vec3 overlaid(vec3 albedo, uint point) {
@@ -264,6 +267,8 @@ float surfaceTexel(PayloadJob job, uint scratchBase, uint at, uint row, uint mip
   albedo = overlaid(albedo, GLOBE_PAYLOAD_SAMPLES_PER_SIDE(push.cells) * GLOBE_PAYLOAD_SAMPLES_PER_SIDE(push.cells) +
                                 (at - scratchBase));
   storeSurfaceTexel(mip, texel, encodeSurfaceTexel(job, normal, albedo, coastField(at, job, mip + 1u)));
+  // With an overlay the colour layer: the albedo's square root per texel (payload_layout.h).
+  if (kOverlay != 0u) storeSurfaceTexel(mip, texel + ivec3(0, 0, 1), vec4(sqrt(clamp(albedo, 0.0, 1.0)), 1.0));
   return ground;
 }
 
@@ -295,7 +300,7 @@ double fillNormalMap(PayloadJob job, uint scratchBase) {
     uint x = local % side, y = local / side;
     // Texel (x, y) is grid point (x + 1, y + 1): the grid has one more point all around.
     uint at = scratchBase + (mip == 0u ? 0u : grid0 * grid0) + (y + 1u) * row + x + 1u;
-    lowest = min(lowest, surfaceTexel(job, scratchBase, at, row, mip, ivec3(int(x), int(y), int(job.slot))));
+    lowest = min(lowest, surfaceTexel(job, scratchBase, at, row, mip, ivec3(int(x), int(y), int(job.slot * kSurfaceLayers))));
   }
   return double(lowest);
 }

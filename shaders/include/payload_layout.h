@@ -53,6 +53,11 @@
 //       gentle coasts at 8 bits (slope 1 %: to a 5th of a texel); a steep coast saturates within a
 //       texel and is drawn through the texels' centres. A distance field (height over the local
 //       slope) drew teeth a texel apart where neighbouring texels' slopes differed.
+// On a planet with an overlay (GLOBE_PAYLOAD_SPEC_OVERLAY: [[imagery]] or [[vectors]]) each slot has
+// two layers: slot k's surface layer is 2k, and layer 2k + 1 its colour layer, addressed alike, whose
+// texels hold rgb = the square root of the linear albedo (the overlay blended in), a = 1: the fragment
+// stages read it instead of the luma and the vertices' chroma, so imagery and vector edges are sharp
+// in colour too (TerrainFrame.skirt.z = 1).
 // After the mesh, [cover offset, + (S*S + 1) / 2) the land cover masks, one uvec2 per sample
 // (index as the mesh's): 8 bytes, class i in byte i % 4 of word i / 4, summing to 255 (land_cover.h).
 // Ring samples hold the masks of their nearest vertex, like its normal. Without land cover

@@ -168,9 +168,13 @@ vec3 mappedColour(vec3 modulation, out float coast) {
   coast = mix(mix(mix(w.w, w.z, f.x), mix(w.x, w.y, f.x), f.y) - 0.5, coast, blend);
 #endif
   vec3 n = surfaceNormal(texel.xy);  // in the node's face frame, as inSunFace and inUp
-  // YCoCg to RGB: the texel's luma, the vertices' chroma.
+  // YCoCg to RGB: the texel's luma, the vertices' chroma; on a planet with an overlay the colour
+  // layer's texel (uniform: every fragment of the frame takes the same side).
   float g = texel.z + inChroma.y, rb = texel.z - inChroma.y;
   vec3 root = max(vec3(rb + inChroma.x, g, rb - inChroma.x), vec3(0.0));
+#ifndef GLOBE_TERRAIN_IMAGERY
+  if (frame.skirt.z > 0.5) root = sampleSurface(coord + vec3(0.0, 0.0, 1.0), blend).rgb;
+#endif
   vec3 albedo = root * root * modulation;
 #ifdef GLOBE_TERRAIN_ATMOSPHERE
   // The vertex stage's light through the air, applied to the mapped normal and colour

@@ -73,7 +73,8 @@ struct TerrainFrame {
   GLOBE_VEC4 sun;             // 112: xyz = unit direction towards the sun (planet-fixed); w = ambient light
   GLOBE_UVEC4 options;        // 128: x = payload grid cells N, y = debug view, z = 1 when skirts are drawn,
                               //      w = normal map cells M per node side (payload_layout.h)
-  GLOBE_VEC4 skirt;           // 144: x = outward offset, y = drop, both in drawn cells
+  GLOBE_VEC4 skirt;           // 144: x = outward offset, y = drop, both in drawn cells; z = 1 when each slot's
+                              //      surface layer is followed by its colour layer (payload_layout.h)
   GLOBE_VEC4 waterShallow;    // 160: rgb = the sea's colour at the shore (linear); w = sea level (m), -FLT_MAX: no sea
   GLOBE_VEC4 waterDeep;       // 176: rgb = the sea's colour over deep ground (linear); w = 1 / depth scale (per m)
   GLOBE_VEC4 skyZenith;       // 192: rgb = the sky overhead (linear), reflected by the sea
@@ -104,8 +105,8 @@ struct TerrainInstance {
   GLOBE_VEC4 morphEnd;   // 48: morph end at the node's corners u0 v0, u1 v0, u0 v1, u1 v1
   GLOBE_VEC4 detail;     // 64: where the node's (u, v) corner falls in the fine (xy) and coarse (zw)
                          //     detail tiles, [0, 1): the tiles' coordinates go on across nodes
-  GLOBE_UVEC4 imagery;   // 80: x = the node's first cell in the imagery table; y = the slot's layer in its
-                         //     page's surface texture; zw unused
+  GLOBE_UVEC4 imagery;   // 80: x = the node's first cell in the imagery table; y = the slot's (surface)
+                         //     layer in its page's surface texture; zw unused
   GLOBE_VEC4 frameEast;  // 96: xyz = the node's face frame (RhombusFaceMapping::faceFrame): east, then up;
   GLOBE_VEC4 frameUp;    // 112: the surface texture's normals are octahedral in it (payload_layout.h)
 };

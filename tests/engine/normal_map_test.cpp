@@ -49,25 +49,32 @@ void readMip(vk::Device& device, VkImage image, uint32_t mip, uint32_t side, uin
 }
 
 // The surface texture's texels of `nodes` generated into slots 0..n-1 at map scale `scale`, per node
-// in the reference's order (mip 0 row by row, then mip 1: normalMapReference).
+// in the reference's order (mip 0 row by row, then mip 1: normalMapReference); on a planet with an
+// overlay each slot's colour layer goes to `colours`, likewise.
 std::vector<std::vector<StoredTexel>> generateMaps(vk::Device& device, const ElevationModel& model,
-                                                   const std::vector<NodeId>& nodes, uint32_t scale) {
+                                                   const std::vector<NodeId>& nodes, uint32_t scale,
+                                                   std::vector<std::vector<StoredTexel>>* colours = nullptr) {
   GpuPayloadGenerator gen(device, model, kCells, GLOBE_PAYLOAD_MAX_BATCH, 1, GenerationPrecision::kDouble, false,
                           scale);
   gen.reserveSlots(uint32_t(nodes.size()));
   EXPECT_EQ(generateIntoSlots(gen, nodes).size(), nodes.size());
   const SurfaceTextures& textures = gen.surfaceTextures();
   EXPECT_EQ(textures.pageCount(), 1u);
-  const uint32_t layers = uint32_t(nodes.size());
+  const uint32_t perSlot = textures.layersPerSlot(), layers = uint32_t(nodes.size()) * perSlot;
   std::vector<std::vector<StoredTexel>> maps(nodes.size());
+  if (colours != nullptr) colours->assign(perSlot == 2 ? nodes.size() : 0, {});
   for (uint32_t mip = 0; mip < 2; ++mip) {
     const uint32_t side = textures.side() >> mip;
     vk::Buffer texels(device, VkDeviceSize(side) * side * layers * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                       vk::MemoryUse::HostVisible, "surface readback");
     readMip(device, textures.image(0), mip, side, layers, texels);
     const auto* t = static_cast<const StoredTexel*>(texels.mapped());
-    for (size_t k = 0; k < nodes.size(); ++k)
-      maps[k].insert(maps[k].end(), t + k * side * side, t + (k + 1) * side * side);
+    for (size_t k = 0; k < nodes.size(); ++k) {
+      const StoredTexel* layer = t + k * perSlot * side * side;
+      maps[k].insert(maps[k].end(), layer, layer + side * side);
+      if (colours != nullptr && perSlot == 2)
+        (*colours)[k].insert((*colours)[k].end(), layer + side * side, layer + 2 * side * side);
+    }
   }
   return maps;
 }
@@ -259,10 +266,11 @@ TEST_F(NormalMapTest, ChildParentLevelEqualsParentMap) {
   for (size_t base = 0; base < nodes.size(); base += 5) expectChildrenShowParent(maps, base, m);
 }
 
-// Imagery ([[imagery]], docs/imagery.md) in the surface textures: the GPU's texels match the CPU
-// reference (which blends the same overlay colours) within one 8-bit step, a child's mip 1 is still
-// its parent's mip 0 bit for bit, and the texels show the checkerboard where its georeference puts it
-// (a square's centre texel light or dark as the square is).
+// Imagery ([[imagery]], docs/imagery.md) in the surface textures: the GPU's texels (the luma and the
+// colour layer's albedo) match the CPU reference (which blends the same overlay colours) within one
+// 8-bit step, a child's mip 1 is still its parent's mip 0 bit for bit (both layers), and the texels
+// show the checkerboard where its georeference puts it (a square's centre texel light or dark as the
+// square is).
 TEST_F(NormalMapTest, ImageryInTheSurfaceTexturesMatchesTheReference) {
   TempDir dir("normal_map_imagery");
   Checkerboard board;  // 64 x 64 pixels of 0.001 degrees (~111 m), squares of 8
@@ -282,13 +290,19 @@ TEST_F(NormalMapTest, ImageryInTheSurfaceTexturesMatchesTheReference) {
   const NodeId parent = nodes.back();
   for (uint32_t q = 0; q < 4; ++q)
     nodes.push_back({parent.face, uint8_t(parent.level + 1), parent.x * 2 + (q & 1u), parent.y * 2 + (q >> 1)});
-  const auto maps = generateMaps(device(), model, nodes, scale);
+  std::vector<std::vector<StoredTexel>> colours;
+  const auto maps = generateMaps(device(), model, nodes, scale, &colours);
+  ASSERT_EQ(colours.size(), nodes.size());  // the colour layers of a planet with an overlay
   for (size_t k = 0; k < nodes.size(); ++k) {
     const auto reference = normalMapReference(model, makePayloadJob(nodes[k], 0, model), kCells, scale);
     ASSERT_EQ(reference.size(), maps[k].size());
-    for (size_t t = 0; t < reference.size(); ++t)
+    for (size_t t = 0; t < reference.size(); ++t) {
       ASSERT_LE(byteStep(maps[k][t], expectedTexel(reference[t], nodes[k].face), 2, 3), 1)
           << "node " << k << " texel " << t;
+      const glm::dvec3 root = glm::sqrt(glm::clamp(glm::dvec3(reference[t].albedo), 0.0, 1.0));
+      const StoredTexel colour{uint8_t(unitByte(root.x)), uint8_t(unitByte(root.y)), uint8_t(unitByte(root.z)), 255};
+      ASSERT_LE(byteStep(colours[k][t], colour), 1) << "node " << k << " colour texel " << t;
+    }
   }
   // Level 11's texels are ~80 m: every square (888 m) spans ten of them; the texel nearest each
   // square's centre shows its colour (light luma ~1, dark red's ~0.35 after the sqrt encoding).
@@ -311,6 +325,7 @@ TEST_F(NormalMapTest, ImageryInTheSurfaceTexturesMatchesTheReference) {
   EXPECT_GT(light, 10);
   EXPECT_GT(dark, 10);
   expectChildrenShowParent(maps, nodes.size() - 5, m);
+  expectChildrenShowParent(colours, nodes.size() - 5, m);
 }
 
 // The pool's slot count comes from the whole slot: mesh, land cover masks and surface texture layers.
