@@ -13,7 +13,8 @@ TerrainShading surfaceShading(const TerrainStyle& style, bool atmosphere, bool w
           water,
           style.holes,
           style.coverEverywhere() || (nearCamera && style.coverNear()),
-          style.imagery};
+          style.imagery,
+          style.surfaceLayersPerSlot == 2 && !style.imagery};
 }
 
 VkCullModeFlags gridCullMode(const TerrainStyle& style) {
@@ -53,6 +54,10 @@ vk::GraphicsPipelineDesc terrainDesc(TargetFormat target, bool wireframe, VkCull
   // The surface texture: the drawn page's, or the imagery tiles' pages'.
   const uint32_t surfaceBindings = !shading.normalMaps ? 0 : shading.imagery ? GLOBE_IMAGERY_TILE_PAGES : 1;
   for (uint32_t b = 0; b < surfaceBindings; ++b) d.sampledImageBindings.push_back(GLOBE_TERRAIN_SURFACE_BINDING + b);
+  // A constant, not a uniform branch: lavapipe ran the colour layer's fetch for every fragment of a
+  // planet without one behind a frame flag (+3 ms on the flyover, docs/imagery.md).
+  static_assert(GLOBE_TERRAIN_SPEC_COLOUR_LAYER == 0);
+  if (shading.normalMaps) d.fragmentSpecialization = {shading.colourLayer ? 1u : 0u};
   return d;
 }
 

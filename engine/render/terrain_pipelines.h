@@ -25,6 +25,9 @@ struct TerrainShading {
   bool holes = false;
   bool cover = false;
   bool imagery = false;  // the maps from the imagery tiles (with normalMaps)
+  // The albedo from each slot's colour layer (a planet with an overlay, payload_layout.h): a
+  // specialization constant of the _maps fragment stages (GLOBE_TERRAIN_SPEC_COLOUR_LAYER).
+  bool colourLayer = false;
 };
 
 // The surface pipelines' shading (the wireframe's has neither water nor holes nor land cover). The

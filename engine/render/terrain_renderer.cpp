@@ -348,7 +348,7 @@ TerrainDebugView TerrainRenderer::writeFrameConstants(unsigned char* bytes, cons
                    : view == TerrainDebugView::kLandCover  ? GLOBE_TERRAIN_LAND_COVER
                                                            : GLOBE_TERRAIN_WIREFRAME,
                    skirts ? 1u : 0u, cells_ * style_.normalMapScale};
-  frame.skirt = {style_.skirtOutward, style_.skirtDrop, style_.surfaceLayersPerSlot == 2 ? 1.0f : 0.0f, 0.0f};
+  frame.skirt = {style_.skirtOutward, style_.skirtDrop, 0.0f, 0.0f};
   const Water& w = style_.water;
   // Without water the sea level is -FLT_MAX: nothing is below it (terrain_vertex.glsl).
   const float seaLevel_m = w.enabled ? float(style_.seaLevel_m) : -std::numeric_limits<float>::max();

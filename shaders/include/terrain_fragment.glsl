@@ -63,7 +63,8 @@ layout(location = 18) flat in uint inImageryCell;
 layout(location = 3) in vec3 inRelative;
 #endif
 #else
-// The drawn page's surface texture (payload_layout.h), a layer per slot.
+layout(constant_id = GLOBE_TERRAIN_SPEC_COLOUR_LAYER) const uint kColourLayer = 0u;
+// The drawn page's surface texture (payload_layout.h), a layer per slot (two with the colour layer).
 layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING) uniform sampler2DArray surfaceTexture;
 // An explicit LOD: no derivatives, and the blend to the parent's mip without a branch (a per-fragment
 // branch around a second fetch doubled the terrain pass on lavapipe: docs/rendering.md).
@@ -169,11 +170,11 @@ vec3 mappedColour(vec3 modulation, out float coast) {
 #endif
   vec3 n = surfaceNormal(texel.xy);  // in the node's face frame, as inSunFace and inUp
   // YCoCg to RGB: the texel's luma, the vertices' chroma; on a planet with an overlay the colour
-  // layer's texel (uniform: every fragment of the frame takes the same side).
+  // layer's texel (a specialization constant: no fetch for the others).
   float g = texel.z + inChroma.y, rb = texel.z - inChroma.y;
   vec3 root = max(vec3(rb + inChroma.x, g, rb - inChroma.x), vec3(0.0));
 #ifndef GLOBE_TERRAIN_IMAGERY
-  if (frame.skirt.z > 0.5) root = sampleSurface(coord + vec3(0.0, 0.0, 1.0), blend).rgb;
+  if (kColourLayer != 0u) root = sampleSurface(coord + vec3(0.0, 0.0, 1.0), blend).rgb;
 #endif
   vec3 albedo = root * root * modulation;
 #ifdef GLOBE_TERRAIN_ATMOSPHERE

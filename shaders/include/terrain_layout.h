@@ -42,6 +42,9 @@ struct TerrainDvec4 {
 #define GLOBE_TERRAIN_WIREFRAME 2u
 #define GLOBE_TERRAIN_LAND_COVER 3u  // the dominant land cover class per vertex, in its key colour
 
+// Specialization constant of the _maps fragment stages: 1 = each slot's surface layer is followed by
+// its colour layer, whose texels are the albedo (a planet with an overlay, payload_layout.h).
+#define GLOBE_TERRAIN_SPEC_COLOUR_LAYER 0
 // Binding of the land cover's detail textures (a sampler2DArray, one layer per class) in the terrain
 // pipelines with land cover (terrain_fragment.glsl), past every buffer binding.
 #define GLOBE_TERRAIN_DETAIL_BINDING 14
@@ -73,8 +76,7 @@ struct TerrainFrame {
   GLOBE_VEC4 sun;             // 112: xyz = unit direction towards the sun (planet-fixed); w = ambient light
   GLOBE_UVEC4 options;        // 128: x = payload grid cells N, y = debug view, z = 1 when skirts are drawn,
                               //      w = normal map cells M per node side (payload_layout.h)
-  GLOBE_VEC4 skirt;           // 144: x = outward offset, y = drop, both in drawn cells; z = 1 when each slot's
-                              //      surface layer is followed by its colour layer (payload_layout.h)
+  GLOBE_VEC4 skirt;           // 144: x = outward offset, y = drop, both in drawn cells
   GLOBE_VEC4 waterShallow;    // 160: rgb = the sea's colour at the shore (linear); w = sea level (m), -FLT_MAX: no sea
   GLOBE_VEC4 waterDeep;       // 176: rgb = the sea's colour over deep ground (linear); w = 1 / depth scale (per m)
   GLOBE_VEC4 skyZenith;       // 192: rgb = the sky overhead (linear), reflected by the sea

@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <memory>
@@ -224,6 +225,27 @@ TEST_F(ImageryTest, VectorsLieOverTheImageryAndRoundTrip) {
   EXPECT_EQ(model.overlay()->colourAt(outside, 10.0).albedo, model.overlay()->imagery().colourAt(outside, 10.0).albedo);
 }
 
+// The example a user copies (assets/planets/earth-imagery.toml): it loads, and Blue Marble lies the
+// right way round: the Pacific blue, the Sahara sandy, Greenland's ice bright, at 10 km texels.
+TEST_F(ImageryTest, TheEarthImageryExampleShowsTheEarth) {
+  Result<PlanetDescription> planet =
+      loadPlanetFile(std::string(GLOBE_SOURCE_DIR) + "/assets/planets/earth-imagery.toml");
+  ASSERT_TRUE(planet.ok()) << planet.error().format();
+  EXPECT_EQ(planet->imagery.size(), 1u);
+  EXPECT_EQ(planet->vectors.size(), 2u);
+  const ElevationModel model(*planet);
+  ASSERT_NE(model.overlay(), nullptr);
+  auto at = [&](double lat, double lon) {
+    return model.overlay()->imagery().colourAt(directionFromLatLon(lat, lon), 1e4);
+  };
+  const ImageryColour pacific = at(0.0, -150.0), sahara = at(23.0, 10.0), greenland = at(75.0, -40.0);
+  EXPECT_EQ(pacific.alpha, 1.0);
+  EXPECT_GT(pacific.albedo.z, 2.0 * pacific.albedo.x);
+  EXPECT_GT(sahara.albedo.x, 1.5 * sahara.albedo.z);
+  EXPECT_GT(greenland.albedo.y, 0.5);
+  EXPECT_GT(greenland.albedo.y, 3.0 * pacific.albedo.y);
+}
+
 TEST_F(ImageryTest, BadImageryIsOneLineEach) {
   testing::Checkerboard board;
   testing::writeCheckerboard(path("board.tif"), board);
@@ -248,6 +270,14 @@ TEST_F(ImageryTest, BadImageryIsOneLineEach) {
   const PlanetFileCheck floats = check("[[imagery]]\npath = \"" + dem.flat + "\"\n");
   ASSERT_EQ(floats.errors.size(), 1u);
   EXPECT_NE(floats.errors[0].message.find("Float32"), std::string::npos) << floats.errors[0].message;
+  // A truncated GeoTIFF: GDAL's reason, one line, no crash.
+  testing::Checkerboard big;
+  big.width = big.height = 512;
+  testing::writeCheckerboard(path("truncated.tif"), big);
+  std::filesystem::resize_file(path("truncated.tif"), std::filesystem::file_size(path("truncated.tif")) / 3);
+  const PlanetFileCheck truncated = check("[[imagery]]\npath = \"truncated.tif\"\n");
+  ASSERT_EQ(truncated.errors.size(), 1u);
+  EXPECT_EQ(truncated.errors[0].field, "imagery[0].path");
   // A PNG without georeferencing needs an extent.
   testing::writePlainPng(path("plain.png"), 16, 16);
   const PlanetFileCheck plain = check("[[imagery]]\npath = \"plain.png\"\n");
