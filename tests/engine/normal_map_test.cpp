@@ -328,7 +328,8 @@ TEST_F(NormalMapTest, ImageryInTheSurfaceTexturesMatchesTheReference) {
   expectChildrenShowParent(colours, nodes.size() - 5, m);
 }
 
-// The pool's slot count comes from the whole slot: mesh, land cover masks and surface texture layers.
+// The pool's slot count comes from the whole slot: mesh, land cover masks and surface texture layers
+// (two with an overlay's colour layer).
 TEST(NormalMapBudgetTest, PoolBudgetCountsTheNormalMap) {
   const size_t mesh = 2 * 19 * 19 * 16;         // 16 cells: 19 x 19 samples, position + normal vec4
   const size_t cover = (19 * 19 + 1) / 2 * 16;  // 8 mask bytes a sample
@@ -337,6 +338,8 @@ TEST(NormalMapBudgetTest, PoolBudgetCountsTheNormalMap) {
     const size_t m = kCells * scale, texels = (m + 4) * (m + 4) + (m / 2 + 2) * (m / 2 + 2);
     const size_t slot = GpuPayloadGenerator::slotBytesFor(kCells, scale);
     EXPECT_EQ(slot, mesh + cover + texels * 4) << scale;
+    // With an overlay the colour layer doubles the texture part (docs/imagery.md).
+    EXPECT_EQ(GpuPayloadGenerator::slotBytesFor(kCells, scale, 2), mesh + cover + texels * 8) << scale;
     FakePayloadGenerator generator(slot, 6371000.0, {6.36e6, 6.38e6});
     StreamingConfig config;
     config.vramBudget_MiB = 64.0;
