@@ -134,9 +134,8 @@ struct uvec4_ {
 // sample's nearest vertex), then the surface grids' lattice points in the scratch's order
 // (GLOBE_SURFACE_EVALUATIONS). A job the overlay does not touch has zero words (coverage 0).
 #define GLOBE_PAYLOAD_OVERLAY_BINDING 9
-#define GLOBE_PAYLOAD_OVERLAY_POINTS(cells, mapCells)                                      \
-  (GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells) * GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells) + \
-   GLOBE_SURFACE_EVALUATIONS(mapCells))
+#define GLOBE_PAYLOAD_OVERLAY_POINTS(cells, mapCells) \
+  (GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells) * GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells) + GLOBE_SURFACE_EVALUATIONS(mapCells))
 // Bindings of the payload kernel's surface texture (storage images of the job's page): mip 0, mip 1.
 #define GLOBE_PAYLOAD_SURFACE_BINDING 10
 #define GLOBE_PAYLOAD_PARENT_SURFACE_BINDING 11
