@@ -2,6 +2,7 @@
 
 #include "planet/sources/imagery_mosaic.h"
 #include "planet/sources/source_mosaic.h"
+#include "planet/vectors/vector_features.h"
 
 #include <fmt/format.h>
 
@@ -52,6 +53,27 @@ void describeImagery(const PlanetDescription& planet, std::vector<std::string>& 
   if (layers.size() != planet.imagery.size()) lines.push_back("warning: an imagery raster no longer opens");
 }
 
+// One line per vector layer: what OGR read, reprojected (features, parts, vertices, box).
+void describeVectors(const PlanetDescription& planet, std::vector<std::string>& lines) {
+  for (std::size_t i = 0; i < planet.vectors.size(); ++i) {
+    const VectorLayer& v = planet.vectors[i];
+    Result<VectorFeatures> read = readVectorFeatures(v);
+    if (!read) {
+      lines.push_back(fmt::format("warning: vectors {} no longer reads: {}", i, read.error().message));
+      continue;
+    }
+    std::size_t count[3] = {0, 0, 0};  // rings, lines, points
+    for (const VectorPart& part : read->parts) ++count[std::size_t(part.kind)];
+    const auto [latMin, latMax] = std::minmax_element(read->lat_deg.begin(), read->lat_deg.end());
+    const auto [lonMin, lonMax] = std::minmax_element(read->lon_deg.begin(), read->lon_deg.end());
+    const bool any = !read->lat_deg.empty();
+    lines.push_back(fmt::format(
+        "vectors {}: {}: layer '{}', {} features ({} polygon rings, {} lines, {} points), {} vertices{}", i, v.path,
+        read->layer_name, read->features.size(), count[0], count[1], count[2], read->lat_deg.size(),
+        any ? fmt::format(", lat {:.5f} .. {:.5f}, lon {:.5f} .. {:.5f}", *latMin, *latMax, *lonMin, *lonMax) : ""));
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> describeSources(const PlanetDescription& planet) {
@@ -78,6 +100,7 @@ std::vector<std::string> describeSources(const PlanetDescription& planet) {
   }
   if (layers.size() != planet.sources.size()) lines.push_back("warning: a source no longer opens");
   describeImagery(planet, lines);
+  describeVectors(planet, lines);
   return lines;
 }
 

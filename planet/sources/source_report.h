@@ -2,7 +2,8 @@
 // What `globe planet check` reports about a valid planet's sources: per source its size, CRS,
 // pixel size, latitude/longitude box, value range and valid-pixel coverage, then every pair whose
 // boxes overlap (and which one wins there: the finer, then the higher priority); then per imagery
-// raster its size, bands, CRS, pixel size and box.
+// raster its size, bands, CRS, pixel size and box; then per vector layer its features, parts,
+// vertices and box.
 #include "planet/elevation/planet_description.h"
 
 #include <string>

@@ -7,6 +7,7 @@
 #include "planet/elevation/planet_file.h"
 #include "planet/elevation/planet_file_writer.h"
 #include "planet/sources/imagery_mosaic.h"
+#include "planet/sources/source_report.h"
 #include "planet/sources/surface_overlay.h"
 #include "tests/support/dem_fixture.h"
 #include "tests/support/imagery_fixture.h"
@@ -212,6 +213,12 @@ TEST_F(ImageryTest, VectorsLieOverTheImageryAndRoundTrip) {
   PlanetFileCheck again = checkPlanetToml(formatPlanetToml(*planet), "again.toml");
   ASSERT_TRUE(again.errors.empty()) << again.errors[0].format();
   EXPECT_EQ(again.planet.vectors, planet->vectors);
+  // `globe planet check` describes both.
+  const std::vector<std::string> described = describeSources(*planet);
+  ASSERT_EQ(described.size(), 2u);
+  EXPECT_NE(described[0].find("imagery 0 (rank 0)"), std::string::npos) << described[0];
+  EXPECT_NE(described[1].find("1 features (1 polygon rings, 0 lines, 0 points), 4 vertices"), std::string::npos)
+      << described[1];
   const ElevationModel model(*planet);
   ASSERT_NE(model.overlay(), nullptr);
   const glm::dvec3 inside = directionFromLatLon(-4.75, 30.3), outside = directionFromLatLon(-4.5, 30.7);
