@@ -104,7 +104,7 @@ GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationMode
                                    "payload source terms");
     // Likewise a planet without imagery binds one word it never reads.
     const VkDeviceSize overlayBytes =
-        model.overlay() != nullptr ? VkDeviceSize(maxJobs_) * overlayPointsPerJob() * 4 : 4;
+        model.overlay() != nullptr ? VkDeviceSize(maxJobs_) * overlayWordsPerJob() * 4 : 4;
     batch.overlay = vk::Buffer(device, overlayBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::HostVisible,
                                "payload overlay colours");
     batch.submitted.reserve(maxJobs_);
@@ -195,18 +195,18 @@ void GpuPayloadGenerator::submitBatches(std::vector<PreparedRequest>& requests, 
   requests.erase(requests.begin(), requests.begin() + std::ptrdiff_t(first));
 }
 
-size_t GpuPayloadGenerator::overlayPointsPerJob() const {
-  return GLOBE_PAYLOAD_OVERLAY_POINTS(cells_, cells_ * normalMapScale_);
+size_t GpuPayloadGenerator::overlayWordsPerJob() const {
+  return GLOBE_PAYLOAD_OVERLAY_WORDS(cells_, cells_ * normalMapScale_);
 }
 
 void GpuPayloadGenerator::copyOverlay(Batch& batch, size_t job, const std::vector<std::uint32_t>& words) const {
   if (model_.overlay() == nullptr) return;
-  auto* to = static_cast<std::uint32_t*>(batch.overlay.mapped()) + job * overlayPointsPerJob();
+  auto* to = static_cast<std::uint32_t*>(batch.overlay.mapped()) + job * overlayWordsPerJob();
   // A job the overlay does not touch (or a request made without the I/O thread) blends nothing.
-  if (words.size() == overlayPointsPerJob())
+  if (words.size() == overlayWordsPerJob())
     std::memcpy(to, words.data(), words.size() * sizeof(std::uint32_t));
   else
-    std::memset(to, 0, overlayPointsPerJob() * sizeof(std::uint32_t));
+    std::memset(to, 0, overlayWordsPerJob() * sizeof(std::uint32_t));
 }
 
 void GpuPayloadGenerator::record(Batch& batch, std::span<PreparedRequest> requests) {

@@ -113,9 +113,9 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   // Removes what it submitted.
   void submitBatches(std::vector<PreparedRequest>& requests, bool mayWait);
   void record(Batch& batch, std::span<PreparedRequest> requests);
-  // Overlay words a job takes in a batch (GLOBE_PAYLOAD_OVERLAY_POINTS), and job `job`'s copied in
+  // Overlay words a job takes in a batch (GLOBE_PAYLOAD_OVERLAY_WORDS), and job `job`'s copied in
   // (or zeros when it has none).
-  size_t overlayPointsPerJob() const;
+  size_t overlayWordsPerJob() const;
   void copyOverlay(Batch& batch, size_t job, const std::vector<std::uint32_t>& words) const;
   void submitPrepared();
   // Submits a recorded batch; a failed submit (not a lost device) reports its jobs failed instead.

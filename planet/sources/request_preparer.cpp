@@ -30,35 +30,30 @@ std::vector<glm::dvec4> sourceTermsAt(const ElevationModel& model, std::span<con
   return terms;
 }
 
-std::vector<glm::dvec4> sourceTermsForJob(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells) {
+std::vector<glm::dvec4> sourceTermsForJob(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
+                                          std::span<const glm::dvec3> samples) {
   if (model.sources() == nullptr) return {};
-  const int n = int(cells);
-  std::vector<glm::dvec3> directions;
-  directions.reserve(std::size_t(n + 3) * std::size_t(n + 3));
-  for (int j = -1; j <= n + 1; ++j)
-    for (int i = -1; i <= n + 1; ++i) directions.push_back(payloadSampleDirection(job, cells, i, j));
   // The pyramid level whose pixels match the payload's spacing (the CPU reference reads the same).
-  return sourceTermsAt(model, directions, 1, payloadSampleSpacing_m(job, cells, model.radius_m()));
+  return sourceTermsAt(model, samples, 1, payloadSampleSpacing_m(job, cells, model.radius_m()));
 }
 
 std::vector<std::uint32_t> overlayColoursForJob(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
-                                                uint32_t mapScale) {
+                                                uint32_t mapScale, std::span<const glm::dvec3> samples) {
   const SurfaceOverlay* overlay = model.overlay();
   if (overlay == nullptr) return {};
   const uint32_t m = cells * mapScale;
-  const int n = int(cells);
-  std::vector<glm::dvec3> samples;
-  samples.reserve(std::size_t(n + 3) * std::size_t(n + 3));
-  for (int j = -1; j <= n + 1; ++j)
-    for (int i = -1; i <= n + 1; ++i) samples.push_back(payloadSampleDirection(job, cells, i, j));
   const double sample_m = payloadSampleSpacing_m(job, cells, model.radius_m());
   const double texel_m = m > 0 ? payloadSampleSpacing_m(job, m, model.radius_m()) : sample_m;
   const bool vectors = overlay->vectorsMayTouch(samples, std::max(sample_m, 2.0 * texel_m));
-  std::vector<std::uint32_t> words;
-  words.reserve(GLOBE_PAYLOAD_OVERLAY_POINTS(cells, m));
+  // The colour words, then the vectors' own (payload_layout.h).
+  std::vector<std::uint32_t> words, vectorWords;
+  words.reserve(GLOBE_PAYLOAD_OVERLAY_WORDS(cells, m));
+  vectorWords.reserve(GLOBE_PAYLOAD_OVERLAY_POINTS(cells, m));
   bool any = false;
   auto add = [&](const glm::dvec3& dir, double spacing_m) {
-    words.push_back(packOverlayColour(overlay->colourAt(dir, spacing_m, vectors)));
+    const SurfaceColour c = overlay->colourAt(dir, spacing_m, vectors);
+    words.push_back(packOverlayColour(c.land));
+    vectorWords.push_back(packOverlayColour(c.vectors));
     any = any || (words.back() >> 24) != 0;
   };
   for (const glm::dvec3& dir : samples) add(dir, sample_m);
@@ -74,7 +69,8 @@ std::vector<std::uint32_t> overlayColoursForJob(const ElevationModel& model, con
         for (int a = 0; a < g.side; ++a)
           add(payloadSampleDirection(job, 2 * m, g.stride * a - g.offset, g.stride * b - g.offset), g.texel_m);
   }
-  if (!any) words.clear();
+  if (!any) return {};
+  words.insert(words.end(), vectorWords.begin(), vectorWords.end());
   return words;
 }
 
@@ -147,8 +143,9 @@ void SourceRequestPreparer::run() {
     lock.unlock();
     // The tile reads happen in here, on this thread.
     r.job = makePayloadJob(r.request.node, r.request.slot, model_, waterSurface_);
-    r.terms = sourceTermsForJob(model_, r.job, cells_);
-    r.overlay = overlayColoursForJob(model_, r.job, cells_, mapScale_);
+    const std::vector<glm::dvec3> samples = payloadSampleDirections(r.job, cells_);
+    r.terms = sourceTermsForJob(model_, r.job, cells_, samples);
+    r.overlay = overlayColoursForJob(model_, r.job, cells_, mapScale_, samples);
     lock.lock();
     --working_;
     ++prepared_;

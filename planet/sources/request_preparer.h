@@ -41,16 +41,18 @@ struct PreparedRequest {
 std::vector<glm::dvec4> sourceTermsAt(const ElevationModel& model, std::span<const glm::dvec3> directions,
                                       unsigned threads = 1, double sampleSpacing_m = 0.0);
 
-// The S * S source terms of `job` (sample (i, j) at (j + 1) * S + (i + 1)); empty when no sample
-// lies in a source's box.
-std::vector<glm::dvec4> sourceTermsForJob(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells);
+// The S * S source terms of `job` at its `samples` (payloadSampleDirections; sample (i, j) at
+// (j + 1) * S + (i + 1)); empty when no sample lies in a source's box.
+std::vector<glm::dvec4> sourceTermsForJob(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
+                                          std::span<const glm::dvec3> samples);
 
-// The packed overlay colours of `job` (GLOBE_PAYLOAD_OVERLAY_POINTS(cells, cells * mapScale) words:
-// the mesh samples, then the surface grids' lattice), each read for its own spacing (a sample's, a
+// The packed overlay words of `job` (GLOBE_PAYLOAD_OVERLAY_WORDS(cells, cells * mapScale): colours, then
+// the vectors' own colours, at the mesh `samples` (payloadSampleDirections), then the surface grids'
+// lattice), each read for its own spacing (a sample's, a
 // texel's of mip 0, of mip 1: bit for bit what the parent's mip 0 reads); empty when the planet has
 // no overlay or nothing of it covers the node.
 std::vector<std::uint32_t> overlayColoursForJob(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
-                                                uint32_t mapScale);
+                                                uint32_t mapScale, std::span<const glm::dvec3> samples);
 
 // How far a node's finer descendants may reach beyond its payload's radius range because of the
 // amplification detail its samples do not resolve: the largest detail bound of its terms (metres;

@@ -22,17 +22,19 @@ SurfaceOverlay::~SurfaceOverlay() = default;
 
 bool SurfaceOverlay::empty() const { return imagery_.layers().empty() && (!vectors_ || vectors_->empty()); }
 
-ImageryColour SurfaceOverlay::colourAt(const glm::dvec3& unitDirection, double texel_m, bool withVectors) const {
-  ImageryColour c = imagery_.colourAt(unitDirection, texel_m);
-  if (!withVectors || !vectors_ || !(texel_m > 0.0)) return c;
+SurfaceColour SurfaceOverlay::colourAt(const glm::dvec3& unitDirection, double texel_m, bool withVectors) const {
+  SurfaceColour s{imagery_.colourAt(unitDirection, texel_m), {}};
+  if (!withVectors || !vectors_ || !(texel_m > 0.0)) return s;
   const OverlayColour v = vectors_->colourAt(unitDirection, texel_m, texel_m / kScreenPixelsPerTexel);
-  if (v.alpha <= 0.0f) return c;
+  if (v.alpha <= 0.0f) return s;
   // The vectors "over" the imagery.
+  ImageryColour& c = s.land;
   const double a = double(v.alpha), under = c.alpha * (1.0 - a);
   const double alpha = a + under;
   c.albedo = (glm::dvec3(v.albedo) * a + c.albedo * under) / alpha;
   c.alpha = alpha;
-  return c;
+  s.vectors = {glm::dvec3(v.albedo), a};
+  return s;
 }
 
 bool SurfaceOverlay::vectorsMayTouch(std::span<const glm::dvec3> directions, double texel_m) const {
@@ -75,9 +77,17 @@ ImageryColour unpackOverlayColour(std::uint32_t word) {
 glm::vec3 overlaidAlbedo(const SurfaceOverlay* overlay, const glm::vec3& albedo, const glm::dvec3& unitDirection,
                          double texel_m) {
   if (overlay == nullptr) return albedo;
-  const ImageryColour c = unpackOverlayColour(packOverlayColour(overlay->colourAt(unitDirection, texel_m)));
+  const ImageryColour c = unpackOverlayColour(packOverlayColour(overlay->colourAt(unitDirection, texel_m).land));
   const float a = float(c.alpha);
   return albedo * (1.0f - a) + glm::vec3(c.albedo) * a;
+}
+
+glm::vec4 overlayColourLayer(const SurfaceOverlay* overlay, const glm::vec3& albedo, const glm::dvec3& unitDirection,
+                             double texel_m, bool underSea) {
+  if (overlay == nullptr) return glm::vec4(albedo, 0.0f);
+  const ImageryColour v = unpackOverlayColour(packOverlayColour(overlay->colourAt(unitDirection, texel_m).vectors));
+  const bool own = underSea && v.alpha > 0.0;
+  return glm::vec4(own ? glm::vec3(v.albedo) : albedo, float(v.alpha));
 }
 
 }  // namespace globe

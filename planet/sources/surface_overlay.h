@@ -9,6 +9,7 @@
 #include "planet/vectors/vector_overlay.h"
 
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include <cstdint>
 #include <memory>
@@ -22,6 +23,14 @@ namespace globe {
 // texel rule keeps a texel near this size on screen (docs/imagery.md, "Vectors").
 inline constexpr double kScreenPixelsPerTexel = 4.0;
 
+// The overlay at a point: `land`, the imagery with the vectors over it, is what the ground shows;
+// `vectors`, the vector layers' own colour and coverage, is what the sea shows (the water shader
+// draws the sea over the imagery, the vectors over the sea).
+struct SurfaceColour {
+  ImageryColour land;
+  ImageryColour vectors;
+};
+
 class SurfaceOverlay {
  public:
   SurfaceOverlay(const std::vector<ImagerySource>& imagery, const std::vector<VectorLayer>& vectors, double radius_m);
@@ -32,7 +41,7 @@ class SurfaceOverlay {
   // The overlay's linear colour and coverage at a direction, for a surface texel of `texel_m` metres
   // (> 0 where vector layers are painted: their antialiasing filter). `withVectors` false: the
   // imagery alone (a node vectorsMayTouch ruled out).
-  ImageryColour colourAt(const glm::dvec3& unitDirection, double texel_m, bool withVectors = true) const;
+  SurfaceColour colourAt(const glm::dvec3& unitDirection, double texel_m, bool withVectors = true) const;
   // False when no vector feature can reach any of `directions` (a node's samples) for texels of up
   // to `texel_m` metres: its points need no vector query.
   bool vectorsMayTouch(std::span<const glm::dvec3> directions, double texel_m) const;
@@ -56,5 +65,11 @@ ImageryColour unpackOverlayColour(std::uint32_t word);
 // `overlay` nullptr: `albedo` unchanged.
 glm::vec3 overlaidAlbedo(const SurfaceOverlay* overlay, const glm::vec3& albedo, const glm::dvec3& unitDirection,
                          double texel_m);
+// The colour layer's texel over the sea (payload_generate.glsl, colourLayerTexel) before its 8-bit
+// store: where vectors cover a texel whose ground lies below the drawn sea, their own colour (the
+// water fragments mix it over the water by its coverage); elsewhere `albedo` (overlaidAlbedo); alpha
+// the vectors' coverage (its 8 bits). Without an overlay (albedo, 0).
+glm::vec4 overlayColourLayer(const SurfaceOverlay* overlay, const glm::vec3& albedo, const glm::dvec3& unitDirection,
+                             double texel_m, bool underSea);
 
 }  // namespace globe

@@ -7,6 +7,7 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 #include <span>
 #include <vector>
 
@@ -21,6 +22,7 @@ struct NormalMapTexel {
   glm::dvec3 normal{0.0};
   glm::vec3 albedo{0.0f};
   float coast = 0.0f;
+  glm::vec4 colourLayer{0.0f};  // with an overlay: the colour layer's texel, linear (overlayColourLayer)
 };
 
 // The surface textures of `job`'s node with `cells` grid cells and map scale `scale` (1, 2, 4):

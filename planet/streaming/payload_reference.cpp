@@ -81,6 +81,15 @@ glm::dvec3 normalised(const glm::dvec3& p) {
 
 }  // namespace
 
+std::vector<glm::dvec3> payloadSampleDirections(const gpu::PayloadJob& job, uint32_t cells) {
+  const int n = int(cells);
+  std::vector<glm::dvec3> directions;
+  directions.reserve(std::size_t(n + 3) * std::size_t(n + 3));
+  for (int j = -1; j <= n + 1; ++j)
+    for (int i = -1; i <= n + 1; ++i) directions.push_back(payloadSampleDirection(job, cells, i, j));
+  return directions;
+}
+
 glm::dvec3 payloadSampleDirection(const gpu::PayloadJob& job, uint32_t cells, int i, int j) {
   const double invCells = 1.0 / double(cells);  // exact: cells is a power of two
   double u = job.uv.x + job.uv.z * (double(i) * invCells);

@@ -11,6 +11,7 @@
 
 #include <glm/vec4.hpp>
 #include <span>
+#include <vector>
 
 namespace globe {
 
@@ -37,6 +38,10 @@ double payloadSampleSpacing_m(const gpu::PayloadJob& job, uint32_t cells, double
 // Unit direction of sample (i, j), i, j in [-1, cells + 1], of a job's node: on its own face, or on
 // the neighbouring face for ring samples beyond a face edge (bit-identical to that face's samples).
 glm::dvec3 payloadSampleDirection(const gpu::PayloadJob& job, uint32_t cells, int i, int j);
+
+// Every sample direction of a job's node, (cells + 3)^2 of them: sample (i, j) at
+// (j + 1) * (cells + 3) + (i + 1), as the payload stores them.
+std::vector<glm::dvec3> payloadSampleDirections(const gpu::PayloadJob& job, uint32_t cells);
 
 // Elevation detail finer than the samples (metres): the amplitude bound of every octave whose
 // wavelength is below four sample spacings, plus what a flat triangle between samples can sag below

@@ -72,9 +72,20 @@ const uint kSurfaceLayers = kOverlay != 0u ? 2u : 1u;
 // S*S plus a surface lattice point's): mirrored by globe::overlaidAlbedo (planet/sources/surface_overlay.h).
 vec3 overlaid(vec3 albedo, uint point) {
   if (kOverlay == 0u) return albedo;
-  uint perJob = GLOBE_PAYLOAD_OVERLAY_POINTS(push.cells, push.cells * kNormalMapScale);
+  uint perJob = GLOBE_PAYLOAD_OVERLAY_WORDS(push.cells, push.cells * kNormalMapScale);
   vec4 c = unpackUnorm4x8(overlayColours[gl_WorkGroupID.x * perJob + point]);
   return albedo * (1.0 - c.a) + c.rgb * c.rgb * c.a;
+}
+
+// The colour layer's texel at `point` (payload_layout.h) for a texel of `albedo` (overlaid): the
+// vectors' own coverage in alpha, what the water fragments mix them over the sea with; and where
+// they cover a texel whose ground is under the drawn sea, their own colour (the ground's is not
+// drawn there). Mirrored by globe::overlayColourLayer.
+vec4 colourLayerTexel(vec3 albedo, uint point, bool underSea) {
+  uint perJob = GLOBE_PAYLOAD_OVERLAY_WORDS(push.cells, push.cells * kNormalMapScale);
+  uint points = GLOBE_PAYLOAD_OVERLAY_POINTS(push.cells, push.cells * kNormalMapScale);
+  vec4 v = unpackUnorm4x8(overlayColours[gl_WorkGroupID.x * perJob + points + point]);
+  return vec4(underSea && v.a > 0.0 ? v.rgb : sqrt(clamp(albedo, 0.0, 1.0)), v.a);
 }
 
 // What scratch.w holds for a sample: its drawn elevation (the colour ramp's input), or with land
@@ -264,11 +275,13 @@ float surfaceTexel(PayloadJob job, uint scratchBase, uint at, uint row, uint mip
   vec3 albedo = surfaceAlbedo(scratchSurfaceWord(double(drawn), double(words.y)),
                               kLandCover != 0u ? sampleDirection(job, 2u * m, lattice.x, lattice.y) : dvec3(0.0lf),
                               cosSlope, masks);
-  albedo = overlaid(albedo, GLOBE_PAYLOAD_SAMPLES_PER_SIDE(push.cells) * GLOBE_PAYLOAD_SAMPLES_PER_SIDE(push.cells) +
-                                (at - scratchBase));
+  uint point = GLOBE_PAYLOAD_SAMPLES_PER_SIDE(push.cells) * GLOBE_PAYLOAD_SAMPLES_PER_SIDE(push.cells) + (at - scratchBase);
+  albedo = overlaid(albedo, point);
   storeSurfaceTexel(mip, texel, encodeSurfaceTexel(job, normal, albedo, coastField(at, job, mip + 1u)));
-  // With an overlay the colour layer: the albedo's square root per texel (payload_layout.h).
-  if (kOverlay != 0u) storeSurfaceTexel(mip, texel + ivec3(0, 0, 1), vec4(sqrt(clamp(albedo, 0.0, 1.0)), 1.0));
+  // With an overlay the colour layer: the albedo's square root per texel and the vectors' coverage
+  // (payload_layout.h).
+  if (kOverlay != 0u)
+    storeSurfaceTexel(mip, texel + ivec3(0, 0, 1), colourLayerTexel(albedo, point, ground < drawn));
   return ground;
 }
 

@@ -55,9 +55,11 @@
 //       slope) drew teeth a texel apart where neighbouring texels' slopes differed.
 // On a planet with an overlay (GLOBE_PAYLOAD_SPEC_OVERLAY: [[imagery]] or [[vectors]]) each slot has
 // two layers: slot k's surface layer is 2k, and layer 2k + 1 its colour layer, addressed alike, whose
-// texels hold rgb = the square root of the linear albedo (the overlay blended in), a = 1: the fragment
-// stages read it instead of the luma and the vertices' chroma, so imagery and vector edges are sharp
-// in colour too (TerrainFrame.skirt.z = 1).
+// texels hold rgb = the square root of the linear albedo (the overlay blended in; under the drawn
+// sea, where vectors cover the texel, their own colour), a = the vector layers' own coverage: the
+// fragment stages read it instead of the luma and the vertices' chroma, so imagery and vector edges
+// are sharp in colour too, and the water fragments mix the vectors over the sea by that coverage
+// (imagery lies under the sea, vectors over it).
 // After the mesh, [cover offset, + (S*S + 1) / 2) the land cover masks, one uvec2 per sample
 // (index as the mesh's): 8 bytes, class i in byte i % 4 of word i / 4, summing to 255 (land_cover.h).
 // Ring samples hold the masks of their nearest vertex, like its normal. Without land cover
@@ -128,14 +130,17 @@ struct uvec4_ {
 #define GLOBE_PAYLOAD_SPEC_WATER_SURFACE 26
 // Specialization constant: the normal map's scale s (map cells = s * grid cells), 0 = no map.
 // Binding of the payload kernel's overlay colours (GLOBE_PAYLOAD_SPEC_OVERLAY on): per job of the
-// batch, GLOBE_PAYLOAD_OVERLAY_POINTS words, job k's from k * that on. Each word is the imagery's
-// colour and coverage at one point (planet/sources/surface_overlay.h: sqrt of the linear albedo in
-// bytes 0-2, coverage in byte 3): the S*S mesh samples (index as the mesh's; the kernel reads a ring
-// sample's nearest vertex), then the surface grids' lattice points in the scratch's order
-// (GLOBE_SURFACE_EVALUATIONS). A job the overlay does not touch has zero words (coverage 0).
+// batch, GLOBE_PAYLOAD_OVERLAY_WORDS words, job k's from k * that on, at GLOBE_PAYLOAD_OVERLAY_POINTS
+// points: the S*S mesh samples (index as the mesh's; the kernel reads a ring sample's nearest
+// vertex), then the surface grids' lattice points in the scratch's order (GLOBE_SURFACE_EVALUATIONS).
+// First a word per point of the overlay's colour and coverage (planet/sources/surface_overlay.h: sqrt
+// of the linear albedo in bytes 0-2, coverage in byte 3), then a word per point of the vector layers'
+// own colour and coverage, likewise, for the colour layer (what the sea shows). A job the overlay
+// does not touch has zero words (coverage 0).
 #define GLOBE_PAYLOAD_OVERLAY_BINDING 9
 #define GLOBE_PAYLOAD_OVERLAY_POINTS(cells, mapCells) \
   (GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells) * GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells) + GLOBE_SURFACE_EVALUATIONS(mapCells))
+#define GLOBE_PAYLOAD_OVERLAY_WORDS(cells, mapCells) (2u * GLOBE_PAYLOAD_OVERLAY_POINTS(cells, mapCells))
 // Bindings of the payload kernel's surface texture (storage images of the job's page): mip 0, mip 1.
 #define GLOBE_PAYLOAD_SURFACE_BINDING 10
 #define GLOBE_PAYLOAD_PARENT_SURFACE_BINDING 11

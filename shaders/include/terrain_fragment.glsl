@@ -140,8 +140,9 @@ bool imageryMissing = false;
 // The lit, display-encoded colour from the surface textures: the node's own (its level, blended to
 // its parent's by the mesh's morph), or with imagery LOD the tile over the fragment's cell (its level,
 // blended to its parent's by distance over [0.8, 1] x D of the parent level). `coast`: the coast field
-// (payload_layout.h), below 0 over the sea.
-vec3 mappedColour(vec3 modulation, out float coast) {
+// (payload_layout.h), below 0 over the sea; `seaCover`: how much of the colour the sea shows (the
+// colour layer's alpha, the vector layers' coverage; 0 without it).
+vec3 mappedColour(vec3 modulation, out float coast, out float seaCover) {
 #ifdef GLOBE_TERRAIN_IMAGERY
   const uint side = GLOBE_IMAGERY_CELLS_PER_SIDE;
   uvec2 at = min(uvec2(inMapUv * float(side)), uvec2(side - 1u));
@@ -173,8 +174,13 @@ vec3 mappedColour(vec3 modulation, out float coast) {
   // layer's texel (a specialization constant: no fetch for the others).
   float g = texel.z + inChroma.y, rb = texel.z - inChroma.y;
   vec3 root = max(vec3(rb + inChroma.x, g, rb - inChroma.x), vec3(0.0));
+  seaCover = 0.0;
 #ifndef GLOBE_TERRAIN_IMAGERY
-  if (kColourLayer != 0u) root = sampleSurface(coord + vec3(0.0, 0.0, 1.0), blend).rgb;
+  if (kColourLayer != 0u) {
+    vec4 colourTexel = sampleSurface(coord + vec3(0.0, 0.0, 1.0), blend);
+    root = colourTexel.rgb;
+    seaCover = colourTexel.a;
+  }
 #endif
   vec3 albedo = root * root * modulation;
 #ifdef GLOBE_TERRAIN_ATMOSPHERE
@@ -207,19 +213,21 @@ void main() {
 #else
   float coast = 1.0;
 #endif
+  float seaCover = 0.0;
 #ifdef GLOBE_TERRAIN_NORMAL_MAPS
   // A select, not an if, on the debug view (a uniform value: an if would make lavapipe compile the
   // shader again at draw time, docs/rendering.md).
-  float mappedCoast;
-  vec3 mapped = mappedColour(modulation, mappedCoast);
+  float mappedCoast, mappedSeaCover;
+  vec3 mapped = mappedColour(modulation, mappedCoast, mappedSeaCover);
   bool vertexColour = debug || imageryMissing;
   colour = mix(mapped, inColour, bvec3(vertexColour));
   coast = vertexColour ? coast : mappedCoast;
+  seaCover = vertexColour ? 0.0 : mappedSeaCover;
 #endif
 #ifdef GLOBE_TERRAIN_WATER
   // The vertex colours of sea samples are their shore's, so land is not tinted; the depth tint stays
-  // the vertices' (no shallower than the shore).
-  if (coast < 0.0) colour = waterColour(max(inSeaDepth, 0.0), inRelative);
+  // the vertices' (no shallower than the shore). Vector layers lie over the sea (their coverage).
+  if (coast < 0.0) colour = mix(waterColour(max(inSeaDepth, 0.0), inRelative), colour, seaCover);
 #endif
 #ifdef GLOBE_TERRAIN_HOLES
   // Irregular, crack-free hole borders: the mask is continuous across nodes (equal at shared

@@ -84,7 +84,8 @@ TEST_F(ElevationSourcesGpuTest, TheFloatKernelBlendsTheSourcesToo) {
   ASSERT_EQ(results.size(), 1u);
   const std::vector<glm::vec4> gpu = readPayloadBuffer(device(), gen);
   const gpu::PayloadJob reference = makePayloadJob(node, 0, *model_);
-  const std::vector<glm::dvec4> terms = sourceTermsForJob(*model_, reference, kCells);
+  const std::vector<glm::dvec4> terms =
+      sourceTermsForJob(*model_, reference, kCells, payloadSampleDirections(reference, kCells));
   ASSERT_EQ(terms.size(), GLOBE_PAYLOAD_VEC4_PER_SLOT(kCells) / 2);
   int replaced = 0;
   double worst = 0.0;

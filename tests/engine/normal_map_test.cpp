@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <fstream>
 #include <map>
 
 namespace globe::testing {
@@ -266,11 +267,12 @@ TEST_F(NormalMapTest, ChildParentLevelEqualsParentMap) {
   for (size_t base = 0; base < nodes.size(); base += 5) expectChildrenShowParent(maps, base, m);
 }
 
-// Imagery ([[imagery]], docs/imagery.md) in the surface textures: the GPU's texels (the luma and the
-// colour layer's albedo) match the CPU reference (which blends the same overlay colours) within one
-// 8-bit step, a child's mip 1 is still its parent's mip 0 bit for bit (both layers), and the texels
-// show the checkerboard where its georeference puts it (a square's centre texel light or dark as the
-// square is).
+// Imagery ([[imagery]], docs/imagery.md) and a vector line over it in the surface textures: the GPU's
+// texels (the luma, the colour layer's albedo and its alpha, the vectors' coverage the sea shows them
+// with) match the CPU reference (which blends the same overlay colours) within one 8-bit step, a
+// child's mip 1 is still its parent's mip 0 bit for bit (both layers), and the texels away from the
+// line show the checkerboard where its georeference puts it (a square's centre texel light or dark
+// as the square is).
 TEST_F(NormalMapTest, ImageryInTheSurfaceTexturesMatchesTheReference) {
   TempDir dir("normal_map_imagery");
   Checkerboard board;  // 64 x 64 pixels of 0.001 degrees (~111 m), squares of 8
@@ -281,6 +283,14 @@ TEST_F(NormalMapTest, ImageryInTheSurfaceTexturesMatchesTheReference) {
   ImagerySource source{(dir / "board.tif").string()};
   source.blend_m = 0.0;
   planet.imagery.push_back(source);
+  std::ofstream((dir / "line.geojson").string())
+      << R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {},)"
+      << R"( "geometry": {"type": "LineString", "coordinates": [[10.01, 19.95], [10.05, 19.99]]}}]})";
+  VectorLayer line{(dir / "line.geojson").string()};
+  line.line = glm::vec3(1.0f, 0.0f, 0.0f);
+  line.width_m = 120.0;
+  line.width_px = 0.0;
+  planet.vectors.push_back(line);
   const ElevationModel model(planet);
   ASSERT_NE(model.overlay(), nullptr);
   const uint32_t scale = 2, m = kCells * scale;
@@ -293,17 +303,22 @@ TEST_F(NormalMapTest, ImageryInTheSurfaceTexturesMatchesTheReference) {
   std::vector<std::vector<StoredTexel>> colours;
   const auto maps = generateMaps(device(), model, nodes, scale, &colours);
   ASSERT_EQ(colours.size(), nodes.size());  // the colour layers of a planet with an overlay
+  int underLine = 0;
   for (size_t k = 0; k < nodes.size(); ++k) {
     const auto reference = normalMapReference(model, makePayloadJob(nodes[k], 0, model), kCells, scale);
     ASSERT_EQ(reference.size(), maps[k].size());
     for (size_t t = 0; t < reference.size(); ++t) {
       ASSERT_LE(byteStep(maps[k][t], expectedTexel(reference[t], nodes[k].face), 2, 3), 1)
           << "node " << k << " texel " << t;
-      const glm::dvec3 root = glm::sqrt(glm::clamp(glm::dvec3(reference[t].albedo), 0.0, 1.0));
-      const StoredTexel colour{uint8_t(unitByte(root.x)), uint8_t(unitByte(root.y)), uint8_t(unitByte(root.z)), 255};
+      const glm::vec4 layer = reference[t].colourLayer;
+      const glm::dvec3 root = glm::sqrt(glm::clamp(glm::dvec3(layer), 0.0, 1.0));
+      const StoredTexel colour{uint8_t(unitByte(root.x)), uint8_t(unitByte(root.y)), uint8_t(unitByte(root.z)),
+                               uint8_t(unitByte(layer.w))};
       ASSERT_LE(byteStep(colours[k][t], colour), 1) << "node " << k << " colour texel " << t;
+      underLine += layer.w == 1.0f ? 1 : 0;
     }
   }
+  EXPECT_GT(underLine, 100);  // the line is drawn: its texels carry its coverage for the sea
   // Level 11's texels are ~80 m: every square (888 m) spans ten of them; the texel nearest each
   // square's centre shows its colour (light luma ~1, dark red's ~0.35 after the sqrt encoding).
   int light = 0, dark = 0;
@@ -314,6 +329,7 @@ TEST_F(NormalMapTest, ImageryInTheSurfaceTexturesMatchesTheReference) {
     const double col = (ll.y - 10.0) / 0.008, row = (20.0 - ll.x) / 0.008;
     if (col < 0.0 || row < 0.0 || col >= 8.0 || row >= 8.0) continue;
     if (std::abs(col - std::floor(col) - 0.5) > 0.25 || std::abs(row - std::floor(row) - 0.5) > 0.25) continue;
+    if (colours[nodes.size() - 5][t][3] != 0) continue;  // under the line
     const bool isLight = (int(col) + int(row)) % 2 == 0;
     const int luma = maps[nodes.size() - 5][t][2];
     (isLight ? light : dark)++;

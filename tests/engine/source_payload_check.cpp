@@ -52,7 +52,8 @@ void compareSourcePayloads(vk::Device& device, const ElevationModel& model, cons
     const gpu::PayloadJob job = makePayloadJob(r.node, 0, model);
     const RadiusRange range = fillPayloadReference(model, job, cells, cpu);
     RadiusRange padded = paddedRadiusRange(model.params(), range, r.node.level, cells);
-    const double pad = sourceDetailPad_m(sourceTermsForJob(model, job, cells));  // amplification below the samples
+    const double pad = sourceDetailPad_m(
+        sourceTermsForJob(model, job, cells, payloadSampleDirections(job, cells)));  // amplification below the samples
     padded = {std::max(0.0, padded.min_m - pad), padded.max_m + pad};
     worstRadius =
         std::max({worstRadius, std::abs(r.radius.min_m - padded.min_m), std::abs(r.radius.max_m - padded.max_m)});

@@ -2,7 +2,7 @@
 // payloads' surface, seen from above and from an oblique camera. Every painted pixel's ground point
 // (from the depth) lies on the feature, the polygon covers the ground inside its outline, and the
 // line has no gap along its length, across a face seam and across the level changes of the
-// oblique view.
+// oblique view. Over a sea the line lies on the water.
 #include "engine/io/image_io.h"
 #include "engine/render/headless_renderer.h"
 #include "engine/render/quality.h"
@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 
 namespace globe::testing {
 namespace {
@@ -58,10 +59,11 @@ std::string writeGeoJson(const TempDir& dir, const Scene& s) {
 
 class VectorRenderTest : public GpuTest {
  protected:
-  // earthlike without its sea and air (the ground's albedo is what is drawn), with one white layer.
-  static ElevationModel planetWith(const std::string& geojson, const Scene& s) {
+  // earthlike without its air and (unless `sea`) its sea: the ground's albedo is what is drawn,
+  // with one white layer.
+  static ElevationModel planetWith(const std::string& geojson, const Scene& s, bool sea = false) {
     PlanetDescription planet = *loadPlanetFile(std::string(GLOBE_SOURCE_DIR) + "/assets/planets/earthlike.toml");
-    planet.water.enabled = false;
+    planet.water.enabled = sea;
     planet.atmosphere.reset();
     VectorLayer layer;
     layer.path = geojson;
@@ -73,11 +75,13 @@ class VectorRenderTest : public GpuTest {
     return ElevationModel(planet);
   }
 
-  ImageRgba render(const ElevationModel& model, const GeodeticPose& pose, Camera& camera) {
+  // `sun`: towards the sun (default overhead: no shadowed slopes).
+  ImageRgba render(const ElevationModel& model, const GeodeticPose& pose, Camera& camera,
+                   std::optional<glm::dvec3> sun = std::nullopt) {
     TerrainSettings settings = terrainSettingsFor(QualityPreset::kBalanced);
     settings.detailTextures = DetailTextures::kOff;
     const glm::dvec3 down = directionFromLatLon(pose.latitude_deg, pose.longitude_deg);
-    settings.style.sunDirection = down;  // the sun overhead: no shadowed slopes
+    settings.style.sunDirection = sun.value_or(down);
     auto terrain = Terrain::create(device(), model, settings);
     EXPECT_TRUE(terrain.ok()) << terrain.error().format();
     HeadlessRenderer renderer(device(), {kWidth, kHeight});
@@ -140,15 +144,17 @@ Tally checkPixels(const ImageRgba& image, const Camera& camera, const Scene& s, 
 }
 
 // Points along the line (every half pixel or so) whose pixel has no painted pixel within `reach`
-// pixels: gaps.
-int lineGaps(const ImageRgba& image, const Camera& camera, const ElevationModel& model, const Scene& s, int reach) {
+// pixels: gaps. `capSteps`: points left out at each end (where the antialiased cap fades).
+int lineGaps(const ImageRgba& image, const Camera& camera, const ElevationModel& model, const Scene& s, int reach,
+             int capSteps = 1) {
   int gaps = 0, seen = 0;
   const int steps = 2000;
-  for (int k = 1; k < steps; ++k) {
+  for (int k = capSteps; k <= steps - capSteps; ++k) {
     const double lat = s.seamLat - s.lineHalf_deg + 2.0 * s.lineHalf_deg * k / steps;
     const glm::dvec3 dir = directionFromLatLon(lat, s.lon);
     double x = 0.0, y = 0.0;
-    if (!project(camera, model.surfacePosition(dir), x, y)) continue;
+    // The visible surface: the sea's where it lies over the ground.
+    if (!project(camera, model.shape().position(dir, model.visibleElevation_m(dir)), x, y)) continue;
     if (x < reach || y < reach || x >= kWidth - reach || y >= kHeight - reach) continue;
     ++seen;
     bool found = false;
@@ -191,6 +197,52 @@ TEST_F(VectorRenderTest, PolygonAndLineLieOnTheGroundAndTheLineHasNoGaps) {
     EXPECT_LE(t.insideUnpainted, t.inside / 1000);
     EXPECT_EQ(lineGaps(image, camera, model, s, 1), 0);
   }
+}
+
+// A line across open sea, drawn over the water (the colour layer's alpha, docs/imagery.md): painted
+// along its whole length with no gap, and nowhere else.
+TEST_F(VectorRenderTest, ALineAtSeaLiesOnTheWater) {
+  TempDir dir("vector_render_sea");
+  const PlanetDescription earthlike = *loadPlanetFile(std::string(GLOBE_SOURCE_DIR) + "/assets/planets/earthlike.toml");
+  const ElevationModel dry(earthlike);
+  // The first place, scanning from the equator, whose ground lies 50 m or more below sea level
+  // everywhere within 0.1 degrees.
+  auto deep = [&](double lat, double lon) {
+    for (int j = -2; j <= 2; ++j)
+      for (int i = -2; i <= 2; ++i)
+        if (dry.elevation_m(directionFromLatLon(lat + 0.05 * j, lon + 0.05 * i)) > dry.seaLevel_m() - 50.0)
+          return false;
+    return true;
+  };
+  Scene s;
+  bool found = false;
+  for (double lat = 1.0; lat < 60.0 && !found; lat += 1.0)
+    for (double lon = 1.0; lon < 180.0 && !found; lon += 1.0)
+      if (deep(lat, lon)) {
+        s.seamLat = lat;
+        s.lon = lon;
+        found = true;
+      }
+  ASSERT_TRUE(found);
+  s.polyLat0 = s.polyLat1 = s.seamLat + 1.0;  // a degenerate square far away: only the line is drawn
+  s.polyLon0 = s.polyLon1 = s.lon + 1.0;
+  const ElevationModel model = planetWith(writeGeoJson(dir, s), s, true);
+  ASSERT_TRUE(model.drawsWater());
+  const GeodeticPose pose{s.seamLat, s.lon + 0.01, 12000.0, 0.0, -90.0, 0.0};
+  // The sun 50 degrees high in the north: its glint on the sea lies beyond the top of the image.
+  const glm::dvec3 up = directionFromLatLon(s.seamLat, s.lon);
+  const glm::dvec3 north = glm::normalize(glm::dvec3(0.0, 0.0, 1.0) - up * up.z);
+  Camera camera;
+  const ImageRgba image = render(model, pose, camera, std::sin(0.87) * up + std::cos(0.87) * north);
+  if (const char* keep = std::getenv("GLOBE_TEST_KEEP_IMAGES"))
+    (void)writePng(fmt::format("{}/vectors_sea.png", keep), image);
+  const Tally t = checkPixels(image, camera, s, 250.0);
+  std::printf("[ info ] at sea: %d painted pixels, %d off the line\n", t.painted, t.paintedOff);
+  EXPECT_GT(t.painted, 300);
+  EXPECT_LE(t.paintedOff, t.painted / 1000);
+  // The caps' fading 50 m (a sun lower than in the land test: a half-covered texel over the dark sea
+  // is under the paint threshold) left out.
+  EXPECT_EQ(lineGaps(image, camera, model, s, 1, 20), 0);
 }
 
 }  // namespace

@@ -189,7 +189,7 @@ TEST_F(ImageryTest, PlanetFileLoadsImageryAndWritesItBack) {
   EXPECT_EQ(again.planet.imagery, planet->imagery);
   const ElevationModel model(*planet);
   ASSERT_NE(model.overlay(), nullptr);
-  EXPECT_GT(model.overlay()->colourAt(directionFromLatLon(-4.5, 30.5), 0.0).alpha, 0.7);
+  EXPECT_GT(model.overlay()->colourAt(directionFromLatLon(-4.5, 30.5), 0.0).land.alpha, 0.7);
 }
 
 // [[vectors]] beside [[imagery]]: the planet file writes both back, and the overlay lays the
@@ -223,13 +223,18 @@ TEST_F(ImageryTest, VectorsLieOverTheImageryAndRoundTrip) {
   ASSERT_NE(model.overlay(), nullptr);
   const glm::dvec3 inside = directionFromLatLon(-4.75, 30.3), outside = directionFromLatLon(-4.5, 30.7);
   const ImageryColour image = model.overlay()->imagery().colourAt(inside, 10.0);
-  const ImageryColour both = model.overlay()->colourAt(inside, 10.0);
+  const SurfaceColour over = model.overlay()->colourAt(inside, 10.0);
+  const ImageryColour& both = over.land;
   EXPECT_NEAR(both.alpha, 1.0, 1e-6);
+  EXPECT_NEAR(over.vectors.alpha, 0.5, 1e-6);  // what the sea would show: the fill's own colour
+  EXPECT_NEAR(over.vectors.albedo.z, 1.0, 1e-6);
   EXPECT_NEAR(both.albedo.z, 0.5 * 1.0 + 0.5 * image.albedo.z, 1e-6);  // half the blue fill over the image
   EXPECT_NEAR(both.albedo.x, 0.5 * image.albedo.x, 1e-6);
-  const ImageryColour edge = model.overlay()->colourAt(directionFromLatLon(-4.8, 30.3), 10.0);
+  const ImageryColour edge = model.overlay()->colourAt(directionFromLatLon(-4.8, 30.3), 10.0).land;
   EXPECT_NEAR(edge.albedo.x, 1.0, 0.02);  // the yellow outline, opaque, on top
-  EXPECT_EQ(model.overlay()->colourAt(outside, 10.0).albedo, model.overlay()->imagery().colourAt(outside, 10.0).albedo);
+  const SurfaceColour away = model.overlay()->colourAt(outside, 10.0);
+  EXPECT_EQ(away.land.albedo, model.overlay()->imagery().colourAt(outside, 10.0).albedo);
+  EXPECT_EQ(away.vectors.alpha, 0.0);
 }
 
 // The example a user copies (assets/planets/earth-imagery.toml): it loads, and Blue Marble lies the
