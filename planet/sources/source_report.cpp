@@ -2,7 +2,7 @@
 
 #include "planet/sources/imagery_mosaic.h"
 #include "planet/sources/source_mosaic.h"
-#include "planet/vectors/vector_features.h"
+#include "planet/vectors/indexed_vector_layer.h"
 
 #include <fmt/format.h>
 
@@ -57,20 +57,18 @@ void describeImagery(const PlanetDescription& planet, std::vector<std::string>& 
 void describeVectors(const PlanetDescription& planet, std::vector<std::string>& lines) {
   for (std::size_t i = 0; i < planet.vectors.size(); ++i) {
     const VectorLayer& v = planet.vectors[i];
-    Result<VectorFeatures> read = readVectorFeatures(v);
-    if (!read) {
-      lines.push_back(fmt::format("warning: vectors {} no longer reads: {}", i, read.error().message));
+    Result<std::shared_ptr<const IndexedVectorLayer>> opened = openIndexedVectorLayer(v);
+    if (!opened) {
+      lines.push_back(fmt::format("warning: vectors {} no longer reads: {}", i, opened.error().message));
       continue;
     }
-    std::size_t count[3] = {0, 0, 0};  // rings, lines, points
-    for (const VectorPart& part : read->parts) ++count[std::size_t(part.kind)];
-    const auto [latMin, latMax] = std::minmax_element(read->lat_deg.begin(), read->lat_deg.end());
-    const auto [lonMin, lonMax] = std::minmax_element(read->lon_deg.begin(), read->lon_deg.end());
-    const bool any = !read->lat_deg.empty();
-    lines.push_back(fmt::format(
-        "vectors {}: {}: layer '{}', {} features ({} polygon rings, {} lines, {} points), {} vertices{}", i, v.path,
-        read->layer_name, read->features.size(), count[0], count[1], count[2], read->lat_deg.size(),
-        any ? fmt::format(", lat {:.5f} .. {:.5f}, lon {:.5f} .. {:.5f}", *latMin, *latMax, *lonMin, *lonMax) : ""));
+    const VectorLayerFacts& f = (*opened)->facts;
+    lines.push_back(
+        fmt::format("vectors {}: {}: layer '{}', {} features ({} polygon rings, {} lines, {} points), {} vertices{}", i,
+                    v.path, f.layer_name, f.features, f.rings, f.lines, f.points, f.vertices,
+                    f.vertices > 0 ? fmt::format(", lat {:.5f} .. {:.5f}, lon {:.5f} .. {:.5f}", f.lat_min_deg,
+                                                 f.lat_max_deg, f.lon_min_deg, f.lon_max_deg)
+                                   : ""));
   }
 }
 

@@ -107,9 +107,9 @@ void VectorIndex::measureCell(const IndexLevel& level, std::uint32_t cell, doubl
 
 // Distances from the point to every edge and point listed in the window's cells, skipping the
 // cells wholly farther than the radius.
-void VectorIndex::measure(const IndexLevel& level, const Window& w, double lat_deg, double lon_deg, double radius_m,
-                          ProximityScratch& s) const {
-  const double yScale = metres_per_degree_, xScale = metres_per_degree_ * cosLatitude(lat_deg);
+void VectorIndex::measure(const IndexLevel& level, const Window& w, double metres_per_degree, double lat_deg,
+                          double lon_deg, double radius_m, ProximityScratch& s) const {
+  const double yScale = metres_per_degree, xScale = metres_per_degree * cosLatitude(lat_deg);
   const double d = level.cell_deg;
   for (std::int64_t row = w.row0; row <= w.row1; ++row) {
     const double rowCentre = -90.0 + (double(row) + 0.5) * d;
@@ -160,7 +160,8 @@ void VectorIndex::classify(const IndexLevel& level, double lat_deg, double lon_d
   }
 }
 
-void VectorIndex::near(double lat_deg, double lon_deg, double accuracy_m, double radius_m, ProximityScratch& s) const {
+void VectorIndex::near(double metres_per_degree, double lat_deg, double lon_deg, double accuracy_m, double radius_m,
+                       ProximityScratch& s) const {
   s.found.clear();
   if (s.stamp.size() < feature_count_) {
     s.stamp.resize(feature_count_, 0);
@@ -174,9 +175,9 @@ void VectorIndex::near(double lat_deg, double lon_deg, double accuracy_m, double
   lat_deg = std::clamp(lat_deg, -90.0, 90.0);
   lon_deg -= 360.0 * std::floor((lon_deg + 180.0) / 360.0);
   radius_m = std::clamp(radius_m, 0.0, 1e300);
-  const double radius_deg = radius_m / metres_per_degree_;
-  const IndexLevel& level = levels_[chooseLevel(lat_deg, accuracy_m / metres_per_degree_, radius_deg)];
-  measure(level, window(level, lat_deg, lon_deg, radius_deg), lat_deg, lon_deg, radius_m, s);
+  const double radius_deg = radius_m / metres_per_degree;
+  const IndexLevel& level = levels_[chooseLevel(lat_deg, accuracy_m / metres_per_degree, radius_deg)];
+  measure(level, window(level, lat_deg, lon_deg, radius_deg), metres_per_degree, lat_deg, lon_deg, radius_m, s);
   classify(level, lat_deg, lon_deg, s);
   std::erase_if(s.found, [](const FeatureProximity& f) {
     return !f.inside() && std::isinf(f.ring_m) && std::isinf(f.line_m) && std::isinf(f.point_m);
@@ -209,10 +210,10 @@ bool VectorIndex::cellTouches(const IndexLevel& level, std::int64_t row, std::in
   return false;
 }
 
-bool VectorIndex::mayTouch(double latMin_deg, double latMax_deg, double lonMin_deg, double lonMax_deg, double grow_m,
-                           ProximityScratch& s) const {
+bool VectorIndex::mayTouch(double metres_per_degree, double latMin_deg, double latMax_deg, double lonMin_deg,
+                           double lonMax_deg, double grow_m, ProximityScratch& s) const {
   if (empty()) return false;
-  const double grow_deg = std::max(grow_m, 0.0) / metres_per_degree_;
+  const double grow_deg = std::max(grow_m, 0.0) / metres_per_degree;
   Box box{std::max(latMin_deg - grow_deg, -90.0), std::min(latMax_deg + grow_deg, 90.0), 0.0, 0.0};
   const double growLon_deg = grow_deg / cosLatitude(std::max(std::abs(box.lat0), std::abs(box.lat1)));
   box.lon0 = lonMin_deg - growLon_deg;
@@ -235,7 +236,7 @@ bool VectorIndex::mayTouch(double latMin_deg, double latMax_deg, double lonMin_d
     for (std::int64_t col = col0; col < col0 + cols; ++col)
       if (cellTouches(level, row, col, box, budget)) return true;
   // Nothing reaches the box: it lies wholly inside or outside each polygon, as its centre does.
-  near(0.5 * (box.lat0 + box.lat1), 0.5 * (box.lon0 + box.lon1), 0.0, 0.0, s);
+  near(metres_per_degree, 0.5 * (box.lat0 + box.lat1), 0.5 * (box.lon0 + box.lon1), 0.0, 0.0, s);
   return std::any_of(s.found.begin(), s.found.end(), [](const FeatureProximity& f) { return f.inside(); });
 }
 

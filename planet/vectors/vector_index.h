@@ -85,17 +85,19 @@ struct IndexLevel {
 class VectorIndex {
  public:
   // Errors when the layer's polygons overlap so much that the rows' inside lists pass a memory
-  // budget (the message names no file: the caller adds it).
-  static Result<VectorIndex> build(const VectorFeatures& features, double radius_m);
+  // budget (the message names no file: the caller adds it). The index is in degrees: the same one
+  // serves any sphere, which each query names by its metres per degree of arc.
+  static Result<VectorIndex> build(const VectorFeatures& features);
 
   // Fills scratch.found, in feature order, with every feature having a part within `radius_m` of
   // the point or a polygon containing it. Geometry may be simplified by up to `accuracy_m`.
-  void near(double lat_deg, double lon_deg, double accuracy_m, double radius_m, ProximityScratch& scratch) const;
+  void near(double metres_per_degree, double lat_deg, double lon_deg, double accuracy_m, double radius_m,
+            ProximityScratch& scratch) const;
 
   // False when no part lies within `grow_m` of the box and no polygon contains it (conservative:
   // true may mean "near"). Longitudes in degrees, any range; the box may cross the antimeridian.
-  bool mayTouch(double latMin_deg, double latMax_deg, double lonMin_deg, double lonMax_deg, double grow_m,
-                ProximityScratch& scratch) const;
+  bool mayTouch(double metres_per_degree, double latMin_deg, double latMax_deg, double lonMin_deg, double lonMax_deg,
+                double grow_m, ProximityScratch& scratch) const;
 
   std::size_t featureCount() const { return feature_count_; }
   bool empty() const { return geometries_.empty() || geometries_[0].parts.empty(); }
@@ -109,8 +111,8 @@ class VectorIndex {
   };
   std::size_t chooseLevel(double lat_deg, double accuracy_deg, double radius_deg) const;
   Window window(const IndexLevel& level, double lat_deg, double lon_deg, double radius_deg) const;
-  void measure(const IndexLevel& level, const Window& w, double lat_deg, double lon_deg, double radius_m,
-               ProximityScratch& scratch) const;
+  void measure(const IndexLevel& level, const Window& w, double metres_per_degree, double lat_deg, double lon_deg,
+               double radius_m, ProximityScratch& scratch) const;
   void measureCell(const IndexLevel& level, std::uint32_t cell, double lat_deg, double lon_deg, double radius_m,
                    double xScale, double yScale, ProximityScratch& scratch) const;
   void classify(const IndexLevel& level, double lat_deg, double lon_deg, ProximityScratch& scratch) const;
@@ -121,7 +123,6 @@ class VectorIndex {
   std::vector<IndexGeometry> geometries_;  // [0] exact, then simplified
   std::vector<IndexLevel> levels_;         // finest first; cell_deg doubles per level
   std::size_t feature_count_ = 0;
-  double metres_per_degree_ = 0.0;
 };
 
 }  // namespace globe

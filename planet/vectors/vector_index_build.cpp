@@ -347,12 +347,11 @@ void KeyTable::build(std::span<const std::uint64_t> keys) {
   }
 }
 
-Result<VectorIndex> VectorIndex::build(const VectorFeatures& features, double radius_m) {
+Result<VectorIndex> VectorIndex::build(const VectorFeatures& features) {
   if (features.features.size() >= (std::size_t{1} << 29))  // CellEntry::tag keeps the feature in 29 bits
     return Error::inField("", "has too many features to be indexed");
   VectorIndex index;
   index.feature_count_ = features.features.size();
-  index.metres_per_degree_ = radius_m * std::numbers::pi / 180.0;
   index.geometries_.push_back(exactGeometry(features));
   std::size_t budget = kMaxIndexEntries;
   std::vector<std::uint64_t> finestKeys;

@@ -1,24 +1,12 @@
 #include "planet/vectors/vector_overlay.h"
 
 #include "planet/camera/camera.h"
-#include "planet/vectors/vector_features.h"
-#include "planet/vectors/vector_index.h"
-
-#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <iterator>
+#include <numbers>
 
 namespace globe {
-
-struct VectorOverlay::Layer {
-  VectorLayer style;
-  VectorIndex index;
-  std::vector<std::int32_t> colour;  // per feature: index into table, -1 = the style's own colours
-  std::vector<glm::vec3> table;      // style.colours' values, in map order
-  bool has_rings = false, has_lines = false, has_points = false;
-};
 
 namespace {
 
@@ -57,28 +45,17 @@ VectorOverlay::~VectorOverlay() = default;
 
 Result<std::unique_ptr<VectorOverlay>> VectorOverlay::open(const std::vector<VectorLayer>& layers, double radius_m) {
   std::unique_ptr<VectorOverlay> overlay(new VectorOverlay());
+  overlay->metres_per_degree_ = radius_m * std::numbers::pi / 180.0;
   for (const VectorLayer& style : layers) {
-    Result<VectorFeatures> features = readVectorFeatures(style);
-    if (!features) return features.error();
-    Result<VectorIndex> index = VectorIndex::build(*features, radius_m);
-    if (!index)
-      return Error::inFileField(style.path, "path",
-                                fmt::format("layer '{}': {}", features->layer_name, index.error().message));
-    Layer layer{style, std::move(*index), {}, {}};
-    for (const VectorFeature& f : features->features) layer.colour.push_back(f.colour);
-    for (const auto& [value, colour] : style.colours) layer.table.push_back(colour);
-    for (const VectorPart& p : features->parts) {
-      layer.has_rings = layer.has_rings || p.kind == VectorPartKind::kRing;
-      layer.has_lines = layer.has_lines || p.kind == VectorPartKind::kLine;
-      layer.has_points = layer.has_points || p.kind == VectorPartKind::kPoint;
-    }
-    overlay->layers_.push_back(std::move(layer));
+    Result<std::shared_ptr<const IndexedVectorLayer>> layer = openIndexedVectorLayer(style);
+    if (!layer) return layer.error();
+    overlay->layers_.push_back(std::move(*layer));
   }
   return overlay;
 }
 
 bool VectorOverlay::empty() const {
-  return std::all_of(layers_.begin(), layers_.end(), [](const Layer& l) { return l.index.empty(); });
+  return std::all_of(layers_.begin(), layers_.end(), [](const auto& l) { return l->index.empty(); });
 }
 
 namespace {
@@ -106,10 +83,11 @@ OverlayColour VectorOverlay::colourAt(const glm::dvec3& unitDirection, double te
   const double filter_m = texel_m > kMinTexel_m ? texel_m : kMinTexel_m;  // NaN too
   const double pixelSize_m = std::isfinite(pixel_m) && pixel_m > 0.0 ? pixel_m : 0.0;
   Paint paint;
-  for (const Layer& layer : layers_) {
+  for (const std::shared_ptr<const IndexedVectorLayer>& shared : layers_) {
+    const IndexedVectorLayer& layer = *shared;
     const VectorLayer& style = layer.style;
     const Widths w = widthsFor(style, layer.has_rings, layer.has_lines, layer.has_points, filter_m, pixelSize_m);
-    layer.index.near(latLon.x, latLon.y, filter_m * kAccuracyPerTexel, w.search_m, scratch);
+    layer.index.near(metres_per_degree_, latLon.x, latLon.y, filter_m * kAccuracyPerTexel, w.search_m, scratch);
     const auto tableColour = [&](std::uint32_t f) -> const glm::vec3* {
       const std::int32_t c = layer.colour[f];
       return c >= 0 && std::size_t(c) < layer.table.size() ? &layer.table[std::size_t(c)] : nullptr;
@@ -141,10 +119,12 @@ OverlayColour VectorOverlay::colourAt(const glm::dvec3& unitDirection, double te
 bool VectorOverlay::mayTouch(double latMin_deg, double latMax_deg, double lonMin_deg, double lonMax_deg,
                              double margin_m) const {
   thread_local ProximityScratch scratch;
-  for (const Layer& layer : layers_) {
-    const VectorLayer& style = layer.style;
+  for (const std::shared_ptr<const IndexedVectorLayer>& layer : layers_) {
+    const VectorLayer& style = layer->style;
     const double widest_m = 0.5 * std::max(style.width_m, style.point_size_m);
-    if (layer.index.mayTouch(latMin_deg, latMax_deg, lonMin_deg, lonMax_deg, widest_m + margin_m, scratch)) return true;
+    if (layer->index.mayTouch(metres_per_degree_, latMin_deg, latMax_deg, lonMin_deg, lonMax_deg, widest_m + margin_m,
+                              scratch))
+      return true;
   }
   return false;
 }

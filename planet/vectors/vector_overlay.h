@@ -2,8 +2,9 @@
 // The planet side of vector layers draped on the terrain: the colour that a planet's [[vectors]]
 // paint at any point of the sphere, antialiased with the surface texel as the filter, for the
 // payload path to bake into each node's surface texture. Each layer is read once (OGR) and indexed
-// (vector_index.h), so a query costs about the same whatever the layer's size.
+// (indexed_vector_layer.h), so a query costs about the same whatever the layer's size.
 #include "planet/core/error.h"
+#include "planet/vectors/indexed_vector_layer.h"
 #include "planet/vectors/vector_layer.h"
 
 #include <glm/vec3.hpp>
@@ -21,8 +22,9 @@ struct OverlayColour {
 
 class VectorOverlay {
  public:
-  // Reads and indexes every layer (already validated by readVectors; a layer that fails now is an
-  // Error too, naming its file). `radius_m`: the sphere on which distances are measured.
+  // Every layer read and indexed (openIndexedVectorLayer: those the planet file's check read are
+  // shared, not read again; a layer that fails now is an Error too, naming its file). `radius_m`:
+  // the sphere on which distances are measured.
   static Result<std::unique_ptr<VectorOverlay>> open(const std::vector<VectorLayer>& layers, double radius_m);
   ~VectorOverlay();
   VectorOverlay(const VectorOverlay&) = delete;
@@ -54,9 +56,9 @@ class VectorOverlay {
   bool empty() const;  // no layer draws anything
 
  private:
-  struct Layer;
   VectorOverlay();
-  std::vector<Layer> layers_;
+  std::vector<std::shared_ptr<const IndexedVectorLayer>> layers_;
+  double metres_per_degree_ = 0.0;  // of arc, on the sphere of radius_m
 };
 
 }  // namespace globe

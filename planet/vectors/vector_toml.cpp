@@ -1,7 +1,7 @@
 #include "planet/vectors/vector_toml.h"
 
 #include "planet/core/srgb.h"
-#include "planet/vectors/vector_overlay.h"
+#include "planet/vectors/indexed_vector_layer.h"
 
 #include <fmt/format.h>
 
@@ -17,7 +17,6 @@ constexpr std::string_view kVectorKeys[] = {"path",         "layer",         "fi
                                             "point_size_m", "point_size_px", "colour_by", "colours"};
 constexpr double kMaxWidth_m = 1.0e6;
 constexpr double kMaxWidth_px = 100.0;
-constexpr double kCheckRadius_m = 6371000.0;  // any sphere: the check only reads and indexes
 
 int hexDigit(char c) {
   if (c >= '0' && c <= '9') return c - '0';
@@ -155,9 +154,10 @@ void checkTogether(PlanetTomlReader& r, const toml::table& t, const std::string&
     r.fail(keys.colour_by->source(), prefix + "colour_by", "needs a colours table (attribute value = colour)");
 }
 
-// Reads and indexes the layer as the overlay will; a failure lands on the key it is about.
+// Reads and indexes the layer as the overlay will (which then shares it); a failure lands on the
+// key it is about.
 void checkFile(PlanetTomlReader& r, const std::string& prefix, const VectorLayer& layer, const VectorKeys& keys) {
-  Result<std::unique_ptr<VectorOverlay>> opened = VectorOverlay::open({layer}, kCheckRadius_m);
+  Result<std::shared_ptr<const IndexedVectorLayer>> opened = openIndexedVectorLayer(layer);
   if (opened) return;
   const Error& e = opened.error();
   const toml::node* at = keys.path;
