@@ -3,7 +3,7 @@
 // (perceptual, as FXAA wants its luma): finds the local edge, walks along it to both ends (up to 5
 // steps each way) and blends the pixel with its neighbour across the edge by its estimated coverage;
 // sub-pixel aliasing is blended by the 3x3 neighbourhood's contrast. The scene arrives as packed
-// B8G8R8A8 texels in a storage buffer (engine/vk/fxaa_pass.h: lavapipe's texture reads are slow),
+// B8G8R8A8 texels in a storage buffer (engine/render/fxaa_pass.h: lavapipe's texture reads are slow),
 // so every read is a whole pixel: the search reads both rows beside the edge (their average is
 // FXAA's half-pixel bilinear tap) and the final blend mixes two texels.
 // Branches depend on the image, never on push constants alone.

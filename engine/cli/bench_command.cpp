@@ -186,7 +186,7 @@ Result<BenchFlight> flyPath(const BenchOptions& o, const BenchInputs& in, const 
 BenchRunInfo runInfo(const BenchOptions& o, const vk::Device& device, const TerrainSettings& settings) {
   BenchRunInfo info{
       o.planet, o.path, o.mode, device.name(), o.size, settings.gridCells, o.commandLine, std::string(GLOBE_VERSION)};
-  info.shading = std::string("aa ") + vk::antialiasingName(settings.antialiasing) + ", normal map scale " +
+  info.shading = std::string("aa ") + antialiasingName(settings.antialiasing) + ", normal map scale " +
                  std::to_string(settings.normalMapScale) + ", atmosphere " + atmosphereDetailName(settings.atmosphere) +
                  ", detail textures " + detailTexturesName(settings.detailTextures);
   info.driver = device.driverName() + " " + device.driverInfo();
@@ -239,8 +239,7 @@ int runBench(const BenchOptions& o) {
   settings.style.sunDirection = *sun;
   vk::Device device(deviceOptions(o.device));
   printDeviceChoice(device);
-  if (auto s = vk::checkImageExtent(device, {in->size.width, in->size.height}, "--size"); !s)
-    return usageError(s.error());
+  if (auto s = checkImageExtent(device, {in->size.width, in->size.height}, "--size"); !s) return usageError(s.error());
   const double deviceReady_ms = millisecondsSinceProcessStart();
   announceAtmosphereTables(model, settings);
   auto terrain = Terrain::create(device, model, settings);

@@ -50,17 +50,17 @@ Result<ImageSize> parseSize(const std::string& text, const std::string& field) {
   return ImageSize{static_cast<uint32_t>(*w), static_cast<uint32_t>(*h)};
 }
 
-Status checkImageMemory(ImageSize size, vk::Antialiasing aa, bool mp4) {
-  std::uint64_t perPixel = aa == vk::Antialiasing::kMsaa4  ? kMsaa4BytesPerPixel
-                           : aa == vk::Antialiasing::kFxaa ? kFxaaBytesPerPixel
-                                                           : kRenderBytesPerPixel;
+Status checkImageMemory(ImageSize size, Antialiasing aa, bool mp4) {
+  std::uint64_t perPixel = aa == Antialiasing::kMsaa4  ? kMsaa4BytesPerPixel
+                           : aa == Antialiasing::kFxaa ? kFxaaBytesPerPixel
+                                                       : kRenderBytesPerPixel;
   if (mp4) perPixel += kMp4BytesPerPixel;
   const std::uint64_t needMiB = imageMemoryMiB(size.width, size.height, perPixel);
   if (needMiB <= kMaxImageMemoryMiB) return Ok{};
   return Error::inField("--size", fmt::format("{}x{} with --aa {}{} would need about {} MiB of image memory, more than "
                                               "the limit of {} MiB",
-                                              size.width, size.height, vk::antialiasingName(aa),
-                                              mp4 ? " into an MP4" : "", needMiB, kMaxImageMemoryMiB));
+                                              size.width, size.height, antialiasingName(aa), mp4 ? " into an MP4" : "",
+                                              needMiB, kMaxImageMemoryMiB));
 }
 
 CLI::Validator nonEmptyValue() {
@@ -169,7 +169,7 @@ void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid) {
          "Anti-aliasing: none, fxaa or msaa4 (docs/rendering.md, \"Anti-aliasing\"; default: the quality preset's)")
       ->check(CLI::Validator(
           [](const std::string& text) -> std::string {
-            auto aa = vk::parseAntialiasing(text, "--aa");
+            auto aa = parseAntialiasing(text, "--aa");
             return aa ? std::string() : aa.error().message;
           },
           "AA"));
@@ -215,7 +215,7 @@ Result<TerrainSettings> terrainSettingsFromOptions(const QualityOptions& options
   }
   if (!options.imagery.empty()) settings.imagery = options.imagery == "on";
   if (!options.antialiasing.empty()) {
-    auto aa = vk::parseAntialiasing(options.antialiasing, "--aa");
+    auto aa = parseAntialiasing(options.antialiasing, "--aa");
     if (!aa) return aa.error();
     settings.antialiasing = *aa;
   }

@@ -1,7 +1,7 @@
 #pragma once
 // Option parsing shared by the subcommands: sizes, device selection, error reporting.
+#include "engine/render/antialiasing.h"
 #include "engine/render/quality.h"
-#include "engine/vk/antialiasing.h"
 #include "engine/vk/device.h"
 #include "planet/camera/camera.h"
 #include "planet/core/error.h"
@@ -41,7 +41,7 @@ inline constexpr double kMinTexelPx = 0.5;
 Result<ImageSize> parseSize(const std::string& text, const std::string& field);
 // Once the anti-aliasing is known: the image memory of `size` with it (and an MP4 encoder) within
 // kMaxImageMemoryMiB, else an Error on --size naming both.
-Status checkImageMemory(ImageSize size, vk::Antialiasing aa, bool mp4);
+Status checkImageMemory(ImageSize size, Antialiasing aa, bool mp4);
 
 // An output directory: made later by the command (with any missing parents: makeOutputDirectory),
 // so it must be a directory or one that can be made. Errors name `field`. (Output files: checkWritable,

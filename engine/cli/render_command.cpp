@@ -75,7 +75,7 @@ struct RenderOptions {
 // The reference sphere, lit by `sun`.
 ImageRgba renderSphere(vk::Device& device, const Camera& camera, const ElevationModel& model, const ImageSize& size,
                        const glm::dvec3& sun) {
-  vk::OffscreenTarget target(device, {size.width, size.height});
+  OffscreenTarget target(device, {size.width, size.height});
   SpherePreview preview(device);
   const float clear[4] = {0, 0, 0, 1};
   device.submitAndWait([&](VkCommandBuffer cmd) {
@@ -122,7 +122,7 @@ int runRender(const RenderOptions& o) {
 
   vk::Device device(deviceOptions(o.device));
   printDeviceChoice(device);
-  if (auto s = vk::checkImageExtent(device, {size->width, size->height}, "--size"); !s) return usageError(s.error());
+  if (auto s = checkImageExtent(device, {size->width, size->height}, "--size"); !s) return usageError(s.error());
   ImageRgba image;
   if (o.mode == "sphere") {
     image = renderSphere(device, camera, model, *size, *sun);

@@ -339,8 +339,8 @@ Result<TradeRow> measure(TradeRig& rig, const TradeConfig& config, const TradeCa
   compareWithReference(row, toImage(rig.renderer.readback(), camera.camera), reference);
   // Multisampled depth is resolved from sample 0, off the pixel centre the truth is cast through:
   // the error is measured on a one-sample frame of the same nodes.
-  if (settings.antialiasing == vk::Antialiasing::kMsaa4) {
-    (*terrain)->setAntialiasing(vk::Antialiasing::kNone);
+  if (settings.antialiasing == Antialiasing::kMsaa4) {
+    (*terrain)->setAntialiasing(Antialiasing::kNone);
     rig.renderer.renderFrame(**terrain, camera.camera, true);
   }
   row.error = measureScreenError(truth, rig.renderer.readback(), camera.camera);

@@ -8,7 +8,7 @@
 
 namespace globe {
 
-ScreenError measureScreenError(const SurfaceTruth& truth, const vk::ReadbackImage& frame, const Camera& camera) {
+ScreenError measureScreenError(const SurfaceTruth& truth, const ReadbackImage& frame, const Camera& camera) {
   assert(frame.width == truth.width && frame.height == truth.height);
   std::vector<double> distance(size_t(frame.width) * frame.height, std::numeric_limits<double>::infinity());
   // Only the sampled pixels are converted.

@@ -36,7 +36,7 @@ void readGpuTimes(VkDevice device, VkQueryPool queries, double timestampPeriod_n
 
 HeadlessRenderer::HeadlessRenderer(vk::Device& device, VkExtent2D extent)
     : device_(device),
-      target_(std::make_unique<vk::OffscreenTarget>(device, extent)),
+      target_(std::make_unique<OffscreenTarget>(device, extent)),
       pool_(vk::createCommandPool(device.device(), device.queueFamily(),
                                   VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT)),
       cmd_(vk::allocateCommandBuffer(device.device(), pool_.get())),
@@ -66,8 +66,8 @@ FrameStats HeadlessRenderer::renderFrame(Terrain& terrain, const Camera& camera,
     frame_ += 1;
     terrain.update(frame_, camera, frame_ - 1);
   }
-  if (const vk::Antialiasing aa = terrain.settings().antialiasing; aa != target_->antialiasing())
-    target_ = std::make_unique<vk::OffscreenTarget>(device_, target_->extent(), aa);  // earlier frames completed
+  if (const Antialiasing aa = terrain.settings().antialiasing; aa != target_->antialiasing())
+    target_ = std::make_unique<OffscreenTarget>(device_, target_->extent(), aa);  // earlier frames completed
   vkResetQueryPool(device_.device(), queries_, 0, kQueryCount);
   GLOBE_VK_CHECK(vkResetCommandBuffer(cmd_, 0));
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};

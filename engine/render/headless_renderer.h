@@ -2,8 +2,8 @@
 // Renders terrain frames offscreen, one at a time: update (selection, streaming, generation), draw
 // into an OffscreenTarget, submit, wait. Used by `globe render` and `globe bench`; measures wall
 // time, CPU selection time and GPU time (timestamp queries) per frame.
+#include "engine/render/offscreen_target.h"
 #include "engine/render/terrain.h"
-#include "engine/vk/offscreen_target.h"
 
 #include <array>
 #include <functional>
@@ -25,7 +25,7 @@ class HeadlessRenderer {
 
   // The target follows the terrain's anti-aliasing: a frame of a terrain with another one than the
   // last frame's remakes it (TerrainSettings::antialiasing).
-  vk::ReadbackImage readback() { return target_->readback(); }
+  ReadbackImage readback() { return target_->readback(); }
   // Colour the target is cleared to before each frame (default opaque black). Tests clear to a
   // colour the terrain never writes (e.g. magenta with alpha 0) to find holes.
   void setClearColour(const std::array<float, 4>& rgba) { clear_ = rgba; }
@@ -34,7 +34,7 @@ class HeadlessRenderer {
 
  private:
   vk::Device& device_;
-  std::unique_ptr<vk::OffscreenTarget> target_;
+  std::unique_ptr<OffscreenTarget> target_;
   vk::UniqueCommandPool pool_;
   VkCommandBuffer cmd_ = VK_NULL_HANDLE;
   vk::UniqueFence fence_;

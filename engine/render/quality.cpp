@@ -49,7 +49,7 @@ TerrainSettings terrainSettingsFor(QualityPreset preset) {
       s.ranges.distanceMultiplier = 2.0;
       // FXAA's fixed ~16 ms of CPU a 1280x720 frame is ~1 % of this preset's frame; on fast and
       // balanced it is +40 % (MSAA x4 +160 %) of the flyover's CPU: docs/rendering.md, "Anti-aliasing".
-      s.antialiasing = vk::Antialiasing::kFxaa;
+      s.antialiasing = Antialiasing::kFxaa;
       s.normalMapScale = 1;  // 64 map cells a node; scale 2 would fit only 1549 slots in 512 MiB
       // The maps from imagery tiles of their own LOD: each texel <= 1.5 px at 1280x720 from 100 km to
       // 1 km where the mesh's own maps reach 2.9 px, and 2.8 px instead of 45 px at 2 m

@@ -32,7 +32,7 @@ double rayDistanceFromDepth(const Camera& camera, uint32_t width, uint32_t heigh
   return axial * lengthPerAxial;
 }
 
-ImageRgba toImage(const vk::ReadbackImage& frame, const Camera& camera) {
+ImageRgba toImage(const ReadbackImage& frame, const Camera& camera) {
   ImageRgba image{frame.width, frame.height, frame.rgba, {}};
   image.z.resize(frame.depth.size());
   for (uint32_t y = 0; y < frame.height; ++y)

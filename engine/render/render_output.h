@@ -2,8 +2,8 @@
 // Turns a read-back frame into an image file's content: linear colour plus the per-pixel
 // distance along the view ray in metres (+inf where nothing was drawn).
 #include "engine/io/image_io.h"
+#include "engine/render/offscreen_target.h"
 #include "engine/vk/graphics_pipeline.h"
-#include "engine/vk/offscreen_target.h"
 #include "planet/camera/camera.h"
 
 namespace globe {
@@ -23,6 +23,6 @@ vk::GraphicsPipelineDesc fullscreenPassDesc(const char* fragmentShader, uint32_t
 // Distance (metres) along the ray through pixel centre (x, y) for reversed-Z device depth `depth`.
 double rayDistanceFromDepth(const Camera& camera, uint32_t width, uint32_t height, double x, double y, float depth);
 
-ImageRgba toImage(const vk::ReadbackImage& frame, const Camera& camera);
+ImageRgba toImage(const ReadbackImage& frame, const Camera& camera);
 
 }  // namespace globe

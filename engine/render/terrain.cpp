@@ -153,18 +153,18 @@ void Terrain::attachPool(std::unique_ptr<PayloadPool> pool) {
   const ElevationRange bounds = model_.bounds();
   style.terrainRadii_m = {model_.shape().polarRadius_m() + bounds.min_m, model_.radius_m() + bounds.max_m};
   renderer_ = std::make_unique<TerrainRenderer>(device_, settings_.gridCells, style, settings_.vertexPositions, 1024,
-                                                vk::kSceneColourFormat, vk::sampleCount(settings_.antialiasing));
+                                                vk::kSceneColourFormat, sampleCount(settings_.antialiasing));
   drawNodes_.reserve(4096);
 }
 
-void Terrain::setAntialiasing(vk::Antialiasing antialiasing) {
+void Terrain::setAntialiasing(Antialiasing antialiasing) {
   if (antialiasing == settings_.antialiasing) return;
   // The renderer's per-frame buffers may be in use by frames in flight.
   GLOBE_VK_CHECK(vkDeviceWaitIdle(device_.device()));
   settings_.antialiasing = antialiasing;
   renderer_ =
       std::make_unique<TerrainRenderer>(device_, settings_.gridCells, renderer_->style(), settings_.vertexPositions,
-                                        1024, vk::kSceneColourFormat, vk::sampleCount(antialiasing));
+                                        1024, vk::kSceneColourFormat, sampleCount(antialiasing));
 }
 
 Terrain::~Terrain() {

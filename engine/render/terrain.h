@@ -4,10 +4,10 @@
 // chain camera -> selection -> requests -> generation -> payloads -> draw -> stats, so the viewer,
 // the headless renderer and the benchmark run exactly the same frame.
 #include "engine/generation/gpu_payload_generator.h"
+#include "engine/render/antialiasing.h"
 #include "engine/render/detail_texture_array.h"
 #include "engine/render/imagery_tiles.h"
 #include "engine/render/terrain_renderer.h"
-#include "engine/vk/antialiasing.h"
 #include "planet/analysis/frame_stats.h"
 #include "planet/camera/camera.h"
 #include "planet/camera/floating_origin.h"
@@ -77,7 +77,7 @@ struct TerrainSettings {
   uint32_t primeRounds = 12;
   // The target the terrain is drawn into must be made with the same (OffscreenTarget): its samples
   // per pixel are the pipelines' (HeadlessRenderer follows the terrain's; the viewer makes its target so).
-  vk::Antialiasing antialiasing = vk::Antialiasing::kNone;
+  Antialiasing antialiasing = Antialiasing::kNone;
 };
 
 // Bad settings and planets are reported as an Error naming the field.
@@ -106,7 +106,7 @@ class Terrain {
 
   // Remakes the renderer's pipelines for another anti-aliasing (the payloads stay): `globe trade`
   // times the frame with the preset's and measures depth single-sampled, at the pixel centres.
-  void setAntialiasing(vk::Antialiasing antialiasing);
+  void setAntialiasing(Antialiasing antialiasing);
   // The image height the screen-space rules (tolerance ranges, imagery) count pixels in: a resized
   // window keeps its tolerance in its own pixels. Takes effect at the next update.
   void setViewHeight(double height_px) { settings_.viewHeight_px = height_px; }

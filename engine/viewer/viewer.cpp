@@ -22,8 +22,8 @@ std::unique_ptr<ViewerScene> makeScene(vk::Device& device, ViewerSceneOptions op
 }
 
 // The scene target's anti-aliasing: the terrain's (the sphere mode's passes draw one sample per pixel).
-vk::Antialiasing sceneAntialiasing(const ViewerSceneOptions& scene) {
-  return scene.mode == ViewerMode::kTerrain ? scene.terrain.antialiasing : vk::Antialiasing::kNone;
+Antialiasing sceneAntialiasing(const ViewerSceneOptions& scene) {
+  return scene.mode == ViewerMode::kTerrain ? scene.terrain.antialiasing : Antialiasing::kNone;
 }
 
 }  // namespace
@@ -34,7 +34,7 @@ Viewer::State::State(Window& w, vk::Device& d, ViewerOptions o)
       options(std::move(o)),
       swapchain(d, w.framebufferExtent(), options.vsync),
       ring(d),
-      target(std::make_unique<vk::OffscreenTarget>(d, swapchain.extent(), sceneAntialiasing(options.scene))),
+      target(std::make_unique<OffscreenTarget>(d, swapchain.extent(), sceneAntialiasing(options.scene))),
       scene(makeScene(d, options.scene)),
       overlay(std::make_unique<Overlay>(d, w, swapchain)),
       // The scene outlives the camera (declared earlier), and is never replaced: a reload
@@ -136,9 +136,9 @@ bool Viewer::State::recreateSwapchain() {
   overlay->attach(swapchain);
   VkExtent2D size = swapchain.extent();
   if (size.width != target->extent().width || size.height != target->extent().height) {
-    const vk::Antialiasing aa = target->antialiasing();
+    const Antialiasing aa = target->antialiasing();
     releases.retire(frame, std::move(target));
-    target = std::make_unique<vk::OffscreenTarget>(device, size, aa);
+    target = std::make_unique<OffscreenTarget>(device, size, aa);
     scene->setViewHeight(double(size.height));
   }
   swapchainStale = false;

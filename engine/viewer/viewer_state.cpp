@@ -84,7 +84,7 @@ void Viewer::State::waitForReload() {
 Status Viewer::State::saveScreenshot(const std::string& path, const Camera& cam) {
   // The last submitted frame must be complete before its target is read; screenshots are rare.
   GLOBE_VK_CHECK(vkQueueWaitIdle(device.queue()));
-  vk::ReadbackImage frameImage = target->readback();
+  ReadbackImage frameImage = target->readback();
   ImageRgba image = toImage(frameImage, cam);
   return writeImage(path, image, "screenshot");
 }

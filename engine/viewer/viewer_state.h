@@ -2,6 +2,7 @@
 // The windowed viewer's state (engine/viewer/viewer.h), shared by its frame loop (viewer.cpp) and
 // what the loop reports (viewer_state.cpp: overlay, messages, screenshots, recording, frame log).
 // Private to the viewer library.
+#include "engine/render/offscreen_target.h"
 #include "engine/render/terrain_warnings.h"
 #include "engine/viewer/fly_camera.h"
 #include "engine/viewer/frame_time_log.h"
@@ -15,7 +16,6 @@
 #include "engine/viewer/window.h"
 #include "engine/vk/deferred_release_queue.h"
 #include "engine/vk/frame_ring.h"
-#include "engine/vk/offscreen_target.h"
 #include "planet/analysis/frame_stats.h"
 
 #include <chrono>
@@ -75,7 +75,7 @@ struct Viewer::State {
   vk::DeferredReleaseQueue releases;  // destroyed after everything below that it may hold
   vk::Swapchain swapchain;
   vk::FrameRing ring;
-  std::unique_ptr<vk::OffscreenTarget> target;  // swapchain-sized display-encoded colour + reversed-Z depth
+  std::unique_ptr<OffscreenTarget> target;  // swapchain-sized display-encoded colour + reversed-Z depth
   std::unique_ptr<ViewerScene> scene;
   std::unique_ptr<Overlay> overlay;
   FlyCamera camera;

@@ -1,4 +1,4 @@
-// How the scene's colour target stores colour, shared by C++ (engine/vk/offscreen_target.cpp decodes
+// How the scene's colour target stores colour, shared by C++ (engine/render/offscreen_target.cpp decodes
 // it) and GLSL (display_encoding.glsl encodes it). The target is 8-bit UNORM: lavapipe writes that
 // format ~17 % cheaper per frame than sRGB or half float (docs/rendering.md, "Scene colour format").
 // A fragment shader stores e = A·√c − (A − 1)·c of its linear colour c clamped to [0, 1]: one square

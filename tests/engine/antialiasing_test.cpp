@@ -18,13 +18,13 @@ struct TrianglePush {
 };
 
 // One white triangle (clip corners (-1,-1), (-1,3), (0,-1), depth 0.25) on black.
-vk::ReadbackImage drawTriangle(vk::Device& device, uint32_t w, uint32_t h, vk::Antialiasing aa) {
-  vk::OffscreenTarget target(device, {w, h}, aa);
+ReadbackImage drawTriangle(vk::Device& device, uint32_t w, uint32_t h, Antialiasing aa) {
+  OffscreenTarget target(device, {w, h}, aa);
   vk::GraphicsPipelineDesc desc;
   desc.vertexShader = GLOBE_TEST_SHADER_DIR "/test_triangle.vert";
   desc.fragmentShader = GLOBE_TEST_SHADER_DIR "/test_triangle.frag";
   desc.pushConstantBytes = sizeof(TrianglePush);
-  desc.samples = vk::sampleCount(aa);
+  desc.samples = sampleCount(aa);
   vk::GraphicsPipeline pipeline(device, desc);
   const TrianglePush push = {{{-1, -1, 0.25f, 1}, {-1, 3, 0.25f, 1}, {0, -1, 0.25f, 1}}, {1, 1, 1, 1}};
   const float clear[4] = {0, 0, 0, 1};
@@ -44,7 +44,7 @@ float luminance(const float* p) { return 0.2126f * p[0] + 0.7152f * p[1] + 0.072
 // Pixels of an edge neither at its dark nor at its bright side: luminance more than a fifth of the
 // local contrast away from both the darkest and the brightest of its 3x3 neighbourhood, where that
 // contrast is at least `minContrast`. A hard (stair-stepped) edge between flat colours has none.
-int intermediateEdgePixels(const vk::ReadbackImage& image, float minContrast) {
+int intermediateEdgePixels(const ReadbackImage& image, float minContrast) {
   int count = 0;
   for (uint32_t y = 1; y + 1 < image.height; ++y) {
     for (uint32_t x = 1; x + 1 < image.width; ++x) {
@@ -63,14 +63,13 @@ int intermediateEdgePixels(const vk::ReadbackImage& image, float minContrast) {
 
 TEST_F(AntialiasingTest, AntialiasingSoftensEdgesAndKeepsOtherPixels) {
   const uint32_t w = 64, h = 48;
-  const vk::ReadbackImage hard = drawTriangle(device(), w, h, vk::Antialiasing::kNone);
+  const ReadbackImage hard = drawTriangle(device(), w, h, Antialiasing::kNone);
   EXPECT_EQ(intermediateEdgePixels(hard, 0.5f), 0);
-  for (const vk::Antialiasing aa : {vk::Antialiasing::kFxaa, vk::Antialiasing::kMsaa4}) {
-    SCOPED_TRACE(vk::antialiasingName(aa));
-    const vk::ReadbackImage soft = drawTriangle(device(), w, h, aa);
+  for (const Antialiasing aa : {Antialiasing::kFxaa, Antialiasing::kMsaa4}) {
+    SCOPED_TRACE(antialiasingName(aa));
+    const ReadbackImage soft = drawTriangle(device(), w, h, aa);
     const int intermediate = intermediateEdgePixels(soft, 0.5f);
-    std::printf("[ info ] %s: %d pixels of the edge (%u rows) intermediate\n", vk::antialiasingName(aa), intermediate,
-                h);
+    std::printf("[ info ] %s: %d pixels of the edge (%u rows) intermediate\n", antialiasingName(aa), intermediate, h);
     EXPECT_GE(intermediate, int(h) / 4);
     // Pixels well inside keep their colour and depth (MSAA: resolved from sample 0); those outside stay clear.
     EXPECT_EQ(soft.pixel(2, h / 2)[0], 1.0f);
@@ -78,7 +77,7 @@ TEST_F(AntialiasingTest, AntialiasingSoftensEdgesAndKeepsOtherPixels) {
     EXPECT_EQ(soft.pixel(w - 2, h / 2)[0], 0.0f);
     EXPECT_EQ(soft.depthAt(w - 2, h / 2), 0.0f);
     // FXAA leaves depth as drawn: the one-sample image's, bit for bit.
-    if (aa == vk::Antialiasing::kFxaa) {
+    if (aa == Antialiasing::kFxaa) {
       EXPECT_EQ(soft.depth, hard.depth);
     }
   }
@@ -88,7 +87,7 @@ TEST_F(AntialiasingTest, AntialiasingSoftensEdgesAndKeepsOtherPixels) {
 // Columns of an image where the first drawn pixel from the top (the edge of a limb seen from above
 // space, whose ground darkens inwards) is dimmer than the one below it: a pixel the edge only partly
 // covers. A hard edge's first pixel is full ground, at least as bright as the next one.
-int softEdgeColumns(const vk::ReadbackImage& image) {
+int softEdgeColumns(const ReadbackImage& image) {
   int soft = 0;
   for (uint32_t x = 0; x < image.width; ++x) {
     for (uint32_t y = 0; y + 1 < image.height; ++y) {
@@ -110,7 +109,7 @@ TEST_F(AntialiasingTest, AntialiasingSoftensThePlanetsLimb) {
   ASSERT_TRUE(pose.ok());
   const Camera camera = cameraFromPose(*pose, model.radius_m(), model.radius_m(), double(w) / h);
   int soft[3] = {0, 0, 0};
-  for (const vk::Antialiasing aa : {vk::Antialiasing::kNone, vk::Antialiasing::kFxaa, vk::Antialiasing::kMsaa4}) {
+  for (const Antialiasing aa : {Antialiasing::kNone, Antialiasing::kFxaa, Antialiasing::kMsaa4}) {
     TerrainSettings settings = terrainSettingsFor(QualityPreset::kBalanced);
     settings.antialiasing = aa;
     settings.atmosphere = AtmosphereDetail::kOff;  // the limb against black space: only AA softens it

@@ -14,10 +14,10 @@
 //   vertex 8 on ±180°), then each radius x 36 positions (32 vertices, 2 seams, lon +180 and -180)
 //   at 1 m; jitter at 1 mm and 1 m over a seam.
 #include "engine/render/headless_renderer.h"
+#include "engine/render/offscreen_target.h"
 #include "engine/render/render_output.h"
 #include "engine/render/terrain.h"
 #include "engine/vk/compute_pipeline.h"
-#include "engine/vk/offscreen_target.h"
 #include "planet/elevation/planet_file.h"
 #include "planet/geometry/face_mapping.h"
 #include "planet/geometry/node_bounds.h"
@@ -272,7 +272,7 @@ class ExtremesTest : public GpuTest {
 
   // Cracks and depth order, per pixel: {background pixels inside the inner sphere's silhouette,
   // depths outside [outer entry, inner hit]}.
-  std::pair<long, long> checkPixels(const Camera& camera, const vk::ReadbackImage& image, double inner, double outer) {
+  std::pair<long, long> checkPixels(const Camera& camera, const ReadbackImage& image, double inner, double outer) {
     std::pair<long, long> out{0, 0};
     long& cracks = out.first;
     long& order = out.second;
@@ -314,7 +314,7 @@ class ExtremesTest : public GpuTest {
     const FrameStats stats = s.renderer->renderFrame(*s.terrain, camera, true);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     const uint64_t generated = s.terrain->generator().nodesGenerated() - generatedBefore;
-    const vk::ReadbackImage image = s.renderer->readback();
+    const ReadbackImage image = s.renderer->readback();
     ++worst.frames;
     long nonFinite = 0;
 
@@ -365,7 +365,7 @@ class ExtremesTest : public GpuTest {
                    "extremes vertex readback");
     vk::ComputePipeline kernel(device(), GLOBE_TEST_SHADER_DIR "/test_terrain_vertex.comp", 4, sizeof(Push),
                                /*uniformMask=*/1u << 2);
-    vk::OffscreenTarget target(device(), {kWidth, kHeight});
+    OffscreenTarget target(device(), {kWidth, kHeight});
     const glm::dvec3 east = glm::normalize(glm::cross(glm::dvec3(0, 0, 1), direction) + glm::dvec3(1e-9, 0, 0));
     const double scale = kJitterWidth_px * 0.5, scaleY = kJitterWidth_px / start.aspect * 0.5;
     int compared = 0, dbgBehind = 0, dbgOff = 0, dbgMorph = 0;
@@ -628,7 +628,7 @@ TEST_F(ExtremesTest, SubPixelPlanetAt1e11mStaysFinite) {
     const Camera camera =
         cameraFromPose({10.0, 20.0, h, 0.0, -90.0, 0.0}, (*terrain)->cameraGroundRadius(d), model.radius_m(), 1.0);
     renderer.renderFrame(**terrain, camera, true);
-    const vk::ReadbackImage image = renderer.readback();
+    const ReadbackImage image = renderer.readback();
     long bad = 0;
     for (float c : image.rgba) bad += std::isfinite(c) ? 0 : 1;
     for (float z : image.depth) bad += std::isfinite(z) ? 0 : 1;

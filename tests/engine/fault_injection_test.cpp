@@ -4,7 +4,7 @@
 // refused before anything is allocated. Validation stays silent throughout (GpuTest).
 #include "planet/core/fault_injection.h"
 #include "engine/render/headless_renderer.h"
-#include "engine/vk/offscreen_target.h"
+#include "engine/render/offscreen_target.h"
 #include "engine/vk/vk_check.h"
 #include "planet/camera/camera.h"
 #include "tests/support/gpu_test.h"
@@ -86,13 +86,13 @@ TEST_F(FaultInjectionTest, MalformedFaultListIsAnError) {
 
 TEST_F(FaultInjectionTest, ImageLargerThanTheDeviceIsRefused) {
   const uint32_t limit = device().properties().limits.maxImageDimension2D;
-  EXPECT_TRUE(vk::checkImageExtent(device(), {limit, 16}, "--size").ok());
-  const Status s = vk::checkImageExtent(device(), {limit + 1, 16}, "--size");
+  EXPECT_TRUE(checkImageExtent(device(), {limit, 16}, "--size").ok());
+  const Status s = checkImageExtent(device(), {limit + 1, 16}, "--size");
   ASSERT_FALSE(s.ok());
   EXPECT_NE(s.error().format().find("--size: " + std::to_string(limit + 1) + "x16 is larger than"), std::string::npos);
   EXPECT_NE(s.error().format().find("(maxImageDimension2D " + std::to_string(limit) + ")"), std::string::npos);
   try {
-    vk::OffscreenTarget target(device(), {16, limit + 1});
+    OffscreenTarget target(device(), {16, limit + 1});
     FAIL() << "no error";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("maxImageDimension2D"), std::string::npos) << e.what();

@@ -1,7 +1,7 @@
 // Offscreen drawing, readback and the image files written from it.
 #include "engine/io/image_io.h"
+#include "engine/render/offscreen_target.h"
 #include "engine/vk/graphics_pipeline.h"
-#include "engine/vk/offscreen_target.h"
 #include "tests/support/gpu_test.h"
 
 #include <filesystem>
@@ -17,8 +17,8 @@ struct TrianglePush {
 class OffscreenTest : public GpuTest {
  protected:
   // Draws one triangle: left half of the screen, at constant depth 0.25 (reversed-Z).
-  vk::ReadbackImage drawTriangle(uint32_t w, uint32_t h) {
-    vk::OffscreenTarget target(device(), {w, h});
+  ReadbackImage drawTriangle(uint32_t w, uint32_t h) {
+    OffscreenTarget target(device(), {w, h});
     vk::GraphicsPipelineDesc desc;
     desc.vertexShader = GLOBE_TEST_SHADER_DIR "/test_triangle.vert";
     desc.fragmentShader = GLOBE_TEST_SHADER_DIR "/test_triangle.frag";
@@ -45,7 +45,7 @@ bool insideTriangle(uint32_t x, uint32_t y, uint32_t w, uint32_t h) {
 
 TEST_F(OffscreenTest, TrianglePixelsAndDepth) {
   const uint32_t w = 64, h = 48;
-  vk::ReadbackImage image = drawTriangle(w, h);
+  ReadbackImage image = drawTriangle(w, h);
   ASSERT_EQ(image.width, w);
   ASSERT_EQ(image.height, h);
   int checked = 0;
@@ -72,7 +72,7 @@ TEST_F(OffscreenTest, TrianglePixelsAndDepth) {
 }
 
 TEST_F(OffscreenTest, PngAndExrRoundTrip) {
-  vk::ReadbackImage frame = drawTriangle(32, 16);
+  ReadbackImage frame = drawTriangle(32, 16);
   ImageRgba image{frame.width, frame.height, frame.rgba, {}};
   for (size_t i = 0; i < frame.depth.size(); ++i) image.z.push_back(frame.depth[i] * 1000.0f + 0.123f);
   auto dir = std::filesystem::path(GLOBE_BINARY_DIR) / "test_output";

@@ -185,7 +185,7 @@ TEST_F(ScreenErrorGpuTest, RenderedSphereIsWithinAFractionOfAPixel) {
     EXPECT_LE(e.silhouetteMismatches, truth.columns) << height;
     EXPECT_LE(e.silhouetteMax_px, 2.0 * truth.stride) << height;
     // A deliberately wrong depth (+1 % distance) is measured as such.
-    vk::ReadbackImage frame = renderer.readback();
+    ReadbackImage frame = renderer.readback();
     for (float& d : frame.depth) d = d / 1.01f;
     ScreenError wrong = measureScreenError(truth, frame, camera);
     EXPECT_GT(wrong.p95_m, 0.005 * height);

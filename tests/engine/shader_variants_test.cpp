@@ -12,9 +12,9 @@
 // timing is asserted.
 #include "engine/generation/elevation_sampler.h"
 #include "engine/render/headless_renderer.h"
+#include "engine/render/offscreen_target.h"
 #include "engine/render/sphere_grid.h"
 #include "engine/render/sphere_preview.h"
-#include "engine/vk/offscreen_target.h"
 #include "planet/elevation/planet_file.h"
 #include "tests/support/dem_fixture.h"
 #include "tests/support/gpu_test.h"
@@ -106,18 +106,18 @@ void renderViews(const std::vector<View>& views, const ElevationModel& holes) {
   const ElevationModel& model = earthlikeModel();
   TerrainSettings settings;
   settings.gridCells = 16;
-  settings.antialiasing = vk::Antialiasing::kMsaa4;
+  settings.antialiasing = Antialiasing::kMsaa4;
   auto terrain = Terrain::create(device, model, settings);
   ASSERT_TRUE(terrain.ok()) << terrain.error().format();
   // The earthlike planet has an [atmosphere]: its sky and terrain pipelines are the ones guarded.
   ASSERT_NE((*terrain)->atmosphere(), nullptr);
   const uint32_t w = 96, h = 64;
   HeadlessRenderer renderer(device, {w, h}), holeRenderer(device, {w, h});
-  vk::OffscreenTarget sphereTarget(device, {w, h});
+  OffscreenTarget sphereTarget(device, {w, h});
   SpherePreview sphere(device);
   SphereGrid grid(device);
   ElevationSampler sampler(device, model.params(), 512);
-  settings.antialiasing = vk::Antialiasing::kFxaa;
+  settings.antialiasing = Antialiasing::kFxaa;
   auto holeTerrain = Terrain::create(device, holes, settings);
   ASSERT_TRUE(holeTerrain.ok()) << holeTerrain.error().format();
   ASSERT_TRUE((*holeTerrain)->renderer().style().holes);

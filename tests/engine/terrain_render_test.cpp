@@ -3,10 +3,10 @@
 // 1 m and 100 km; vertex jitter at 1 cm above an Earth-sized planet; the debug views and statistics.
 // Payloads come from the CPU reference (planet/streaming/payload_reference.h), selections from LodSelector.
 #include "engine/io/image_io.h"
+#include "engine/render/offscreen_target.h"
 #include "engine/render/render_output.h"
 #include "engine/render/terrain_renderer.h"
 #include "engine/vk/compute_pipeline.h"
-#include "engine/vk/offscreen_target.h"
 #include "planet/camera/floating_origin.h"
 #include "planet/elevation/relief_roughness.h"
 #include "planet/geometry/face_mapping.h"
@@ -141,7 +141,7 @@ class TerrainRenderTest : public GpuTest {
   explicit TerrainRenderTest(const PlanetShapeCase& shape = kPlanetShapes[0]) : model_(onShape(testPlanet(), shape)) {}
 
   struct Frame {
-    vk::ReadbackImage image;
+    ReadbackImage image;
     DrawStats stats;
     std::vector<DrawNode> nodes;
     double innerRadius_m = 0.0;  // no drawn triangle comes closer to the planet centre
@@ -203,7 +203,7 @@ class TerrainRenderTest : public GpuTest {
     f.innerRadius_m = inner;
     FloatingOrigin origin(rebase_m, payloadQuantum_m(0, model_.radius_m()));
     origin.update(camera.position_m);
-    vk::OffscreenTarget target(device(), {kWidth, kHeight});
+    OffscreenTarget target(device(), {kWidth, kHeight});
     device().submitAndWait([&](VkCommandBuffer cmd) {
       target.begin(cmd, kBackground);
       f.stats = renderer.record(cmd, camera, origin.origin_m(), f.nodes, payloads.pages(), 0);
@@ -380,13 +380,13 @@ TEST_F(TerrainRenderTest, NearerSurfaceWinsAt1mAnd100km) {
     DrawNode b{NodeId{0, 7, 0, 0}, 1, {inf, inf}, false, camera.position_m + (near_m + gap_m) * camera.forward};
     for (bool nearFirst : {true, false}) {
       std::vector<DrawNode> nodes = nearFirst ? std::vector<DrawNode>{a, b} : std::vector<DrawNode>{b, a};
-      vk::OffscreenTarget target(device(), {kWidth, kHeight});
+      OffscreenTarget target(device(), {kWidth, kHeight});
       device().submitAndWait([&](VkCommandBuffer cmd) {
         target.begin(cmd, kBackground);
         renderer.record(cmd, camera, origin.origin_m(), nodes, payloads.pages(), 1);
         target.end(cmd);
       });
-      vk::ReadbackImage image = target.readback();
+      ReadbackImage image = target.readback();
       int checked = 0;
       for (uint32_t y = kHeight / 2 - 10; y < kHeight / 2 + 10; ++y) {
         for (uint32_t x = kWidth / 2 - 10; x < kWidth / 2 + 10; ++x) {
@@ -416,7 +416,7 @@ std::vector<glm::vec4> gpuClipPositions(vk::Device& device, TerrainRenderer& ren
                  "terrain vertex readback");
   vk::ComputePipeline kernel(device, GLOBE_TEST_SHADER_DIR "/test_terrain_vertex.comp", 4, sizeof(Push),
                              /*uniformMask=*/1u << 2);
-  vk::OffscreenTarget target(device, {kWidth, kHeight});
+  OffscreenTarget target(device, {kWidth, kHeight});
   device.submitAndWait([&](VkCommandBuffer cmd) {
     target.begin(cmd, kBackground);
     renderer.record(cmd, camera, origin_m, std::span(&node, 1), payloads, 0);  // fills frame buffer 0
@@ -560,7 +560,7 @@ TEST_F(TerrainRenderTest, NoAllocationAfterWarmUpAndGrowth) {
   const Camera camera = cameraAt(0.0, 0.0, 1.0e7, 0.0, -90.0);
   VkBuffer before = VK_NULL_HANDLE;
   for (int frame = 0; frame < 4; ++frame) {
-    vk::OffscreenTarget target(device(), {kWidth, kHeight});
+    OffscreenTarget target(device(), {kWidth, kHeight});
     device().submitAndWait([&](VkCommandBuffer cmd) {
       target.begin(cmd, kBackground);
       renderer.record(cmd, camera, glm::dvec3(0.0), nodes, payloads.pages(), uint32_t(frame % 2));

@@ -44,7 +44,7 @@ TEST_F(VertexPositionsTest, ReprojectedDrawMatchesStoredPositions) {
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
     const Camera camera = cameraAt(c.pose);
-    vk::ReadbackImage images[2];
+    ReadbackImage images[2];
     for (int variant = 0; variant < 2; ++variant) {
       TerrainSettings settings;
       settings.gridCells = 16;
@@ -85,7 +85,7 @@ TEST_F(VertexPositionsTest, PagedPayloadsDrawTheSameImage) {
   const uint32_t w = kWidth, h = kHeight;
   HeadlessRenderer renderer(device(), {w, h});
   const Camera camera = cameraAt(standardCameraPose(3));
-  vk::ReadbackImage images[2];
+  ReadbackImage images[2];
   FrameStats stats[2];
   for (int variant = 0; variant < 2; ++variant) {
     TerrainSettings settings;

@@ -8,22 +8,22 @@
 // reads whole texels from it.
 #include "engine/vk/graphics_pipeline.h"
 
-namespace globe::vk {
+namespace globe {
 
 class FxaaPass {
  public:
-  FxaaPass(Device& device, VkExtent2D extent);
+  FxaaPass(vk::Device& device, VkExtent2D extent);
 
-  // Copies `scene` (kSceneColourFormat, `extent`, TRANSFER_SRC_OPTIMAL) into the pass's buffer and
+  // Copies `scene` (vk::kSceneColourFormat, `extent`, TRANSFER_SRC_OPTIMAL) into the pass's buffer and
   // makes it visible to fragment shaders. Outside a rendering pass.
-  void copy(VkCommandBuffer cmd, const Image& scene) const;
+  void copy(VkCommandBuffer cmd, const vk::Image& scene) const;
   // Records the filter into the current dynamic-rendering pass (colour only, viewport set).
   void record(VkCommandBuffer cmd) const;
 
  private:
   VkExtent2D extent_;
-  Buffer pixels_;  // the scene, one packed B8G8R8A8 texel per uint, rows top down
-  GraphicsPipeline pipeline_;
+  vk::Buffer pixels_;  // the scene, one packed B8G8R8A8 texel per uint, rows top down
+  vk::GraphicsPipeline pipeline_;
 };
 
-}  // namespace globe::vk
+}  // namespace globe

@@ -1,4 +1,4 @@
-#include "engine/vk/offscreen_target.h"
+#include "engine/render/offscreen_target.h"
 
 #include "shaders/include/display_encoding.h"
 
@@ -8,9 +8,9 @@
 
 #include <stdexcept>
 
-namespace globe::vk {
+namespace globe {
 
-Status checkImageExtent(const Device& device, VkExtent2D extent, const std::string& field) {
+Status checkImageExtent(const vk::Device& device, VkExtent2D extent, const std::string& field) {
   const uint32_t limit = device.properties().limits.maxImageDimension2D;
   if (extent.width <= limit && extent.height <= limit) return Ok{};
   return Error::inField(field, std::to_string(extent.width) + "x" + std::to_string(extent.height) + " is larger than " +
@@ -18,7 +18,7 @@ Status checkImageExtent(const Device& device, VkExtent2D extent, const std::stri
 }
 
 namespace {
-VkExtent2D checkedExtent(const Device& device, VkExtent2D extent) {
+VkExtent2D checkedExtent(const vk::Device& device, VkExtent2D extent) {
   if (auto s = checkImageExtent(device, extent, "image size"); !s) throw std::runtime_error(s.error().format());
   return extent;
 }
@@ -45,7 +45,7 @@ void setWholeViewport(VkCommandBuffer cmd, VkExtent2D extent) {
 }
 }  // namespace
 
-OffscreenTarget::OffscreenTarget(Device& device, VkExtent2D extent, Antialiasing antialiasing)
+OffscreenTarget::OffscreenTarget(vk::Device& device, VkExtent2D extent, Antialiasing antialiasing)
     : device_(device),
       colour_(device, kColourFormat, checkedExtent(device, extent),
               VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT,
@@ -55,30 +55,30 @@ OffscreenTarget::OffscreenTarget(Device& device, VkExtent2D extent, Antialiasing
              "offscreen depth"),
       antialiasing_(antialiasing),
       colourReadback_(device, VkDeviceSize(extent.width) * extent.height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                      MemoryUse::HostVisible, "colour readback"),
+                      vk::MemoryUse::HostVisible, "colour readback"),
       depthReadback_(device, VkDeviceSize(extent.width) * extent.height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                     MemoryUse::HostVisible, "depth readback") {
+                     vk::MemoryUse::HostVisible, "depth readback") {
   if (antialiasing_ == Antialiasing::kFxaa) {
     fxaaInput_ =
-        Image(device, kColourFormat, extent, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-              VK_IMAGE_ASPECT_COLOR_BIT, "offscreen colour (before FXAA)");
+        vk::Image(device, kColourFormat, extent, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                  VK_IMAGE_ASPECT_COLOR_BIT, "offscreen colour (before FXAA)");
     fxaa_ = std::make_unique<FxaaPass>(device, extent);
   }
   if (antialiasing_ != Antialiasing::kMsaa4) return;
   // Transient: only the resolved images outlive the pass.
-  multisampledColour_ = Image(device, kColourFormat, extent,
-                              VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
-                              VK_IMAGE_ASPECT_COLOR_BIT, "offscreen colour (multisampled)", samples());
-  multisampledDepth_ = Image(device, kDepthFormat, extent,
-                             VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
-                             VK_IMAGE_ASPECT_DEPTH_BIT, "offscreen depth (multisampled)", samples());
+  multisampledColour_ = vk::Image(device, kColourFormat, extent,
+                                  VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
+                                  VK_IMAGE_ASPECT_COLOR_BIT, "offscreen colour (multisampled)", samples());
+  multisampledDepth_ = vk::Image(device, kDepthFormat, extent,
+                                 VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
+                                 VK_IMAGE_ASPECT_DEPTH_BIT, "offscreen depth (multisampled)", samples());
 }
 
 void OffscreenTarget::begin(VkCommandBuffer cmd, const float clear[4]) {
   VkImageLayout colourFrom = initialised_ ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED;
-  transitionImage(cmd, colour_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, colourFrom,
-                  VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
-  transitionImage(
+  vk::transitionImage(cmd, colour_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, colourFrom,
+                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+  vk::transitionImage(
       cmd, depth_.handle(), VK_IMAGE_ASPECT_DEPTH_BIT,
       colourFrom == VK_IMAGE_LAYOUT_UNDEFINED ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
       VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
@@ -98,8 +98,8 @@ void OffscreenTarget::begin(VkCommandBuffer cmd, const float clear[4]) {
   depth.clearValue.depthStencil = {0.0f, 0};  // reversed-Z: far is 0
   if (antialiasing_ == Antialiasing::kMsaa4) drawMultisampled(cmd, colour, depth);
   if (fxaa_) {
-    transitionImage(cmd, fxaaInput_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+    vk::transitionImage(cmd, fxaaInput_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                        VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
     colour.imageView = fxaaInput_.view();
   }
   VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
@@ -115,10 +115,10 @@ void OffscreenTarget::begin(VkCommandBuffer cmd, const float clear[4]) {
 void OffscreenTarget::drawMultisampled(VkCommandBuffer cmd, VkRenderingAttachmentInfo& colour,
                                        VkRenderingAttachmentInfo& depth) {
   // Cleared every frame: the previous contents are not needed.
-  transitionImage(cmd, multisampledColour_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                  VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
-  transitionImage(cmd, multisampledDepth_.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                  VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+  vk::transitionImage(cmd, multisampledColour_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+  vk::transitionImage(cmd, multisampledDepth_.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                      VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
   for (auto [attachment, image, mode] : {std::tuple{&colour, &multisampledColour_, VK_RESOLVE_MODE_AVERAGE_BIT},
                                          std::tuple{&depth, &multisampledDepth_, VK_RESOLVE_MODE_SAMPLE_ZERO_BIT}}) {
     attachment->resolveMode = mode;  // SAMPLE_ZERO: the depth resolve every device supports
@@ -130,8 +130,8 @@ void OffscreenTarget::drawMultisampled(VkCommandBuffer cmd, VkRenderingAttachmen
 }
 
 void OffscreenTarget::filter(VkCommandBuffer cmd) {
-  transitionImage(cmd, fxaaInput_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+  vk::transitionImage(cmd, fxaaInput_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                      VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
   fxaa_->copy(cmd, fxaaInput_);
   VkRenderingAttachmentInfo colour{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
   colour.imageView = colour_.view();
@@ -152,10 +152,10 @@ void OffscreenTarget::filter(VkCommandBuffer cmd) {
 void OffscreenTarget::end(VkCommandBuffer cmd) {
   vkCmdEndRendering(cmd);
   if (fxaa_) filter(cmd);
-  transitionImage(cmd, colour_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
-  transitionImage(cmd, depth_.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-                  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+  vk::transitionImage(cmd, colour_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                      VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+  vk::transitionImage(cmd, depth_.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                      VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
 }
 
 ReadbackImage OffscreenTarget::readback() {
@@ -169,7 +169,7 @@ ReadbackImage OffscreenTarget::readback() {
     region.imageSubresource.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
     vkCmdCopyImageToBuffer(cmd, depth_.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, depthReadback_.handle(), 1,
                            &region);
-    hostReadBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+    vk::hostReadBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
   });
   ReadbackImage out;
   out.width = e.width;
@@ -191,4 +191,4 @@ ReadbackImage OffscreenTarget::readback() {
   return out;
 }
 
-}  // namespace globe::vk
+}  // namespace globe

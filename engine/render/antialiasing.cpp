@@ -1,6 +1,6 @@
-#include "engine/vk/antialiasing.h"
+#include "engine/render/antialiasing.h"
 
-namespace globe::vk {
+namespace globe {
 
 Result<Antialiasing> parseAntialiasing(const std::string& text, const std::string& field) {
   for (Antialiasing aa : {Antialiasing::kNone, Antialiasing::kFxaa, Antialiasing::kMsaa4})
@@ -24,4 +24,4 @@ VkSampleCountFlagBits sampleCount(Antialiasing aa) {
   return aa == Antialiasing::kMsaa4 ? VK_SAMPLE_COUNT_4_BIT : VK_SAMPLE_COUNT_1_BIT;
 }
 
-}  // namespace globe::vk
+}  // namespace globe

@@ -8,7 +8,7 @@
 
 #include <string>
 
-namespace globe::vk {
+namespace globe {
 
 enum class Antialiasing { kNone, kFxaa, kMsaa4 };
 
@@ -18,4 +18,4 @@ const char* antialiasingName(Antialiasing aa);
 // Samples per pixel of the colour and depth attachments and of every pipeline drawing into them.
 VkSampleCountFlagBits sampleCount(Antialiasing aa);
 
-}  // namespace globe::vk
+}  // namespace globe

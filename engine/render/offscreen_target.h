@@ -1,12 +1,12 @@
 #pragma once
-// An offscreen render target: display-encoded 8-bit colour (kSceneColourFormat) and a 32-bit float
+// An offscreen render target: display-encoded 8-bit colour (vk::kSceneColourFormat) and a 32-bit float
 // depth buffer (reversed-Z: 1 is near, 0 is infinitely far), with readback to linear floats.
 // Anti-aliased (antialiasing.h): with MSAA x4 the pass draws into multisampled colour and depth images
 // and resolves them at its end into the one-sample images that are read back or copied: colour
 // averaged, depth from sample 0 (at the standard location, not the pixel centre). With FXAA it draws
 // into an intermediate colour image that end() filters into the colour image; depth as without.
-#include "engine/vk/antialiasing.h"
-#include "engine/vk/fxaa_pass.h"
+#include "engine/render/antialiasing.h"
+#include "engine/render/fxaa_pass.h"
 #include "engine/vk/graphics_pipeline.h"
 #include "engine/vk/resources.h"
 #include "planet/core/error.h"
@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-namespace globe::vk {
+namespace globe {
 
 // What a frame looks like on the CPU after readback.
 struct ReadbackImage {
@@ -31,21 +31,21 @@ struct ReadbackImage {
 // The device can make 2D images this large (VkPhysicalDeviceLimits::maxImageDimension2D); the
 // one-line Error names `field` (the command's --size) and the limit. Checked before anything is
 // allocated: the OffscreenTarget constructor throws it as std::runtime_error.
-Status checkImageExtent(const Device& device, VkExtent2D extent, const std::string& field);
+Status checkImageExtent(const vk::Device& device, VkExtent2D extent, const std::string& field);
 
 class OffscreenTarget {
  public:
-  static constexpr VkFormat kColourFormat = kSceneColourFormat;
+  static constexpr VkFormat kColourFormat = vk::kSceneColourFormat;
   static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
-  OffscreenTarget(Device& device, VkExtent2D extent, Antialiasing antialiasing = Antialiasing::kNone);
+  OffscreenTarget(vk::Device& device, VkExtent2D extent, Antialiasing antialiasing = Antialiasing::kNone);
 
   VkExtent2D extent() const { return colour_.extent(); }
   // Samples per pixel of the pass: every pipeline drawing into it must have as many.
   VkSampleCountFlagBits samples() const { return sampleCount(antialiasing_); }
   Antialiasing antialiasing() const { return antialiasing_; }
-  const Image& colour() const { return colour_; }
-  const Image& depth() const { return depth_; }
+  const vk::Image& colour() const { return colour_; }
+  const vk::Image& depth() const { return depth_; }
 
   // Layout expected by begin(): images are kept in attachment layouts between frames.
   // Records vkCmdBeginRendering with clear colour `clear` (linear RGBA) and depth 0 (reversed-Z).
@@ -61,17 +61,17 @@ class OffscreenTarget {
   // FXAA: the second pass, fxaaInput_ into colour_.
   void filter(VkCommandBuffer cmd);
 
-  Device& device_;
-  Image colour_;
-  Image depth_;
+  vk::Device& device_;
+  vk::Image colour_;
+  vk::Image depth_;
   Antialiasing antialiasing_;
-  Image multisampledColour_;  // MSAA only: what the pass draws into
-  Image multisampledDepth_;
-  Image fxaaInput_;  // FXAA only: what the pass draws into, then end() filters into colour_
+  vk::Image multisampledColour_;  // MSAA only: what the pass draws into
+  vk::Image multisampledDepth_;
+  vk::Image fxaaInput_;  // FXAA only: what the pass draws into, then end() filters into colour_
   std::unique_ptr<FxaaPass> fxaa_;
-  Buffer colourReadback_;
-  Buffer depthReadback_;
+  vk::Buffer colourReadback_;
+  vk::Buffer depthReadback_;
   bool initialised_ = false;
 };
 
-}  // namespace globe::vk
+}  // namespace globe
