@@ -117,10 +117,8 @@ Result<BenchInputs> checkBenchInputs(const BenchOptions& o) {
   if (frames > kMaxBenchFrames)
     return Error::inField("--rate", fmt::format("{:g} s of path at {:g} Hz is {} frames, more than the limit of {}",
                                                 path->duration_s(), o.rate_hz, frames, kMaxBenchFrames));
-  auto settings = terrainSettingsFromOptions(o.quality, *planet, size->height);
+  auto settings = renderSettingsFromOptions(o.quality, o.budget, *planet, *size);
   if (!settings) return settings.error();
-  if (auto s = checkImageMemory(*size, settings->antialiasing, false); !s) return s.error();
-  if (auto s = applyBudgetOptions(o.budget, *settings); !s) return s.error();
   if (auto s = checkOutputDirectory(o.out, "--out"); !s) return s.error();
   return BenchInputs{std::move(baseline), std::move(*planet), std::move(*path), *size, std::move(*keyTimes), frames,
                      std::move(*settings)};

@@ -73,11 +73,9 @@ Result<MovieSettings> movieSettings(const MovieOptions& o, const PlanetDescripti
                                        : fmt::format("must be within [1, {}], got {}", kMaxSequenceFrameRate, o.fps));
   s.fps = o.fps;
   s.out = o.out;
-  auto terrain = terrainSettingsFromOptions(o.quality, planet, s.height);
+  auto terrain = renderSettingsFromOptions(o.quality, o.budget, planet, *size, s.format == MovieFormat::mp4);
   if (!terrain) return terrain.error();
-  if (auto st = checkImageMemory(*size, terrain->antialiasing, s.format == MovieFormat::mp4); !st) return st.error();
   s.terrain = *terrain;
-  if (auto st = applyBudgetOptions(o.budget, s.terrain); !st) return st.error();
   s.description = fmt::format("path={} planet={} size={}x{} fps={} format={} quality={}{}", o.path, o.planet, s.width,
                               s.height, s.fps, o.format, o.quality.quality.empty() ? "default" : o.quality.quality,
                               o.quality.tolerance_px > 0 ? fmt::format(" tolerance={}", o.quality.tolerance_px) : "");

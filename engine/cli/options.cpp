@@ -234,6 +234,15 @@ Result<TerrainSettings> terrainSettingsFromOptions(const QualityOptions& options
   return settings;
 }
 
+Result<TerrainSettings> renderSettingsFromOptions(const QualityOptions& quality, const BudgetOptions& budget,
+                                                  const PlanetDescription& planet, ImageSize size, bool mp4) {
+  auto settings = terrainSettingsFromOptions(quality, planet, size.height);
+  if (!settings) return settings.error();
+  if (auto s = checkImageMemory(size, settings->antialiasing, mp4); !s) return s.error();
+  if (auto s = applyBudgetOptions(budget, *settings); !s) return s.error();
+  return settings;
+}
+
 void addHeightReferenceOption(CLI::App& cmd, std::string& heightRef) {
   cmd.add_option("--height-ref", heightRef,
                  "What --at's HEIGHT is measured from: ground (the terrain below the camera), or sphere / "

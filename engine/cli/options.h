@@ -112,6 +112,13 @@ Error budgetOptionError(Error error);
 Result<TerrainSettings> terrainSettingsFromOptions(const QualityOptions& options, const PlanetDescription& planet,
                                                    double viewHeight_px);
 
+// What a rendering command's options (render, view, bench, movie) make of the planet's terrain:
+// terrainSettingsFromOptions for an image of `size`, its memory with the chosen anti-aliasing
+// checked (checkImageMemory; `mp4`: with an MP4 encoder's frames), then the budgets applied
+// (applyBudgetOptions). Errors name the options.
+Result<TerrainSettings> renderSettingsFromOptions(const QualityOptions& quality, const BudgetOptions& budget,
+                                                  const PlanetDescription& planet, ImageSize size, bool mp4 = false);
+
 // --sun AZIMUTH,ELEVATION (degrees, where the camera starts): empty keeps the default sun.
 void addSunOption(CLI::App& cmd, std::string& sun);
 // The sun direction for a camera at `position_m`: --sun's angles there, else `fallback`'s (a camera

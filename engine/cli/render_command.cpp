@@ -97,10 +97,8 @@ int runRender(const RenderOptions& o) {
   if (auto s = checkImageExtension(o.out, "--out"); !s) return usageError(s.error());
   auto planet = loadPlanetFile(o.planet);
   if (!planet) return usageError(planet.error());
-  auto settings = terrainSettingsFromOptions(o.quality, *planet, size->height);
+  auto settings = renderSettingsFromOptions(o.quality, o.budget, *planet, *size);
   if (!settings) return usageError(settings.error());
-  if (auto s = checkImageMemory(*size, settings->antialiasing, false); !s) return usageError(s.error());
-  if (auto s = applyBudgetOptions(o.budget, *settings); !s) return usageError(s.error());
 
   ElevationModel model(*planet);
   double aspect = double(size->width) / double(size->height);

@@ -111,9 +111,8 @@ Status checkSceneOptions(const ViewCommandOptions& o, const GeodeticPose& pose, 
   scene.planetPath = o.planet;
   scene.planet = std::move(planet.planet);
   scene.watch = !o.noReload;
-  auto terrain = terrainSettingsFromOptions(o.quality, scene.planet, size.height);
+  auto terrain = renderSettingsFromOptions(o.quality, o.budget, scene.planet, size);
   if (!terrain) return terrain.error();
-  if (auto s = applyBudgetOptions(o.budget, *terrain); !s) return s.error();
   scene.terrain = *terrain;
   // The sun of `globe render` at the starting point (about 45 degrees up): the first view is lit,
   // and a viewer screenshot matches a render of the same pose.
