@@ -1,7 +1,7 @@
 #pragma once
 // Surface colour of a planet by elevation and slope: the `[[colour_ramp]]`, `[rock]` and `[snow]`
 // parts of a planet file (docs/planet-files.md). Plain data; packColourRamp turns it into the
-// fixed-size struct the shaders read (shaders/include/colour_ramp.h) and rampColour is the
+// fixed-size struct the shaders read (shaders/include/colour_ramp_layout.h) and rampColour is the
 // reference evaluation (used by `globe planet export --png` and mirrored by shaders).
 #include <string>
 #include <vector>
@@ -9,7 +9,7 @@
 #include <glm/vec3.hpp>
 
 #include "planet/core/error.h"
-#include "shaders/include/colour_ramp.h"
+#include "shaders/include/colour_ramp_layout.h"
 
 namespace globe {
 
@@ -69,7 +69,7 @@ void appendWaterErrors(const Water& water, std::vector<Error>& errors);
 // Packs a valid ramp (appendColourRampErrors adds nothing) into the shaders' struct.
 gpu::ColourRampParams packColourRamp(const ColourRamp& ramp);
 
-// The reference evaluation (see shaders/include/colour_ramp.h): linear RGB at elevation
+// The reference evaluation (see shaders/include/colour_ramp_layout.h): linear RGB at elevation
 // `elevation_m` (metres above radius_m) on ground whose normal makes cos_slope with the vertical.
 glm::vec3 rampColour(const gpu::ColourRampParams& ramp, double elevation_m, double cos_slope);
 

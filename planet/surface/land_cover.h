@@ -12,7 +12,7 @@
 #include <glm/vec3.hpp>
 
 #include "planet/core/error.h"
-#include "shaders/include/land_cover.h"
+#include "shaders/include/land_cover_layout.h"
 
 namespace globe {
 
@@ -91,7 +91,7 @@ struct ClimateSample {
 };
 ClimateSample climateAt(const gpu::LandCoverParams& params, const LandCoverSite& site);
 
-// The reference evaluation (see shaders/include/land_cover.h); requires class_count > 0.
+// The reference evaluation (see shaders/include/land_cover_layout.h); requires class_count > 0.
 LandCoverMasks landCoverMasks(const gpu::LandCoverParams& params, const LandCoverSite& site);
 
 // The albedo of a sample's masks: sum(mask_i / 255 * colour_i), linear RGB.

@@ -1,12 +1,12 @@
 // Terrain colour: the planet's colour ramp (a mirror of globe::rampColour, planet/elevation/colour_ramp.cpp,
-// see shaders/include/colour_ramp.h for the formula), evaluated per payload sample by the generation
+// see shaders/include/colour_ramp_layout.h for the formula), evaluated per payload sample by the generation
 // kernel (payload_generate.glsl).
 #ifndef GLOBE_COLOUR_RAMP_GLSL
 #define GLOBE_COLOUR_RAMP_GLSL
 
 #extension GL_EXT_control_flow_attributes : require
 
-#include "colour_ramp.h"
+#include "colour_ramp_layout.h"
 
 // GLOBE_RAMP names the ColourRampParams to read (the payload kernel's uniform block). Not a
 // parameter: passing the 320-byte struct by value copies it per call, which made lavapipe ~5x slower.

@@ -1,5 +1,5 @@
 // Land cover masks per payload sample: a mirror of globe::climateAt and globe::landCoverMasks
-// (planet/surface/land_cover.cpp), in float, see land_cover.h for the model. Used by the payload
+// (planet/surface/land_cover.cpp), in float, see land_cover_layout.h for the model. Used by the payload
 // kernel (payload_generate.glsl), which includes elevation.glsl with GLOBE_ELEVATION_FLOAT first
 // (for globeGradientNoiseFloat).
 // GLOBE_LAND_COVER names the LandCoverParams to read (the kernel's uniform block). No branch or loop
@@ -8,7 +8,7 @@
 #ifndef GLOBE_LAND_COVER_GLSL
 #define GLOBE_LAND_COVER_GLSL
 
-#include "land_cover.h"
+#include "land_cover_layout.h"
 
 #ifndef GLOBE_LAND_COVER
 #error "define GLOBE_LAND_COVER (a LandCoverParams l-value) before including land_cover.glsl"

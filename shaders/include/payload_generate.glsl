@@ -8,9 +8,9 @@
 // min/max vertex radius and its geometric error (the largest distance a vertex moves when the node morphs to its
 // parent's mesh); pass 3 (with a normal map, kNormalMapScale > 0) evaluates the map's grid in double and writes its
 // texels into the slot's layer of the surface textures (fillNormalMap, payload_layout.h). Mirrors planet/streaming/payload_reference.cpp operation for operation (the double kernel).
-#include "colour_ramp.h"
+#include "colour_ramp_layout.h"
 #include "elevation_params.h"
-#include "land_cover.h"
+#include "land_cover_layout.h"
 #include "face_mapping.glsl"
 #include "payload_layout.h"
 
@@ -401,7 +401,7 @@ double meshNormals(PayloadJob job, uint slotBase, uint scratchBase) {
     precise dvec3 dv = scratch[at + uint(s)].xyz - scratch[at - uint(s)].xyz;
     precise dvec3 c = dvec3(du.y * dv.z - du.z * dv.y, du.z * dv.x - du.x * dv.z, du.x * dv.y - du.y * dv.x);
     dvec3 normal = normalised(c);
-    // Slope against the vertical, as the ramp defines it (colour_ramp.h): radial on a sphere; on an
+    // Slope against the vertical, as the ramp defines it (colour_ramp_layout.h): radial on a sphere; on an
     // ellipsoid (a specialization constant) its gradient at the point, the geodetic normal to ~h f / a.
     dvec3 up = kGlobeEllipsoid != 0u ? globeEllipsoidGradient(scratch[at].xyz) : normalised(scratch[at].xyz);
     double cosSlope = clamp(dot(normal, up), 0.0lf, 1.0lf);

@@ -61,7 +61,7 @@
 // are sharp in colour too, and the water fragments mix the vectors over the sea by that coverage
 // (imagery lies under the sea, vectors over it).
 // After the mesh, [cover offset, + (S*S + 1) / 2) the land cover masks, one uvec2 per sample
-// (index as the mesh's): 8 bytes, class i in byte i % 4 of word i / 4, summing to 255 (land_cover.h).
+// (index as the mesh's): 8 bytes, class i in byte i % 4 of word i / 4, summing to 255 (land_cover_layout.h).
 // Ring samples hold the masks of their nearest vertex, like its normal. Without land cover
 // (GLOBE_PAYLOAD_SPEC_LAND_COVER 0) the region is left unwritten and nothing reads it.
 // Quantum: positions and node centres are multiples of q(level) = 2^(ceil(log2(node width)) - 18)
@@ -111,7 +111,7 @@ struct uvec4_ {
 #define GLOBE_SURFACE_TEXTURE_PARENT_SIDE(mapCells) ((mapCells) / 2u + 2u)
 // Texel widths of height above sea level that span the coast field's [-1, 1] (w of the surface texture).
 #define GLOBE_SURFACE_COAST_SCALE 0.1
-// Land cover masks of a slot: one uvec2 per sample (two RGBA8 words, land_cover.h), in vec4 entries;
+// Land cover masks of a slot: one uvec2 per sample (two RGBA8 words, land_cover_layout.h), in vec4 entries;
 // they follow the mesh, from vec4 GLOBE_PAYLOAD_COVER_OFFSET on.
 #define GLOBE_PAYLOAD_COVER_VEC4(cells) \
   ((GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells) * GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells) + 1u) / 2u)
@@ -145,7 +145,7 @@ struct uvec4_ {
 #define GLOBE_PAYLOAD_SURFACE_BINDING 10
 #define GLOBE_PAYLOAD_PARENT_SURFACE_BINDING 11
 #define GLOBE_PAYLOAD_SPEC_NORMAL_MAP_SCALE 27
-// Specialization constant: 1 = the planet has land cover (land_cover.h): the samples' albedo is the
+// Specialization constant: 1 = the planet has land cover (land_cover_layout.h): the samples' albedo is the
 // masks' blend of the class colours and the masks are written; 0 = the colour ramp, no masks.
 #define GLOBE_PAYLOAD_SPEC_LAND_COVER 28
 // Specialization constant: 1 = the planet has imagery: each job's overlay colours

@@ -1,5 +1,5 @@
 // Land cover of a planet: up to 8 classes blended by masks, from a procedural climate. Shared by C++
-// (planet/surface/land_cover.h) and GLSL (land_cover.glsl), like colour_ramp.h: C++ sees namespace
+// (planet/surface/land_cover.h) and GLSL (land_cover.glsl), like colour_ramp_layout.h: C++ sees namespace
 // globe::gpu, GLSL plain structs; 32-bit scalars only, every struct a multiple of 16 bytes, so the
 // layout is the same under std140 and std430. globe::landCoverMasks (planet/surface/land_cover.cpp)
 // is the reference evaluation the shader mirrors:
