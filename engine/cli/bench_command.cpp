@@ -1,10 +1,9 @@
 // globe bench: deterministic replay of a camera path, headless, with per-frame metrics, key-frame
 // images and a report (docs/benchmark.md).
 #include "commands.h"
-#include "engine/io/image_io.h"
+#include "engine/measure/bench_flight.h"
 #include "engine/render/headless_renderer.h"
 #include "engine/render/quality.h"
-#include "engine/render/render_output.h"
 #include "engine/report/bench_baseline.h"
 #include "engine/report/bench_frame_spool.h"
 #include "engine/report/bench_metrics.h"
@@ -13,7 +12,6 @@
 #include "engine/vk/device.h"
 #include "globe_commit.h"
 #include "options.h"
-#include "planet/camera/camera_orientation.h"
 #include "planet/camera/camera_path_file.h"
 #include "planet/elevation/planet_file.h"
 #include "planet/sources/source_mosaic.h"
@@ -53,23 +51,6 @@ struct BenchOptions {
   std::string sun;        // --sun AZIMUTH,ELEVATION at the path's first keyframe; empty: the default sun
   int sourceRam_MiB = 0;  // RAM budget of elevation source tiles; 0 = kDefaultSourceRamBudget
 };
-
-GenerationLatency generationLatency(const PayloadPool& pool) {
-  GenerationLatency latency;
-  for (uint64_t count : pool.latencyHistogram()) latency.requests += count;
-  if (latency.requests == 0) return latency;
-  latency.p50_frames = pool.latencyPercentile(0.50);
-  latency.p95_frames = pool.latencyPercentile(0.95);
-  latency.p99_frames = pool.latencyPercentile(0.99);
-  return latency;
-}
-
-// Horizontal speed between two camera positions `dt_s` apart (metres per second), across the
-// local vertical `up` (unit; the ellipsoid's normal below the camera).
-double groundSpeed_mps(const glm::dvec3& from_m, const glm::dvec3& to_m, const glm::dvec3& up, double dt_s) {
-  const glm::dvec3 step = to_m - from_m;
-  return glm::length(step - glm::dot(step, up) * up) / dt_s;
-}
 
 Result<std::vector<double>> parseTimes(const std::string& text, const std::string& field) {
   std::vector<double> times;
@@ -124,61 +105,18 @@ Result<BenchInputs> checkBenchInputs(const BenchOptions& o) {
                      std::move(*settings)};
 }
 
-// What the flight produced besides its rows (spooled to disk, so memory does not grow with the
-// frame count): the key frames' PNGs (kept in memory and written with the report at the end, so an
-// interrupted run never leaves new key frames beside an earlier run's csv/json/html), frame 0's
-// statistics and when it was drawn (process start -> frame 0, with the warm-up).
-struct BenchFlight {
-  std::vector<BenchKeyFrame> keys;
-  FrameStats firstFrame;
-  double firstFrame_ms = 0;
-};
-
-// The key frames due at frame `k` (the frame nearest to each key time; times outside the path are
-// skipped), read back and encoded.
-Status keepKeyFrames(const BenchInputs& in, double rate_hz, uint64_t k, HeadlessRenderer& renderer,
-                     const Camera& camera, std::vector<BenchKeyFrame>& keys) {
-  for (double kt : in.keyTimes) {
-    if (kt < in.path.startTime_s() || kt > in.path.endTime_s()) continue;
-    if (std::llround((kt - in.path.startTime_s()) * rate_hz) != int64_t(k)) continue;
-    char name[64];
-    std::snprintf(name, sizeof(name), "keyframe_%05.2fs.png", kt);
-    Result<std::string> png = encodePng(toImage(renderer.readback(), camera));
-    if (!png) return png.error();
-    keys.push_back({kt, name, std::move(*png)});
-  }
-  return Ok{};
-}
-
+// The flight, with a progress bar and the terrain's warnings as they come, and when frame 0 was
+// drawn (process start -> frame 0, with the warm-up).
 Result<BenchFlight> flyPath(const BenchOptions& o, const BenchInputs& in, const ElevationModel& model, Terrain& terrain,
-                            HeadlessRenderer& renderer, BenchFrameSpool& rows) {
-  const double aspect = double(in.size.width) / double(in.size.height);
-  // Heights are above the drawn mesh, like `globe render --at` and the viewer (never under it).
-  GroundRadiusFn ground = [&](const glm::dvec3& d) { return terrain.cameraGroundRadius(d); };
-  const bool converge = o.mode == "converged";
-  BenchFlight flight;
-  glm::dvec3 previousPosition_m(0.0);
+                            HeadlessRenderer& renderer, BenchFrameSpool& rows, double& firstFrame_ms) {
   ProgressBar progress("bench " + std::filesystem::path(o.path).filename().string());
   TerrainWarnings warnings;
-  for (uint64_t k = 0; k < in.frames; ++k) {
-    double t = in.path.startTime_s() + double(k) / o.rate_hz;
-    Camera camera = in.path.cameraAt(t, model.radius_m(), aspect, ground, model.shape());
-    FrameStats stats = renderer.renderFrame(terrain, camera, converge);
+  const BenchFlightPlan plan{&in.path, in.frames, o.rate_hz, in.keyTimes, o.mode == "converged"};
+  return flyBenchPath(plan, model, terrain, renderer, rows, [&](uint64_t k) {
+    if (k == 0) firstFrame_ms = millisecondsSinceProcessStart();
     printNewWarnings(warnings, terrain);
-    const glm::dvec3 below =
-        model.shape().isSphere() ? glm::normalize(camera.position_m) : model.shape().normalBelow(camera.position_m);
-    const double altitude = poseFromCamera(camera, ground(below), model.shape()).height_m;
-    const double speed = k > 0 ? groundSpeed_mps(previousPosition_m, camera.position_m, below, 1.0 / o.rate_hz) : 0.0;
-    previousPosition_m = camera.position_m;
-    if (auto s = rows.append({k, t, altitude, speed, stats}); !s) return s.error();
-    if (k == 0) {
-      flight.firstFrame = stats;
-      flight.firstFrame_ms = millisecondsSinceProcessStart();
-    }
-    if (auto s = keepKeyFrames(in, o.rate_hz, k, renderer, camera, flight.keys); !s) return s.error();
     progress.update(double(k + 1) / double(in.frames));
-  }
-  return flight;
+  });
 }
 
 BenchRunInfo runInfo(const BenchOptions& o, const vk::Device& device, const TerrainSettings& settings) {
@@ -213,13 +151,13 @@ Result<glm::dvec3> flightSun(const BenchOptions& o, const BenchInputs& in, const
 }
 
 // The cold start, and where it went: device, terrain pipelines and buffers, warm-up, frame 0.
-void printColdStart(const BenchFlight& flight, const Terrain& terrain, double deviceReady_ms,
+void printColdStart(const BenchFlight& flight, double firstFrame_ms, const Terrain& terrain, double deviceReady_ms,
                     double pipelinesReady_ms) {
   const FrameStats& first = flight.firstFrame;
   std::printf(
       "first frame %.0f ms after process start: device %.0f ms, terrain set-up %.0f ms, frame 0 %.0f ms "
       "(of which warm-up %.0f ms in %u rounds; %u nodes drawn)\n",
-      flight.firstFrame_ms, deviceReady_ms, pipelinesReady_ms - deviceReady_ms, first.frame_ms, terrain.primeWall_ms(),
+      firstFrame_ms, deviceReady_ms, pipelinesReady_ms - deviceReady_ms, first.frame_ms, terrain.primeWall_ms(),
       terrain.primedRounds(), first.nodes_selected);
 }
 
@@ -251,8 +189,9 @@ int runBench(const BenchOptions& o) {
 
   BenchFrameSpool spool;
   const Status spoolOpened = spool.open(o.out);
-  auto flight =
-      spoolOpened ? flyPath(o, *in, model, **terrain, renderer, spool) : Result<BenchFlight>(spoolOpened.error());
+  double firstFrame_ms = 0.0;
+  auto flight = spoolOpened ? flyPath(o, *in, model, **terrain, renderer, spool, firstFrame_ms)
+                            : Result<BenchFlight>(spoolOpened.error());
   if (!flight) {
     printError(flight.error().format());
     return kExitFailure;
@@ -273,7 +212,7 @@ int runBench(const BenchOptions& o) {
     return kExitFailure;
   }
   if (int code = validationExitCode(device); code != kExitOk) return code;
-  printColdStart(*flight, **terrain, deviceReady_ms, pipelinesReady_ms);
+  printColdStart(*flight, firstFrame_ms, **terrain, deviceReady_ms, pipelinesReady_ms);
   if (const SourceMosaic* sources = model.sources())
     std::printf("%s\n", sourceStreamingSummary(*sources, (*terrain)->generator().sourceLatencies_s()).c_str());
   if (const SurfaceOverlay* overlay = model.overlay())
