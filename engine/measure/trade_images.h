@@ -4,20 +4,23 @@
 // mean colours (engine/report/image_compare.h), beside the geometric screen error.
 #include "engine/io/image_io.h"
 #include "engine/render/headless_renderer.h"
+#include "engine/render/terrain.h"
 #include "engine/report/trade_report.h"
-#include "planet/elevation/planet_description.h"
 
+#include <functional>
 #include <vector>
 
-namespace globe::cli {
+namespace globe {
 
-// The `exact` preset's converged image at each camera, lit by the sun `globe trade` gives each
-// camera (defaultSunDirection). Errors: the planet's settings for `exact` (none for a valid planet).
+// The converged image of `exact` (the `exact` preset's settings for this planet and image) at each
+// camera, lit by the sun `globe trade` gives each camera (defaultSunDirection). `progress`: the
+// fraction done, after each camera.
 Result<std::vector<ImageRgba>> renderExactReferences(vk::Device& device, HeadlessRenderer& renderer,
-                                                     const ElevationModel& model, const PlanetDescription& planet,
-                                                     const std::vector<Camera>& cameras, double viewHeight_px);
+                                                     const ElevationModel& model, TerrainSettings exact,
+                                                     const std::vector<Camera>& cameras,
+                                                     const std::function<void(double)>& progress);
 
 // Fills row.imageSsim and row.imageColourDe from the picture and its camera's reference.
 void compareWithReference(TradeRow& row, const ImageRgba& image, const ImageRgba& reference);
 
-}  // namespace globe::cli
+}  // namespace globe
