@@ -16,6 +16,6 @@ struct TradeConfig {
 
 // `base`: the baseline's settings, named `baseName`. Configurations with the same knobs appear once.
 std::vector<TradeConfig> tradeConfigs(const TerrainSettings& base, const std::string& baseName, bool quick,
-                                      bool lodSweep);
+                                      bool lodSweepOnly);
 
 }  // namespace globe
