@@ -208,26 +208,37 @@ glm::vec3 payloadSampleAlbedo(const ElevationModel& model, const glm::dvec3& dir
   return landCoverAlbedo(model.landCover(), masks);
 }
 
-RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
-                                 std::span<glm::vec4> slot, bool waterSurface) {
-  const bool sea = waterSurface && model.drawsWater();
-  const int n = int(cells);
-  const int s = n + 3;
-  // Slots for meshes only (collision, tests) may end before the land cover masks, which are then not written.
-  assert(slot.size() >= size_t(GLOBE_PAYLOAD_COVER_OFFSET(cells)));
+namespace {
+
+// The mesh samples of a job with their one-sample ring (i, j in [-1, cells + 1]): drawn positions,
+// hole masks, drawn elevations and the land cover's first layers, row-major.
+struct SampleGrid {
+  int n = 0, side = 0;
+  std::vector<glm::dvec3> positions;
+  std::vector<double> holes, elevations, firstLayers;
+  explicit SampleGrid(uint32_t cells) : n(int(cells)), side(int(cells) + 3) {
+    const size_t count = size_t(side) * size_t(side);
+    positions.resize(count);
+    holes.resize(count);
+    elevations.resize(count);
+    firstLayers.resize(count);
+  }
+  size_t at(int i, int j) const { return size_t(j + 1) * size_t(side) + size_t(i + 1); }
+};
+
+// Fills the grid and the slot's positions (quantised relative to the node centre) and heights; the
+// radii of the node's own samples (the ring excluded).
+RadiusRange samplePositions(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells, bool sea,
+                            SampleGrid& grid, std::span<glm::vec4> slot) {
   const glm::dvec3 centre{job.centre.x, job.centre.y, job.centre.z};
   const double q = job.centre.w;
-  std::vector<glm::dvec3> positions(size_t(s) * size_t(s));
-  std::vector<double> holes(size_t(s) * size_t(s));
-  std::vector<double> elevations(size_t(s) * size_t(s));
-  std::vector<double> firstLayers(size_t(s) * size_t(s));
   const bool cover = model.landCover().class_count > 0;
-  const bool writeCover = cover && slot.size() >= size_t(GLOBE_PAYLOAD_SLOT_VEC4(cells));
   RadiusRange range{std::numeric_limits<double>::infinity(), 0.0};
   const double spacing_m = payloadSampleSpacing_m(job, cells, model.radius_m());
+  const int n = grid.n;
   for (int j = -1; j <= n + 1; ++j) {
     for (int i = -1; i <= n + 1; ++i) {
-      size_t index = size_t(j + 1) * size_t(s) + size_t(i + 1);
+      const size_t index = grid.at(i, j);
       glm::dvec3 dir = payloadSampleDirection(job, cells, i, j);
       // = elevation_m and surfacePosition (at the job's source level), with the source term kept
       // for the hole mask.
@@ -235,10 +246,10 @@ RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::Payload
       double h = combineSourceTerm(model.proceduralElevation_m(dir), term);
       const double drawn = sea ? std::max(h, model.seaLevel_m()) : h;
       glm::dvec3 p = model.shape().position(dir, drawn);  // on a sphere dir * (radius + drawn)
-      positions[index] = p;
-      holes[index] = term.hole;
-      elevations[index] = drawn;
-      firstLayers[index] = cover ? model.firstLayer_m(dir) : 0.0;
+      grid.positions[index] = p;
+      grid.holes[index] = term.hole;
+      grid.elevations[index] = drawn;
+      grid.firstLayers[index] = cover ? model.firstLayer_m(dir) : 0.0;
       glm::dvec3 rel = p - centre;
       glm::dvec3 quantised{std::floor(rel.x / q + 0.5) * q, std::floor(rel.y / q + 0.5) * q,
                            std::floor(rel.z / q + 0.5) * q};
@@ -250,32 +261,53 @@ RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::Payload
       }
     }
   }
-  const size_t normals = size_t(s) * size_t(s);
+  return range;
+}
+
+// The slot's normals (central differences of the grid; the ring takes its nearest vertex's) with the
+// packed albedo and hole mask, and the land cover masks where the slot has room for them.
+void sampleNormalsAndSurface(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
+                             const SampleGrid& grid, std::span<glm::vec4> slot) {
+  const bool writeCover = model.landCover().class_count > 0 && slot.size() >= size_t(GLOBE_PAYLOAD_SLOT_VEC4(cells));
+  const size_t normals = size_t(grid.side) * size_t(grid.side);
+  const int n = grid.n;
   for (int j = -1; j <= n + 1; ++j) {
     for (int i = -1; i <= n + 1; ++i) {
       int vi = std::clamp(i, 0, n), vj = std::clamp(j, 0, n);  // ring: the nearest vertex's normal
-      auto at = [&](int a, int b) { return positions[size_t(b + 1) * size_t(s) + size_t(a + 1)]; };
+      auto at = [&](int a, int b) { return grid.positions[grid.at(a, b)]; };
       glm::dvec3 du = at(vi + 1, vj) - at(vi - 1, vj);
       glm::dvec3 dv = at(vi, vj + 1) - at(vi, vj - 1);
       glm::dvec3 c{du.y * dv.z - du.z * dv.y, du.z * dv.x - du.x * dv.z, du.x * dv.y - du.y * dv.x};
       glm::dvec3 nrm = normalised(c);
-      const size_t vertex = size_t(vj + 1) * size_t(s) + size_t(vi + 1);
+      const size_t vertex = grid.at(vi, vj);
       // The vertical: radial on a sphere; on an ellipsoid its gradient at the point (= the geodetic
       // normal to ~h f / a; the shader's globeEllipsoidGradient).
-      const glm::dvec3 up = model.shape().isSphere() ? normalised(positions[vertex])
-                                                     : ellipsoidGradientOf(model.params(), positions[vertex]);
+      const glm::dvec3 up = model.shape().isSphere() ? normalised(grid.positions[vertex])
+                                                     : ellipsoidGradientOf(model.params(), grid.positions[vertex]);
       const double cosSlope = std::clamp(glm::dot(nrm, up), 0.0, 1.0);
       LandCoverMasks masks;
       const glm::dvec3 dir = payloadSampleDirection(job, cells, vi, vj);
       const glm::vec3 albedo = overlaidAlbedo(
-          model.overlay(), payloadSampleAlbedo(model, dir, elevations[vertex], firstLayers[vertex], cosSlope, masks),
-          dir, payloadSampleSpacing_m(job, cells, model.radius_m()));
-      const size_t index = size_t(j + 1) * size_t(s) + size_t(i + 1);
+          model.overlay(),
+          payloadSampleAlbedo(model, dir, grid.elevations[vertex], grid.firstLayers[vertex], cosSlope, masks), dir,
+          payloadSampleSpacing_m(job, cells, model.radius_m()));
+      const size_t index = grid.at(i, j);
       if (writeCover) writeCoverMasks(slot, GLOBE_PAYLOAD_COVER_OFFSET(cells), index, masks);
       slot[normals + index] =
-          glm::vec4(float(nrm.x), float(nrm.y), float(nrm.z), packPayloadSurface(albedo, holes[index]));
+          glm::vec4(float(nrm.x), float(nrm.y), float(nrm.z), packPayloadSurface(albedo, grid.holes[index]));
     }
   }
+}
+
+}  // namespace
+
+RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
+                                 std::span<glm::vec4> slot, bool waterSurface) {
+  // Slots for meshes only (collision, tests) may end before the land cover masks, which are then not written.
+  assert(slot.size() >= size_t(GLOBE_PAYLOAD_COVER_OFFSET(cells)));
+  SampleGrid grid(cells);
+  const RadiusRange range = samplePositions(model, job, cells, waterSurface && model.drawsWater(), grid, slot);
+  sampleNormalsAndSurface(model, job, cells, grid, slot);
   return range;
 }
 
