@@ -83,34 +83,36 @@ GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationMode
   vkResetQueryPool(device.device(), queries_, 0, 2 * batchCount);
   timestampPeriod_ns_ = double(device.properties().limits.timestampPeriod);
 
-  size_t samples = size_t(cells + 3) * size_t(cells + 3);
-  // The scratch holds a job's double positions: the mesh samples, then (reused) the normal map's grids.
-  const size_t scratchPerJob = std::max(samples, size_t(GLOBE_SURFACE_EVALUATIONS(cells * normalMapScale)));
   batches_.resize(batchCount);
-  for (uint32_t b = 0; b < batchCount; ++b) {
-    Batch& batch = batches_[b];
-    batch.index = b;
-    batch.cmd = vk::allocateCommandBuffer(device.device(), commandPool_);
-    batch.fence = vk::createFence(device.device());
-    batch.jobs = vk::Buffer(device, maxJobs_ * sizeof(gpu::PayloadJob), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                            vk::MemoryUse::HostVisible, "payload jobs");
-    batch.results = vk::Buffer(device, maxJobs_ * sizeof(gpu::PayloadResult), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                               vk::MemoryUse::HostVisible, "payload results");
-    batch.scratch = vk::Buffer(device, VkDeviceSize(maxJobs_) * scratchPerJob * 32, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                               vk::MemoryUse::DeviceLocal, "payload scratch");
-    // A planet without sources binds a one-term buffer it never reads.
-    const VkDeviceSize termBytes = model.sources() != nullptr ? VkDeviceSize(maxJobs_) * samples * 32 : 32;
-    batch.sourceTerms = vk::Buffer(device, termBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::HostVisible,
-                                   "payload source terms");
-    // Likewise a planet without imagery binds one word it never reads.
-    const VkDeviceSize overlayBytes =
-        model.overlay() != nullptr ? VkDeviceSize(maxJobs_) * overlayWordsPerJob() * 4 : 4;
-    batch.overlay = vk::Buffer(device, overlayBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::HostVisible,
-                               "payload overlay colours");
-    batch.submitted.reserve(maxJobs_);
-  }
+  for (uint32_t b = 0; b < batchCount; ++b) batches_[b] = makeBatch(b);
   if (model.sources() != nullptr || model.overlay() != nullptr)
     preparer_ = std::make_unique<SourceRequestPreparer>(model, cells, waterSurface_, normalMapScale);
+}
+
+GpuPayloadGenerator::Batch GpuPayloadGenerator::makeBatch(uint32_t index) const {
+  const size_t samples = size_t(cells_ + 3) * size_t(cells_ + 3);
+  // The scratch holds a job's double positions: the mesh samples, then (reused) the normal map's grids.
+  const size_t scratchPerJob = std::max(samples, size_t(GLOBE_SURFACE_EVALUATIONS(cells_ * normalMapScale_)));
+  Batch batch;
+  batch.index = index;
+  batch.cmd = vk::allocateCommandBuffer(device_.device(), commandPool_);
+  batch.fence = vk::createFence(device_.device());
+  batch.jobs = vk::Buffer(device_, maxJobs_ * sizeof(gpu::PayloadJob), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                          vk::MemoryUse::HostVisible, "payload jobs");
+  batch.results = vk::Buffer(device_, maxJobs_ * sizeof(gpu::PayloadResult), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                             vk::MemoryUse::HostVisible, "payload results");
+  batch.scratch = vk::Buffer(device_, VkDeviceSize(maxJobs_) * scratchPerJob * 32, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                             vk::MemoryUse::DeviceLocal, "payload scratch");
+  // A planet without sources binds a one-term buffer it never reads.
+  const VkDeviceSize termBytes = model_.sources() != nullptr ? VkDeviceSize(maxJobs_) * samples * 32 : 32;
+  batch.sourceTerms = vk::Buffer(device_, termBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::HostVisible,
+                                 "payload source terms");
+  // Likewise a planet without an overlay binds one word it never reads.
+  const VkDeviceSize overlayBytes = model_.overlay() != nullptr ? VkDeviceSize(maxJobs_) * overlayWordsPerJob() * 4 : 4;
+  batch.overlay = vk::Buffer(device_, overlayBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::HostVisible,
+                             "payload overlay colours");
+  batch.submitted.reserve(maxJobs_);
+  return batch;
 }
 
 GpuPayloadGenerator::~GpuPayloadGenerator() {

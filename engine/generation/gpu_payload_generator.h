@@ -99,7 +99,7 @@ class GpuPayloadGenerator final : public PayloadGenerator {
     vk::Buffer results;
     vk::Buffer scratch;
     vk::Buffer sourceTerms;  // S * S dvec4 per job with sources (elevation_sources.glsl)
-    vk::Buffer overlay;      // GLOBE_PAYLOAD_OVERLAY_POINTS words per job on a planet with imagery
+    vk::Buffer overlay;      // GLOBE_PAYLOAD_OVERLAY_WORDS per job on a planet with an overlay
     std::vector<GenerationJob> submitted;
     // Per job: when its request was queued for the source I/O thread; max() = not read from sources.
     std::vector<std::chrono::steady_clock::time_point> sourceQueued;
@@ -107,6 +107,8 @@ class GpuPayloadGenerator final : public PayloadGenerator {
     bool busy = false;
     uint32_t index = 0;  // query slots 2*index, 2*index+1
   };
+  // Batch `index`'s command buffer, fence and buffers, sized for maxJobs_ jobs.
+  Batch makeBatch(uint32_t index) const;
   Batch& freeBatch();
   Batch* idleBatch();
   // Records and submits `requests` in batches; with mayWait false only while a batch is idle.
