@@ -46,4 +46,9 @@ std::string terrainFragmentShader(const TerrainShading& s);
 vk::GraphicsPipelineDesc terrainDesc(TargetFormat target, bool wireframe, VkCullModeFlags cull,
                                      VertexPositions positions, const TerrainShading& shading);
 
+// The sky behind the terrain (terrain_sky.vert/.frag): drawn where nothing else was (depth 0), with
+// `pushConstantBytes` of push constants; `fromSpace` is its specialization for a camera outside the
+// atmosphere.
+vk::GraphicsPipelineDesc skyDesc(TargetFormat target, uint32_t pushConstantBytes, bool fromSpace);
+
 }  // namespace globe

@@ -1,6 +1,6 @@
 #include "engine/render/terrain_renderer.h"
 
-#include <meshoptimizer.h>
+#include "engine/render/grid_indices.h"
 
 #include "engine/render/render_output.h"
 #include "engine/render/terrain_pipelines.h"
@@ -53,29 +53,6 @@ uint32_t drawGroup(const DrawNode& n, uint32_t range, bool detail) {
   return range + (n.partial ? 1u : 0u) + (n.water ? kWaterGroups : 0u) + (detail && range < 2 ? kDetailGroups : 0u);
 }
 
-// Triangles of an n x n grid (vertex i + j (n+1)), every cell split along (i, j)-(i+1, j+1).
-void appendGrid(uint32_t n, std::vector<uint32_t>& out) {
-  const uint32_t side = n + 1;
-  const size_t first = out.size();
-  for (uint32_t j = 0; j < n; ++j) {
-    for (uint32_t i = 0; i < n; ++i) {
-      const uint32_t v00 = j * side + i, v10 = v00 + 1, v01 = v00 + side, v11 = v01 + 1;
-      out.insert(out.end(), {v00, v10, v11, v00, v11, v01});
-    }
-  }
-  // Row-major order re-shades most vertices (a row is longer than a post-transform cache); meshopt
-  // reorders the triangles for cache reuse.
-  meshopt_optimizeVertexCache(&out[first], &out[first], out.size() - first, size_t(side) * side);
-}
-
-// The skirt strip of one node edge (terrain_vertex.glsl): top vertex (n+1)^2 + t is grid vertex t
-// along the edge, bottom vertex (n+1)^2 + (n+1) + t its flared copy.
-void appendSkirt(uint32_t n, std::vector<uint32_t>& out) {
-  const uint32_t top = (n + 1) * (n + 1), bottom = top + n + 1;
-  for (uint32_t t = 0; t < n; ++t)
-    out.insert(out.end(), {top + t, top + t + 1, bottom + t + 1, top + t, bottom + t + 1, bottom + t});
-}
-
 // Sort key of a drawn node for the skirt test below.
 std::pair<uint64_t, bool> drawnKey(const NodeId& id, bool partial) { return {id.key(), partial}; }
 
@@ -103,30 +80,8 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
       // surface and the hole's rim are seen from below through the hole too.
       // The reprojected positions (a measurement only) are drawn without the atmosphere.
       atmosphere_(positions == VertexPositions::kStored && style.aerialPerspective ? style.atmosphere : nullptr),
-      pendingOptional_(std::async(std::launch::async,
-                                  [&device, style, positions, target = TargetFormat{colourFormat, samples},
-                                   atmosphere = atmosphere_ != nullptr] {
-                                    OptionalPipelines made;
-                                    if (style.water.enabled) {
-                                      const TerrainShading water = surfaceShading(style, atmosphere, true);
-                                      made.water = std::make_unique<vk::GraphicsPipeline>(
-                                          device, terrainDesc(target, false, gridCullMode(style), positions, water));
-                                      made.waterSkirts = std::make_unique<vk::GraphicsPipeline>(
-                                          device, terrainDesc(target, false, VK_CULL_MODE_NONE, positions, water));
-                                      if (style.coverNear())
-                                        made.waterDetail = std::make_unique<vk::GraphicsPipeline>(
-                                            device, terrainDesc(target, false, gridCullMode(style), positions,
-                                                                surfaceShading(style, atmosphere, true, true)));
-                                    }
-                                    VkPhysicalDeviceFeatures features{};
-                                    vkGetPhysicalDeviceFeatures(device.physical(), &features);
-                                    if (features.fillModeNonSolid) {
-                                      made.wireframe = std::make_unique<vk::GraphicsPipeline>(
-                                          device,
-                                          terrainDesc(target, true, VK_CULL_MODE_NONE, positions, {false, atmosphere}));
-                                    }
-                                    return made;
-                                  })),
+      pendingOptional_(std::async(std::launch::async, makeOptionalPipelines, std::ref(device), style, positions,
+                                  TargetFormat{colourFormat, samples}, atmosphere_ != nullptr)),
       solid_(device, terrainDesc({colourFormat, samples}, false, gridCullMode(style), positions,
                                  surfaceShading(style, atmosphere_ != nullptr, false))),
       skirts_(device, terrainDesc({colourFormat, samples}, false, VK_CULL_MODE_NONE, positions,
@@ -144,50 +99,12 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
                             surfaceShading(style, atmosphere_ != nullptr, false, true)));
   }
   if (atmosphere_) view_ = std::make_unique<AtmosphereView>(device, *atmosphere_);
-  if (style.atmosphere) {
-    // Without an atmosphere the background stays the clear colour: black space.
-    vk::GraphicsPipelineDesc d;
-    d.vertexShader = "terrain_sky.vert";
-    d.fragmentShader = "terrain_sky.frag";
-    d.storageBuffers = 4;  // the atmosphere's parameters (uniform) and tables
-    d.uniformMask = 1u << 0;
-    d.pushConstantBytes = sizeof(SkyPush);
-    d.colourFormat = colourFormat;
-    d.samples = samples;
-    d.depthTest = true;  // GREATER_OR_EQUAL against depth 0: passes only where nothing was drawn
-    d.depthWrite = false;
-    // constant_id 0 of terrain_sky.frag: 1 seen from outside the atmosphere, where the pixels near
-    // the shell evaluate the sky themselves. From inside, lavapipe ran that evaluation's code for
-    // every sky pixel although its branch was never taken (+8 ms a frame on the flyover).
-    d.fragmentSpecialization = {0u};
-    sky_ = std::make_unique<vk::GraphicsPipeline>(device, d);
-    d.fragmentSpecialization = d.vertexSpecialization = {1u};
-    skyFromSpace_ = std::make_unique<vk::GraphicsPipeline>(device, d);
+  if (style.atmosphere) {  // without an atmosphere the background stays the clear colour: black space
+    sky_ = std::make_unique<vk::GraphicsPipeline>(device, skyDesc({colourFormat, samples}, sizeof(SkyPush), false));
+    skyFromSpace_ =
+        std::make_unique<vk::GraphicsPipeline>(device, skyDesc({colourFormat, samples}, sizeof(SkyPush), true));
   }
-
-  // Ranges: full grid, half grid, full skirt strip, half skirt strip.
-  std::vector<uint32_t> indices;
-  indices.reserve(size_t(6) * (gridCells * gridCells + gridCells * gridCells / 4 + gridCells + gridCells / 2));
-  for (uint32_t r = 0; r < 4; ++r) {
-    const uint32_t n = r % 2 == 0 ? gridCells : gridCells / 2;
-    first_[r] = uint32_t(indices.size());
-    if (r < 2)
-      appendGrid(n, indices);
-    else
-      appendSkirt(n, indices);
-    count_[r] = uint32_t(indices.size()) - first_[r];
-  }
-
-  const VkDeviceSize bytes = indices.size() * sizeof(uint32_t);
-  indices_ = vk::Buffer(device, bytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                        vk::MemoryUse::DeviceLocal, "terrain grid indices");
-  vk::Buffer staging(device, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, vk::MemoryUse::HostVisible,
-                     "terrain grid indices (staging)");
-  std::memcpy(staging.mapped(), indices.data(), size_t(bytes));
-  device.submitAndWait([&](VkCommandBuffer cmd) {
-    VkBufferCopy copy{0, 0, bytes};
-    vkCmdCopyBuffer(cmd, staging.handle(), indices_.handle(), 1, &copy);
-  });
+  uploadIndices(gridIndexRanges(gridCells));
   positions_ = positions;
   if (positions_ == VertexPositions::kReprojected) {
     faces_ = vk::Buffer(device, 30 * sizeof(FaceCornersGpu), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
@@ -196,6 +113,44 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
     for (int f = 0; f < 30; ++f) faces[f] = RhombusFaceMapping::get().gpuCorners(f);
   }
   for (uint32_t f = 0; f < vk::kFramesInFlight; ++f) ensureCapacity(f, std::max(initialNodes, 1u));
+}
+
+TerrainRenderer::OptionalPipelines TerrainRenderer::makeOptionalPipelines(vk::Device& device, TerrainStyle style,
+                                                                          VertexPositions positions,
+                                                                          TargetFormat target, bool atmosphere) {
+  OptionalPipelines made;
+  if (style.water.enabled) {
+    const TerrainShading water = surfaceShading(style, atmosphere, true);
+    made.water = std::make_unique<vk::GraphicsPipeline>(
+        device, terrainDesc(target, false, gridCullMode(style), positions, water));
+    made.waterSkirts =
+        std::make_unique<vk::GraphicsPipeline>(device, terrainDesc(target, false, VK_CULL_MODE_NONE, positions, water));
+    if (style.coverNear())
+      made.waterDetail = std::make_unique<vk::GraphicsPipeline>(
+          device,
+          terrainDesc(target, false, gridCullMode(style), positions, surfaceShading(style, atmosphere, true, true)));
+  }
+  VkPhysicalDeviceFeatures features{};
+  vkGetPhysicalDeviceFeatures(device.physical(), &features);
+  if (features.fillModeNonSolid)
+    made.wireframe = std::make_unique<vk::GraphicsPipeline>(
+        device, terrainDesc(target, true, VK_CULL_MODE_NONE, positions, {false, atmosphere}));
+  return made;
+}
+
+void TerrainRenderer::uploadIndices(const GridIndexRanges& ranges) {
+  first_ = ranges.first;
+  count_ = ranges.count;
+  const VkDeviceSize bytes = ranges.indices.size() * sizeof(uint32_t);
+  indices_ = vk::Buffer(device_, bytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                        vk::MemoryUse::DeviceLocal, "terrain grid indices");
+  vk::Buffer staging(device_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, vk::MemoryUse::HostVisible,
+                     "terrain grid indices (staging)");
+  std::memcpy(staging.mapped(), ranges.indices.data(), size_t(bytes));
+  device_.submitAndWait([&](VkCommandBuffer cmd) {
+    VkBufferCopy copy{0, 0, bytes};
+    vkCmdCopyBuffer(cmd, staging.handle(), indices_.handle(), 1, &copy);
+  });
 }
 
 TerrainRenderer::~TerrainRenderer() = default;

@@ -32,6 +32,9 @@
 #include <vector>
 
 namespace globe {
+
+struct GridIndexRanges;  // grid_indices.h
+struct TargetFormat;     // terrain_pipelines.h
 namespace gpu {
 struct TerrainReprojectionNode;  // shaders/include/terrain_layout.h
 }
@@ -235,6 +238,10 @@ class TerrainRenderer {
   struct OptionalPipelines {
     std::unique_ptr<vk::GraphicsPipeline> water, waterSkirts, wireframe, waterDetail;
   };
+  static OptionalPipelines makeOptionalPipelines(vk::Device& device, TerrainStyle style, VertexPositions positions,
+                                                 TargetFormat target, bool atmosphere);
+  // The index buffer's ranges uploaded to the device (first_, count_, indices_).
+  void uploadIndices(const GridIndexRanges& ranges);
   std::future<OptionalPipelines> pendingOptional_;
   vk::GraphicsPipeline solid_;                         // grids, back faces culled
   vk::GraphicsPipeline skirts_;                        // skirt strips, both sides
