@@ -141,21 +141,28 @@ void printWorstRows(const std::vector<TradeRow>& rows) {
                   r.converged ? "" : "  (not converged: the pool could not hold the view)");
 }
 
+// The sweep's configurations that --lod and --configs keep.
+Result<std::vector<TradeConfig>> chosenConfigs(const TradeOptions& o, const TradeInputs& in) {
+  std::vector<TradeConfig> configs =
+      tradeConfigs(in.baseline, std::string(qualityPresetName(in.preset)), o.quick, o.lodSweep);
+  if (o.lod != "both")  // keep one LOD rule's configurations
+    std::erase_if(configs,
+                  [&](const TradeConfig& c) { return (c.settings.ranges.tolerance_px > 0) != (o.lod == "tolerance"); });
+  if (configs.empty()) return Error::inField("--lod", "no configuration of this LOD rule to run");
+  if (o.configs) configs.resize(std::min<size_t>(configs.size(), o.configs));
+  return configs;
+}
+
 int runTrade(const TradeOptions& o) {
   auto in = checkTradeInputs(o);
   if (!in) return usageError(in.error());
   ElevationModel model(in->planet);
-  std::vector<TradeConfig> configs =
-      tradeConfigs(in->baseline, std::string(qualityPresetName(in->preset)), o.quick, o.lodSweep);
-  if (o.lod != "both")  // keep one LOD rule's configurations
-    std::erase_if(configs,
-                  [&](const TradeConfig& c) { return (c.settings.ranges.tolerance_px > 0) != (o.lod == "tolerance"); });
-  if (configs.empty()) return usageError(Error::inField("--lod", "no configuration of this LOD rule to run"));
-  if (o.configs) configs.resize(std::min<size_t>(configs.size(), o.configs));
+  auto configs = chosenConfigs(o, *in);
+  if (!configs) return usageError(configs.error());
   auto cameras = tradeCameras(o, *in, model);
   if (!cameras) return usageError(cameras.error());
   std::printf("globe trade: %zu configurations x %zu cameras at %ux%u, %u frames each, error every %u px; load %s\n",
-              configs.size(), cameras->size(), in->size.width, in->size.height, in->frames, in->stride,
+              configs->size(), cameras->size(), in->size.width, in->size.height, in->frames, in->stride,
               loadAverage().c_str());
   std::fflush(stdout);
   auto start = std::chrono::steady_clock::now();
@@ -172,7 +179,7 @@ int runTrade(const TradeOptions& o) {
   printDeviceChoice(device);
   HeadlessRenderer renderer(device, extent);
   TradeRig rig{device, renderer, model, in->frames, {}};
-  if (auto s = warmUpTrade(rig, configs.front(), cameras->front()); !s) return usageError(s.error());
+  if (auto s = warmUpTrade(rig, configs->front(), cameras->front()); !s) return usageError(s.error());
   std::vector<Camera> views;
   for (const TradeCamera& c : *cameras) views.push_back(c.camera);
   std::optional<ProgressBar> progress(std::in_place, "trade: exact images");
@@ -181,7 +188,7 @@ int runTrade(const TradeOptions& o) {
   if (!references) return usageError(references.error());
   rig.references = std::move(*references);
   progress.emplace("trade: configurations");
-  auto rows = measureTradeConfigs(rig, configs, *cameras, truths, update);
+  auto rows = measureTradeConfigs(rig, *configs, *cameras, truths, update);
   progress.reset();
   if (!rows) return usageError(rows.error());  // a configuration the terrain rejects
   double total_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
