@@ -286,14 +286,18 @@ Status Viewer::run() {
     s.takeRequestedScreenshot(cam);
   }
 
+  return s.finishRun(lastCamera);
+}
+
+Status Viewer::State::finishRun(const Camera& lastCamera) {
   // Quitting while recording keeps the flight.
-  if (s.recorder.recording()) s.stopRecording();
-  GLOBE_VK_CHECK(vkDeviceWaitIdle(s.device.device()));
-  s.releases.releaseAll();
-  if (Status st = s.writeFrameTimes(); !st) return st;
-  if (!s.options.screenshotPath.empty()) {
-    if (s.frame == 0) return Error::inField("--screenshot", "no frame was rendered");
-    return s.saveScreenshot(s.options.screenshotPath, lastCamera);
+  if (recorder.recording()) stopRecording();
+  GLOBE_VK_CHECK(vkDeviceWaitIdle(device.device()));
+  releases.releaseAll();
+  if (Status st = writeFrameTimes(); !st) return st;
+  if (!options.screenshotPath.empty()) {
+    if (frame == 0) return Error::inField("--screenshot", "no frame was rendered");
+    return saveScreenshot(options.screenshotPath, lastCamera);
   }
   return Ok{};
 }

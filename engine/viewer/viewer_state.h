@@ -63,6 +63,9 @@ struct Viewer::State {
   void logFrame(Clock::time_point runStart);
   void goToAskedPlace(double aspect);
   Status writeFrameTimes() const;
+  // After the last frame: the recording kept, the device idle, the frame times and the --screenshot
+  // (of `lastCamera`'s view) written.
+  Status finishRun(const Camera& lastCamera);
   bool processInput();  // false: quit
   Camera stepCamera(double wall_s, Clock::time_point now);
   void buildOverlay(double wall_s, const Camera& cam);
