@@ -34,7 +34,13 @@ double reliefAt(PixelWindow& w, int x, int y) {
 }  // namespace
 
 LayerSample sampleLayer(PixelWindow& w, double px, double py, bool wantRelief) {
-  // Wrapping columns interpolate across the last column to the first; clamped ones stay inside.
+  // Wrapping columns interpolate across the last column to the first; clamped ones stay inside. A
+  // point beyond the first or last pixel centre takes the edge's values: extrapolated weights (one
+  // below 0) beside a no-data pixel could leave a coverage near 0 to divide by, and a coarse level's
+  // last centre lies up to half a pixel inside the raster's edge (a 13 km spike beyond a DEM's
+  // border at 2^6 pixels, before this clamp).
+  if (!w.wrapsX()) px = std::clamp(px, 0.0, double(w.size().width - 1));
+  py = std::clamp(py, 0.0, double(w.size().height - 1));
   const int x0 = w.wrapsX() ? int(std::floor(px)) : std::min(int(std::floor(px)), w.size().width - 2);
   const int y0 = std::min(int(std::floor(py)), w.size().height - 2);
   const double tx = px - x0, ty = py - y0;

@@ -70,9 +70,15 @@ LayerRead readFrom(TileCache& cache, const SourceMosaic::Layer& layer, double px
   const LayerRead ra = readLevel(cache, layer, a, px, py);
   if (mix <= 0.0 || a == b) return ra;
   const LayerRead rb = readLevel(cache, layer, b, px, py);
-  auto lerp = [&](double x, double y) { return (1.0 - mix) * x + mix * y; };
-  return {lerp(ra.coverage, rb.coverage), lerp(ra.value, rb.value), lerp(ra.relief, rb.relief),
-          std::max(ra.deviation, rb.deviation), ra.missing || rb.missing};
+  // Heights mixed by what each level covers there: a level without valid pixels at the point (a
+  // pyramid's corner pixel of a single fine one is no-data) says nothing, not 0 m. Kept holes give
+  // both levels a value where neither covers (readLevel): those mix plainly.
+  const double ca = (1.0 - mix) * ra.coverage, cb = mix * rb.coverage;
+  auto blend = [&](double x, double y) {
+    return ca + cb > 0.0 ? (ca * x + cb * y) / (ca + cb) : (1.0 - mix) * x + mix * y;
+  };
+  return {ca + cb, blend(ra.value, rb.value), blend(ra.relief, rb.relief), std::max(ra.deviation, rb.deviation),
+          ra.missing || rb.missing};
 }
 
 // readFrom at the level the samples resolve; where its tiles are missing (a frame-loop thread never

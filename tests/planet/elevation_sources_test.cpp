@@ -125,6 +125,33 @@ TEST_F(ElevationSourcesTest, FinestWinsAndTheFeatherLeavesNoStep) {
   EXPECT_LE(maxJump(h), relief * 5.0 / 75.0 + 1.0) << "relief per pixel " << relief;
 }
 
+// Beyond the border, in the feather, coarse levels are read whose last pixel centre lies up to half
+// a pixel inside the raster's edge, and whose corner pixels may be no-data: the heights stay a convex
+// mix of the raster's (its range), never extrapolated and never mixed with a level's empty 0 m. They
+// once reached 27 km at single samples 6 km east of this DEM (drawn as spikes into the sky) and fell
+// to 106 m (the raster's lowest is 236 m) south of it.
+TEST_F(ElevationSourcesTest, TheFeatherBeyondTheBorderStaysWithinTheRastersRange) {
+  const ElevationModel model = load("feather", source(fixture_->full, "amplify = false\nblend_m = 20000.0"));
+  const RasterReference full(fixture_->full);
+  double latMin = 0.0, lonMin = 0.0, latMax = 0.0, lonMax = 0.0;
+  full.pixelCentre(0.0, full.height() - 1.0, latMin, lonMin);
+  full.pixelCentre(full.width() - 1.0, 0.0, latMax, lonMax);
+  int samples = 0;
+  for (double spacing_m : {60.0, 127.0, 250.0, 500.0}) {
+    for (double lat = latMin - 0.15; lat <= latMax + 0.15; lat += 0.0037) {
+      for (double lon = lonMin - 0.15; lon <= lonMax + 0.15; lon += 0.0041) {
+        if (lat > latMin && lat < latMax && lon > lonMin && lon < lonMax) continue;  // the feather only
+        const SourceTerm t = model.sourceTerm(directionFromLatLon(lat, lon), spacing_m);
+        if (t.weight <= 0.0) continue;
+        ++samples;
+        ASSERT_GE(t.height_m, 236.0 - 1e-6) << lat << ", " << lon << " at " << spacing_m << " m";
+        ASSERT_LE(t.height_m, 1076.0 + 1e-6) << lat << ", " << lon << " at " << spacing_m << " m";
+      }
+    }
+  }
+  EXPECT_GT(samples, 10000);
+}
+
 TEST_F(ElevationSourcesTest, FilledNoDataTakesTheCoarserSourceWithoutASeam) {
   const std::string opts = "amplify = false";
   const ElevationModel model =
