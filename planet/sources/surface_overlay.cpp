@@ -74,20 +74,31 @@ ImageryColour unpackOverlayColour(std::uint32_t word) {
   return {glm::dvec3(channel(0) * channel(0), channel(1) * channel(1), channel(2) * channel(2)), channel(3)};
 }
 
-glm::vec3 overlaidAlbedo(const SurfaceOverlay* overlay, const glm::vec3& albedo, const glm::dvec3& unitDirection,
-                         double texel_m) {
-  if (overlay == nullptr) return albedo;
-  const ImageryColour c = unpackOverlayColour(packOverlayColour(overlay->colourAt(unitDirection, texel_m).land));
+namespace {
+
+// `albedo` under the overlay's packed colour, as the payload kernel blends it (`overlaid`).
+glm::vec3 blendOverlay(const glm::vec3& albedo, const ImageryColour& colour) {
+  const ImageryColour c = unpackOverlayColour(packOverlayColour(colour));
   const float a = float(c.alpha);
   return albedo * (1.0f - a) + glm::vec3(c.albedo) * a;
 }
 
-glm::vec4 overlayColourLayer(const SurfaceOverlay* overlay, const glm::vec3& albedo, const glm::dvec3& unitDirection,
-                             double texel_m, bool underSea) {
-  if (overlay == nullptr) return glm::vec4(albedo, 0.0f);
-  const ImageryColour v = unpackOverlayColour(packOverlayColour(overlay->colourAt(unitDirection, texel_m).vectors));
+}  // namespace
+
+glm::vec3 overlaidAlbedo(const SurfaceOverlay* overlay, const glm::vec3& albedo, const glm::dvec3& unitDirection,
+                         double texel_m) {
+  if (overlay == nullptr) return albedo;
+  return blendOverlay(albedo, overlay->colourAt(unitDirection, texel_m).land);
+}
+
+OverlaidTexel overlaidTexel(const SurfaceOverlay* overlay, const glm::vec3& albedo, const glm::dvec3& unitDirection,
+                            double texel_m, bool underSea) {
+  if (overlay == nullptr) return {albedo, glm::vec4(albedo, 0.0f)};
+  const SurfaceColour s = overlay->colourAt(unitDirection, texel_m);
+  const glm::vec3 overlaid = blendOverlay(albedo, s.land);
+  const ImageryColour v = unpackOverlayColour(packOverlayColour(s.vectors));
   const bool own = underSea && v.alpha > 0.0;
-  return glm::vec4(own ? glm::vec3(v.albedo) : albedo, float(v.alpha));
+  return {overlaid, glm::vec4(own ? glm::vec3(v.albedo) : overlaid, float(v.alpha))};
 }
 
 }  // namespace globe

@@ -65,11 +65,16 @@ ImageryColour unpackOverlayColour(std::uint32_t word);
 // `overlay` nullptr: `albedo` unchanged.
 glm::vec3 overlaidAlbedo(const SurfaceOverlay* overlay, const glm::vec3& albedo, const glm::dvec3& unitDirection,
                          double texel_m);
-// The colour layer's texel over the sea (payload_generate.glsl, colourLayerTexel) before its 8-bit
-// store: where vectors cover a texel whose ground lies below the drawn sea, their own colour (the
-// water fragments mix it over the water by its coverage); elsewhere `albedo` (overlaidAlbedo); alpha
-// the vectors' coverage (its 8 bits). Without an overlay (albedo, 0).
-glm::vec4 overlayColourLayer(const SurfaceOverlay* overlay, const glm::vec3& albedo, const glm::dvec3& unitDirection,
-                             double texel_m, bool underSea);
+// A surface texel under the overlay, from one overlay query: its overlaid albedo (overlaidAlbedo)
+// and the colour layer's texel (payload_generate.glsl, colourLayerTexel) before its 8-bit store:
+// where vectors cover a texel whose ground lies below the drawn sea, their own colour (the water
+// fragments mix it over the water by its coverage); elsewhere the overlaid albedo; alpha the
+// vectors' coverage (its 8 bits). Without an overlay (albedo, (albedo, 0)).
+struct OverlaidTexel {
+  glm::vec3 albedo;
+  glm::vec4 colourLayer;
+};
+OverlaidTexel overlaidTexel(const SurfaceOverlay* overlay, const glm::vec3& albedo, const glm::dvec3& unitDirection,
+                            double texel_m, bool underSea);
 
 }  // namespace globe

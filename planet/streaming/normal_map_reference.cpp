@@ -71,10 +71,9 @@ void appendTexels(const ElevationModel& model, const gpu::PayloadJob& job, int m
         std::clamp(float(double(ground) - e.sea_level_m) / float(texel_m * GLOBE_SURFACE_COAST_SCALE), -1.0f, 1.0f);
     const glm::vec3 albedo = payloadSampleAlbedo(model, dir, double(drawn), grid.firstLayers[at], cosSlope, masks);
     const double overlayTexel_m = payloadSampleSpacing_m(job, uint32_t(m), e.radius_m) * step;
-    const glm::vec3 overlaid = overlaidAlbedo(model.overlay(), albedo, dir, overlayTexel_m);
     const bool underSea = sea && ground < float(model.seaLevel_m());
-    texels.push_back(
-        {normal, overlaid, coast, overlayColourLayer(model.overlay(), overlaid, dir, overlayTexel_m, underSea)});
+    const OverlaidTexel overlaid = overlaidTexel(model.overlay(), albedo, dir, overlayTexel_m, underSea);
+    texels.push_back({normal, overlaid.albedo, coast, overlaid.colourLayer});
   }
 }
 

@@ -22,7 +22,7 @@ struct NormalMapTexel {
   glm::dvec3 normal{0.0};
   glm::vec3 albedo{0.0f};
   float coast = 0.0f;
-  glm::vec4 colourLayer{0.0f};  // with an overlay: the colour layer's texel, linear (overlayColourLayer)
+  glm::vec4 colourLayer{0.0f};  // with an overlay: the colour layer's texel, linear (overlaidTexel)
 };
 
 // The surface textures of `job`'s node with `cells` grid cells and map scale `scale` (1, 2, 4):

@@ -80,7 +80,7 @@ vec3 overlaid(vec3 albedo, uint point) {
 // The colour layer's texel at `point` (payload_layout.h) for a texel of `albedo` (overlaid): the
 // vectors' own coverage in alpha, what the water fragments mix them over the sea with; and where
 // they cover a texel whose ground is under the drawn sea, their own colour (the ground's is not
-// drawn there). Mirrored by globe::overlayColourLayer.
+// drawn there). Mirrored by globe::overlaidTexel.
 vec4 colourLayerTexel(vec3 albedo, uint point, bool underSea) {
   uint perJob = GLOBE_PAYLOAD_OVERLAY_WORDS(push.cells, push.cells * kNormalMapScale);
   uint points = GLOBE_PAYLOAD_OVERLAY_POINTS(push.cells, push.cells * kNormalMapScale);
