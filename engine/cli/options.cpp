@@ -188,6 +188,10 @@ void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid) {
                  "Surface texture texels (normal, colour, coast per pixel) per grid cell: 1, 2 or 4; 0 = none, "
                  "light per vertex (docs/rendering.md, \"Surface textures\"; default: the preset's)")
       ->check(CLI::IsMember({0U, 1U, 2U, 4U}));
+  cmd.add_option("--shadows", options.shadows,
+                 "on (cast shadows of the relief from the sun, with surface textures) or off (docs/rendering.md, "
+                 "\"Shadows\"; default: the preset's)")
+      ->check(CLI::IsMember({"on", "off"}));
   cmd.add_option("--atmosphere", options.atmosphere,
                  "With a planet's [atmosphere]: full (sky, light and aerial perspective), sky (the sky only, the "
                  "terrain Lambert-lit) or off (docs/rendering.md, \"Atmosphere\"; default: the preset's)")
@@ -214,6 +218,7 @@ Result<TerrainSettings> terrainSettingsFromOptions(const QualityOptions& options
     settings.detailTextures = *detail;
   }
   if (!options.imagery.empty()) settings.imagery = options.imagery == "on";
+  if (!options.shadows.empty()) settings.shadows = options.shadows == "on";
   if (!options.antialiasing.empty()) {
     auto aa = parseAntialiasing(options.antialiasing, "--aa");
     if (!aa) return aa.error();

@@ -70,11 +70,12 @@ struct QualityOptions {
   std::string antialiasing;                         // --aa; empty: the preset's
   uint32_t normalMapScale = kPresetNormalMapScale;  // --normal-map-scale
   std::string atmosphere;                           // --atmosphere; empty: the preset's
+  std::string shadows;                              // --shadows on|off; empty: the preset's
   std::string roughness;                            // --roughness on|off; empty: off
   std::string detailTextures;                       // --detail-textures on|near|off; empty: the preset's
   std::string imagery;                              // --imagery on|off; empty: the preset's
 };
-// --quality, --tolerance, --texel-px, --roughness, --detail-textures, --imagery, --aa, --normal-map-scale, --atmosphere
+// --quality, --tolerance, --texel-px, --roughness, --detail-textures, --imagery, --aa, --normal-map-scale, --atmosphere, --shadows
 // and, when withGrid,
 // --grid, with the same help and checks on every rendering command; read them back with terrainSettingsFromOptions.
 void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid = true);

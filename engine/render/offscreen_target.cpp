@@ -37,13 +37,14 @@ const std::array<float, 256>& linearOfCode() {
   }();
   return table;
 }
+}  // namespace
+
 void setWholeViewport(VkCommandBuffer cmd, VkExtent2D extent) {
   VkViewport viewport{0, 0, float(extent.width), float(extent.height), 0, 1};
   VkRect2D scissor{{0, 0}, extent};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
 }
-}  // namespace
 
 OffscreenTarget::OffscreenTarget(vk::Device& device, VkExtent2D extent, Antialiasing antialiasing)
     : device_(device),

@@ -74,4 +74,7 @@ class OffscreenTarget {
   bool initialised_ = false;
 };
 
+// Viewport and scissor over the whole of `extent` (depth 0..1).
+void setWholeViewport(VkCommandBuffer cmd, VkExtent2D extent);
+
 }  // namespace globe

@@ -58,6 +58,8 @@ TerrainSettings terrainSettingsFor(QualityPreset preset) {
       // The complete atmosphere (light and aerial perspective per vertex): 2.4x the frame at 1 km,
       // 1.65x at 2 m (docs/rendering.md, "Atmosphere"); the reference-quality preset keeps it.
       s.atmosphere = AtmosphereDetail::kFull;
+      // Cast shadows of the relief (docs/rendering.md, "Shadows").
+      s.shadows = true;
       break;
   }
   return s;

@@ -150,6 +150,7 @@ void Terrain::attachPool(std::unique_ptr<PayloadPool> pool) {
     atmosphere_ = std::make_unique<AtmosphereLuts>(device_, *model_.atmosphere(), model_.radius_m());
   style.atmosphere = atmosphere_.get();
   style.aerialPerspective = settings_.atmosphere == AtmosphereDetail::kFull;
+  style.shadows = settings_.shadows;
   const ElevationRange bounds = model_.bounds();
   style.terrainRadii_m = {model_.shape().polarRadius_m() + bounds.min_m, model_.radius_m() + bounds.max_m};
   renderer_ = std::make_unique<TerrainRenderer>(device_, settings_.gridCells, style, settings_.vertexPositions, 1024,
@@ -290,6 +291,12 @@ void Terrain::gatherWarnings() {
   if (pool_->consecutiveFailures() >= kGenerationFailuresBeforeGivingUp)
     throw std::runtime_error("payload generation failed " + std::to_string(pool_->consecutiveFailures()) +
                              " times in a row (" + generator_->lastFailure() + "): giving up");
+}
+
+void Terrain::prepare(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex) {
+  const ScopedFrameLoopThread frameLoop;  // the ground under the camera from cached tiles only
+  renderer_->prepare(cmd, camera, origin_.origin_m(), drawNodes_, generator_->pages(), frameIndex,
+                     groundRadius(glm::normalize(camera.position_m)));
 }
 
 void Terrain::record(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex) {

@@ -67,6 +67,8 @@ struct TerrainSettings {
   // How much of the planet's [atmosphere] is drawn when it has one (its tables are computed, or read
   // from the cache, AtmosphereLuts, when the terrain is made unless kOff).
   AtmosphereDetail atmosphere = AtmosphereDetail::kFull;
+  // Cast shadows of the relief from the sun (TerrainStyle::shadows; with surface textures only).
+  bool shadows = false;
   GenerationPrecision generation = GenerationPrecision::kDouble;  // kFloat only to measure (globe trade)
   VertexPositions vertexPositions = VertexPositions::kStored;     // kReprojected only to measure
   uint32_t payloadSlotsPerPage = 0;  // cap on slots per payload page (0: one binding's worth; tests)
@@ -100,9 +102,7 @@ class Terrain {
   // Records the draw of the last update(). `frameIndex`: which per-frame buffers to use (frame % 2).
   void record(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex);
   // What record() reads and must be computed first, outside the render pass (TerrainRenderer::prepare).
-  void prepare(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex) {
-    renderer_->prepare(cmd, camera, frameIndex);
-  }
+  void prepare(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex);
 
   // Remakes the renderer's pipelines for another anti-aliasing (the payloads stay): `globe trade`
   // times the frame with the preset's and measures depth single-sampled, at the pixel centres.

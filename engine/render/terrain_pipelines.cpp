@@ -8,12 +8,14 @@
 namespace globe {
 
 TerrainShading surfaceShading(const TerrainStyle& style, bool atmosphere, bool water, bool nearCamera) {
-  return {style.normalMapScale > 0 || style.imagery,
+  const bool maps = style.normalMapScale > 0 || style.imagery;
+  return {maps,
           atmosphere,
           water,
           style.holes,
           style.coverEverywhere() || (nearCamera && style.coverNear()),
           style.imagery,
+          maps && style.shadows,
           style.surfaceLayersPerSlot == 2 && !style.imagery};
 }
 
@@ -23,7 +25,7 @@ VkCullModeFlags gridCullMode(const TerrainStyle& style) {
 
 std::string terrainFragmentShader(const TerrainShading& s) {
   return std::string("terrain") + (s.atmosphere ? "_atmosphere" : "") + (s.normalMaps ? "_maps" : "") +
-         (s.normalMaps && s.imagery ? "_imagery" : "") + (s.water ? "_water" : "") + (s.holes ? "_holes" : "") +
+         (s.normalMaps && s.imagery ? "_imagery" : "") + (s.normalMaps && s.shadows ? "_shadows" : "") + (s.water ? "_water" : "") + (s.holes ? "_holes" : "") +
          (s.cover ? "_cover" : "") + ".frag";
 }
 
@@ -54,6 +56,7 @@ vk::GraphicsPipelineDesc terrainDesc(TargetFormat target, bool wireframe, VkCull
   // The surface texture: the drawn page's, or the imagery tiles' pages'.
   const uint32_t surfaceBindings = !shading.normalMaps ? 0 : shading.imagery ? GLOBE_IMAGERY_TILE_PAGES : 1;
   for (uint32_t b = 0; b < surfaceBindings; ++b) d.sampledImageBindings.push_back(GLOBE_TERRAIN_SURFACE_BINDING + b);
+  if (shading.normalMaps && shading.shadows) d.sampledImageBindings.push_back(GLOBE_TERRAIN_SHADOW_BINDING);
   // A constant, not a uniform branch: lavapipe ran the colour layer's fetch for every fragment of a
   // planet without one behind a frame flag (+3 ms on the flyover, docs/imagery.md).
   static_assert(GLOBE_TERRAIN_SPEC_COLOUR_LAYER == 0);

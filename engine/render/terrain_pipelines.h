@@ -25,6 +25,7 @@ struct TerrainShading {
   bool holes = false;
   bool cover = false;
   bool imagery = false;  // the maps from the imagery tiles (with normalMaps)
+  bool shadows = false;  // the sun's light through the shadow maps (with normalMaps)
   // The albedo from each slot's colour layer (a planet with an overlay, payload_layout.h): a
   // specialization constant of the _maps fragment stages (GLOBE_TERRAIN_SPEC_COLOUR_LAYER).
   bool colourLayer = false;
@@ -38,7 +39,7 @@ TerrainShading surfaceShading(const TerrainStyle& style, bool atmosphere, bool w
 // Grids are drawn with back faces culled, except on a planet with kept holes (seen through them).
 VkCullModeFlags gridCullMode(const TerrainStyle& style);
 
-// terrain[_atmosphere][_maps[_imagery]][_water][_holes][_cover].frag: the variants of shaders/CMakeLists.txt.
+// terrain[_atmosphere][_maps[_imagery][_shadows]][_water][_holes][_cover].frag: the variants of shaders/CMakeLists.txt.
 std::string terrainFragmentShader(const TerrainShading& s);
 
 // The pipeline of a terrain draw: its stages (terrain[_atmosphere|_reprojected][_cover].vert and the

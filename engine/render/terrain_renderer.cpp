@@ -3,7 +3,9 @@
 #include "engine/render/grid_indices.h"
 
 #include "engine/render/render_output.h"
+#include "engine/render/terrain_instance.h"
 #include "engine/render/terrain_pipelines.h"
+#include "engine/render/terrain_shadows.h"
 #include "engine/vk/vk_check.h"
 #include "planet/geometry/face_mapping.h"
 #include "shaders/include/payload_layout.h"
@@ -56,15 +58,6 @@ uint32_t drawGroup(const DrawNode& n, uint32_t range, bool detail) {
 // Sort key of a drawn node for the skirt test below.
 std::pair<uint64_t, bool> drawnKey(const NodeId& id, bool partial) { return {id.key(), partial}; }
 
-float morphDistance(double metres) {
-  // +infinity (depth 0 never morphs) and anything beyond float become FLT_MAX; the shader treats
-  // an empty band at FLT_MAX as "never".
-  if (!(metres < double(std::numeric_limits<float>::max()))) return std::numeric_limits<float>::max();
-  return float(metres);
-}
-
-gpu::TerrainVec4 toGpu(const glm::vec3& v, float w) { return {v.x, v.y, v.z, w}; }
-
 }  // namespace
 
 TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const TerrainStyle& style,
@@ -99,6 +92,8 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
                             surfaceShading(style, atmosphere_ != nullptr, false, true)));
   }
   if (atmosphere_) view_ = std::make_unique<AtmosphereView>(device, *atmosphere_);
+  if (surfaceShading(style, false, false).shadows)
+    shadows_ = std::make_unique<TerrainShadows>(device, gridCells, style.radius_m);
   if (style.atmosphere) {  // without an atmosphere the background stays the clear colour: black space
     sky_ = std::make_unique<vk::GraphicsPipeline>(device, skyDesc({colourFormat, samples}, sizeof(SkyPush), false));
     skyFromSpace_ =
@@ -210,10 +205,18 @@ void TerrainRenderer::recordSky(VkCommandBuffer cmd, const Camera& camera) const
   if (fromSpace) vkCmdDraw(cmd, 6, 1, 0, 1);
 }
 
-void TerrainRenderer::prepare(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex) {
-  if (!view_) return;
-  const glm::dvec2 radii = style_.terrainRadii_m;
-  view_->record(cmd, camera, style_.sunDirection, radii, frameIndex);
+void TerrainRenderer::prepare(VkCommandBuffer cmd, const Camera& camera, const glm::dvec3& origin_m,
+                              std::span<const DrawNode> nodes, const PayloadPages& payloads, uint32_t frameIndex,
+                              double groundRadius_m) {
+  if (view_) view_->record(cmd, camera, style_.sunDirection, style_.terrainRadii_m, frameIndex);
+  cascades_ = {};
+  if (!shadows_ || nodes.empty()) return;
+  cascades_ = fitShadowCascades(
+      {&camera, glm::normalize(style_.sunDirection), groundRadius_m, style_.terrainRadii_m, shadows_->resolution()});
+  gpu::TerrainFrame frame;
+  writeFrameConstants(reinterpret_cast<unsigned char*>(&frame), camera, origin_m, false);
+  const ShadowGrids grids{indices_.handle(), {first_[0], first_[1]}, {count_[0], count_[1]}};
+  shadows_->record(cmd, cascades_, frame, nodes, origin_m, camera.position_m, payloads, grids, frameIndex);
 }
 
 DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, const glm::dvec3& origin_m,
@@ -225,6 +228,7 @@ DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, con
   uint32_t nextMark = kMarkGridsBegin;
   writeMarks(cmd, nextMark, kMarkGridsBegin);
   if (!nodes.empty()) stats = recordTerrain(cmd, camera, origin_m, nodes, payloads, frameIndex, imagery, nextMark);
+  cascades_ = {};  // drawn with this frame: the next record() without prepare() has none
   // The sky goes last, behind everything: its screen grid lies at the far plane (depth 0),
   // so the depth test keeps only the pixels no terrain covered, and those are the only ones shaded.
   writeMarks(cmd, nextMark, kMarkSkyBegin);
@@ -320,8 +324,24 @@ TerrainDebugView TerrainRenderer::writeFrameConstants(unsigned char* bytes, cons
     fade = glm::vec2(float(camera.near_m / width_m), float(-start_m / width_m));
   }
   frame.detailLevels = {float(detailTiling_.fineLevel), float(detailTiling_.coarseLevel), fade.x, fade.y};
+  writeShadowConstants(frame);
   std::memcpy(bytes, &frame, sizeof(frame));
   return view;
+}
+
+void TerrainRenderer::writeShadowConstants(gpu::TerrainFrame& frame) const {
+  frame.shadow = {float(cascades_.count), kShadowFadeStart, 0.0f, 0.0f};
+  float bias[kShadowCascades]{};
+  for (uint32_t c = 0; c < cascades_.count; ++c) {
+    const ShadowCascade& cascade = cascades_.cascades[c];
+    const glm::mat4 clip(cascade.clipFromCamera);
+    std::memcpy(frame.shadowFromCamera[c].m, glm::value_ptr(clip), sizeof(frame.shadowFromCamera[c].m));
+    // Two texels along the sunlight, times 1 + the slope's tangent in the fragment stage
+    // (terrain_shadows.glsl): 1.5 left texel-sized blocks of self-shadow on bumps at the 2 m camera.
+    bias[c] = float(kShadowBiasTexels * cascade.texel_m / cascade.depth_m);
+  }
+  static_assert(kShadowCascades == 3);
+  frame.shadowBias = {bias[0], bias[1], bias[2], 0.0f};
 }
 
 void TerrainRenderer::groupInstances(std::span<const DrawNode> nodes, const PayloadPages& payloads, uint32_t pageCount,
@@ -366,26 +386,14 @@ uint32_t TerrainRenderer::writeInstances(unsigned char* bytes, const glm::dvec3&
                                          std::span<const DrawNode> nodes, const PayloadPages& payloads,
                                          uint32_t pageCount, bool skirts, gpu::TerrainReprojectionNode* reprojection) {
   auto* instances = reinterpret_cast<gpu::TerrainInstance*>(bytes + kFrameHeaderBytes);
-  const uint32_t slotVec4 = GLOBE_PAYLOAD_SLOT_VEC4(cells_);
   std::vector<uint32_t>& next = nextInstance_;
   next = firstInstance_;
   uint32_t partial = 0;
   for (const uint32_t k : order_) {
     const DrawNode& n = nodes[k];
     const gpu::TerrainReprojectionNode mapping{{n.id.uMin(), n.id.vMin(), n.id.size(), double(n.id.face)}};
-    gpu::TerrainInstance inst{};
-    // Double first, float last: the offset is a multiple of the level's quantum and small.
-    inst.offset = toGpu(glm::vec3(n.centre_m - origin_m), 0.0f);
-    inst.morph = {morphDistance(n.morph.startFloor_m), morphDistance(n.morph.ownRange_m), float(n.morph.fraction),
-                  0.0f};
-    inst.morphEnd = {morphDistance(n.morph.end_m[0]), morphDistance(n.morph.end_m[1]), morphDistance(n.morph.end_m[2]),
-                     morphDistance(n.morph.end_m[3])};
-    inst.info = {payloads.localSlot(n.slot) * slotVec4, n.partial ? 2u : 1u,
-                 uint32_t(n.id.level) - (n.partial ? 1u : 0u), 0u};
+    gpu::TerrainInstance inst = terrainInstance(n, origin_m, payloads, cells_);
     inst.imagery = {n.imageryCell, payloads.localSlot(n.slot) * style_.surfaceLayersPerSlot, 0u, 0u};
-    const std::array<glm::dvec3, 3>& frame = RhombusFaceMapping::get().faceFrame(n.id.face);
-    inst.frameEast = toGpu(glm::vec3(frame[0]), 0.0f);
-    inst.frameUp = toGpu(glm::vec3(frame[2]), 0.0f);
     if (style_.landCover()) {  // only the _cover vertex stages read it
       const glm::vec4 detail = detailTileOffsets(n.id, detailTiling_);
       inst.detail = {detail.x, detail.y, detail.z, detail.w};
@@ -466,6 +474,7 @@ TerrainRenderer::ImageSet TerrainRenderer::drawImages(const PayloadPages& payloa
   } else if (style_.normalMapScale > 0 && payloads.surfaces) {
     set.images[set.count++] = payloads.surfaces->sampled(page, GLOBE_TERRAIN_SURFACE_BINDING);
   }
+  if (shadows_) set.images[set.count++] = shadows_->sampled();
   return set;
 }
 

@@ -15,6 +15,7 @@
 #include "engine/atmosphere/atmosphere_view.h"
 #include "engine/generation/payload_pages.h"
 #include "engine/render/imagery_tiles.h"
+#include "engine/render/shadow_cascades.h"
 #include "engine/render/terrain_detail.h"
 #include "engine/vk/frame_ring.h"
 #include "engine/vk/graphics_pipeline.h"
@@ -34,9 +35,11 @@
 namespace globe {
 
 struct GridIndexRanges;  // grid_indices.h
+class TerrainShadows;    // terrain_shadows.h
 struct TargetFormat;     // terrain_pipelines.h
 namespace gpu {
 struct TerrainReprojectionNode;  // shaders/include/terrain_layout.h
+struct TerrainFrame;
 }
 
 enum class TerrainDebugView {
@@ -105,6 +108,10 @@ struct TerrainStyle {
   // maps (record() gets their binding) instead of the payloads' own (normalMapScale is then 0: the
   // mesh payloads have no maps). Stored vertex positions only.
   bool imagery = false;
+  // Cast shadows of the relief (engine/render/terrain_shadows.h): the mapped fragments take the sun's
+  // light through cascaded shadow maps drawn from the sun each frame (prepare()). Needs surface
+  // textures (normalMapScale > 0 or imagery); ignored without.
+  bool shadows = false;
   bool landCover() const { return detailTextures.imageView != VK_NULL_HANDLE; }
   // Land cover splatted on every node (the surface pipelines all have it).
   bool coverEverywhere() const { return landCover() && detailRange_m <= 0.0; }
@@ -156,9 +163,12 @@ class TerrainRenderer {
   TerrainRenderer& operator=(const TerrainRenderer&) = delete;
 
   // Records what the frame's draws read and must be computed first: with an atmosphere, the aerial
-  // perspective table for `camera` (AtmosphereView). Outside the render pass, before record() with
-  // the same camera and frameIndex; nothing without an atmosphere.
-  void prepare(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex);
+  // perspective table for `camera` (AtmosphereView); with shadows, the shadow maps of `nodes` (as
+  // record() gets them; `groundRadius_m`: the ground's radius under the camera, which the cascades
+  // are sized from). Outside the render pass, before record() with the same arguments; a record()
+  // without it draws no shadows.
+  void prepare(VkCommandBuffer cmd, const Camera& camera, const glm::dvec3& origin_m, std::span<const DrawNode> nodes,
+               const PayloadPages& payloads, uint32_t frameIndex, double groundRadius_m);
 
   // Records the sky (if enabled) and the terrain into the current dynamic-rendering pass (viewport and
   // scissor already set). `origin_m`: the floating origin (FloatingOrigin); `payloads`: the payload
@@ -176,6 +186,8 @@ class TerrainRenderer {
   bool wireframeSupported() const { return wireframe_ != nullptr; }
   // The per-frame aerial perspective tables (nullptr without an atmosphere), for tests.
   const AtmosphereView* atmosphereView() const { return view_.get(); }
+  // The shadow maps (nullptr without shadows), for tests.
+  const TerrainShadows* shadows() const { return shadows_.get(); }
   uint32_t gridCells() const { return cells_; }
   // Index counts of the full and the half-resolution grids, and of one skirt strip (one node edge) of each.
   uint32_t fullIndexCount() const { return count_[0]; }
@@ -204,6 +216,8 @@ class TerrainRenderer {
   std::array<uint32_t, 2> markSkirtedEdges(std::span<const DrawNode> nodes);
   TerrainDebugView writeFrameConstants(unsigned char* bytes, const Camera& camera, const glm::dvec3& origin_m,
                                        bool skirts) const;
+  // The shadow maps' matrices and biases of cascades_ (none: no shadows).
+  void writeShadowConstants(gpu::TerrainFrame& frame) const;
   // Fills order_: the indices of `nodes` by distance from the camera, nearest first; and with
   // coverNear(), detailNode_: which nodes may come within the detail range (all in the land cover view).
   void orderNearFirst(std::span<const DrawNode> nodes, const glm::dvec3& camera_m, TerrainDebugView view);
@@ -214,7 +228,7 @@ class TerrainRenderer {
   // The images a surface draw of payload page `page` samples: the detail textures (land cover) and
   // the surface textures (the page's, or the imagery tiles').
   struct ImageSet {
-    std::array<vk::ImageDescriptor, 1 + kImageryTilePages> images{};
+    std::array<vk::ImageDescriptor, 2 + kImageryTilePages> images{};
     uint32_t count = 0;
   };
   ImageSet drawImages(const PayloadPages& payloads, uint32_t page, const ImageryBinding* imagery, bool cover) const;
@@ -233,6 +247,8 @@ class TerrainRenderer {
   void writeMarks(VkCommandBuffer cmd, uint32_t& next, uint32_t mark) const;
   const AtmosphereLuts* atmosphere_;      // the style's, for the terrain pipelines (nullptr: none)
   std::unique_ptr<AtmosphereView> view_;  // with atmosphere_ only
+  std::unique_ptr<TerrainShadows> shadows_;  // with the style's shadows and surface textures only
+  ShadowCascades cascades_;                  // of the frame prepare() drew the shadow maps for
   // The water and wireframe pipelines, created on a second thread while the others are (pipeline
   // creation is most of the renderer's set-up: docs/benchmark.md, "Cold start").
   struct OptionalPipelines {

@@ -251,6 +251,7 @@ VkDevice createLogicalDevice(VkPhysicalDevice physical, uint32_t family, bool sw
   features.features.shaderFloat64 = VK_TRUE;                        // double-precision elevation and positions
   features.features.shaderInt64 = VK_TRUE;                          // the noise lattice keys
   features.features.fillModeNonSolid = supported.fillModeNonSolid;  // the wireframe view, when present
+  features.features.depthClamp = supported.depthClamp;  // shadow casters nearer the sun than a cascade's box
 
   float priority = 1.0f;
   VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};

@@ -48,6 +48,15 @@ struct FixedFunctionState {
     rendering.colorAttachmentCount = 1;
     rendering.pColorAttachmentFormats = &desc.colourFormat;
     rendering.depthAttachmentFormat = desc.depthFormat;
+    if (desc.depthOnly) describeDepthOnly(desc);
+  }
+  void describeDepthOnly(const GraphicsPipelineDesc& desc) {
+    depth.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
+    raster.depthBiasEnable = desc.depthBiasConstant != 0.0f || desc.depthBiasSlope != 0.0f;
+    raster.depthBiasConstantFactor = desc.depthBiasConstant;
+    raster.depthBiasSlopeFactor = desc.depthBiasSlope;
+    blend.attachmentCount = 0;
+    rendering.colorAttachmentCount = 0;
   }
   FixedFunctionState(const FixedFunctionState&) = delete;
   FixedFunctionState& operator=(const FixedFunctionState&) = delete;
@@ -89,7 +98,8 @@ GraphicsPipeline::GraphicsPipeline(Device& device, const GraphicsPipelineDesc& d
   layout_ = pushDescriptorPipelineLayout(device, setLayout_, stages_, desc.pushConstantBytes);
 
   UniqueShaderModule vert = loadShaderModule(device, desc.vertexShader);
-  UniqueShaderModule frag = loadShaderModule(device, desc.fragmentShader);
+  UniqueShaderModule frag;
+  if (!desc.depthOnly) frag = loadShaderModule(device, desc.fragmentShader);
   VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
                                                {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
   stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
@@ -111,10 +121,15 @@ GraphicsPipeline::GraphicsPipeline(Device& device, const GraphicsPipelineDesc& d
   if (!desc.vertexSpecialization.empty()) stages[0].pSpecializationInfo = &vertexSpecialization;
   if (!desc.fragmentSpecialization.empty()) stages[1].pSpecializationInfo = &fragmentSpecialization;
 
-  const FixedFunctionState state(desc);
+  FixedFunctionState state(desc);
+  if (desc.depthOnly) {
+    VkPhysicalDeviceFeatures features{};
+    vkGetPhysicalDeviceFeatures(device.physical(), &features);
+    state.raster.depthClampEnable = features.depthClamp;
+  }
   VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
   state.describe(info);
-  info.stageCount = 2;
+  info.stageCount = desc.depthOnly ? 1 : 2;
   info.pStages = stages;
   info.layout = layout_;
   VkPipeline pipeline;

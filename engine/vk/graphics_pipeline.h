@@ -27,6 +27,12 @@ struct GraphicsPipelineDesc {
   VkFormat depthFormat = VK_FORMAT_D32_SFLOAT;
   bool depthTest = true;  // reversed-Z: GREATER_OR_EQUAL passes nearer fragments
   bool depthWrite = true;
+  // A depth-only pipeline (shadow maps): no fragment stage, no colour attachment (colourFormat is
+  // ignored), forward depth (LESS_OR_EQUAL passes fragments nearer the light), and the rasteriser's
+  // depth bias (constant, slope factors); depth clamped where the device has depthClamp.
+  bool depthOnly = false;
+  float depthBiasConstant = 0.0f;
+  float depthBiasSlope = 0.0f;
   bool wireframe = false;  // needs fillModeNonSolid
   VkCullModeFlags cull = VK_CULL_MODE_NONE;
   bool blend = false;                                     // premultiplied-alpha blending (overlays)

@@ -39,12 +39,12 @@ UniqueImage createImage(Device& device, VkFormat format, VkExtent2D extent, uint
 }
 
 UniqueImageView createArrayView(VkDevice device, VkImage image, VkFormat format, uint32_t layers, uint32_t firstMip,
-                                uint32_t mips) {
+                                uint32_t mips, VkImageAspectFlags aspect, uint32_t firstLayer) {
   VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
   info.image = image;
   info.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
   info.format = format;
-  info.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, firstMip, mips, 0, layers};
+  info.subresourceRange = {aspect, firstMip, mips, firstLayer, layers};
   VkImageView view;
   GLOBE_VK_CHECK(vkCreateImageView(device, &info, nullptr, &view));
   return UniqueImageView(device, view);

@@ -72,10 +72,11 @@ UniqueMemory allocateMemory(Device& device, const VkMemoryRequirements& req, VkM
 // `name` for the debug tools; its memory is the caller's (Image binds its own).
 UniqueImage createImage(Device& device, VkFormat format, VkExtent2D extent, uint32_t layers, uint32_t mips,
                         VkSampleCountFlagBits samples, VkImageUsageFlags usage, const char* name);
-// A 2D_ARRAY view of levels [firstMip, firstMip + mips) of every layer (an array view even for one
-// layer: the shaders declare arrays).
+// A 2D_ARRAY view of levels [firstMip, firstMip + mips) of layers [firstLayer, firstLayer + layers)
+// (an array view even for one layer: the shaders declare arrays).
 UniqueImageView createArrayView(VkDevice device, VkImage image, VkFormat format, uint32_t layers, uint32_t firstMip,
-                                uint32_t mips);
+                                uint32_t mips, VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT,
+                                uint32_t firstLayer = 0);
 
 // A full pipeline barrier for images in the common transitions of this engine (layout change).
 void transitionImage(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,

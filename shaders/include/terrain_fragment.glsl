@@ -9,6 +9,9 @@
 //   display-encoded colour and samples nothing, since per-fragment cost is what bounds lavapipe.
 // - GLOBE_TERRAIN_IMAGERY (with NORMAL_MAPS, TerrainStyle::imagery): the maps are the imagery
 //   tiles', chosen by texel magnification apart from the mesh (planet/imagery/imagery_selection.h).
+// - GLOBE_TERRAIN_SHADOWS (with NORMAL_MAPS, TerrainStyle::shadows): the sun's light on the mapped
+//   fragments times its share that the relief lets through, from the cascaded shadow maps
+//   (engine/render/terrain_shadows.h; terrain_shadows.glsl).
 // - GLOBE_TERRAIN_ATMOSPHERE (for terrain_atmosphere.vert): mapped fragments lit by the vertex
 //   stage's sun and sky light through the air instead of Lambert + ambient, water seen through it.
 // - GLOBE_TERRAIN_WATER (nodes that have sea): the fragments below sea level shaded as water
@@ -27,6 +30,9 @@ layout(std140, set = 0, binding = 2) uniform TerrainFrameBlock { TerrainFrame fr
 layout(location = 0) in vec3 inColour;
 // Hole mask of a source's kept no-data (elevation_sources.glsl), interpolated from the samples.
 layout(location = 1) in float inHole;
+#if defined(GLOBE_TERRAIN_IMAGERY) || defined(GLOBE_TERRAIN_WATER) || defined(GLOBE_TERRAIN_SHADOWS)
+layout(location = 3) in vec3 inRelative;  // camera-relative position, metres
+#endif
 layout(location = 0) out vec4 outColour;
 
 #ifdef GLOBE_TERRAIN_NORMAL_MAPS
@@ -59,9 +65,6 @@ vec4 sampleSurface(vec3 at, float lod) {
   }
 }
 layout(location = 18) flat in uint inImageryCell;
-#ifndef GLOBE_TERRAIN_WATER
-layout(location = 3) in vec3 inRelative;
-#endif
 #else
 layout(constant_id = GLOBE_TERRAIN_SPEC_COLOUR_LAYER) const uint kColourLayer = 0u;
 // The drawn page's surface texture (payload_layout.h), a layer per slot (two with the colour layer).
@@ -69,6 +72,9 @@ layout(set = 0, binding = GLOBE_TERRAIN_SURFACE_BINDING) uniform sampler2DArray 
 // An explicit LOD: no derivatives, and the blend to the parent's mip without a branch (a per-fragment
 // branch around a second fetch doubled the terrain pass on lavapipe: docs/rendering.md).
 vec4 sampleSurface(vec3 at, float lod) { return textureLod(surfaceTexture, at, lod); }
+#endif
+#ifdef GLOBE_TERRAIN_SHADOWS
+#include "terrain_shadows.glsl"
 #endif
 layout(location = 19) flat in vec3 inSunFace;
 layout(location = 21) in vec2 inChroma;
@@ -87,7 +93,6 @@ layout(location = 8) in vec3 inAerialInscatter;
 #endif
 #ifdef GLOBE_TERRAIN_WATER
 layout(location = 2) in float inSeaDepth;
-layout(location = 3) in vec3 inRelative;
 #ifdef GLOBE_TERRAIN_ATMOSPHERE
 layout(location = 7) in vec3 inAerialTransmittance;
 layout(location = 9) flat in vec3 inSkyZenith;
@@ -183,13 +188,18 @@ vec3 mappedColour(vec3 modulation, out float coast, out float seaCover) {
   }
 #endif
   vec3 albedo = root * root * modulation;
+#ifdef GLOBE_TERRAIN_SHADOWS
+  float sunShare = sunVisibility(inRelative, dot(n, inSunFace));
+#else
+  const float sunShare = 1.0;
+#endif
 #ifdef GLOBE_TERRAIN_ATMOSPHERE
   // The vertex stage's light through the air, applied to the mapped normal and colour
   // (terrain_atmosphere.glsl, TerrainAerial).
-  vec3 light = surfaceLight(n, inSunFace, normalize(inUp), inSunLight, inSkyLight);
+  vec3 light = surfaceLight(n, inSunFace, normalize(inUp), inSunLight * sunShare, inSkyLight);
   return encodeScene(albedo * light + inAerialInscatter, 1.0).rgb;
 #else
-  float light = frame.sun.w + (1.0 - frame.sun.w) * max(dot(n, inSunFace), 0.0);
+  float light = frame.sun.w + (1.0 - frame.sun.w) * max(dot(n, inSunFace), 0.0) * sunShare;
   return encodeScene(albedo * light, 1.0).rgb;
 #endif
 }

@@ -64,10 +64,14 @@ struct TerrainDvec4 {
 #define GLOBE_IMAGERY_TILE_MAP_SCALE 4u
 #define GLOBE_IMAGERY_TILE_CELLS 128u
 #define GLOBE_IMAGERY_CELLS_PER_SIDE 8u
+// Shadow maps (engine/render/shadow_cascades.h): cascades drawn per frame, and the _shadows fragment
+// stages' sampler2DArrayShadow (a layer per cascade), past the imagery pages' bindings.
+#define GLOBE_SHADOW_CASCADES 3
+#define GLOBE_TERRAIN_SHADOW_BINDING 20
 // Texels per side of a detail texture's level 0 (planet/surface/detail_texture.h, kDetailTextureSize).
 #define GLOBE_DETAIL_TEXTURE_SIZE 256
 
-// Constants of one frame (std430, 256 bytes).
+// Constants of one frame (std140, 480 bytes).
 struct TerrainFrame {
   GLOBE_MAT4 clipFromCamera;  //   0: projection * view rotation: camera-centred planet-fixed axes -> clip
   GLOBE_VEC4 cameraHigh;      //  64: xyz = float(camera - origin), metres
@@ -85,6 +89,11 @@ struct TerrainFrame {
   GLOBE_VEC4 detailLevels;      // 240: x, y = quadtree levels whose node is one tile of the fine, coarse detail
                                 //      texture (TerrainDetailTiling); z, w = the splat's fade with distance:
                                 //      clamp(z / gl_FragCoord.z + w, 0, 1) (0, 0: no fade)
+  GLOBE_MAT4 shadowFromCamera[GLOBE_SHADOW_CASCADES];  // 256: camera-relative metres -> cascade c's clip
+                                                       //      (x, y in [-1, 1], z in [0, 1], 0 nearest the sun)
+  GLOBE_VEC4 shadow;      // 448: x = cascades drawn (0: no shadows); y = where the last one starts fading
+                          //      out (its box's half-width fraction); zw unused
+  GLOBE_VEC4 shadowBias;  // 464: xyz = depth bias of each cascade (depth units); w unused
 };
 
 // One cell of a drawn node's imagery table (std430, 32 bytes; the node's cells in rows along v).
@@ -131,13 +140,14 @@ struct TerrainDrawPush {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(TerrainFrame) == 256);
+static_assert(sizeof(TerrainFrame) == 480);
 static_assert(sizeof(TerrainInstance) == 128);
 static_assert(sizeof(TerrainImageryCell) == 32);
 static_assert(GLOBE_IMAGERY_TILE_CELLS == GLOBE_IMAGERY_TILE_GRID * GLOBE_IMAGERY_TILE_MAP_SCALE);
 static_assert(GLOBE_IMAGERY_TILE_PAGES == 4, "surface_textures.glsl declares four pages");
 static_assert(GLOBE_TERRAIN_DETAIL_BINDING > GLOBE_TERRAIN_IMAGERY_BINDING_ATMOSPHERE);
 static_assert(GLOBE_TERRAIN_SURFACE_BINDING > GLOBE_TERRAIN_DETAIL_BINDING);
+static_assert(GLOBE_TERRAIN_SHADOW_BINDING >= GLOBE_TERRAIN_SURFACE_BINDING + GLOBE_IMAGERY_TILE_PAGES);
 static_assert(sizeof(TerrainReprojectionFrame) == 32 && sizeof(TerrainReprojectionNode) == 32);
 }  // namespace globe::gpu
 #endif
