@@ -30,6 +30,7 @@ void readGpuTimes(VkDevice device, VkQueryPool queries, double timestampPeriod_n
   stats.gpu_terrain_ms = ms(kFirstPassQuery + kMarkGridsBegin, kFirstPassQuery + kMarkSkirtsBegin);
   stats.gpu_skirts_ms = ms(kFirstPassQuery + kMarkSkirtsBegin, kFirstPassQuery + kMarkSkyBegin);
   stats.gpu_sky_ms = ms(kFirstPassQuery + kMarkSkyBegin, kFirstPassQuery + kMarkSkyEnd);
+  stats.gpu_shadows_ms = ms(kFirstPassQuery + kMarkShadowsBegin, kFirstPassQuery + kMarkShadowsEnd);
 }
 
 }  // namespace
@@ -74,9 +75,9 @@ FrameStats HeadlessRenderer::renderFrame(Terrain& terrain, const Camera& camera,
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   GLOBE_VK_CHECK(vkBeginCommandBuffer(cmd_, &begin));
   vkCmdWriteTimestamp2(cmd_, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, queries_, kFrameBeginQuery);
+  terrain.renderer().setPassTimestamps({queries_, kFirstPassQuery});
   terrain.prepare(cmd_, camera, uint32_t(frame_ % 2));
   target_->begin(cmd_, clear_.data());
-  terrain.renderer().setPassTimestamps({queries_, kFirstPassQuery});
   terrain.record(cmd_, camera, uint32_t(frame_ % 2));
   terrain.renderer().setPassTimestamps({});  // the terrain may be drawn elsewhere next (tests)
   target_->end(cmd_);

@@ -209,14 +209,18 @@ void TerrainRenderer::prepare(VkCommandBuffer cmd, const Camera& camera, const g
                               std::span<const DrawNode> nodes, const PayloadPages& payloads, uint32_t frameIndex,
                               double groundRadius_m) {
   if (view_) view_->record(cmd, camera, style_.sunDirection, style_.terrainRadii_m, frameIndex);
+  uint32_t nextMark = kMarkShadowsBegin;
+  writeMarks(cmd, nextMark, kMarkShadowsBegin);
   cascades_ = {};
-  if (!shadows_ || nodes.empty()) return;
-  cascades_ = fitShadowCascades(
-      {&camera, glm::normalize(style_.sunDirection), groundRadius_m, style_.terrainRadii_m, shadows_->resolution()});
-  gpu::TerrainFrame frame;
-  writeFrameConstants(reinterpret_cast<unsigned char*>(&frame), camera, origin_m, false);
-  const ShadowGrids grids{indices_.handle(), {first_[0], first_[1]}, {count_[0], count_[1]}};
-  shadows_->record(cmd, cascades_, frame, nodes, origin_m, camera.position_m, payloads, grids, frameIndex);
+  if (shadows_ && !nodes.empty()) {
+    cascades_ = fitShadowCascades({&camera, glm::normalize(style_.sunDirection), groundRadius_m,
+                                   style_.terrainRadii_m, shadows_->resolution()});
+    gpu::TerrainFrame frame;
+    writeFrameConstants(reinterpret_cast<unsigned char*>(&frame), camera, origin_m, false);
+    const ShadowGrids grids{indices_.handle(), {first_[0], first_[1]}, {count_[0], count_[1]}};
+    shadows_->record(cmd, cascades_, frame, nodes, origin_m, camera.position_m, payloads, grids, frameIndex);
+  }
+  writeMarks(cmd, nextMark, kMarkShadowsEnd);
 }
 
 DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, const glm::dvec3& origin_m,

@@ -131,8 +131,17 @@ struct DrawNode {
 };
 
 // Timestamps written between the renderer's passes, at `firstQuery` + TerrainPassMark in `pool`
-// (for the benchmark's GPU split; VK_NULL_HANDLE writes none). All four are written every record().
-enum TerrainPassMark : uint32_t { kMarkGridsBegin, kMarkSkirtsBegin, kMarkSkyBegin, kMarkSkyEnd, kTerrainPassMarks };
+// (for the benchmark's GPU split; VK_NULL_HANDLE writes none): the first two by every prepare(), the
+// other four by every record().
+enum TerrainPassMark : uint32_t {
+  kMarkShadowsBegin,
+  kMarkShadowsEnd,
+  kMarkGridsBegin,
+  kMarkSkirtsBegin,
+  kMarkSkyBegin,
+  kMarkSkyEnd,
+  kTerrainPassMarks
+};
 struct PassTimestamps {
   VkQueryPool pool = VK_NULL_HANDLE;
   uint32_t firstQuery = 0;

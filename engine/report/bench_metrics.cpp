@@ -48,6 +48,8 @@ constexpr BenchMetric kMetrics[] = {
      [](const BenchFrame& f) { return f.stats.gpu_sky_ms; }},
     {"gpu_generation_ms", "ms", "GPU time of the generation batches collected this frame", MetricKind::Real, 4,
      [](const BenchFrame& f) { return f.stats.gpu_generation_ms; }},
+    {"gpu_shadows_ms", "ms", "of gpu_ms: the shadow maps' depth passes", MetricKind::Real, 4,
+     [](const BenchFrame& f) { return f.stats.gpu_shadows_ms; }},
 };
 
 }  // namespace

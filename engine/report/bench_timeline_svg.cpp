@@ -56,6 +56,7 @@ std::vector<Panel> timelinePanels() {
        {{"gpu_terrain_ms", "#2ca02c", [](const BenchFrame& f) { return metricValue("gpu_terrain_ms", f); }},
         {"gpu_skirts_ms", "#9467bd", [](const BenchFrame& f) { return metricValue("gpu_skirts_ms", f); }},
         {"gpu_sky_ms", "#17becf", [](const BenchFrame& f) { return metricValue("gpu_sky_ms", f); }},
+        {"gpu_shadows_ms", "#8c564b", [](const BenchFrame& f) { return metricValue("gpu_shadows_ms", f); }},
         {"gpu_generation_ms", "#d62728", [](const BenchFrame& f) { return metricValue("gpu_generation_ms", f); }}}},
       {"Nodes drawn",
        {{"nodes_selected", "#1f77b4", [](const BenchFrame& f) { return metricValue("nodes_selected", f); }},

@@ -14,6 +14,7 @@ struct FrameStats {
   double gpu_terrain_ms = 0;     // the node grids, full and partial
   double gpu_skirts_ms = 0;      // the skirt strips at level changes
   double gpu_sky_ms = 0;         // the sky behind the terrain
+  double gpu_shadows_ms = 0;     // the shadow maps' depth passes (engine/render/terrain_shadows.h)
   double gpu_generation_ms = 0;  // payload generation batches collected this frame (own submits)
   uint32_t nodes_selected = 0;   // quadtree nodes drawn
   // Of those, drawn at half resolution (their parent's LOD): children of a refined node that lie

@@ -117,7 +117,8 @@ TEST(BenchReportDecisions, SummaryHasEnvironmentLatencyPhasesAndGpuSplit) {
   EXPECT_EQ(json["generation_latency_frames"]["p95"], 4);
   EXPECT_EQ(json["phases"].size(), 6u);
   EXPECT_EQ(json["phases"][2]["name"], "low pass");
-  for (const char* key : {"gpu_terrain_ms", "gpu_skirts_ms", "gpu_sky_ms", "gpu_generation_ms", "ground_speed_mps"})
+  for (const char* key :
+       {"gpu_terrain_ms", "gpu_skirts_ms", "gpu_sky_ms", "gpu_generation_ms", "gpu_shadows_ms", "ground_speed_mps"})
     EXPECT_TRUE(json["metrics"].contains(key)) << key;
   EXPECT_FALSE(json.contains("baseline"));
   const std::string html = readFileBytes(dir / "report.html");

@@ -276,8 +276,8 @@ TEST(BenchReport, CsvHeaderIsExactWithOneRowPerFrame) {
   EXPECT_EQ(rows[0],
             "frame,t,altitude_m,frame_ms,select_ms,gpu_ms,nodes_selected,nodes_partial,triangles,draw_calls,"
             "gen_dispatched,gen_in_flight,gen_completed,evicted,resident_mib,ground_speed_mps,gpu_terrain_ms,"
-            "gpu_skirts_ms,gpu_sky_ms,gpu_generation_ms");
-  for (std::size_t i = 1; i < rows.size(); ++i) ASSERT_EQ(split(rows[i], ',').size(), 20U) << rows[i];
+            "gpu_skirts_ms,gpu_sky_ms,gpu_generation_ms,gpu_shadows_ms");
+  for (std::size_t i = 1; i < rows.size(); ++i) ASSERT_EQ(split(rows[i], ',').size(), 21U) << rows[i];
   // Frame 2 of the synthetic run, column by column.
   const auto f = split(rows[3], ',');
   EXPECT_EQ(f[0], "2");
@@ -311,7 +311,8 @@ TEST(BenchReport, SummaryJsonHasEveryKey) {
   const std::vector<std::string> columns = {
       "altitude_m",   "frame_ms",         "select_ms",      "gpu_ms",        "nodes_selected", "nodes_partial",
       "triangles",    "draw_calls",       "gen_dispatched", "gen_in_flight", "gen_completed",  "evicted",
-      "resident_mib", "ground_speed_mps", "gpu_terrain_ms", "gpu_skirts_ms", "gpu_sky_ms",     "gpu_generation_ms"};
+      "resident_mib", "ground_speed_mps", "gpu_terrain_ms", "gpu_skirts_ms", "gpu_sky_ms",     "gpu_generation_ms",
+      "gpu_shadows_ms"};
   ASSERT_EQ(json["metrics"].size(), columns.size());
   for (const auto& c : columns) {
     ASSERT_TRUE(json["metrics"].contains(c)) << c;
