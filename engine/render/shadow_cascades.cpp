@@ -77,21 +77,40 @@ ShadowCascade fitCascade(const ShadowView& v, const glm::dvec3& centreUp, double
   return c;
 }
 
+// The finest cascade's radius: 2.5 x the height (at least 200 m), up to a power of two, so that radii
+// (and so texel sizes) change in steps as the camera climbs, not every frame, and the shadows' edges
+// do not crawl.
+double firstRadius_m(double height_m) {
+  return std::exp2(std::ceil(std::log2(std::max(kFirstRadiusPerHeight * height_m, kFirstRadiusMin_m))));
+}
+
+// Whether a cascade of `radius_m` is drawn (beyond a quarter of the radius a flat box no longer fits).
+bool cascadeFits(double radius_m, double groundRadius_m) { return radius_m <= 0.25 * groundRadius_m; }
+
 }  // namespace
+
+bool sunAboveShadowLimit(const glm::dvec3& up, const glm::dvec3& sun) { return glm::dot(up, sun) >= kSunBelowHorizonSin; }
+
+double shadowReach_m(double height_m, double groundRadius_m, bool sunUp) {
+  if (height_m > kShadowMaxHeight_m || !sunUp) return 0.0;
+  double reach_m = 0.0;
+  double radius_m = firstRadius_m(std::max(height_m, 1.0));
+  for (uint32_t k = 0; k < kShadowCascades && cascadeFits(radius_m, groundRadius_m); ++k, radius_m *= kShadowCascadeRatio)
+    reach_m = 1.5 * radius_m;
+  return reach_m;
+}
 
 ShadowCascades fitShadowCascades(const ShadowView& v) {
   ShadowCascades out;
   const Camera& camera = *v.camera;
   const glm::dvec3 up = glm::normalize(camera.position_m);
   const double height_m = std::max(glm::length(camera.position_m) - v.groundRadius_m, 1.0);
-  if (height_m > kShadowMaxHeight_m || glm::dot(up, v.sun) < kSunBelowHorizonSin) return out;
+  if (height_m > kShadowMaxHeight_m || !sunAboveShadowLimit(up, v.sun)) return out;
   // The patches lie ahead of the camera: half their radius along the view's horizontal direction.
   glm::dvec3 ahead = camera.forward - up * glm::dot(camera.forward, up);
   ahead = glm::length(ahead) > 1e-6 ? glm::normalize(ahead) : glm::dvec3(0.0);
-  // A power of two: radii (and so texel sizes) change in steps as the camera climbs, not every frame,
-  // and the shadows' edges do not crawl.
-  double radius_m = std::exp2(std::ceil(std::log2(std::max(kFirstRadiusPerHeight * height_m, kFirstRadiusMin_m))));
-  for (; out.count < kShadowCascades && radius_m <= 0.25 * v.groundRadius_m; radius_m *= kShadowCascadeRatio) {
+  double radius_m = firstRadius_m(height_m);
+  for (; out.count < kShadowCascades && cascadeFits(radius_m, v.groundRadius_m); radius_m *= kShadowCascadeRatio) {
     const glm::dvec3 centreUp = glm::normalize(up * v.groundRadius_m + ahead * (0.5 * radius_m));
     out.cascades[out.count++] = fitCascade(v, centreUp, radius_m);
   }

@@ -53,6 +53,14 @@ inline constexpr float kShadowFadeStart = 0.8f;
 // A fragment's depth bias in its cascade's texels (widened by the slope, terrain_shadows.glsl).
 inline constexpr double kShadowBiasTexels = 2.0;
 
+// Whether the sun in direction `sun` stands high enough over the horizon of `up` (unit vectors) for
+// relief to cast shadows: no more than 5 degrees below it.
+bool sunAboveShadowLimit(const glm::dvec3& up, const glm::dvec3& sun);
+
+// How far from the point under the camera the cascades fitShadowCascades draws reach (metres): the
+// last one's centre offset plus its radius; 0 when none is drawn (too high, or `sunUp` false).
+double shadowReach_m(double heightAboveGround_m, double groundRadius_m, bool sunUp);
+
 // Above this height over the ground the relief's shadows are sub-pixel (10 km of relief from 1000 km
 // at 1280x720 and 60 degrees) and no cascade is drawn.
 inline constexpr double kShadowMaxHeight_m = 1.0e6;

@@ -1,5 +1,7 @@
 #include "engine/render/terrain.h"
 
+#include "engine/render/shadow_casters.h"
+#include "engine/render/terrain_shadows.h"
 #include "engine/vk/vk_check.h"
 #include "planet/elevation/relief_roughness.h"
 #include "planet/sources/source_mosaic.h"
@@ -237,13 +239,31 @@ void Terrain::updateAt(uint64_t poolFrame, const Camera& camera, uint64_t poolCo
   origin_.update(camera.position_m);
 
   drawNodes_.clear();
-  for (size_t k = 0; k < selection_.nodes.size(); ++k) {
-    const SelectedNode& n = selection_.nodes[k];
-    auto slot = pool_->slotOf(n.id);
-    if (!slot) continue;  // the selection only draws resident nodes; guard anyway
-    drawNodes_.push_back({n.id, *slot, n.morph, n.partial, generator_->slotCentre(*slot),
-                          generator_->slotHasWater(*slot), uint32_t(k * kImageryCellsPerNode)});
-  }
+  for (size_t k = 0; k < selection_.nodes.size(); ++k)
+    addDrawNode(selection_.nodes[k], uint32_t(k * kImageryCellsPerNode), drawNodes_);
+  shadowNodes_.clear();
+  if (renderer_->shadows() && frustum) gatherShadowCasters(camera, *frustum);
+}
+
+void Terrain::addDrawNode(const SelectedNode& n, uint32_t imageryCell, std::vector<DrawNode>& out) const {
+  auto slot = pool_->slotOf(n.id);
+  if (!slot) return;  // the selection only draws resident nodes; guard anyway
+  out.push_back({n.id, *slot, n.morph, n.partial, generator_->slotCentre(*slot), generator_->slotHasWater(*slot),
+                 imageryCell});
+}
+
+void Terrain::gatherShadowCasters(const Camera& camera, const Frustum& view) {
+  const glm::dvec3 up = glm::normalize(camera.position_m);
+  const glm::dvec3 sun = glm::normalize(renderer_->style().sunDirection);
+  shadowGroundRadius_m_ = groundRadius(up);
+  const double reach_m = shadowReach_m(glm::length(camera.position_m) - shadowGroundRadius_m_, shadowGroundRadius_m_,
+                                       sunAboveShadowLimit(up, sun));
+  shadowNodes_ = drawNodes_;
+  if (reach_m <= 0.0) return;
+  selectShadowCasters(selector_, camera, view, sun, reach_m, budgeted_.depthCap(),
+                      settings_.streaming.budget.maxDrawnNodes, *pool_, casters_);
+  pool_->markUsed(casters_.nodes);  // drawn this frame: their slots are not regenerated under it
+  for (const SelectedNode& n : casters_.nodes) addDrawNode(n, 0, shadowNodes_);
 }
 
 void Terrain::updateImagery(uint64_t poolFrame, uint64_t poolCompletedFrame, const Camera& camera, double lambda,
@@ -294,9 +314,8 @@ void Terrain::gatherWarnings() {
 }
 
 void Terrain::prepare(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex) {
-  const ScopedFrameLoopThread frameLoop;  // the ground under the camera from cached tiles only
-  renderer_->prepare(cmd, camera, origin_.origin_m(), drawNodes_, generator_->pages(), frameIndex,
-                     groundRadius(glm::normalize(camera.position_m)));
+  renderer_->prepare(cmd, camera, origin_.origin_m(), shadowNodes_, generator_->pages(), frameIndex,
+                     shadowGroundRadius_m_);
 }
 
 void Terrain::record(VkCommandBuffer cmd, const Camera& camera, uint32_t frameIndex) {

@@ -166,6 +166,10 @@ class Terrain {
   void prime(uint64_t firstFrame, const Camera& camera);
   // Copies warnings not seen yet from the budget and the pool; throws when generation keeps failing.
   void gatherWarnings();
+  // Appends `n`'s draw record to `out` (nothing when its payload is not resident).
+  void addDrawNode(const SelectedNode& n, uint32_t imageryCell, std::vector<DrawNode>& out) const;
+  // shadowNodes_ for the frame: the drawn nodes and the resident casters outside `view`.
+  void gatherShadowCasters(const Camera& camera, const Frustum& view);
   // Imagery LOD's frame after the mesh's selection (texel magnification stats into stats_), and
   // without it the texel magnification of the payloads' own maps.
   // lambda: the view's pixels per radian.
@@ -190,6 +194,11 @@ class Terrain {
   std::unique_ptr<TerrainRenderer> renderer_;
   Selection selection_;
   std::vector<DrawNode> drawNodes_;
+  // With shadows: the drawn nodes and the casters beyond the view (shadow_casters.h), what the
+  // shadow maps draw, and the ground's radius under the camera they were chosen for.
+  Selection casters_;
+  std::vector<DrawNode> shadowNodes_;
+  double shadowGroundRadius_m_ = 0.0;
   FloatingOrigin origin_;
   FrameStats stats_;
   std::vector<std::string> warnings_;

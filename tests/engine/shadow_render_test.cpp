@@ -16,6 +16,10 @@ constexpr uint32_t kWidth = 192, kHeight = 108;
 // Hills seen from 1 km at dusk: the sun 8 degrees up, 30 degrees right of the view.
 constexpr GeodeticPose kPose{22.05, -98.4, 1000.0, 60.0, -8.0, 0.0};
 constexpr SunAngles kDusk{90.0, 8.0};
+// The same hills looking down and away from a sun 5 degrees up behind the camera: the relief that
+// shades the near ground lies outside the view (shadow_casters.h).
+constexpr GeodeticPose kPoseDown{22.05, -98.4, 1000.0, 60.0, -25.0, 0.0};
+constexpr SunAngles kBehind{250.0, 5.0};
 
 struct Frame {
   ImageRgba image;
@@ -24,20 +28,20 @@ struct Frame {
   std::array<uint32_t, kShadowCascades> casters{};
 };
 
-Frame render(vk::Device& device, bool shadows) {
+Frame render(vk::Device& device, const GeodeticPose& pose, const SunAngles& sunAngles, bool shadows) {
   const ElevationModel& model = earthlikeModel();
   TerrainSettings settings;
   settings.gridCells = 32;
   settings.normalMapScale = 1;
   settings.atmosphere = AtmosphereDetail::kOff;  // Lambert and ambient: what the sun adds is plain
   settings.shadows = shadows;
-  const glm::dvec3 down = directionFromLatLon(kPose.latitude_deg, kPose.longitude_deg);
-  settings.style.sunDirection = sunDirectionAt(down * model.radius_m(), kDusk);
+  const glm::dvec3 down = directionFromLatLon(pose.latitude_deg, pose.longitude_deg);
+  settings.style.sunDirection = sunDirectionAt(down * model.radius_m(), sunAngles);
   auto terrain = Terrain::create(device, model, settings);
   EXPECT_TRUE(terrain.ok()) << terrain.error().format();
   HeadlessRenderer renderer(device, {kWidth, kHeight});
   Frame f;
-  f.camera = cameraFromPose(kPose, (*terrain)->cameraGroundRadius(down), model.radius_m(), double(kWidth) / kHeight);
+  f.camera = cameraFromPose(pose, (*terrain)->cameraGroundRadius(down), model.radius_m(), double(kWidth) / kHeight);
   renderer.renderFrame(**terrain, f.camera, true);
   f.image = toImage(renderer.readback(), f.camera);
   f.sun = glm::normalize(settings.style.sunDirection);
@@ -119,15 +123,16 @@ TEST(ShadowCascades, BoxesHoldTheGroundAndLookAlongTheSunlight) {
 
 class ShadowRenderTest : public GpuTest {};
 
-TEST_F(ShadowRenderTest, AtDuskGroundBehindARidgeIsDarkerThanTheLitSlope) {
-  const Frame lit = render(device(), false), shaded = render(device(), true);
+// Renders `pose` under `sun` with and without shadows and compares the pixels facing the sun
+// (cos > 0.3), classed by the CPU reference: the sun clears the relief by 30 m or more, or relief
+// stands 30 m or more in its way (the drawn mesh is coarser than the reference; the margin keeps the
+// classes apart). Rows from `firstRow` down.
+void expectReliefShadows(vk::Device& device, const GeodeticPose& pose, const SunAngles& sun, uint32_t firstRow) {
+  const Frame lit = render(device, pose, sun, false), shaded = render(device, pose, sun, true);
   EXPECT_GT(shaded.casters[0], 0u);
-  // Pixels facing the sun (cos > 0.3), classed by the CPU reference: the sun clears the relief by
-  // 30 m or more, or relief stands 30 m or more in its way (the drawn mesh is coarser than the
-  // reference; the margin keeps the classes apart).
   double sums[2][2]{};  // [shadowed by relief?][with shadows?]
   int counts[2]{};
-  for (uint32_t y = kHeight / 3; y < kHeight; ++y) {
+  for (uint32_t y = firstRow; y < kHeight; ++y) {
     for (uint32_t x = 0; x < kWidth; ++x) {
       if (!std::isfinite(lit.image.z[size_t(y) * kWidth + x])) continue;
       const SunReach r = sunReach(earthlikeModel(), groundAt(lit, x, y), lit.sun);
@@ -146,9 +151,18 @@ TEST_F(ShadowRenderTest, AtDuskGroundBehindARidgeIsDarkerThanTheLitSlope) {
   const double sunlitOn = sums[0][1] / counts[0], behindOn = sums[1][1] / counts[1];
   std::printf("[ info ] mean luminance without shadows: sunlit %.4f, behind relief %.4f; with: %.4f, %.4f\n",
               sunlitOff, behindOff, sunlitOn, behindOn);
-  EXPECT_LT(behindOn, 0.5 * sunlitOn);    // in shadow: much darker than the lit slopes
-  EXPECT_LT(behindOn, 0.5 * behindOff);   // and than without shadows (0.36 when written)
-  EXPECT_GT(sunlitOn, 0.9 * sunlitOff);   // the lit slopes stay lit
+  EXPECT_LT(behindOn, 0.5 * sunlitOn);   // in shadow: much darker than the lit slopes
+  EXPECT_LT(behindOn, 0.5 * behindOff);  // and than without shadows
+  EXPECT_GT(sunlitOn, 0.9 * sunlitOff);  // the lit slopes stay lit
+}
+
+TEST_F(ShadowRenderTest, AtDuskGroundBehindARidgeIsDarkerThanTheLitSlope) {
+  expectReliefShadows(device(), kPose, kDusk, kHeight / 3);
+}
+
+// The bottom third of a view looking away from the sun: its shadows come from relief behind the camera.
+TEST_F(ShadowRenderTest, ReliefBehindTheCameraShadesTheNearGround) {
+  expectReliefShadows(device(), kPoseDown, kBehind, 2 * kHeight / 3);
 }
 
 }  // namespace
