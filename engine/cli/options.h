@@ -75,8 +75,8 @@ struct QualityOptions {
   std::string detailTextures;                       // --detail-textures on|near|off; empty: the preset's
   std::string imagery;                              // --imagery on|off; empty: the preset's
 };
-// --quality, --tolerance, --texel-px, --roughness, --detail-textures, --imagery, --aa, --normal-map-scale, --atmosphere, --shadows
-// and, when withGrid,
+// --quality, --tolerance, --texel-px, --roughness, --detail-textures, --imagery, --aa, --normal-map-scale,
+// --atmosphere, --shadows and, when withGrid,
 // --grid, with the same help and checks on every rendering command; read them back with terrainSettingsFromOptions.
 void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid = true);
 vk::DeviceOptions deviceOptions(const DeviceFlags& flags);

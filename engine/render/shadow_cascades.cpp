@@ -39,8 +39,9 @@ LightBounds groundBounds(const glm::dvec3& centreUp, double radius_m, glm::dvec2
   constexpr int kAzimuths = 24;
   for (int k = 0; k <= kAzimuths; ++k) {
     const double a = 2.0 * M_PI * k / kAzimuths;
-    const glm::dvec3 dir = k == kAzimuths ? centreUp
-                                          : glm::normalize(centreUp * band.x + (std::cos(a) * e1 + std::sin(a) * e2) * radius_m);
+    const glm::dvec3 dir = k == kAzimuths
+                               ? centreUp
+                               : glm::normalize(centreUp * band.x + (std::cos(a) * e1 + std::sin(a) * e2) * radius_m);
     b.add(dir * band.x, l);
     b.add(dir * band.y, l);
   }
@@ -89,13 +90,16 @@ bool cascadeFits(double radius_m, double groundRadius_m) { return radius_m <= 0.
 
 }  // namespace
 
-bool sunAboveShadowLimit(const glm::dvec3& up, const glm::dvec3& sun) { return glm::dot(up, sun) >= kSunBelowHorizonSin; }
+bool sunAboveShadowLimit(const glm::dvec3& up, const glm::dvec3& sun) {
+  return glm::dot(up, sun) >= kSunBelowHorizonSin;
+}
 
 double shadowReach_m(double height_m, double groundRadius_m, bool sunUp) {
   if (height_m > kShadowMaxHeight_m || !sunUp) return 0.0;
   double reach_m = 0.0;
   double radius_m = firstRadius_m(std::max(height_m, 1.0));
-  for (uint32_t k = 0; k < kShadowCascades && cascadeFits(radius_m, groundRadius_m); ++k, radius_m *= kShadowCascadeRatio)
+  for (uint32_t k = 0; k < kShadowCascades && cascadeFits(radius_m, groundRadius_m);
+       ++k, radius_m *= kShadowCascadeRatio)
     reach_m = 1.5 * radius_m;
   return reach_m;
 }

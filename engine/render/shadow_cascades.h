@@ -36,10 +36,10 @@ struct ShadowCascades {
 
 struct ShadowView {
   const Camera* camera = nullptr;
-  glm::dvec3 sun{0.0, 0.0, 1.0};    // unit, towards the sun, planet-fixed
-  double groundRadius_m = 0.0;      // the ground's radius under the camera (metres from the centre)
-  glm::dvec2 terrainRadii_m{0.0};   // the lowest and the highest terrain's radii on the planet
-  uint32_t resolution = 2048;       // texels per side of each cascade's map
+  glm::dvec3 sun{0.0, 0.0, 1.0};   // unit, towards the sun, planet-fixed
+  double groundRadius_m = 0.0;     // the ground's radius under the camera (metres from the centre)
+  glm::dvec2 terrainRadii_m{0.0};  // the lowest and the highest terrain's radii on the planet
+  uint32_t resolution = 2048;      // texels per side of each cascade's map
 };
 
 // The cascades for a view: none above kShadowMaxHeight_m over the ground or with the sun 5 degrees

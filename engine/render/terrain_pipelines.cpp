@@ -25,8 +25,8 @@ VkCullModeFlags gridCullMode(const TerrainStyle& style) {
 
 std::string terrainFragmentShader(const TerrainShading& s) {
   return std::string("terrain") + (s.atmosphere ? "_atmosphere" : "") + (s.normalMaps ? "_maps" : "") +
-         (s.normalMaps && s.imagery ? "_imagery" : "") + (s.normalMaps && s.shadows ? "_shadows" : "") + (s.water ? "_water" : "") + (s.holes ? "_holes" : "") +
-         (s.cover ? "_cover" : "") + ".frag";
+         (s.normalMaps && s.imagery ? "_imagery" : "") + (s.normalMaps && s.shadows ? "_shadows" : "") +
+         (s.water ? "_water" : "") + (s.holes ? "_holes" : "") + (s.cover ? "_cover" : "") + ".frag";
 }
 
 vk::GraphicsPipelineDesc terrainDesc(TargetFormat target, bool wireframe, VkCullModeFlags cull,

@@ -213,8 +213,8 @@ void TerrainRenderer::prepare(VkCommandBuffer cmd, const Camera& camera, const g
   writeMarks(cmd, nextMark, kMarkShadowsBegin);
   cascades_ = {};
   if (shadows_ && !nodes.empty()) {
-    cascades_ = fitShadowCascades({&camera, glm::normalize(style_.sunDirection), groundRadius_m,
-                                   style_.terrainRadii_m, shadows_->resolution()});
+    cascades_ = fitShadowCascades(
+        {&camera, glm::normalize(style_.sunDirection), groundRadius_m, style_.terrainRadii_m, shadows_->resolution()});
     gpu::TerrainFrame frame;
     writeFrameConstants(reinterpret_cast<unsigned char*>(&frame), camera, origin_m, false);
     const ShadowGrids grids{indices_.handle(), {first_[0], first_[1]}, {count_[0], count_[1]}};

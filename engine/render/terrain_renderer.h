@@ -40,7 +40,7 @@ struct TargetFormat;     // terrain_pipelines.h
 namespace gpu {
 struct TerrainReprojectionNode;  // shaders/include/terrain_layout.h
 struct TerrainFrame;
-}
+}  // namespace gpu
 
 enum class TerrainDebugView {
   kShaded,      // lit colour ramp (normal use)
@@ -254,8 +254,8 @@ class TerrainRenderer {
   PassTimestamps timestamps_;
   // Writes the pass marks from `next` up to and including `mark` (none without a query pool).
   void writeMarks(VkCommandBuffer cmd, uint32_t& next, uint32_t mark) const;
-  const AtmosphereLuts* atmosphere_;      // the style's, for the terrain pipelines (nullptr: none)
-  std::unique_ptr<AtmosphereView> view_;  // with atmosphere_ only
+  const AtmosphereLuts* atmosphere_;         // the style's, for the terrain pipelines (nullptr: none)
+  std::unique_ptr<AtmosphereView> view_;     // with atmosphere_ only
   std::unique_ptr<TerrainShadows> shadows_;  // with the style's shadows and surface textures only
   ShadowCascades cascades_;                  // of the frame prepare() drew the shadow maps for
   // The water and wireframe pipelines, created on a second thread while the others are (pipeline

@@ -74,15 +74,19 @@ bool mayCast(const ShadowCascade& c, const DrawNode& n, const glm::dvec3& camera
 }  // namespace
 
 TerrainShadows::TerrainShadows(vk::Device& device, uint32_t gridCells, double radius_m, uint32_t resolution)
-    : device_(device), cells_(gridCells), radius_m_(radius_m), resolution_(resolution), pipeline_(device, shadowDesc()) {
+    : device_(device),
+      cells_(gridCells),
+      radius_m_(radius_m),
+      resolution_(resolution),
+      pipeline_(device, shadowDesc()) {
   image_ = vk::createImage(device, kShadowFormat, {resolution, resolution}, kShadowCascades, 1, VK_SAMPLE_COUNT_1_BIT,
                            VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "shadow maps");
   VkMemoryRequirements req;
   vkGetImageMemoryRequirements(device.device(), image_, &req);
   memory_ = vk::allocateMemory(device, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
   GLOBE_VK_CHECK(vkBindImageMemory(device.device(), image_, memory_, 0));
-  arrayView_ = vk::createArrayView(device.device(), image_, kShadowFormat, kShadowCascades, 0, 1,
-                                   VK_IMAGE_ASPECT_DEPTH_BIT);
+  arrayView_ =
+      vk::createArrayView(device.device(), image_, kShadowFormat, kShadowCascades, 0, 1, VK_IMAGE_ASPECT_DEPTH_BIT);
   for (uint32_t c = 0; c < kShadowCascades; ++c)
     layerViews_[c] = vk::createArrayView(device.device(), image_, kShadowFormat, 1, 0, 1, VK_IMAGE_ASPECT_DEPTH_BIT, c);
   sampler_ = createComparisonSampler(device);

@@ -146,7 +146,8 @@ std::string gpuPassSection(std::span<const BenchFrame> frames) {
   std::string out =
       "<h2>GPU time by pass</h2>\n<table>\n<tr><th>pass</th><th>median (ms)</th><th>p95 (ms)</th>"
       "<th>total over the run (ms)</th></tr>\n";
-  for (const char* name : {"gpu_shadows_ms", "gpu_terrain_ms", "gpu_skirts_ms", "gpu_sky_ms", "gpu_generation_ms", "gpu_ms"}) {
+  for (const char* name :
+       {"gpu_shadows_ms", "gpu_terrain_ms", "gpu_skirts_ms", "gpu_sky_ms", "gpu_generation_ms", "gpu_ms"}) {
     const BenchMetric& m = benchMetric(name);
     const MetricSummary s = summarizeMetric(frames, m);
     out += "<tr><th><code>" + escapeMarkup(name) + "</code></th>" + numberCell(formatFixed(s.median, 2)) +

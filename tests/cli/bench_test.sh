@@ -18,7 +18,7 @@ for f in frames.csv summary.json timeline.svg report.html keyframe_00.00s.png ke
   [[ -s "$WORK/a/$f" ]] || fail "missing $f"
 done
 header=$(head -1 "$WORK/a/frames.csv")
-expected="frame,t,altitude_m,frame_ms,select_ms,gpu_ms,nodes_selected,nodes_partial,triangles,draw_calls,gen_dispatched,gen_in_flight,gen_completed,evicted,resident_mib,ground_speed_mps,gpu_terrain_ms,gpu_skirts_ms,gpu_sky_ms,gpu_generation_ms"
+expected="frame,t,altitude_m,frame_ms,select_ms,gpu_ms,nodes_selected,nodes_partial,triangles,draw_calls,gen_dispatched,gen_in_flight,gen_completed,evicted,resident_mib,ground_speed_mps,gpu_terrain_ms,gpu_skirts_ms,gpu_sky_ms,gpu_generation_ms,gpu_shadows_ms"
 [[ "$header" == "$expected" ]] || fail "frames.csv header: $header"
 rows=$(($(wc -l <"$WORK/a/frames.csv") - 1))
 [[ $rows -eq 11 ]] || fail "frames.csv has $rows rows, expected 11 (0.5 s at 20 Hz)"

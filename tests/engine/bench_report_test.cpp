@@ -308,11 +308,11 @@ TEST(BenchReport, SummaryJsonHasEveryKey) {
   EXPECT_EQ(json["run"]["shading"], "aa none, normal map scale 0, atmosphere sky");
   EXPECT_EQ(json["frame_count"], 600);
   EXPECT_EQ(json["percentile_method"], "nearest-rank");
-  const std::vector<std::string> columns = {
-      "altitude_m",   "frame_ms",         "select_ms",      "gpu_ms",        "nodes_selected", "nodes_partial",
-      "triangles",    "draw_calls",       "gen_dispatched", "gen_in_flight", "gen_completed",  "evicted",
-      "resident_mib", "ground_speed_mps", "gpu_terrain_ms", "gpu_skirts_ms", "gpu_sky_ms",     "gpu_generation_ms",
-      "gpu_shadows_ms"};
+  const std::vector<std::string> columns = {"altitude_m",     "frame_ms",          "select_ms",      "gpu_ms",
+                                            "nodes_selected", "nodes_partial",     "triangles",      "draw_calls",
+                                            "gen_dispatched", "gen_in_flight",     "gen_completed",  "evicted",
+                                            "resident_mib",   "ground_speed_mps",  "gpu_terrain_ms", "gpu_skirts_ms",
+                                            "gpu_sky_ms",     "gpu_generation_ms", "gpu_shadows_ms"};
   ASSERT_EQ(json["metrics"].size(), columns.size());
   for (const auto& c : columns) {
     ASSERT_TRUE(json["metrics"].contains(c)) << c;

@@ -149,8 +149,8 @@ void expectReliefShadows(vk::Device& device, const GeodeticPose& pose, const Sun
   ASSERT_GE(counts[1], 100);
   const double sunlitOff = sums[0][0] / counts[0], behindOff = sums[1][0] / counts[1];
   const double sunlitOn = sums[0][1] / counts[0], behindOn = sums[1][1] / counts[1];
-  std::printf("[ info ] mean luminance without shadows: sunlit %.4f, behind relief %.4f; with: %.4f, %.4f\n",
-              sunlitOff, behindOff, sunlitOn, behindOn);
+  std::printf("[ info ] mean luminance without shadows: sunlit %.4f, behind relief %.4f; with: %.4f, %.4f\n", sunlitOff,
+              behindOff, sunlitOn, behindOn);
   EXPECT_LT(behindOn, 0.5 * sunlitOn);   // in shadow: much darker than the lit slopes
   EXPECT_LT(behindOn, 0.5 * behindOff);  // and than without shadows
   EXPECT_GT(sunlitOn, 0.9 * sunlitOff);  // the lit slopes stay lit
