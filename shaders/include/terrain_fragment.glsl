@@ -138,6 +138,10 @@ vec3 detailModulation() {
 // Width (in mask units) of the dark rim drawn on the kept side of a hole's border.
 const float kHoleRim = 0.12;
 
+// The sun's share reaching the fragment through the relief (mappedColour with shadows; the sea's
+// colour takes it too).
+float sunShare = 1.0;
+
 #ifdef GLOBE_TERRAIN_NORMAL_MAPS
 // Imagery LOD: no tile is resident over the fragment yet (its vertex colour is drawn).
 bool imageryMissing = false;
@@ -189,9 +193,7 @@ vec3 mappedColour(vec3 modulation, out float coast, out float seaCover) {
 #endif
   vec3 albedo = root * root * modulation;
 #ifdef GLOBE_TERRAIN_SHADOWS
-  float sunShare = sunVisibility(inRelative, dot(n, inSunFace));
-#else
-  const float sunShare = 1.0;
+  sunShare = sunVisibility(inRelative, dot(n, inSunFace));
 #endif
 #ifdef GLOBE_TERRAIN_ATMOSPHERE
   // The vertex stage's light through the air, applied to the mapped normal and colour
@@ -237,7 +239,7 @@ void main() {
 #ifdef GLOBE_TERRAIN_WATER
   // The vertex colours of sea samples are their shore's, so land is not tinted; the depth tint stays
   // the vertices' (no shallower than the shore). Vector layers lie over the sea (their coverage).
-  if (coast < 0.0) colour = mix(waterColour(max(inSeaDepth, 0.0), inRelative), colour, seaCover);
+  if (coast < 0.0) colour = mix(waterColour(max(inSeaDepth, 0.0), inRelative, sunShare), colour, seaCover);
 #endif
 #ifdef GLOBE_TERRAIN_HOLES
   // Irregular, crack-free hole borders: the mask is continuous across nodes (equal at shared

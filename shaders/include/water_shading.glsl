@@ -4,6 +4,8 @@
 // sea near the camera (per vertex, a camera 10 cm above the water saw a sky-coloured sea at its
 // feet). Reads the frame constants; no branch or loop depends on them alone (docs/rendering.md,
 // "No shader compile per frame"). The includer declares the frame constants (TerrainFrameBlock).
+// `sunShare`: the sun's share the relief lets through (terrain_shadows.glsl; 1 without shadows): a
+// shaded sea loses its sunlit body and its glint, as the land does.
 
 // Reflectance of water at normal incidence ((1.33 - 1) / (1.33 + 1))^2.
 const float kWaterF0 = 0.02;
@@ -11,14 +13,14 @@ const float kWaterF0 = 0.02;
 const float kGlintExponent = 600.0;
 const float kGlintStrength = 6.0;
 
-vec3 waterColour(float depth_m, vec3 relative) {
+vec3 waterColour(float depth_m, vec3 relative, float sunShare) {
   // The camera-to-fragment ray and the sea's normal (the local vertical): directions only, so
   // float is enough although the planet centre is far.
   vec3 up = normalize(relative - frame.centreFromCamera.xyz);
   vec3 view = normalize(relative);
   vec3 sun = frame.sun.xyz;
   float sunHeight = dot(up, sun);
-  float light = frame.sun.w + (1.0 - frame.sun.w) * max(sunHeight, 0.0);
+  float light = frame.sun.w + (1.0 - frame.sun.w) * max(sunHeight, 0.0) * sunShare;
   float murk = 1.0 - exp(-depth_m * frame.waterDeep.w);
   vec3 body = mix(frame.waterShallow.rgb, frame.waterDeep.rgb, murk) * light;
   float cosView = clamp(-dot(view, up), 0.0, 1.0);
@@ -33,7 +35,7 @@ vec3 waterColour(float depth_m, vec3 relative) {
   vec3 sky = mix(frame.skyHorizon.rgb, frame.skyZenith.rgb, sqrt(skyUp));
 #endif
   sky *= clamp(sunHeight * 4.0 + 0.1, 0.0, 1.0);
-  float glint = pow(max(dot(reflected, sun), 0.0), kGlintExponent) * kGlintStrength * step(0.0, sunHeight);
+  float glint = pow(max(dot(reflected, sun), 0.0), kGlintExponent) * kGlintStrength * step(0.0, sunHeight) * sunShare;
   vec3 c = mix(body, sky, fresnel) + vec3(glint);
 #ifdef GLOBE_TERRAIN_ATMOSPHERE
   // Through the air to the camera as the land's vertices are (terrain_atmosphere.glsl).
