@@ -233,7 +233,10 @@ void Terrain::updateAt(uint64_t poolFrame, const Camera& camera, uint64_t poolCo
   stats_.evicted = s.evicted;
   stats_.resident_mib = s.residentMiB;
   stats_.queue_length = s.queueLength;
-  updateImagery(poolFrame, poolCompletedFrame, camera, lambda, requestAllRoots);
+  // The ground under the camera, once a frame for what sizes itself by the camera's height.
+  const bool maps = imagery_ || meshMaps_;
+  const double ground_m = maps || renderer_->shadows() ? groundRadius(glm::normalize(camera.position_m)) : 0.0;
+  updateImagery(poolFrame, poolCompletedFrame, camera, lambda, requestAllRoots, ground_m);
   gatherWarnings();
 
   origin_.update(camera.position_m);
@@ -242,7 +245,7 @@ void Terrain::updateAt(uint64_t poolFrame, const Camera& camera, uint64_t poolCo
   for (size_t k = 0; k < selection_.nodes.size(); ++k)
     addDrawNode(selection_.nodes[k], uint32_t(k * kImageryCellsPerNode), drawNodes_);
   shadowNodes_.clear();
-  if (renderer_->shadows() && frustum) gatherShadowCasters(camera, *frustum);
+  if (renderer_->shadows() && frustum) gatherShadowCasters(camera, *frustum, ground_m);
 }
 
 void Terrain::addDrawNode(const SelectedNode& n, uint32_t imageryCell, std::vector<DrawNode>& out) const {
@@ -252,10 +255,10 @@ void Terrain::addDrawNode(const SelectedNode& n, uint32_t imageryCell, std::vect
       {n.id, *slot, n.morph, n.partial, generator_->slotCentre(*slot), generator_->slotHasWater(*slot), imageryCell});
 }
 
-void Terrain::gatherShadowCasters(const Camera& camera, const Frustum& view) {
+void Terrain::gatherShadowCasters(const Camera& camera, const Frustum& view, double groundRadius_m) {
   const glm::dvec3 up = glm::normalize(camera.position_m);
   const glm::dvec3 sun = glm::normalize(renderer_->style().sunDirection);
-  shadowGroundRadius_m_ = groundRadius(up);
+  shadowGroundRadius_m_ = groundRadius_m;
   const double reach_m = shadowReach_m(glm::length(camera.position_m) - shadowGroundRadius_m_, shadowGroundRadius_m_,
                                        sunAboveShadowLimit(up, sun));
   shadowNodes_ = drawNodes_;
@@ -267,9 +270,9 @@ void Terrain::gatherShadowCasters(const Camera& camera, const Frustum& view) {
 }
 
 void Terrain::updateImagery(uint64_t poolFrame, uint64_t poolCompletedFrame, const Camera& camera, double lambda,
-                            bool requestAllRoots) {
+                            bool requestAllRoots, double groundRadius_m) {
   if (!imagery_ && !meshMaps_) return;  // no maps
-  const double altitude_m = glm::length(camera.position_m) - groundRadius(glm::normalize(camera.position_m));
+  const double altitude_m = glm::length(camera.position_m) - groundRadius_m;
   if (!imagery_) {
     const ImageryStats s = meshMaps_->meshMapStats(camera.position_m, altitude_m, lambda, selection_.nodes,
                                                    settings_.gridCells * settings_.normalMapScale, *pool_);

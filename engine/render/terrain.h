@@ -169,12 +169,12 @@ class Terrain {
   // Appends `n`'s draw record to `out` (nothing when its payload is not resident).
   void addDrawNode(const SelectedNode& n, uint32_t imageryCell, std::vector<DrawNode>& out) const;
   // shadowNodes_ for the frame: the drawn nodes and the resident casters outside `view`.
-  void gatherShadowCasters(const Camera& camera, const Frustum& view);
+  void gatherShadowCasters(const Camera& camera, const Frustum& view, double groundRadius_m);
   // Imagery LOD's frame after the mesh's selection (texel magnification stats into stats_), and
   // without it the texel magnification of the payloads' own maps.
-  // lambda: the view's pixels per radian.
+  // lambda: the view's pixels per radian; groundRadius_m: the ground's radius under the camera.
   void updateImagery(uint64_t poolFrame, uint64_t poolCompletedFrame, const Camera& camera, double lambda,
-                     bool requestAllRoots);
+                     bool requestAllRoots, double groundRadius_m);
   static bool imageryOn(const TerrainSettings& s) { return s.imagery && s.vertexPositions == VertexPositions::kStored; }
   bool imageryOn() const { return imageryOn(settings_); }
   // The mesh payloads' own surface texture scale: none when imagery tiles carry the textures.

@@ -58,17 +58,19 @@ vk::UniqueSampler createComparisonSampler(vk::Device& device) {
   return vk::UniqueSampler(device.device(), sampler);
 }
 
-// Whether node `n` may lie in the box of cascade `c` (x, y across the light; z: not beyond the far
-// side, any distance towards the sun, where it may shade the box's ground). A sphere of 1.5 node
-// widths holds the node with its relief.
-bool mayCast(const ShadowCascade& c, const DrawNode& n, const glm::dvec3& camera_m, double radius_m) {
-  const glm::dvec4 p = c.clipFromCamera * glm::dvec4(n.centre_m - camera_m, 1.0);
-  const double r = 1.5 * nominalNodeWidth(n.id.level, radius_m);
-  const glm::dmat4& m = c.clipFromCamera;
-  const glm::dvec3 scale(glm::length(glm::dvec3(m[0][0], m[1][0], m[2][0])),
-                         glm::length(glm::dvec3(m[0][1], m[1][1], m[2][1])),
-                         glm::length(glm::dvec3(m[0][2], m[1][2], m[2][2])));
-  return std::abs(p.x) <= 1.0 + r * scale.x && std::abs(p.y) <= 1.0 + r * scale.y && p.z <= 1.0 + r * scale.z;
+// Clip units per metre along each of a cascade's clip axes (the lengths of its matrix's rows).
+glm::dvec3 clipPerMetre(const glm::dmat4& m) {
+  return {glm::length(glm::dvec3(m[0][0], m[1][0], m[2][0])), glm::length(glm::dvec3(m[0][1], m[1][1], m[2][1])),
+          glm::length(glm::dvec3(m[0][2], m[1][2], m[2][2]))};
+}
+
+// Whether a sphere of `radius_m` at `relative` (metres from the camera) may lie in the box of cascade
+// `c` (x, y across the light; z: not beyond the far side, any distance towards the sun, where it may
+// shade the box's ground). `perMetre`: clipPerMetre of its matrix.
+bool mayCast(const ShadowCascade& c, const glm::dvec3& perMetre, const glm::dvec3& relative, double radius_m) {
+  const glm::dvec4 p = c.clipFromCamera * glm::dvec4(relative, 1.0);
+  const glm::dvec3 r = radius_m * perMetre;
+  return std::abs(p.x) <= 1.0 + r.x && std::abs(p.y) <= 1.0 + r.y && p.z <= 1.0 + r.z;
 }
 
 }  // namespace
@@ -117,13 +119,21 @@ void TerrainShadows::writeInstances(const ShadowCascades& cascades, const gpu::T
                                     const glm::dvec3& camera_m, const PayloadPages& payloads, uint32_t frameIndex) {
   members_.clear();
   casters_.fill(0);
-  for (uint32_t c = 0; c < cascades.count; ++c) {
-    for (uint32_t k = 0; k < nodes.size(); ++k) {
-      if (!mayCast(cascades.cascades[c], nodes[k], camera_m, radius_m_)) continue;
+  std::array<glm::dvec3, kShadowCascades> perMetre{};
+  for (uint32_t c = 0; c < cascades.count; ++c) perMetre[c] = clipPerMetre(cascades.cascades[c].clipFromCamera);
+  nodeInstances_.resize(nodes.size());
+  for (uint32_t k = 0; k < nodes.size(); ++k) {
+    // A sphere of 1.5 node widths holds the node with its relief.
+    const double sphere_m = 1.5 * nominalNodeWidth(nodes[k].id.level, radius_m_);
+    const size_t before = members_.size();
+    for (uint32_t c = 0; c < cascades.count; ++c) {
+      if (!mayCast(cascades.cascades[c], perMetre[c], nodes[k].centre_m - camera_m, sphere_m)) continue;
       const uint32_t grid = nodes[k].partial ? 1u : 0u;
       members_.push_back({(c * kGrids + grid) * pageCount_ + payloads.page(nodes[k].slot), k});
       ++casters_[c];
     }
+    // Once per node, whichever cascades draw it.
+    if (members_.size() > before) nodeInstances_[k] = terrainInstance(nodes[k], origin_m, payloads, cells_);
   }
   std::stable_sort(members_.begin(), members_.end(), [](auto a, auto b) { return a.first < b.first; });
   ensureCapacity(frameIndex, members_.size());
@@ -138,7 +148,7 @@ void TerrainShadows::writeInstances(const ShadowCascades& cascades, const gpu::T
   auto* instances = reinterpret_cast<gpu::TerrainInstance*>(bytes + kHeaderBytes);
   instancesOf_.assign(size_t(kShadowCascades) * kGrids * pageCount_, 0);
   for (size_t i = 0; i < members_.size(); ++i) {
-    instances[i] = terrainInstance(nodes[members_[i].second], origin_m, payloads, cells_);
+    instances[i] = nodeInstances_[members_[i].second];
     ++instancesOf_[members_[i].first];
   }
   firstInstance_.assign(instancesOf_.size(), 0);

@@ -70,6 +70,7 @@ class TerrainShadows {
   // Per group (cascade x grid x page): instance count and first instance.
   std::vector<uint32_t> instancesOf_, firstInstance_;
   std::vector<std::pair<uint32_t, uint32_t>> members_;  // (group, node index), sorted by group
+  std::vector<gpu::TerrainInstance> nodeInstances_;     // per node drawn into any cascade: its record
   std::array<uint32_t, kShadowCascades> casters_{};
 };
 
