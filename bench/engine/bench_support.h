@@ -2,8 +2,8 @@
 // Shared by the engine benchmarks: one device for the process ($GLOBE_DEVICE honoured, no validation:
 // benchmarks measure) and the default planet.
 #include "engine/vk/device.h"
-#include "planet/elevation/elevation.h"
-#include "planet/elevation/planet_file.h"
+#include "planet/model/elevation_model.h"
+#include "planet/model/planet_file.h"
 
 #include <cstdio>
 #include <cstdlib>

@@ -6,7 +6,7 @@
 #include "bench_support.h"
 #include "engine/generation/elevation_sampler.h"
 #include "engine/generation/gpu_payload_generator.h"
-#include "planet/elevation/planet_file.h"
+#include "planet/model/planet_file.h"
 
 #include <benchmark/benchmark.h>
 

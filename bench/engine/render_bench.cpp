@@ -9,7 +9,7 @@
 #include "bench_support.h"
 #include "engine/render/headless_renderer.h"
 #include "engine/render/quality.h"
-#include "planet/elevation/planet_file.h"
+#include "planet/model/planet_file.h"
 
 #include <benchmark/benchmark.h>
 

@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "planet/elevation/elevation.h"
-#include "planet/elevation/planet_file.h"
+#include "planet/model/elevation_model.h"
+#include "planet/model/planet_file.h"
 
 namespace {
 

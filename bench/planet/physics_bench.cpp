@@ -6,7 +6,7 @@
 //   build/release/bin/planet_bench --benchmark_filter='Physics|CollisionMesh'
 #include "planet/analysis/percentile.h"
 #include "planet/camera/camera.h"
-#include "planet/elevation/planet_file.h"
+#include "planet/model/planet_file.h"
 #include "planet/physics/body_groups.h"
 #include "planet/physics/physics_scenario.h"
 

@@ -3,7 +3,7 @@
 // only ever replace them with the same bytes): bake.json, what the bake covers, checked before a
 // resume so that tiles of another planet or format are never mixed in; and, for quantized mesh,
 // layer.json, the tileset description Cesium clients read (TileJSON 2.1 with availability).
-#include "planet/elevation/elevation.h"
+#include "planet/model/elevation_model.h"
 #include "planet/tiling/bake_plan.h"
 
 #include <string>

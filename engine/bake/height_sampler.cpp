@@ -1,7 +1,7 @@
 #include "engine/bake/height_sampler.h"
 
 #include "planet/core/parallel_for.h"
-#include "planet/sources/request_preparer.h"
+#include "planet/streaming/request_preparer.h"
 
 #include <algorithm>
 

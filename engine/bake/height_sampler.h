@@ -5,7 +5,7 @@
 // from the CPU (sourceTermsAt, the payloads' own path: tiles read through the sources' tile cache
 // on the calling threads) and the kernel blends it over the procedural layers.
 #include "engine/generation/elevation_sampler.h"
-#include "planet/elevation/elevation.h"
+#include "planet/model/elevation_model.h"
 
 #include <memory>
 #include <vector>

@@ -12,11 +12,11 @@
 #include "engine/vk/device.h"
 #include "globe_commit.h"
 #include "options.h"
-#include "planet/camera/camera_path_file.h"
-#include "planet/elevation/planet_file.h"
+#include "planet/model/planet_file.h"
+#include "planet/model/source_report.h"
+#include "planet/paths/camera_path_file.h"
 #include "planet/sources/source_mosaic.h"
-#include "planet/sources/source_report.h"
-#include "planet/sources/surface_overlay.h"
+#include "planet/surface/surface_overlay.h"
 #include "progress_bar.h"
 
 #include <fmt/format.h>

@@ -5,9 +5,9 @@
 #include "engine/movie/movie_renderer.h"
 #include "engine/render/quality.h"
 #include "options.h"
-#include "planet/camera/camera_path_file.h"
 #include "planet/core/atomic_file.h"
-#include "planet/elevation/planet_file.h"
+#include "planet/model/planet_file.h"
+#include "planet/paths/camera_path_file.h"
 #include "progress_bar.h"
 #include "signal_cleanup.h"
 

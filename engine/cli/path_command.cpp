@@ -1,8 +1,8 @@
 // globe path import|export: camera paths from and to the tools people use (KML tours, CZML).
 #include "commands.h"
 #include "options.h"
-#include "planet/camera/camera_path_file.h"
 #include "planet/core/atomic_file.h"
+#include "planet/paths/camera_path_file.h"
 #include "planet/paths/kml_tour.h"
 
 #include <algorithm>

@@ -8,7 +8,7 @@
 #include "planet/analysis/percentile.h"
 #include "planet/analysis/terrain_queries.h"
 #include "planet/core/atomic_file.h"
-#include "planet/elevation/planet_file.h"
+#include "planet/model/planet_file.h"
 #include "planet/physics/collision_mesh.h"
 #include "planet/physics/mesh_error.h"
 #include "planet/physics/physics_scenario.h"

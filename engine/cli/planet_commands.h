@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "planet/elevation/planet_description.h"
+#include "planet/model/planet_description.h"
 
 namespace globe::cli {
 

@@ -3,7 +3,7 @@
 #include "commands.h"
 #include "options.h"
 #include "planet/camera/camera.h"
-#include "planet/elevation/elevation.h"
+#include "planet/model/elevation_model.h"
 #include "planet/sources/source_mosaic.h"
 #include "planet_commands.h"
 

@@ -2,7 +2,7 @@
 
 #include "engine/atmosphere/atmosphere_luts.h"
 #include "engine/render/terrain.h"
-#include "planet/elevation/elevation.h"
+#include "planet/model/elevation_model.h"
 
 #include <unistd.h>
 

@@ -10,7 +10,7 @@
 #include "planet/analysis/terrain_queries.h"
 #include "planet/camera/camera.h"
 #include "planet/core/atomic_file.h"
-#include "planet/elevation/planet_file.h"
+#include "planet/model/planet_file.h"
 #include "planet/streaming/payload_reference.h"
 #include "progress_bar.h"
 #include "render_terrain.h"

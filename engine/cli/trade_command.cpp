@@ -16,8 +16,8 @@
 #include "engine/report/trade_report.h"
 #include "engine/vk/device.h"
 #include "options.h"
-#include "planet/camera/camera_path_file.h"
-#include "planet/elevation/planet_file.h"
+#include "planet/model/planet_file.h"
+#include "planet/paths/camera_path_file.h"
 #include "progress_bar.h"
 
 #include <algorithm>

@@ -8,10 +8,10 @@
 #include "options.h"
 #include "planet/analysis/terrain_queries.h"
 #include "planet/camera/camera.h"
-#include "planet/camera/camera_path_file.h"
 #include "planet/core/atomic_file.h"
-#include "planet/elevation/elevation.h"
-#include "planet/elevation/planet_file.h"
+#include "planet/model/elevation_model.h"
+#include "planet/model/planet_file.h"
+#include "planet/paths/camera_path_file.h"
 
 #include <cstdio>
 #include <filesystem>

@@ -6,7 +6,7 @@
 // with [[sources]] passes each direction's source term (sourceTermsAt, planet/sources/
 // request_preparer.h), which the kernel blends as the payload kernel does (elevation_sources.glsl).
 #include "engine/vk/compute_pipeline.h"
-#include "planet/elevation/elevation.h"
+#include "planet/model/elevation_model.h"
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>

@@ -6,14 +6,14 @@
 // nodes with their radius ranges (padded for unresolved detail, planet/streaming/payload_reference.h).
 // Implements planet's PayloadGenerator, so the PayloadPool drives it exactly like the CPU fake.
 // A planet with elevation sources goes through the source I/O thread first
-// (planet/sources/request_preparer.h): generate() only queues there, and the prepared jobs are
+// (planet/streaming/request_preparer.h): generate() only queues there, and the prepared jobs are
 // submitted, with their source terms, by later generate()/collect() calls while a batch is free.
 #include "engine/generation/payload_pages.h"
 #include "engine/generation/surface_textures.h"
 #include "engine/vk/compute_pipeline.h"
-#include "planet/elevation/elevation.h"
-#include "planet/sources/request_preparer.h"
+#include "planet/model/elevation_model.h"
 #include "planet/streaming/payload_generator.h"
+#include "planet/streaming/request_preparer.h"
 #include "shaders/include/payload_layout.h"
 
 #include <deque>

@@ -12,7 +12,7 @@
 
 #include "planet/core/atomic_file.h"
 #include "planet/core/error.h"
-#include "planet/elevation/sphere_sampling.h"
+#include "planet/model/sphere_sampling.h"
 
 namespace globe {
 

@@ -6,8 +6,8 @@
 #include "engine/render/terrain.h"
 #include "engine/report/bench_frame_spool.h"
 #include "engine/report/bench_report.h"
-#include "planet/camera/camera_path.h"
-#include "planet/elevation/elevation.h"
+#include "planet/model/elevation_model.h"
+#include "planet/paths/camera_path.h"
 
 #include <cstdint>
 #include <functional>

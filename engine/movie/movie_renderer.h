@@ -6,8 +6,8 @@
 // MP4 file (written to a temporary and renamed when complete).
 #include "engine/render/terrain.h"
 #include "engine/vk/device.h"
-#include "planet/camera/camera_path.h"
-#include "planet/elevation/planet_description.h"
+#include "planet/model/planet_description.h"
+#include "planet/paths/camera_path.h"
 
 #include <functional>
 #include <string>

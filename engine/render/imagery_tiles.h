@@ -8,8 +8,8 @@
 #include "engine/generation/gpu_payload_generator.h"
 #include "engine/vk/resources.h"
 #include "planet/camera/camera.h"
-#include "planet/elevation/elevation.h"
 #include "planet/imagery/imagery_selection.h"
+#include "planet/model/elevation_model.h"
 #include "planet/streaming/payload_pool.h"
 
 #include <array>

@@ -4,7 +4,7 @@
 // change them only with a new measurement.
 #include "engine/render/terrain.h"
 #include "planet/core/error.h"
-#include "planet/elevation/planet_description.h"
+#include "planet/model/planet_description.h"
 
 #include <string>
 

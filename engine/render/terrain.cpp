@@ -3,7 +3,7 @@
 #include "engine/render/shadow_casters.h"
 #include "engine/render/terrain_shadows.h"
 #include "engine/vk/vk_check.h"
-#include "planet/elevation/relief_roughness.h"
+#include "planet/model/relief_roughness.h"
 #include "planet/sources/source_mosaic.h"
 #include "planet/sources/tile_cache.h"
 

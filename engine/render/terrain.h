@@ -11,8 +11,8 @@
 #include "planet/analysis/frame_stats.h"
 #include "planet/camera/camera.h"
 #include "planet/camera/floating_origin.h"
-#include "planet/elevation/elevation.h"
 #include "planet/lod/selection.h"
+#include "planet/model/elevation_model.h"
 #include "planet/streaming/payload_pool.h"
 
 #include <memory>

@@ -20,9 +20,9 @@
 #include "engine/vk/frame_ring.h"
 #include "engine/vk/graphics_pipeline.h"
 #include "planet/camera/camera.h"
-#include "planet/elevation/colour_ramp.h"
 #include "planet/geometry/node_id.h"
 #include "planet/lod/lod_ranges.h"
+#include "planet/surface/colour_ramp.h"
 
 #include <array>
 #include <future>

@@ -1,8 +1,8 @@
 #include "engine/viewer/bookmarks.h"
 
-#include "planet/camera/camera_path_file.h"
 #include "planet/core/atomic_file.h"
 #include "planet/core/input_file.h"
+#include "planet/paths/camera_path_file.h"
 
 #include <fmt/format.h>
 

@@ -1,12 +1,12 @@
 #pragma once
-// Records the viewer's flight as a camera path (planet/camera/camera_path.h) that `globe bench --path`
+// Records the viewer's flight as a camera path (planet/paths/camera_path.h) that `globe bench --path`
 // replays: a keyframe at the start, then one every kInterval_s of camera time (the time the fly
 // camera advanced by, so a scripted run at 1/60 s per frame records the same times on any machine),
 // and one at the stop. Keyframes come sooner when the camera turned or travelled far since the
 // last one, so no segment exceeds CameraPath's arc and turn limits. Plain data; no GPU.
 #include "planet/camera/camera.h"
-#include "planet/camera/camera_path.h"
 #include "planet/core/error.h"
+#include "planet/paths/camera_path.h"
 
 #include <string>
 #include <vector>

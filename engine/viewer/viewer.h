@@ -10,8 +10,8 @@
 #include "engine/viewer/viewer_scene.h"
 #include "engine/vk/device.h"
 #include "planet/camera/camera.h"
-#include "planet/camera/camera_path.h"
 #include "planet/core/error.h"
+#include "planet/paths/camera_path.h"
 
 #include <memory>
 #include <optional>

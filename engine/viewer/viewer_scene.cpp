@@ -5,7 +5,7 @@
 #include "planet/analysis/terrain_queries.h"
 
 #include "engine/vk/vk_check.h"
-#include "planet/elevation/planet_file.h"
+#include "planet/model/planet_file.h"
 
 #include <cmath>
 

@@ -12,8 +12,8 @@
 #include "engine/vk/device.h"
 #include "planet/analysis/frame_stats.h"
 #include "planet/camera/camera.h"
-#include "planet/elevation/elevation.h"
-#include "planet/elevation/planet_description.h"
+#include "planet/model/elevation_model.h"
+#include "planet/model/planet_description.h"
 
 #include <memory>
 #include <optional>

@@ -3,7 +3,7 @@
 #include "engine/render/render_output.h"
 #include "engine/vk/vk_check.h"
 #include "planet/camera/camera_orientation.h"
-#include "planet/camera/camera_path_file.h"
+#include "planet/paths/camera_path_file.h"
 
 #include <cstdio>
 #include <filesystem>

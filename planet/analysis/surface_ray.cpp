@@ -8,8 +8,8 @@
 #include <cmath>
 #include <thread>
 
+#include "planet/core/gradient_noise.h"
 #include "planet/elevation/crater_field.h"
-#include "planet/elevation/gradient_noise.h"
 
 namespace globe {
 

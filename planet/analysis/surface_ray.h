@@ -11,7 +11,7 @@
 // feature narrower than that (a sub-pixel sliver) could be missed. A sign change is refined by
 // bisection to `tolerance_m`.
 #include "planet/camera/camera.h"
-#include "planet/elevation/elevation.h"
+#include "planet/model/elevation_model.h"
 
 #include <cstdint>
 #include <limits>

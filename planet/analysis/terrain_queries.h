@@ -7,7 +7,7 @@
 //  - rays against the exact surface in double (SurfaceRayCaster); rays against the collision
 //    meshes are PhysicsWorld::rayCastMeshes (planet/physics).
 #include "planet/analysis/surface_ray.h"
-#include "planet/elevation/elevation.h"
+#include "planet/model/elevation_model.h"
 
 #include <glm/vec3.hpp>
 #include <optional>

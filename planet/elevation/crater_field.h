@@ -20,7 +20,7 @@
 #include <algorithm>
 #include <cstdint>
 
-#include "planet/elevation/gradient_noise.h"
+#include "planet/core/gradient_noise.h"
 
 namespace globe {
 

@@ -16,8 +16,8 @@
 //
 // Errors are "file:line:col: field: message"; JSON syntax errors come from nlohmann-json's byte
 // offsets, field errors point at the field's key in the packet.
-#include "planet/camera/camera_path.h"
 #include "planet/core/error.h"
+#include "planet/paths/camera_path.h"
 
 #include <optional>
 #include <string>

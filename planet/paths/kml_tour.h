@@ -11,8 +11,8 @@
 // Google Earth. Views: kml_view.h.
 //
 // Errors are "file:line:col: element: message" (pugixml's byte offsets turned into lines).
-#include "planet/camera/camera_path.h"
 #include "planet/core/error.h"
+#include "planet/paths/camera_path.h"
 
 #include <string>
 #include <string_view>

@@ -11,7 +11,7 @@
 // kKmlSphereRadius_m; for a ground-relative target the terrain under the camera is taken to be as
 // high as under the target (the path does not know the planet's terrain).
 #include "planet/camera/camera.h"
-#include "planet/camera/camera_path.h"
+#include "planet/paths/camera_path.h"
 
 #include <optional>
 #include <string_view>

@@ -9,9 +9,9 @@
 // synchronously for a predicted contact (generateNow). The GPU source (engine/collision) reads back
 // the payload kernel's positions; CpuCollisionMeshSource uses the kernel's CPU reference, which is
 // bit-identical in positions (tests/engine/payload_generator_test.cpp).
-#include "planet/elevation/elevation.h"
 #include "planet/geometry/node_bounds.h"
 #include "planet/geometry/node_id.h"
+#include "planet/model/elevation_model.h"
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>

@@ -2,7 +2,7 @@
 // How far a level-L collision mesh (= the drawn mesh at that level) is from the exact surface: the
 // relief finer than its samples, which no body resting on the mesh can follow. Bodies rest on the
 // mesh, so their height above the exact surface is within this error (docs/physics.md).
-#include "planet/elevation/elevation.h"
+#include "planet/model/elevation_model.h"
 
 #include <glm/vec3.hpp>
 

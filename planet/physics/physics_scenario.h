@@ -1,7 +1,7 @@
 #pragma once
 // Bodies for `globe physics`, the tests and the benchmark: dropped at the drop sites from a random
 // height above the exact ground, and what a run reports per body (the columns of bodies.csv).
-#include "planet/elevation/elevation.h"
+#include "planet/model/elevation_model.h"
 #include "planet/physics/drop_sites.h"
 #include "planet/physics/physics_simulation.h"
 

@@ -10,7 +10,7 @@
 //   PhysicsWorld::step             gravity along the vertical, Bullet, contacts
 //   pool.pin                       the nodes bodies touch are never evicted
 //   worker.submit                  the bodies' new positions, selected while the next step runs
-#include "planet/elevation/elevation.h"
+#include "planet/model/elevation_model.h"
 #include "planet/physics/collision_mesh_pool.h"
 #include "planet/physics/collision_selection_worker.h"
 #include "planet/physics/physics_world.h"

@@ -1,6 +1,6 @@
 #include "planet/sources/amplification.h"
 
-#include "planet/elevation/gradient_noise.h"
+#include "planet/core/gradient_noise.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #pragma once
 // Procedural detail below a source's resolution (docs/elevation-data.md, "Amplification"): fBm of
-// the engine's gradient noise (planet/elevation/gradient_noise.h) whose first octave has the
+// the engine's gradient noise (planet/core/gradient_noise.h) whose first octave has the
 // source's pixel size as wavelength and whose amplitude is kAmplificationGain times the source's
 // local relief per pixel. Every octave is zero-mean over its own wavelength, so averaged over a
 // source pixel the detail vanishes and the source's heights are kept; where the source is flat

@@ -3,7 +3,7 @@
 // written by `globe bake` (or a quantized-mesh tileset), and `format` ("raster", the default for a
 // file; "quantized-mesh" or "cog", detected from the directory when absent). Checked after the
 // table's other keys (source_toml.cpp), since `format` may follow `path`.
-#include "planet/elevation/planet_toml_reader.h"
+#include "planet/core/planet_toml_reader.h"
 #include "planet/sources/source_description.h"
 
 #include <string>

@@ -1,9 +1,9 @@
 #pragma once
-// Reading a planet file's [[imagery]] (planet/elevation/planet_file.cpp calls it), key by key like
+// Reading a planet file's [[imagery]] (planet/model/planet_file.cpp calls it), key by key like
 // [[sources]]: each problem is one Error at the key's line and column. The raster is opened here
 // (exists, readable, georeferenced or given an extent, 8-bit bands), so a planet that loads has
 // imagery that opens.
-#include "planet/elevation/planet_toml_reader.h"
+#include "planet/core/planet_toml_reader.h"
 #include "planet/sources/imagery_source.h"
 
 #include <string>

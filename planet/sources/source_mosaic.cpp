@@ -1,8 +1,8 @@
 #include "planet/sources/source_mosaic.h"
 
 #include "planet/camera/camera.h"
+#include "planet/core/gradient_noise.h"
 #include "planet/core/smoothstep.h"
-#include "planet/elevation/gradient_noise.h"
 #include "planet/sources/amplification.h"
 #include "planet/sources/pixel_window.h"
 

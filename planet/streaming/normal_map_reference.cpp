@@ -1,8 +1,8 @@
 #include "planet/streaming/normal_map_reference.h"
 
-#include "planet/elevation/colour_ramp.h"
-#include "planet/sources/surface_overlay.h"
 #include "planet/streaming/payload_reference.h"
+#include "planet/surface/colour_ramp.h"
+#include "planet/surface/surface_overlay.h"
 
 #include <glm/geometric.hpp>
 

@@ -2,7 +2,7 @@
 // The CPU reference of a payload's surface textures (shaders/include/payload_layout.h): the texels'
 // directions, elevations, double normals, coast field and colour ramp the payload kernel computes.
 // Tests compare the GPU's textures with it.
-#include "planet/elevation/elevation.h"
+#include "planet/model/elevation_model.h"
 #include "shaders/include/payload_layout.h"
 
 #include <glm/vec2.hpp>

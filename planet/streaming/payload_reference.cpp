@@ -1,11 +1,11 @@
 #include "planet/streaming/payload_reference.h"
 
-#include "planet/elevation/gradient_noise.h"
+#include "planet/core/gradient_noise.h"
 #include "planet/geometry/triacontahedron.h"
 #include "planet/lod/lod_ranges.h"
 #include "planet/sources/source_mosaic.h"
-#include "planet/sources/surface_overlay.h"
 #include "planet/streaming/normal_map_reference.h"
+#include "planet/surface/surface_overlay.h"
 
 #include <glm/geometric.hpp>
 
@@ -41,7 +41,7 @@ gpu::PayloadJob makePayloadJob(const NodeId& node, uint32_t slot, const Elevatio
   job.face = node.face;
   job.slot = slot;
   job.level = node.level;
-  job.sourceBase = GLOBE_NO_SOURCE_TERMS;  // the source I/O thread sets it (planet/sources/request_preparer.h)
+  job.sourceBase = GLOBE_NO_SOURCE_TERMS;  // the source I/O thread sets it (planet/streaming/request_preparer.h)
   const auto& face = Triacontahedron::get().face(node.face);
   uint32_t n[4];
   for (int e = 0; e < 4; ++e)

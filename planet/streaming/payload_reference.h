@@ -3,10 +3,10 @@
 // quantisation, normals and radius range the compute shader (shaders/payload_generate.comp)
 // produces, in double. Tests compare the GPU payloads with it; tests that need payloads without a
 // GPU generator fill slots with it.
-#include "planet/elevation/elevation.h"
 #include "planet/geometry/face_mapping.h"
 #include "planet/geometry/node_bounds.h"
 #include "planet/geometry/node_id.h"
+#include "planet/model/elevation_model.h"
 #include "shaders/include/payload_layout.h"
 
 #include <glm/vec4.hpp>

@@ -11,9 +11,9 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
+#include "planet/core/gradient_noise.h"
 #include "planet/core/hash.h"
 #include "planet/core/parallel_for.h"
-#include "planet/elevation/gradient_noise.h"
 
 namespace globe {
 

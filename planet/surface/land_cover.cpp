@@ -7,7 +7,7 @@
 #include <numbers>
 #include <set>
 
-#include "planet/elevation/gradient_noise.h"
+#include "planet/core/gradient_noise.h"
 
 namespace globe {
 

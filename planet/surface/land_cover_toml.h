@@ -1,12 +1,12 @@
 #pragma once
-// Reading and writing a planet file's [climate] and [[land_cover]] (planet/elevation/planet_file.cpp
+// Reading and writing a planet file's [climate] and [[land_cover]] (planet/model/planet_file.cpp
 // and planet_file_writer.cpp call these), key by key like every other table: each problem is one
 // Error at the key's line and column, and every value's position is remembered so that
 // appendLandCoverErrors' findings ("land_cover[2].moisture") land on the key's line.
 #include <string>
 #include <vector>
 
-#include "planet/elevation/planet_toml_reader.h"
+#include "planet/core/planet_toml_reader.h"
 #include "planet/surface/land_cover.h"
 
 namespace globe {

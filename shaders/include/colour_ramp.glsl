@@ -1,4 +1,4 @@
-// Terrain colour: the planet's colour ramp (a mirror of globe::rampColour, planet/elevation/colour_ramp.cpp,
+// Terrain colour: the planet's colour ramp (a mirror of globe::rampColour, planet/surface/colour_ramp.cpp,
 // see shaders/include/colour_ramp_layout.h for the formula), evaluated per payload sample by the generation
 // kernel (payload_generate.glsl).
 #ifndef GLOBE_COLOUR_RAMP_GLSL

@@ -1,9 +1,9 @@
-// Surface colour of a planet by elevation and slope, shared by C++ (planet/elevation/colour_ramp.h) and GLSL.
+// Surface colour of a planet by elevation and slope, shared by C++ (planet/surface/colour_ramp.h) and GLSL.
 // This file compiles as both: C++ sees namespace globe::gpu and static_asserts, GLSL sees plain
 // structs. Layout: identical under std430 and std140 (32-bit scalars only, every struct a multiple
 // of 16 bytes, ColourStop arrays have a 16-byte stride in both). C++ fills it with
 // globe::packColourRamp(ColourRamp) and uploads the bytes as they are; globe::rampColour
-// (planet/elevation/colour_ramp.cpp) is the reference evaluation a shader mirrors:
+// (planet/surface/colour_ramp.cpp) is the reference evaluation a shader mirrors:
 //   base  = linear interpolation of the stops at elevation h (clamped to the end stops)
 //   rock  = smoothstep(clamp((rock_cos_start - cos_slope) * rock_inv_range, 0, 1))
 //   snow  = snow_enabled && cos_slope >= snow_cos_min ? clamp((h - snow_elevation_m) * snow_inv_blend, 0, 1) : 0

@@ -1,4 +1,4 @@
-// GLSL mirror of the CPU elevation reference (planet/elevation/gradient_noise.h, planet/elevation/elevation.cpp). Every
+// GLSL mirror of the CPU elevation reference (planet/core/gradient_noise.h, planet/model/elevation_model.cpp). Every
 // statement follows the C++ in the same order, in double, with `precise` so nothing is contracted
 // into an FMA or reassociated: the results must match the CPU to <= 1e-6 m (in practice bit-exact).
 // Change both or neither; the golden table in tests/planet/elevation_model_test.cpp notices changes.

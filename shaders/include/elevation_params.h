@@ -1,4 +1,4 @@
-// Elevation parameters shared by C++ (planet/elevation/elevation.h) and GLSL (shaders/include/elevation.glsl).
+// Elevation parameters shared by C++ (planet/model/elevation_model.h) and GLSL (shaders/include/elevation.glsl).
 // This file compiles as both: C++ sees namespace globe::gpu and static_asserts, GLSL sees plain
 // structs. Layout: identical under std430 and std140 (only double/uint scalars, every struct a
 // multiple of 16 bytes), so it can live in a uniform or a storage buffer. Offsets in bytes are in

@@ -142,7 +142,7 @@ void GLOBE_FN(globeElevationLayer)(uint l, GLOBE_REAL px, GLOBE_REAL py, GLOBE_R
   uint octaves = globeLayerOctaves(l);
   uint kind = globeLayerKind(l);
   int modulator = globeLayerModulator(l);
-  // Scale first, octaves skipped where it is exactly 0: bit-identical, see elevation.cpp.
+  // Scale first, octaves skipped where it is exactly 0: bit-identical, see planet/elevation/layer_evaluation.h.
   precise GLOBE_REAL scale = GLOBE_REAL(1.0);
   if (modulator >= 0) {
     precise GLOBE_REAL low = GLOBE_REAL(GLOBE_ELEVATION_PARAMS.layers[l].modulation_low_m);

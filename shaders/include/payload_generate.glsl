@@ -69,7 +69,7 @@ layout(constant_id = GLOBE_PAYLOAD_SPEC_OVERLAY) const uint kOverlay = 0u;
 const uint kSurfaceLayers = kOverlay != 0u ? 2u : 1u;
 
 // `albedo` under the job's overlay colour at `point` (payload_layout.h: a mesh sample's index, or
-// S*S plus a surface lattice point's): mirrored by globe::overlaidAlbedo (planet/sources/surface_overlay.h).
+// S*S plus a surface lattice point's): mirrored by globe::overlaidAlbedo (planet/surface/surface_overlay.h).
 vec3 overlaid(vec3 albedo, uint point) {
   if (kOverlay == 0u) return albedo;
   uint perJob = GLOBE_PAYLOAD_OVERLAY_WORDS(push.cells, push.cells * kNormalMapScale);

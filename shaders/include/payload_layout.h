@@ -133,7 +133,7 @@ struct uvec4_ {
 // batch, GLOBE_PAYLOAD_OVERLAY_WORDS words, job k's from k * that on, at GLOBE_PAYLOAD_OVERLAY_POINTS
 // points: the S*S mesh samples (index as the mesh's; the kernel reads a ring sample's nearest
 // vertex), then the surface grids' lattice points in the scratch's order (GLOBE_SURFACE_EVALUATIONS).
-// First a word per point of the overlay's colour and coverage (planet/sources/surface_overlay.h: sqrt
+// First a word per point of the overlay's colour and coverage (planet/surface/surface_overlay.h: sqrt
 // of the linear albedo in bytes 0-2, coverage in byte 3), then a word per point of the vector layers'
 // own colour and coverage, likewise, for the colour layer (what the sea shows). A job the overlay
 // does not touch has zero words (coverage 0).

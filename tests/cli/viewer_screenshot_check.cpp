@@ -13,7 +13,7 @@
 //                                           (for globe render --at), after parsing the whole file
 // Prints what it measured; exits 0 when the check passes, 1 when it fails, 2 on bad arguments.
 #include "engine/io/image_io.h"
-#include "planet/camera/camera_path_file.h"
+#include "planet/paths/camera_path_file.h"
 
 #include <cmath>
 #include <cstdio>

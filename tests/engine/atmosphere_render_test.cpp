@@ -8,7 +8,7 @@
 #include "engine/render/headless_renderer.h"
 #include "engine/render/render_output.h"
 #include "engine/vk/compute_pipeline.h"
-#include "planet/camera/camera_path_file.h"
+#include "planet/paths/camera_path_file.h"
 #include "tests/support/gpu_test.h"
 
 #include <glm/glm.hpp>

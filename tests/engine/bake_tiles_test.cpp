@@ -6,7 +6,7 @@
 #include "engine/bake/tile_grid.h"
 #include "planet/camera/camera.h"
 #include "planet/core/atomic_file.h"
-#include "planet/elevation/planet_file.h"
+#include "planet/model/planet_file.h"
 #include "planet/tiling/horizon_occlusion.h"
 #include "planet/tiling/quantized_mesh_decoder.h"
 #include "tests/support/gpu_test.h"

@@ -8,8 +8,8 @@
 #include <string>
 
 #include "engine/io/elevation_exr.h"
-#include "planet/elevation/planet_file.h"
-#include "planet/elevation/sphere_sampling.h"
+#include "planet/model/planet_file.h"
+#include "planet/model/sphere_sampling.h"
 
 namespace globe {
 namespace {

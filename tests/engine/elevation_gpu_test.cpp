@@ -1,7 +1,7 @@
 // The compute shader's double elevation must match the CPU reference (<= 1e-6 m).
 #include "engine/generation/elevation_sampler.h"
 #include "planet/camera/camera.h"
-#include "planet/elevation/planet_file.h"
+#include "planet/model/planet_file.h"
 #include "tests/support/gpu_test.h"
 
 #include <cmath>

@@ -1,7 +1,7 @@
 // Land cover masks from the payload kernel: against the CPU reference (planet/surface/land_cover.cpp),
 // summing to 255 at every sample, and identical on both sides of node and face seams.
 #include "engine/generation/gpu_payload_generator.h"
-#include "planet/elevation/planet_file.h"
+#include "planet/model/planet_file.h"
 #include "planet/streaming/payload_reference.h"
 #include "tests/engine/source_payload_check.h"
 #include "tests/support/gpu_test.h"

@@ -5,7 +5,7 @@
 #include "engine/movie/movie_renderer.h"
 #include "engine/movie/mp4_writer.h"
 #include "engine/render/quality.h"
-#include "planet/camera/camera_path_file.h"
+#include "planet/paths/camera_path_file.h"
 #include "tests/support/gpu_test.h"
 
 #include "tests/support/temp_dir.h"

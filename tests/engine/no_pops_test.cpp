@@ -4,7 +4,7 @@
 #include "engine/io/image_io.h"
 #include "engine/render/headless_renderer.h"
 #include "engine/render/render_output.h"
-#include "planet/elevation/planet_file.h"
+#include "planet/model/planet_file.h"
 #include "tests/support/gpu_test.h"
 
 #include <algorithm>

@@ -13,8 +13,8 @@
 
 #include "engine/vk/resources.h"
 #include "planet/camera/camera.h"
-#include "planet/elevation/planet_file.h"
 #include "planet/geometry/face_mapping.h"
+#include "planet/model/planet_file.h"
 
 #include <glm/geometric.hpp>
 

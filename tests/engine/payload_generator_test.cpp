@@ -1,9 +1,9 @@
 // GPU payload generation against the CPU reference, seam agreement, and a flight through the pool.
 #include "engine/generation/gpu_payload_generator.h"
 #include "planet/camera/camera.h"
-#include "planet/elevation/planet_file.h"
 #include "planet/geometry/triacontahedron.h"
 #include "planet/lod/selection.h"
+#include "planet/model/planet_file.h"
 #include "planet/streaming/payload_pool.h"
 #include "planet/streaming/payload_reference.h"
 #include "tests/engine/source_payload_check.h"

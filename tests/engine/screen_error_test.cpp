@@ -4,7 +4,7 @@
 #include "engine/render/frame_screen_error.h"
 #include "engine/render/headless_renderer.h"
 #include "planet/analysis/surface_ray.h"
-#include "planet/elevation/planet_file.h"
+#include "planet/model/planet_file.h"
 #include "tests/support/gpu_test.h"
 
 #include <gtest/gtest.h>

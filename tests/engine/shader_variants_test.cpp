@@ -15,7 +15,7 @@
 #include "engine/render/offscreen_target.h"
 #include "engine/render/sphere_grid.h"
 #include "engine/render/sphere_preview.h"
-#include "planet/elevation/planet_file.h"
+#include "planet/model/planet_file.h"
 #include "tests/support/dem_fixture.h"
 #include "tests/support/gpu_test.h"
 #include "tests/support/temp_dir.h"

@@ -1,8 +1,8 @@
 #include "tests/engine/source_payload_check.h"
 
 #include "engine/generation/gpu_payload_generator.h"
-#include "planet/sources/request_preparer.h"
 #include "planet/streaming/payload_reference.h"
+#include "planet/streaming/request_preparer.h"
 #include "tests/support/payload_surface_check.h"
 
 #include <gtest/gtest.h>

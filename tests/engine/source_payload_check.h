@@ -4,8 +4,8 @@
 // baked_source_test.cpp) share it.
 #include "engine/generation/gpu_payload_generator.h"
 #include "engine/vk/device.h"
-#include "planet/elevation/elevation.h"
 #include "planet/geometry/node_id.h"
+#include "planet/model/elevation_model.h"
 
 #include <cstdint>
 #include <vector>

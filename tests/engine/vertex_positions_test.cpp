@@ -3,8 +3,8 @@
 // agree to a small fraction of the distance, and the coverage is the same (so it is crack-free
 // wherever the stored draw is, which terrain_render_test and extremes_test check).
 #include "engine/render/headless_renderer.h"
-#include "planet/elevation/planet_file.h"
 #include "planet/geometry/triacontahedron.h"
+#include "planet/model/planet_file.h"
 #include "tests/support/gpu_test.h"
 
 #include <cmath>

@@ -5,7 +5,7 @@
 #include "engine/viewer/path_recorder.h"
 #include "engine/viewer/planet_file_watcher.h"
 #include "planet/camera/camera_orientation.h"
-#include "planet/camera/camera_path_file.h"
+#include "planet/paths/camera_path_file.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-// Fuzz target: camera path files (planet/camera/camera_path_file.h). An accepted path must survive
+// Fuzz target: camera path files (planet/paths/camera_path_file.h). An accepted path must survive
 // formatting and re-parsing (the writer's output is always readable).
-#include "planet/camera/camera_path_file.h"
+#include "planet/paths/camera_path_file.h"
 
 #include <cstddef>
 #include <cstdint>

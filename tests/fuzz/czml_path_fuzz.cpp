@@ -1,6 +1,6 @@
 // Fuzz target: CZML documents (planet/paths/czml_path.h). Any input gives a path or one error; an
 // accepted path, written as a .path file, reads again.
-#include "planet/camera/camera_path_file.h"
+#include "planet/paths/camera_path_file.h"
 #include "planet/paths/czml_path.h"
 
 #include <cstddef>

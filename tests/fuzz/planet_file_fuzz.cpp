@@ -1,6 +1,6 @@
-// Fuzz target: TOML planet files (planet/elevation/planet_file.h). Any input must give a description
+// Fuzz target: TOML planet files (planet/model/planet_file.h). Any input must give a description
 // or errors, never a crash, a hang or undefined behaviour; an accepted description must check clean.
-#include "planet/elevation/planet_file.h"
+#include "planet/model/planet_file.h"
 
 #include <cstddef>
 #include <cstdint>

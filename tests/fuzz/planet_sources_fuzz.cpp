@@ -2,7 +2,7 @@
 // a fixed valid planet, read as if it lay in assets/planets/ so the shipped DEM mosaics' relative
 // paths resolve (GDAL opens them: VRTs, rasters, baked tilesets). Any input gives a planet or
 // errors, never a crash, a hang or undefined behaviour, and both entry points agree on validity.
-#include "planet/elevation/planet_file.h"
+#include "planet/model/planet_file.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -1,9 +1,9 @@
 // Camera paths: the file format (every asset parses, every malformed case gives its exact one-line
 // error, the writer round-trips bit-exactly) and the interpolation (exact keyframe hits, continuity of
 // position and speed, log-altitude, +-180° and pole crossings, level flight, hovering).
-#include "planet/camera/camera_path.h"
+#include "planet/paths/camera_path.h"
 #include "planet/camera/camera_orientation.h"
-#include "planet/camera/camera_path_file.h"
+#include "planet/paths/camera_path_file.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // The collision-mesh pool (planet/physics/collision_mesh_pool.h) and its meshes: seam-exact CPU
 // meshes, the budget, eviction by distance, pinned nodes, synchronous versus queued generation.
-#include "planet/elevation/planet_file.h"
+#include "planet/model/planet_file.h"
 #include "planet/physics/collision_mesh_pool.h"
 
 #include <gtest/gtest.h>

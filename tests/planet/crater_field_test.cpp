@@ -1,8 +1,8 @@
 // The crater layer kind: profile shape, the 2x2x2 window holding every crater, continuity, bounds,
 // the size–frequency distribution and the planet file key.
 #include "planet/elevation/crater_field.h"
-#include "planet/elevation/elevation.h"
-#include "planet/elevation/planet_file.h"
+#include "planet/model/elevation_model.h"
+#include "planet/model/planet_file.h"
 
 #include <gtest/gtest.h>
 

@@ -6,8 +6,8 @@
 #include <random>
 #include <vector>
 
-#include "planet/elevation/elevation.h"
-#include "planet/elevation/gradient_noise.h"
+#include "planet/core/gradient_noise.h"
+#include "planet/model/elevation_model.h"
 
 namespace globe {
 namespace {

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <random>
 
-#include "planet/elevation/gradient_noise.h"
+#include "planet/core/gradient_noise.h"
 
 namespace globe {
 namespace {

@@ -1,11 +1,11 @@
 // Real elevation sources (planet/sources, docs/elevation-data.md) on the USGS Jacksboro fault DEM
 // of python-matplotlib-data, converted to GeoTIFFs at test time (tests/support/dem_fixture.h).
 #include "planet/camera/camera.h"
-#include "planet/elevation/elevation.h"
-#include "planet/elevation/planet_file.h"
-#include "planet/sources/request_preparer.h"
+#include "planet/model/elevation_model.h"
+#include "planet/model/planet_file.h"
 #include "planet/sources/source_mosaic.h"
 #include "planet/streaming/payload_reference.h"
+#include "planet/streaming/request_preparer.h"
 #include "tests/support/dem_fixture.h"
 #include "tests/support/temp_dir.h"
 

@@ -5,8 +5,8 @@
 // at the collision level and at a coarse level (where the lattice bends most), at a pole, a face
 // seam and a polyhedron vertex, in planet-aligned axes (a tilted grid) and warped by hand.
 #include "planet/physics/grid_mesh_shape.h"
-#include "planet/elevation/planet_file.h"
 #include "planet/geometry/face_mapping.h"
+#include "planet/model/planet_file.h"
 #include "planet/physics/collision_mesh.h"
 #include "planet/physics/drop_sites.h"
 

@@ -6,9 +6,9 @@
 #include <fstream>
 #include <string>
 
-#include "planet/elevation/elevation.h"
-#include "planet/elevation/planet_file.h"
-#include "planet/elevation/planet_file_writer.h"
+#include "planet/model/elevation_model.h"
+#include "planet/model/planet_file.h"
+#include "planet/model/planet_file_writer.h"
 #include "tests/support/planet_file_cases.h"
 #include "tests/support/temp_dir.h"
 

@@ -1,5 +1,5 @@
 // The land cover's reference model (planet/surface/land_cover.cpp): the climate, the masks and their
-// blending; and the CPU sampling of it (planet/surface/surface_sample.h) that stats and export use.
+// blending; and the CPU sampling of it (planet/model/surface_sample.h) that stats and export use.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,11 +10,11 @@
 #include <glm/geometric.hpp>
 
 #include "planet/camera/camera.h"
-#include "planet/elevation/elevation.h"
-#include "planet/elevation/planet_file.h"
-#include "planet/elevation/sphere_sampling.h"
+#include "planet/model/elevation_model.h"
+#include "planet/model/planet_file.h"
+#include "planet/model/sphere_sampling.h"
+#include "planet/model/surface_sample.h"
 #include "planet/surface/land_cover.h"
-#include "planet/surface/surface_sample.h"
 
 namespace globe {
 namespace {

@@ -1,7 +1,7 @@
 // Hostile camera path files (issue 40): a KML tour nested 1e5 elements deep is read without
 // overflowing the stack, 55,000 FlyTos import in linear time, and a CZML number beyond a double's
 // range names file, line, column and field instead of printing the JSON library's exception.
-#include "planet/camera/camera_path_file.h"
+#include "planet/paths/camera_path_file.h"
 #include "planet/paths/czml_path.h"
 #include "planet/paths/kml_tour.h"
 

@@ -2,8 +2,8 @@
 // camera poses recomputed here independently (GeographicLib and plain vector geometry), a path
 // survives path -> KML -> path, malformed files name file:line:col, and the .path format's optional
 // columns (height_ref, stop) round-trip.
-#include "planet/camera/camera_path.h"
-#include "planet/camera/camera_path_file.h"
+#include "planet/paths/camera_path.h"
+#include "planet/paths/camera_path_file.h"
 #include "planet/paths/czml_path.h"
 #include "planet/paths/kml_tour.h"
 #include "planet/paths/kml_view.h"

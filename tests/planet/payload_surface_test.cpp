@@ -1,5 +1,5 @@
 // Payload surface words (albedo and hole mask in normal.w): packing and the reference's albedo.
-#include "planet/elevation/planet_file.h"
+#include "planet/model/planet_file.h"
 #include "planet/streaming/payload_reference.h"
 
 #include <gtest/gtest.h>

@@ -3,8 +3,8 @@
 // own mesh error of the exact surface, never fall through (also at 50 m/s), wait for a mesh only on
 // a predicted contact, and the same seed gives the same run bit for bit.
 #include "planet/camera/camera.h"
-#include "planet/elevation/planet_file.h"
 #include "planet/geometry/ellipsoid.h"
+#include "planet/model/planet_file.h"
 #include "planet/physics/mesh_error.h"
 #include "planet/physics/physics_scenario.h"
 

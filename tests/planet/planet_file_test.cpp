@@ -5,10 +5,10 @@
 #include <numbers>
 #include <string>
 
-#include "planet/elevation/colour_ramp.h"
-#include "planet/elevation/elevation.h"
-#include "planet/elevation/planet_file.h"
-#include "planet/elevation/planet_file_writer.h"
+#include "planet/model/elevation_model.h"
+#include "planet/model/planet_file.h"
+#include "planet/model/planet_file_writer.h"
+#include "planet/surface/colour_ramp.h"
 #include "tests/support/planet_file_cases.h"
 
 namespace globe {

@@ -8,9 +8,9 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
-#include "planet/elevation/planet_file.h"
-#include "planet/elevation/relief_roughness.h"
 #include "planet/geometry/triacontahedron.h"
+#include "planet/model/planet_file.h"
+#include "planet/model/relief_roughness.h"
 #include "tests/support/lod_test_util.h"
 
 namespace globe {

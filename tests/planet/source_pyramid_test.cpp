@@ -2,8 +2,8 @@
 // "Overviews"): coarse levels are 2 x 2 means, built once into the disk cache or read from the
 // file's own GDAL overviews, and a coarse node's terms read coarse tiles only.
 #include "planet/camera/camera.h"
-#include "planet/elevation/elevation.h"
-#include "planet/elevation/planet_file.h"
+#include "planet/model/elevation_model.h"
+#include "planet/model/planet_file.h"
 #include "planet/sources/raster_pyramid.h"
 #include "planet/sources/source_mosaic.h"
 #include "tests/support/dem_fixture.h"

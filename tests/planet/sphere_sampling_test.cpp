@@ -9,8 +9,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "planet/elevation/planet_file.h"
-#include "planet/elevation/sphere_sampling.h"
+#include "planet/model/planet_file.h"
+#include "planet/model/sphere_sampling.h"
 
 namespace globe {
 namespace {

@@ -2,7 +2,7 @@
 // exact surface and against collision meshes, and camera moves that never pass below the ground.
 #include "planet/analysis/terrain_queries.h"
 #include "planet/camera/camera.h"
-#include "planet/elevation/planet_file.h"
+#include "planet/model/planet_file.h"
 #include "planet/physics/drop_sites.h"
 #include "planet/physics/mesh_error.h"
 #include "planet/physics/physics_world.h"

@@ -3,8 +3,8 @@
 // tens of milliseconds on lavapipe), and a check after every test that the validation layers said
 // nothing.
 #include "engine/vk/device.h"
-#include "planet/elevation/elevation.h"
-#include "planet/elevation/planet_file.h"
+#include "planet/model/elevation_model.h"
+#include "planet/model/planet_file.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 #pragma once
 // Table rows of bad planet files and their one expected error (file, line, column, field, message),
 // shared by the planet-file tests.
-#include "planet/elevation/planet_file.h"
+#include "planet/model/planet_file.h"
 
 #include <gtest/gtest.h>
 
