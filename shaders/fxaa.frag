@@ -29,6 +29,33 @@ vec4 texel(ivec2 p) {
 float luma(vec4 c) { return dot(c.rgb, vec3(0.299, 0.587, 0.114)); }
 float lumaAt(ivec2 p) { return luma(texel(p)); }
 
+// How far to blend towards the neighbour across the edge (0 .. 0.5): walks both ways along the edge
+// until the luma along it (both rows' average) leaves the edge's average; the nearer end decides, and
+// blends only when the edge's luma there crosses the way the centre's does (`centreBelow`).
+float edgeBlend(ivec2 p, ivec2 along, ivec2 across, bool horizontal, float lumaLocal, float gradientScaled,
+                bool centreBelow) {
+  ivec2 pN = p, pP = p;
+  float endN = 0.0, endP = 0.0;
+  bool doneN = false, doneP = false;
+  for (int i = 0; i < kSteps && !(doneN && doneP); ++i) {
+    if (!doneN) {
+      pN -= along * kStep[i];
+      endN = 0.5 * (lumaAt(pN) + lumaAt(pN + across)) - lumaLocal;
+      doneN = abs(endN) >= gradientScaled;
+    }
+    if (!doneP) {
+      pP += along * kStep[i];
+      endP = 0.5 * (lumaAt(pP) + lumaAt(pP + across)) - lumaLocal;
+      doneP = abs(endP) >= gradientScaled;
+    }
+  }
+  float distanceN = float(horizontal ? p.x - pN.x : p.y - pN.y);
+  float distanceP = float(horizontal ? pP.x - p.x : pP.y - p.y);
+  bool nearN = distanceN < distanceP;
+  bool goodSpan = ((nearN ? endN : endP) < 0.0) != centreBelow;
+  return goodSpan ? 0.5 - min(distanceN, distanceP) / (distanceN + distanceP) : 0.0;
+}
+
 void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
   vec4 colourM = texel(p), colourN = texel(p + ivec2(0, -1)), colourS = texel(p + ivec2(0, 1));
@@ -66,29 +93,7 @@ void main() {
   ivec2 along = horizontal ? ivec2(1, 0) : ivec2(0, 1);
   float lumaLocal = 0.5 * ((side1 ? luma1 : luma2) + lumaM);
 
-  // Walk both ways until the luma along the edge (both rows' average) leaves the edge's average.
-  ivec2 pN = p, pP = p;
-  float endN = 0.0, endP = 0.0;
-  bool doneN = false, doneP = false;
-  for (int i = 0; i < kSteps && !(doneN && doneP); ++i) {
-    if (!doneN) {
-      pN -= along * kStep[i];
-      endN = 0.5 * (lumaAt(pN) + lumaAt(pN + across)) - lumaLocal;
-      doneN = abs(endN) >= gradientScaled;
-    }
-    if (!doneP) {
-      pP += along * kStep[i];
-      endP = 0.5 * (lumaAt(pP) + lumaAt(pP + across)) - lumaLocal;
-      doneP = abs(endP) >= gradientScaled;
-    }
-  }
-
-  // The nearer end decides: blend only when the edge's luma there crosses the way the centre's does.
-  float distanceN = float(horizontal ? p.x - pN.x : p.y - pN.y);
-  float distanceP = float(horizontal ? pP.x - p.x : pP.y - p.y);
-  bool nearN = distanceN < distanceP;
-  bool goodSpan = ((nearN ? endN : endP) < 0.0) != (lumaM - lumaLocal < 0.0);
-  float offset = goodSpan ? 0.5 - min(distanceN, distanceP) / (distanceN + distanceP) : 0.0;
+  float offset = edgeBlend(p, along, across, horizontal, lumaLocal, gradientScaled, lumaM - lumaLocal < 0.0);
   offset = max(offset, subpix);
   vec4 colourAcross = horizontal ? (side1 ? colourN : colourS) : (side1 ? colourW : colourE);
   outColour = mix(colourM, colourAcross, offset);

@@ -192,6 +192,49 @@ vec3 terrainSkirtFlare(vec3 position, vec3 world, vec3 sample0, uint base, uint 
   return flared;
 }
 
+// A grid point's own sample (`world` its position, `sample0`/`normal0` its payload texels), before
+// any morph towards the parent.
+TerrainMorphed terrainUnmorphed(vec3 world, vec4 sample0, vec4 normal0, uint base, uint cells, int si, int sj) {
+  TerrainMorphed m;
+  m.position = world;
+  m.normal = normal0.xyz;
+  m.elevation = sample0.w;
+  m.surface = unpackPayloadSurface(normal0.w);
+  m.mapUv = vec2(si, sj) / float(cells);
+  m.cover0 = vec4(0.0);
+  m.cover1 = vec4(0.0);
+#ifdef GLOBE_TERRAIN_COVER
+  terrainCoverMasks(base, terrainSample(0u, cells, si, sj), m.cover0, m.cover1);
+#endif
+  return m;
+}
+
+// The vertex's outputs from its (morphed) sample: `rel` is its position relative to the camera, metres.
+TerrainVertex terrainVertexOutputs(TerrainInstance inst, TerrainMorphed m, vec3 rel, float k, uint stride) {
+  TerrainVertex v;
+  v.relative = rel;
+  v.clip = frame.clipFromCamera * vec4(rel, 1.0);
+  v.normal = m.normal;
+  v.albedo = m.surface.rgb;
+  v.elevation = m.elevation;
+  v.hole = m.surface.a;
+  v.morph = k;
+  v.level = inst.info.z;
+  v.mapUv = m.mapUv;
+  v.mapBase = inst.imagery.y;
+  v.mapBlend = stride == 2u ? 1.0 : k;
+  v.imageryCell = inst.imagery.x;
+  v.cover0 = m.cover0;
+  v.cover1 = m.cover1;
+  v.detailUv = vec4(0.0);
+  v.nodeLevel = inst.info.z + stride - 1u;  // a partial node is drawn one level up but spans its own square
+#ifdef GLOBE_TERRAIN_COVER
+  float level = float(v.nodeLevel);
+  v.detailUv = inst.detail + vec4(m.mapUv * exp2(frame.detailLevels.x - level), m.mapUv * exp2(frame.detailLevels.y - level));
+#endif
+  return v;
+}
+
 TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCells) {
   TerrainInstance inst = instances[instanceIndex];
   uint cells = frame.options.x;
@@ -215,48 +258,17 @@ TerrainVertex terrainVertex(uint vertexIndex, uint instanceIndex, uint drawnCell
   float k = terrainMorphFactor(length(rel0), inst, vec2(si, sj) / float(cells));
 
   vec4 normal0 = payload[terrainSample(base, cells, si, sj) + normals];
-  TerrainMorphed m;
-  m.position = world;
-  m.normal = normal0.xyz;
-  m.elevation = sample0.w;
-  m.surface = unpackPayloadSurface(normal0.w);
-  m.mapUv = vec2(si, sj) / float(cells);
-  m.cover0 = vec4(0.0);
-  m.cover1 = vec4(0.0);
-#ifdef GLOBE_TERRAIN_COVER
-  terrainCoverMasks(base, terrainSample(0u, cells, si, sj), m.cover0, m.cover1);
-#endif
+  TerrainMorphed m = terrainUnmorphed(world, sample0, normal0, base, cells, si, sj);
   if (k > 0.0 && ((g.x | g.y) & 1u) != 0u) terrainMorphOdd(inst, instanceIndex, base, cells, stride, g, k, m);
   vec3 position = m.position;
   if (skirt) position = terrainSkirtFlare(position, world, sample0.xyz, base, cells, ivec2(si, sj), outward, stride);
 
-  TerrainVertex v;
 #ifdef GLOBE_TERRAIN_REPROJECT
   vec3 rel = position;
 #else
   precise vec3 rel = (position - frame.cameraHigh.xyz) - frame.cameraLow.xyz;
 #endif
-  v.relative = rel;
-  v.clip = frame.clipFromCamera * vec4(rel, 1.0);
-  v.normal = m.normal;
-  v.albedo = m.surface.rgb;
-  v.elevation = m.elevation;
-  v.hole = m.surface.a;
-  v.morph = k;
-  v.level = inst.info.z;
-  v.mapUv = m.mapUv;
-  v.mapBase = inst.imagery.y;
-  v.mapBlend = stride == 2u ? 1.0 : k;
-  v.imageryCell = inst.imagery.x;
-  v.cover0 = m.cover0;
-  v.cover1 = m.cover1;
-  v.detailUv = vec4(0.0);
-  v.nodeLevel = inst.info.z + stride - 1u;  // a partial node is drawn one level up but spans its own square
-#ifdef GLOBE_TERRAIN_COVER
-  float level = float(v.nodeLevel);
-  v.detailUv = inst.detail + vec4(m.mapUv * exp2(frame.detailLevels.x - level), m.mapUv * exp2(frame.detailLevels.y - level));
-#endif
-  return v;
+  return terrainVertexOutputs(inst, m, rel, k, stride);
 }
 
 #endif  // GLOBE_TERRAIN_VERTEX_GLSL
