@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "planet/analysis/subdivision_face_mapping.h"
-#include "planet/analysis/tessellation_quality.h"
 #include "planet/geometry/triacontahedron.h"
+#include "planet/research/subdivision_face_mapping.h"
+#include "planet/research/tessellation_quality.h"
 
 namespace globe {
 namespace {

@@ -1,4 +1,4 @@
-#include "planet/analysis/subdivision_face_mapping.h"
+#include "planet/research/subdivision_face_mapping.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "planet/analysis/tessellation_quality.h"
+#include "planet/research/tessellation_quality.h"
 
 #include <algorithm>
 #include <array>

@@ -1,7 +1,7 @@
-// Tessellation quality (planet/analysis/tessellation_quality.h, docs/tessellation.md): the metric's primitives,
+// Tessellation quality (planet/research/tessellation_quality.h, docs/tessellation.md): the metric's primitives,
 // the 4π tiling check for every mapping, the cube spheres against their analytic limits, the rhombus
 // mappings as a regression table, and the subdivision mapping's seam exactness and inverse.
-#include "planet/analysis/tessellation_quality.h"
+#include "planet/research/tessellation_quality.h"
 
 #include <gtest/gtest.h>
 
@@ -14,8 +14,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "planet/analysis/subdivision_face_mapping.h"
 #include "planet/geometry/triacontahedron.h"
+#include "planet/research/subdivision_face_mapping.h"
 
 namespace globe {
 namespace {
