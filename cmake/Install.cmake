@@ -1,13 +1,32 @@
 # `cmake --install` lays out PREFIX/bin/globe, PREFIX/lib/libglobe_*.a, PREFIX/include/globe/...,
 # PREFIX/share/globe/{shaders,assets} and PREFIX/lib/cmake/globe, so that another project can
-# `find_package(globe)` and link globe::render (headless) or globe::viewer (tests/consumer checks it).
+# `find_package(globe [COMPONENTS ...])` and link globe::planet alone, globe::render (headless) or
+# globe::viewer (tests/consumer checks them). Each component is an export set of its own, so a consumer
+# of `planet` finds none of the render, movie, bake or physics dependencies (globeConfig.cmake.in).
 include(CMakePackageConfigHelpers)
 get_property(globe_libraries GLOBAL PROPERTY GLOBE_LIBRARIES)
 get_property(globe_test_only GLOBAL PROPERTY GLOBE_LIBRARIES_TEST_ONLY)
 if(globe_test_only)
   list(REMOVE_ITEM globe_libraries ${globe_test_only})
 endif()
-install(TARGETS ${globe_libraries} EXPORT globeTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+set(globe_component_physics globe_physics)
+set(globe_component_collision globe_collision)
+set(globe_component_movie globe_movie)
+set(globe_component_bake globe_bake)
+set(globe_component_viewer globe_viewer)
+set(globe_component_planet ${globe_libraries})
+list(FILTER globe_component_planet INCLUDE REGEX "^globe_planet")
+set(globe_component_render ${globe_libraries})
+list(REMOVE_ITEM globe_component_render ${globe_component_planet} globe_physics globe_collision globe_movie globe_bake
+     globe_viewer)
+foreach(component planet physics render collision movie bake viewer)
+  if(globe_component_${component})
+    install(TARGETS ${globe_component_${component}} EXPORT globe-${component}
+            ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+    install(EXPORT globe-${component} NAMESPACE globe:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/globe
+            FILE globe-${component}-targets.cmake)
+  endif()
+endforeach()
 install(TARGETS globe RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(DIRECTORY planet engine DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/globe FILES_MATCHING PATTERN "*.h"
         PATTERN cli EXCLUDE PATTERN research EXCLUDE)
@@ -15,7 +34,6 @@ install(DIRECTORY shaders/include DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/globe/
 install(DIRECTORY ${GLOBE_SHADER_DIR}/ DESTINATION ${CMAKE_INSTALL_DATADIR}/globe/shaders FILES_MATCHING
         PATTERN "*.spv")
 install(DIRECTORY assets/ DESTINATION ${CMAKE_INSTALL_DATADIR}/globe/assets)
-install(EXPORT globeTargets NAMESPACE globe:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/globe)
 configure_package_config_file(cmake/globeConfig.cmake.in ${PROJECT_BINARY_DIR}/globeConfig.cmake
                               INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/globe)
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/globeConfigVersion.cmake COMPATIBILITY SameMinorVersion)

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs this build into a temporary prefix, then configures, builds and runs tests/consumer against
-# it with find_package(globe): the exported package works, and a headless user links no GLFW or ImGui.
+# it with find_package(globe COMPONENTS ...): the exported package works, a headless user links no GLFW or
+# ImGui, and a user of the planet component alone links no Vulkan, Bullet or FFmpeg.
 set -euo pipefail
 BUILD=$1 SRC=$2 WORK=$3
 rm -rf "$WORK"; mkdir -p "$WORK"
@@ -8,11 +9,20 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 cmake --install "$BUILD" --prefix "$WORK/prefix" >"$WORK/install.log" || fail "cmake --install (see $WORK/install.log)"
 [ -f "$WORK/prefix/share/globe/shaders/terrain.vert.spv" ] || fail "no SPIR-V installed"
 [ -f "$WORK/prefix/share/globe/assets/planets/earthlike.toml" ] || fail "no assets installed"
-cmake -S "$SRC/tests/consumer" -B "$WORK/build" -G Ninja -DCMAKE_PREFIX_PATH="$WORK/prefix" \
-  >"$WORK/configure.log" 2>&1 || { cat "$WORK/configure.log"; fail "find_package(globe)"; }
-cmake --build "$WORK/build" >"$WORK/build.log" 2>&1 || { cat "$WORK/build.log"; fail "building the consumer"; }
-"$WORK/build/consumer" || fail "the consumer did not run"
-if readelf -d "$WORK/build/consumer" | grep NEEDED | grep -Ei 'libglfw|imgui|libX11'; then fail "a headless consumer links GLFW/ImGui/X11"; fi
+# One consumer per component set (tests/consumer/CMakeLists.txt).
+build_consumer() {  # build_consumer SET
+  cmake -S "$SRC/tests/consumer" -B "$WORK/$1" -G Ninja -DCMAKE_PREFIX_PATH="$WORK/prefix" -DCONSUMER="$1" \
+    >"$WORK/$1-configure.log" 2>&1 || { cat "$WORK/$1-configure.log"; fail "find_package(globe COMPONENTS $1)"; }
+  cmake --build "$WORK/$1" >"$WORK/$1-build.log" 2>&1 || { cat "$WORK/$1-build.log"; fail "building the $1 consumer"; }
+}
+build_consumer render
+"$WORK/render/consumer" || fail "the render consumer did not run"
+if readelf -d "$WORK/render/consumer" | grep NEEDED | grep -Ei 'libglfw|imgui|libX11'; then fail "a headless consumer links GLFW/ImGui/X11"; fi
+build_consumer planet
+"$WORK/planet/consumer" "$WORK/prefix/share/globe/assets/planets/earthlike.toml" || fail "the planet consumer did not run"
+if readelf -d "$WORK/planet/consumer" | grep NEEDED | grep -Ei 'libvulkan|libBullet|libav|libglfw|imgui|libX11|OpenEXR'; then
+  fail "a consumer of the planet component links Vulkan, Bullet, FFmpeg, OpenEXR or a window library"
+fi
 # The installed program finds its shaders and assets beside itself (no build path compiled in).
 mv "$WORK/prefix" "$WORK/moved"
 "$WORK/moved/bin/globe" planet check >/dev/null || fail "the installed globe does not find its default planet"

@@ -1,0 +1,19 @@
+// Links the domain alone from an installed globe: reads a planet file and samples its elevation on the CPU.
+#include "planet/model/elevation_model.h"
+#include "planet/model/planet_file.h"
+
+#include <cstdio>
+
+int main(int argc, char** argv) {
+  if (argc != 2) return 2;
+  const auto planet = globe::loadPlanetFile(argv[1]);
+  if (!planet) {
+    std::fprintf(stderr, "consumer: %s\n", planet.error().message.c_str());
+    return 1;
+  }
+  const globe::ElevationModel model(*planet);
+  const double elevation_m = model.elevation_m(glm::dvec3(1.0, 0.0, 0.0));
+  std::printf("consumer: %s, radius %.0f m, elevation at (1, 0, 0) %.1f m\n", planet->name.c_str(), model.radius_m(),
+              elevation_m);
+  return model.radius_m() > 0.0 ? 0 : 1;
+}
