@@ -31,7 +31,8 @@ endfunction()
 
 # A library of globe: the .cpp files of its folder (globbed, so a new file needs no CMake edit),
 # configured as above, exported as globe::NAME (target globe_NAME, file libglobe_NAME.a).
-# Headers are included by their path from the source root ("engine/vk/device.h").
+# Headers are included by their path from the source root ("engine/vk/device.h"); installed, the public
+# ones sit under PREFIX/include/globe/ and are included as <globe/engine/vk/device.h> (cmake/Install.cmake).
 function(globe_add_library name)
   file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp ${CMAKE_CURRENT_SOURCE_DIR}/*/*.cpp)
   # A subfolder with its own CMakeLists.txt is a library of its own (planet/physics), not part of this one.
@@ -46,6 +47,18 @@ function(globe_add_library name)
   set_target_properties(globe_${name} PROPERTIES EXPORT_NAME ${name})
   globe_configure_target(globe_${name})
   target_include_directories(globe_${name} PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
-                                                  $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/globe>)
+                                                  $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
   set_property(GLOBAL APPEND PROPERTY GLOBE_LIBRARIES globe_${name})
+endfunction()
+
+# Headers of library globe_NAME that only its own files (and the tests) include: kept beside their
+# sources, never installed. tests/cli/layers_test.py fails when another folder or a public header
+# includes one, so the installed headers compile on their own.
+function(globe_private_headers name)
+  foreach(header IN LISTS ARGN)
+    if(NOT EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/${header})
+      message(FATAL_ERROR "globe_private_headers(${name}): no ${header} in ${CMAKE_CURRENT_SOURCE_DIR}")
+    endif()
+    set_property(TARGET globe_${name} APPEND PROPERTY GLOBE_PRIVATE_HEADERS ${CMAKE_CURRENT_SOURCE_DIR}/${header})
+  endforeach()
 endfunction()

@@ -28,9 +28,30 @@ foreach(component planet physics render collision movie bake viewer)
   endif()
 endforeach()
 install(TARGETS globe RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(DIRECTORY planet engine DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/globe FILES_MATCHING PATTERN "*.h"
-        PATTERN cli EXCLUDE PATTERN research EXCLUDE)
-install(DIRECTORY shaders/include DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/globe/shaders FILES_MATCHING PATTERN "*.h")
+# The public headers: every header of an installed library but its private ones (globe_private_headers),
+# and the C++/GLSL layout headers of shaders/include. Installed under include/globe/ with their project
+# includes prefixed ("planet/core/error.h" -> "globe/planet/core/error.h"), so a consumer has one include
+# root and writes #include <globe/planet/model/planet_file.h>.
+set(globe_public_headers "")
+foreach(library IN LISTS globe_libraries)
+  get_target_property(type ${library} TYPE)
+  if(type STREQUAL "INTERFACE_LIBRARY")
+    continue()
+  endif()
+  get_target_property(folder ${library} SOURCE_DIR)
+  get_target_property(private ${library} GLOBE_PRIVATE_HEADERS)
+  file(GLOB headers CONFIGURE_DEPENDS ${folder}/*.h)
+  if(private)
+    list(REMOVE_ITEM headers ${private})
+  endif()
+  list(APPEND globe_public_headers ${headers})
+endforeach()
+file(GLOB shader_headers CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/shaders/include/*.h)
+list(APPEND globe_public_headers ${shader_headers})
+install(CODE "set(GLOBE_PUBLIC_HEADERS \"${globe_public_headers}\")
+              set(GLOBE_SOURCE_DIR \"${PROJECT_SOURCE_DIR}\")
+              set(GLOBE_INCLUDE_DIR \"${CMAKE_INSTALL_INCLUDEDIR}\")
+              include(\"${PROJECT_SOURCE_DIR}/cmake/InstallHeaders.cmake\")")
 install(DIRECTORY ${GLOBE_SHADER_DIR}/ DESTINATION ${CMAKE_INSTALL_DATADIR}/globe/shaders FILES_MATCHING
         PATTERN "*.spv")
 install(DIRECTORY assets/ DESTINATION ${CMAKE_INSTALL_DATADIR}/globe/assets)

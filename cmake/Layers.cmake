@@ -1,9 +1,11 @@
 # Writes PROJECT_BINARY_DIR/layers.txt for tests/cli/layers_test.py: one line per library of planet/
 # and engine/ (and the `globe` program), "FOLDER TARGET DEPENDENCY...", its direct globe dependencies
-# as declared (PUBLIC, PRIVATE and INTERFACE alike). The test checks every include against them.
+# as declared (PUBLIC, PRIVATE and INTERFACE alike), then "private HEADER..." (globe_private_headers,
+# paths from the source root). The test checks every include against them.
 get_property(globe_layer_targets GLOBAL PROPERTY GLOBE_LIBRARIES)
 list(APPEND globe_layer_targets globe)
 set(globe_layers "")
+set(globe_private "")
 foreach(target IN LISTS globe_layer_targets)
   get_target_property(folder ${target} SOURCE_DIR)
   file(RELATIVE_PATH folder ${PROJECT_SOURCE_DIR} ${folder})
@@ -21,5 +23,15 @@ foreach(target IN LISTS globe_layer_targets)
   endforeach()
   list(JOIN dependencies " " dependencies)
   string(APPEND globe_layers "${folder} ${target} ${dependencies}\n")
+  if(NOT type STREQUAL "INTERFACE_LIBRARY")
+    get_target_property(private ${target} GLOBE_PRIVATE_HEADERS)
+    foreach(header IN LISTS private)
+      if(header)
+        file(RELATIVE_PATH header ${PROJECT_SOURCE_DIR} ${header})
+        string(APPEND globe_private "${header} ")
+      endif()
+    endforeach()
+  endif()
 endforeach()
+string(APPEND globe_layers "private ${globe_private}\n")
 file(WRITE ${PROJECT_BINARY_DIR}/layers.txt "${globe_layers}")

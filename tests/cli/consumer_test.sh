@@ -9,6 +9,12 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 cmake --install "$BUILD" --prefix "$WORK/prefix" >"$WORK/install.log" || fail "cmake --install (see $WORK/install.log)"
 [ -f "$WORK/prefix/share/globe/shaders/terrain.vert.spv" ] || fail "no SPIR-V installed"
 [ -f "$WORK/prefix/share/globe/assets/planets/earthlike.toml" ] || fail "no assets installed"
+# One include root, globe/, holding the public headers alone, each project include under globe/ too.
+[ "$(ls "$WORK/prefix/include")" = "globe" ] || fail "the include tree holds more than globe/: $(ls "$WORK/prefix/include")"
+if grep -rnE '#include "(planet|engine|shaders)/' "$WORK/prefix/include"; then fail "an installed header includes outside globe/"; fi
+for private in engine/viewer/viewer_state.h engine/render/terrain_pipelines.h planet/physics/grid_mesh_shape.h; do
+  [ ! -e "$WORK/prefix/include/globe/$private" ] || fail "the private header $private is installed"
+done
 # One consumer per component set (tests/consumer/CMakeLists.txt).
 build_consumer() {  # build_consumer SET
   cmake -S "$SRC/tests/consumer" -B "$WORK/$1" -G Ninja -DCMAKE_PREFIX_PATH="$WORK/prefix" -DCONSUMER="$1" \
@@ -18,6 +24,7 @@ build_consumer() {  # build_consumer SET
 build_consumer render
 "$WORK/render/consumer" || fail "the render consumer did not run"
 if readelf -d "$WORK/render/consumer" | grep NEEDED | grep -Ei 'libglfw|imgui|libX11'; then fail "a headless consumer links GLFW/ImGui/X11"; fi
+build_consumer headers
 build_consumer planet
 "$WORK/planet/consumer" "$WORK/prefix/share/globe/assets/planets/earthlike.toml" || fail "the planet consumer did not run"
 if readelf -d "$WORK/planet/consumer" | grep NEEDED | grep -Ei 'libvulkan|libBullet|libav|libglfw|imgui|libX11|OpenEXR'; then

@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """The folders of planet/ and engine/ are layers: each is a library, no two include each other (directly
 or round a longer loop), and every include of another folder's header is covered by the library's
-declared dependencies (direct or inherited), so a back-arrow fails here and not in review.
+declared dependencies (direct or inherited), so a back-arrow fails here and not in review. A private
+header (globe_private_headers) is included by its own folder's files alone, and never by a public
+header: the installed (public) headers must compile without it.
 
 Usage: layers_test.py SOURCE_DIR BUILD_DIR  (BUILD_DIR/layers.txt is written by cmake/Layers.cmake)
 """
@@ -9,20 +11,22 @@ import os
 import re
 import sys
 
-INCLUDE = re.compile(r'\s*#\s*include\s+"((?:planet|engine)/[^/"]+)/[^"]+"')
+INCLUDE = re.compile(r'\s*#\s*include\s+"(((?:planet|engine)/[^/"]+)/[^"]+)"')
 
 
 def read_layers(path):
-    """folder -> target and target -> direct globe dependencies, from cmake/Layers.cmake's file."""
-    folder_target, dependencies = {}, {}
+    """folder -> target, target -> direct globe dependencies and the private headers, from
+    cmake/Layers.cmake's file."""
+    folder_target, dependencies, private = {}, {}, set()
     with open(path) as f:
         for line in f:
             words = line.split()
-            if len(words) < 2:
-                continue
-            folder_target[words[0]] = words[1]
-            dependencies[words[1]] = words[2:]
-    return folder_target, dependencies
+            if words and words[0] == "private":
+                private.update(words[1:])
+            elif len(words) >= 2:
+                folder_target[words[0]] = words[1]
+                dependencies[words[1]] = words[2:]
+    return folder_target, dependencies, private
 
 
 def closure(target, dependencies):
@@ -50,17 +54,39 @@ def source_folders(src):
     return folders
 
 
-def include_edges(src, folders):
-    """(from folder, to folder) -> first 'file:line' that includes across them."""
-    edges = {}
+def includes(src, folders):
+    """(including folder, its file, line number, included header, the header's folder) for each
+    include of a planet/ or engine/ header."""
+    found = []
     for folder, files in folders.items():
         for path in files:
             with open(path, encoding="utf-8") as f:
                 for number, line in enumerate(f, 1):
                     m = INCLUDE.match(line)
-                    if m and m.group(1) != folder and (folder, m.group(1)) not in edges:
-                        edges[(folder, m.group(1))] = f"{os.path.relpath(path, src)}:{number}"
+                    if m:
+                        found.append((folder, os.path.relpath(path, src), number, m.group(1), m.group(2)))
+    return found
+
+
+def include_edges(found):
+    """(from folder, to folder) -> first 'file:line' that includes across them."""
+    edges = {}
+    for folder, path, number, _, to in found:
+        if to != folder and (folder, to) not in edges:
+            edges[(folder, to)] = f"{path}:{number}"
     return edges
+
+
+def private_header_failures(found, private):
+    failures = []
+    for folder, path, number, header, to in found:
+        if header not in private:
+            continue
+        if to != folder:
+            failures.append(f"{path}:{number}: includes {header}, private to {to}/")
+        elif path.endswith(".h") and path not in private:
+            failures.append(f"{path}:{number}: a public header includes the private {header}")
+    return failures
 
 
 def find_cycle(nodes, successors):
@@ -91,10 +117,11 @@ def find_cycle(nodes, successors):
 
 def main():
     src, build = sys.argv[1], sys.argv[2]
-    folder_target, dependencies = read_layers(os.path.join(build, "layers.txt"))
+    folder_target, dependencies, private = read_layers(os.path.join(build, "layers.txt"))
     folders = source_folders(src)
-    edges = include_edges(src, folders)
-    failures = []
+    found = includes(src, folders)
+    edges = include_edges(found)
+    failures = private_header_failures(found, private)
     for folder in folders:
         if folder not in folder_target:
             failures.append(f"{folder}: not a library of its own (no globe_add_library in its CMakeLists.txt)")
@@ -114,7 +141,8 @@ def main():
                 failures.append(f"{where}: includes {b}/ but {folder_target[a]} does not link {folder_target[b]}")
     for failure in failures:
         print("FAIL:", failure)
-    print(f"layers: {len(folders)} folders, {len(edges)} include edges, {len(failures)} problems")
+    print(f"layers: {len(folders)} folders, {len(edges)} include edges, {len(private)} private headers, "
+          f"{len(failures)} problems")
     return 1 if failures else 0
 
 

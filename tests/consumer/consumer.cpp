@@ -1,6 +1,6 @@
 // Links an installed globe: the planet's polyhedron on the CPU and a Vulkan device.
-#include "engine/vk/device.h"
-#include "planet/geometry/triacontahedron.h"
+#include <globe/engine/vk/device.h>
+#include <globe/planet/geometry/triacontahedron.h>
 
 #include <cstdio>
 

@@ -1,6 +1,6 @@
 // Links the domain alone from an installed globe: reads a planet file and samples its elevation on the CPU.
-#include "planet/model/elevation_model.h"
-#include "planet/model/planet_file.h"
+#include <globe/planet/model/elevation_model.h>
+#include <globe/planet/model/planet_file.h>
 
 #include <cstdio>
 
