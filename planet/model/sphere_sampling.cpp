@@ -27,19 +27,26 @@ glm::dvec3 equirectPixelDirection(std::uint32_t x, std::uint32_t y, std::uint32_
   return directionFromLatLon(lat_deg, lon_deg);
 }
 
-void sampleEquirectRows(const ElevationModel& model, std::uint32_t width, std::uint32_t height, std::uint32_t first_row,
-                        std::span<float> out, unsigned threads, const ProgressFn& progress) {
-  assert(out.size() % width == 0);
+void forEachEquirectPixel(std::uint32_t width, std::uint32_t height, std::uint32_t first_row, std::size_t count,
+                          unsigned threads, const ProgressFn& progress,
+                          const std::function<void(std::size_t, const glm::dvec3&)>& pixel) {
+  assert(count % width == 0);
   parallelFor(
-      out.size(), width, threads,
+      count, width, threads,
       [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
           const auto x = static_cast<std::uint32_t>(i % width);
           const auto y = first_row + static_cast<std::uint32_t>(i / width);
-          out[i] = static_cast<float>(model.elevation_m(equirectPixelDirection(x, y, width, height)));
+          pixel(i, equirectPixelDirection(x, y, width, height));
         }
       },
       progress);
+}
+
+void sampleEquirectRows(const ElevationModel& model, std::uint32_t width, std::uint32_t height, std::uint32_t first_row,
+                        std::span<float> out, unsigned threads, const ProgressFn& progress) {
+  forEachEquirectPixel(width, height, first_row, out.size(), threads, progress,
+                       [&](std::size_t i, const glm::dvec3& d) { out[i] = static_cast<float>(model.elevation_m(d)); });
 }
 
 namespace {

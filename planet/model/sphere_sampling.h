@@ -25,6 +25,12 @@ glm::dvec3 equirectPixelDirection(std::uint32_t x, std::uint32_t y, std::uint32_
 
 // parallelFor and ProgressFn: planet/core/parallel_for.h.
 
+// Calls pixel(i, direction) for each pixel i of `count` pixels (count % width == 0) of rows from
+// `first_row` of a width x height equirectangular map, row-major, on `threads` threads.
+void forEachEquirectPixel(std::uint32_t width, std::uint32_t height, std::uint32_t first_row, std::size_t count,
+                          unsigned threads, const ProgressFn& progress,
+                          const std::function<void(std::size_t, const glm::dvec3&)>& pixel);
+
 // Elevations (metres, rounded to float) of rows [first_row, first_row + out.size() / width) of a
 // width x height equirectangular map, row-major into `out`.
 void sampleEquirectRows(const ElevationModel& model, std::uint32_t width, std::uint32_t height, std::uint32_t first_row,

@@ -92,24 +92,17 @@ void landCoverEquirectRows(const ElevationModel& model, std::uint32_t width, std
                            std::uint32_t first_row, std::span<glm::vec3> out, unsigned threads,
                            const ProgressFn& progress) {
   const gpu::LandCoverParams& params = model.landCover();
-  assert(params.class_count > 0 && out.size() % width == 0);
-  parallelFor(
-      out.size(), width, threads,
-      [&](std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i) {
-          const auto x = static_cast<std::uint32_t>(i % width);
-          const auto y = first_row + static_cast<std::uint32_t>(i / width);
-          const glm::dvec3 d = equirectPixelDirection(x, y, width, height);
-          const double ground = model.elevation_m(d);
-          if (model.drawsWater() && ground < model.seaLevel_m()) {
-            out[i] = seaColour(model.water(), model.seaLevel_m() - ground);
-            continue;
-          }
-          out[i] = landCoverAlbedo(params,
-                                   landCoverMasks(params, landCoverSiteAt(model, d, kLandCoverSlopeSpacing_m, ground)));
+  assert(params.class_count > 0);
+  forEachEquirectPixel(
+      width, height, first_row, out.size(), threads, progress, [&](std::size_t i, const glm::dvec3& d) {
+        const double ground = model.elevation_m(d);
+        if (model.drawsWater() && ground < model.seaLevel_m()) {
+          out[i] = seaColour(model.water(), model.seaLevel_m() - ground);
+          return;
         }
-      },
-      progress);
+        out[i] = landCoverAlbedo(params,
+                                 landCoverMasks(params, landCoverSiteAt(model, d, kLandCoverSlopeSpacing_m, ground)));
+      });
 }
 
 }  // namespace globe
