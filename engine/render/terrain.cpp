@@ -6,6 +6,7 @@
 #include "planet/model/relief_roughness.h"
 #include "planet/sources/source_mosaic.h"
 #include "planet/sources/tile_cache.h"
+#include "planet/surface/surface_overlay.h"
 
 #include "planet/geometry/triacontahedron.h"
 #include "planet/lod/frustum.h"
@@ -113,6 +114,10 @@ Result<std::unique_ptr<Terrain>> Terrain::create(vk::Device& device, const Eleva
     terrain->imagery_ = std::move(*imagery);
   }
   terrain->attachPool(std::move(*pool));
+  if (meshMapScale(settings) == 0 && model.overlay() != nullptr && model.overlay()->hasVectors())
+    terrain->warnings_.push_back(
+        "the planet's vectors are drawn into the surface textures, which this preset has "
+        "not: none are drawn (--normal-map-scale 1 or more, or --quality balanced)");
   return terrain;
 }
 

@@ -50,13 +50,15 @@ std::vector<std::uint32_t> overlayColoursForJob(const ElevationModel& model, con
   words.reserve(GLOBE_PAYLOAD_OVERLAY_WORDS(cells, m));
   vectorWords.reserve(GLOBE_PAYLOAD_OVERLAY_POINTS(cells, m));
   bool any = false;
-  auto add = [&](const glm::dvec3& dir, double spacing_m) {
-    const SurfaceColour c = overlay->colourAt(dir, spacing_m, vectors);
+  auto add = [&](const glm::dvec3& dir, double spacing_m, bool texel) {
+    const SurfaceColour c = overlay->colourAt(dir, spacing_m, vectors && texel);
     words.push_back(packOverlayColour(c.land));
     vectorWords.push_back(packOverlayColour(c.vectors));
     any = any || (words.back() >> 24) != 0;
   };
-  for (const glm::dvec3& dir : samples) add(dir, sample_m);
+  // The vertices take the imagery alone: vectors are drawn into the surface textures, where a line keeps
+  // its width; a vertex would widen it to its cell and smear it over the triangles (overlaidAlbedo).
+  for (const glm::dvec3& dir : samples) add(dir, sample_m, false);
   // The surface grids as the kernel's scratch holds them: mip 0's lattice points 2g - 5, mip 1's 4g - 6.
   if (m > 0) {
     const struct {
@@ -67,7 +69,7 @@ std::vector<std::uint32_t> overlayColoursForJob(const ElevationModel& model, con
     for (const auto& g : grids)
       for (int b = 0; b < g.side; ++b)
         for (int a = 0; a < g.side; ++a)
-          add(payloadSampleDirection(job, 2 * m, g.stride * a - g.offset, g.stride * b - g.offset), g.texel_m);
+          add(payloadSampleDirection(job, 2 * m, g.stride * a - g.offset, g.stride * b - g.offset), g.texel_m, true);
   }
   if (!any) return {};
   words.insert(words.end(), vectorWords.begin(), vectorWords.end());

@@ -20,7 +20,9 @@ SurfaceOverlay::SurfaceOverlay(const std::vector<ImagerySource>& imagery, const 
 
 SurfaceOverlay::~SurfaceOverlay() = default;
 
-bool SurfaceOverlay::empty() const { return imagery_.layers().empty() && (!vectors_ || vectors_->empty()); }
+bool SurfaceOverlay::empty() const { return imagery_.layers().empty() && !hasVectors(); }
+
+bool SurfaceOverlay::hasVectors() const { return vectors_ && !vectors_->empty(); }
 
 SurfaceColour SurfaceOverlay::colourAt(const glm::dvec3& unitDirection, double texel_m, bool withVectors) const {
   SurfaceColour s{imagery_.colourAt(unitDirection, texel_m), {}};
@@ -88,7 +90,7 @@ glm::vec3 blendOverlay(const glm::vec3& albedo, const ImageryColour& colour) {
 glm::vec3 overlaidAlbedo(const SurfaceOverlay* overlay, const glm::vec3& albedo, const glm::dvec3& unitDirection,
                          double texel_m) {
   if (overlay == nullptr) return albedo;
-  return blendOverlay(albedo, overlay->colourAt(unitDirection, texel_m).land);
+  return blendOverlay(albedo, overlay->colourAt(unitDirection, texel_m, /*withVectors=*/false).land);
 }
 
 OverlaidTexel overlaidTexel(const SurfaceOverlay* overlay, const glm::vec3& albedo, const glm::dvec3& unitDirection,

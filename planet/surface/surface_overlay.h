@@ -38,9 +38,11 @@ class SurfaceOverlay {
 
   // Nothing to paint (no layer opened).
   bool empty() const;
+  // Some vector layer draws something (they are drawn into surface textures only: overlaidAlbedo).
+  bool hasVectors() const;
   // The overlay's linear colour and coverage at a direction, for a surface texel of `texel_m` metres
   // (> 0 where vector layers are painted: their antialiasing filter). `withVectors` false: the
-  // imagery alone (a node vectorsMayTouch ruled out).
+  // imagery alone (a vertex, or a node vectorsMayTouch ruled out).
   SurfaceColour colourAt(const glm::dvec3& unitDirection, double texel_m, bool withVectors = true) const;
   // False when no vector feature can reach any of `directions` (a node's samples) for texels of up
   // to `texel_m` metres: its points need no vector query.
@@ -60,9 +62,10 @@ class SurfaceOverlay {
 std::uint32_t packOverlayColour(const ImageryColour& c);
 ImageryColour unpackOverlayColour(std::uint32_t word);
 
-// `albedo` under the overlay's colour at a direction as the payload kernel blends it (the packed
-// word's 8 bits, then mix(albedo, colour, coverage) in float): the CPU references' mirror.
-// `overlay` nullptr: `albedo` unchanged.
+// A vertex's `albedo` under the overlay's imagery at a direction as the payload kernel blends it (the
+// packed word's 8 bits, then mix(albedo, colour, coverage) in float): the CPU references' mirror.
+// Vectors are left out: they are drawn into the surface textures alone, since a vertex would widen a
+// line to its cell and smear it across the triangles. `overlay` nullptr: `albedo` unchanged.
 glm::vec3 overlaidAlbedo(const SurfaceOverlay* overlay, const glm::vec3& albedo, const glm::dvec3& unitDirection,
                          double texel_m);
 // A surface texel under the overlay, from one overlay query: its overlaid albedo (overlaidAlbedo)

@@ -76,9 +76,11 @@ class VectorRenderTest : public GpuTest {
   }
 
   // `sun`: towards the sun (default overhead: no shadowed slopes).
+  // `preset`: balanced, unless a test says otherwise; `warnings`: the terrain's, if wanted.
   ImageRgba render(const ElevationModel& model, const GeodeticPose& pose, Camera& camera,
-                   std::optional<glm::dvec3> sun = std::nullopt) {
-    TerrainSettings settings = terrainSettingsFor(QualityPreset::kBalanced);
+                   std::optional<glm::dvec3> sun = std::nullopt, QualityPreset preset = QualityPreset::kBalanced,
+                   std::vector<std::string>* warnings = nullptr) {
+    TerrainSettings settings = terrainSettingsFor(preset);
     settings.detailTextures = DetailTextures::kOff;
     const glm::dvec3 down = directionFromLatLon(pose.latitude_deg, pose.longitude_deg);
     settings.style.sunDirection = sun.value_or(down);
@@ -88,6 +90,7 @@ class VectorRenderTest : public GpuTest {
     camera = cameraFromPose(pose, model.radius_m() + model.visibleElevation_m(down), model.radius_m(),
                             double(kWidth) / kHeight);
     renderer.renderFrame(**terrain, camera, true);
+    if (warnings) warnings->assign((*terrain)->warnings().begin(), (*terrain)->warnings().end());
     return toImage(renderer.readback(), camera);
   }
 };
@@ -201,6 +204,27 @@ TEST_F(VectorRenderTest, PolygonAndLineLieOnTheGroundAndTheLineHasNoGaps) {
 
 // A line across open sea, drawn over the water (the colour layer's alpha, docs/imagery.md): painted
 // along its whole length with no gap, and nowhere else.
+// Without surface textures (fast) vectors are not drawn per vertex, where a line would widen to a
+// cell and smear over the triangles: nothing is painted, and the terrain says why.
+TEST_F(VectorRenderTest, WithoutSurfaceTexturesNoVectorIsDrawnAndTheTerrainSaysSo) {
+  TempDir dir("vector_render_fast");
+  Scene s;
+  s.lon = 20.0;
+  s.seamLat = seamLatitude(12.0, s.lon);
+  s.polyLat0 = s.seamLat - 0.03;
+  s.polyLat1 = s.seamLat - 0.01;
+  s.polyLon0 = s.lon + 0.01;
+  s.polyLon1 = s.lon + 0.03;
+  const ElevationModel model = planetWith(writeGeoJson(dir, s), s);
+  Camera camera;
+  std::vector<std::string> warnings;
+  const ImageRgba image = render(model, {s.seamLat, s.lon + 0.01, 12000.0, 0.0, -90.0, 0.0}, camera, std::nullopt,
+                                 QualityPreset::kFast, &warnings);
+  EXPECT_EQ(checkPixels(image, camera, s, 250.0).painted, 0);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("vectors are drawn into the surface textures"), std::string::npos) << warnings[0];
+}
+
 TEST_F(VectorRenderTest, ALineAtSeaLiesOnTheWater) {
   TempDir dir("vector_render_sea");
   const PlanetDescription earthlike = *loadPlanetFile(std::string(GLOBE_SOURCE_DIR) + "/assets/planets/earthlike.toml");
