@@ -1,13 +1,12 @@
 #include "planet/model/elevation_model.h"
 
-#include "planet/sources/source_mosaic.h"
-#include "planet/surface/surface_overlay.h"
-
 #include <algorithm>
 #include <cassert>
 #include <cmath>
 
 #include "planet/elevation/layer_evaluation.h"
+#include "planet/sources/source_mosaic.h"
+#include "planet/surface/surface_overlay.h"
 
 namespace globe {
 
