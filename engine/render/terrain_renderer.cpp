@@ -1,8 +1,7 @@
 #include "engine/render/terrain_renderer.h"
 
+#include "engine/render/atmosphere_passes.h"
 #include "engine/render/grid_indices.h"
-
-#include "engine/render/render_output.h"
 #include "engine/render/terrain_instance.h"
 #include "engine/render/terrain_pipelines.h"
 #include "engine/render/terrain_shadows.h"
@@ -25,13 +24,6 @@
 
 namespace globe {
 namespace {
-
-struct SkyPush {
-  ViewRays rays;
-  float camera[4];  // xyz: camera minus planet centre, w: radius of the lowest terrain, metres
-  float sun[4];     // unit, towards the sun
-};
-static_assert(sizeof(SkyPush) == 80);
 
 // Per-frame buffer: the TerrainFrame constants, then the instances at an offset every device accepts
 // for a storage-buffer binding (minStorageBufferOffsetAlignment is at most 256).
@@ -91,15 +83,18 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
         device, terrainDesc({colourFormat, samples}, false, gridCullMode(style), positions,
                             surfaceShading(style, atmosphere_ != nullptr, false, true)));
   }
-  if (atmosphere_) view_ = std::make_unique<AtmosphereView>(device, *atmosphere_);
-  if (surfaceShading(style, false, false).shadows)
-    shadows_ = std::make_unique<TerrainShadows>(device, gridCells, style.radius_m);
-  if (style.atmosphere) {  // without an atmosphere the background stays the clear colour: black space
-    sky_ = std::make_unique<vk::GraphicsPipeline>(device, skyDesc({colourFormat, samples}, sizeof(SkyPush), false));
-    skyFromSpace_ =
-        std::make_unique<vk::GraphicsPipeline>(device, skyDesc({colourFormat, samples}, sizeof(SkyPush), true));
-  }
   uploadIndices(gridIndexRanges(gridCells));
+  const GridRanges grid{indices_.handle(), first_, count_};
+  // The passes, in frame order (frame_pass.h).
+  if (atmosphere_)
+    passes_.push_back((aerial_ = std::make_unique<AerialPerspectivePass>(device, *atmosphere_, style_)).get());
+  if (surfaceShading(style, false, false).shadows)
+    passes_.push_back((shadows_ = std::make_unique<TerrainShadows>(device, gridCells, style_, grid)).get());
+  passes_.push_back(&grids_);
+  // Without an atmosphere the background stays the clear colour: black space.
+  if (style.atmosphere)
+    passes_.push_back(
+        (sky_ = std::make_unique<SkyPass>(device, style_, TargetFormat{colourFormat, samples}, gridCells, grid)).get());
   positions_ = positions;
   if (positions_ == VertexPositions::kReprojected) {
     faces_ = vk::Buffer(device, 30 * sizeof(FaceCornersGpu), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
@@ -150,6 +145,8 @@ void TerrainRenderer::uploadIndices(const GridIndexRanges& ranges) {
 
 TerrainRenderer::~TerrainRenderer() = default;
 
+const AtmosphereView* TerrainRenderer::atmosphereView() const { return aerial_ ? &aerial_->view() : nullptr; }
+
 VkDescriptorBufferInfo TerrainRenderer::instanceDescriptor(uint32_t frameIndex) const {
   const vk::Buffer& b = frames_[frameIndex];
   return {b.handle(), kFrameHeaderBytes, b.size() - kFrameHeaderBytes};
@@ -187,40 +184,16 @@ gpu::TerrainReprojectionNode* TerrainRenderer::beginReprojection(uint32_t frameI
   return reinterpret_cast<gpu::TerrainReprojectionNode*>(bytes + sizeof(header));
 }
 
-void TerrainRenderer::recordSky(VkCommandBuffer cmd, const Camera& camera) const {
-  // Camera minus planet centre in double, then float: the sky never sees the planet-scale sum.
-  const glm::vec3 c(camera.position_m);
-  const glm::vec3 sun(glm::normalize(style_.sunDirection));
-  // The sky's screen grid is the terrain's full grid (its index range 0), one vertex per sample.
-  SkyPush push{
-      viewRays(camera, float(cells_)), {c.x, c.y, c.z, float(style_.terrainRadii_m.x)}, {sun.x, sun.y, sun.z, 0.0f}};
-  const AtmosphereLuts& a = *style_.atmosphere;
-  const double top_m = double(a.packed().radii.y);
-  const bool fromSpace = glm::length(camera.position_m) > top_m;
-  (fromSpace ? *skyFromSpace_ : *sky_)
-      .bind(cmd, {a.parameters(), a.transmittance(), a.irradiance(), a.scattering()}, &push, sizeof(push));
-  vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
-  vkCmdDrawIndexed(cmd, count_[0], 1, first_[0], 0, 0);
-  // From space, the sun in open space: a square round its disc (terrain_sky.vert, instance 1).
-  if (fromSpace) vkCmdDraw(cmd, 6, 1, 0, 1);
-}
-
 void TerrainRenderer::prepare(VkCommandBuffer cmd, const Camera& camera, const glm::dvec3& origin_m,
                               std::span<const DrawNode> nodes, const PayloadPages& payloads, uint32_t frameIndex,
                               double groundRadius_m) {
-  if (view_) view_->record(cmd, camera, style_.sunDirection, style_.terrainRadii_m, frameIndex);
-  uint32_t nextMark = kMarkShadowsBegin;
-  writeMarks(cmd, nextMark, kMarkShadowsBegin);
-  cascades_ = {};
-  if (shadows_ && !nodes.empty()) {
-    cascades_ = fitShadowCascades(
-        {&camera, glm::normalize(style_.sunDirection), groundRadius_m, style_.terrainRadii_m, shadows_->resolution()});
-    gpu::TerrainFrame frame;
-    writeFrameConstants(reinterpret_cast<unsigned char*>(&frame), camera, origin_m, false);
-    const ShadowGrids grids{indices_.handle(), {first_[0], first_[1]}, {count_[0], count_[1]}};
-    shadows_->record(cmd, cascades_, frame, nodes, origin_m, camera.position_m, payloads, grids, frameIndex);
-  }
-  writeMarks(cmd, nextMark, kMarkShadowsEnd);
+  if (shadows_) shadows_->endFrame();  // the constants below carry no cascades
+  gpu::TerrainFrame constants;
+  writeFrameConstants(reinterpret_cast<unsigned char*>(&constants), camera, origin_m, false);
+  const PassFrame frame{camera, origin_m, nodes, payloads, frameIndex, groundRadius_m, nullptr, &constants};
+  PassMarks marks(timestamps_, kMarkShadowsBegin);
+  for (FramePass* pass : passes_) pass->prepare(cmd, frame, marks);
+  marks.write(cmd, kMarkShadowsEnd);
 }
 
 DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, const glm::dvec3& origin_m,
@@ -228,25 +201,26 @@ DrawStats TerrainRenderer::record(VkCommandBuffer cmd, const Camera& camera, con
                                   const ImageryBinding* imagery) {
   assert(frameIndex < vk::kFramesInFlight);
   assert((imagery != nullptr) == style_.imagery);
+  const PassFrame frame{camera, origin_m, nodes, payloads, frameIndex, 0.0, imagery, nullptr};
   DrawStats stats;
-  uint32_t nextMark = kMarkGridsBegin;
-  writeMarks(cmd, nextMark, kMarkGridsBegin);
-  if (!nodes.empty()) stats = recordTerrain(cmd, camera, origin_m, nodes, payloads, frameIndex, imagery, nextMark);
-  cascades_ = {};  // drawn with this frame: the next record() without prepare() has none
-  // The sky goes last, behind everything: its screen grid lies at the far plane (depth 0),
-  // so the depth test keeps only the pixels no terrain covered, and those are the only ones shaded.
-  writeMarks(cmd, nextMark, kMarkSkyBegin);
-  if (style_.sky && sky_ && style_.atmosphere) {
-    recordSky(cmd, camera);
-    ++stats.drawCalls;
-  }
-  writeMarks(cmd, nextMark, kMarkSkyEnd);
+  PassMarks marks(timestamps_, kMarkGridsBegin);
+  for (FramePass* pass : passes_) pass->record(cmd, frame, marks, stats);
+  marks.write(cmd, kMarkSkyEnd);
+  if (shadows_) shadows_->endFrame();  // drawn with this frame: the next record() without prepare() has none
   return stats;
+}
+
+void TerrainRenderer::GridsPass::record(VkCommandBuffer cmd, const PassFrame& frame, PassMarks& marks,
+                                        DrawStats& stats) {
+  marks.write(cmd, kMarkGridsBegin);
+  if (!frame.nodes.empty())
+    stats += renderer_.recordTerrain(cmd, frame.camera, frame.origin_m, frame.nodes, frame.payloads, frame.frameIndex,
+                                     frame.imagery, marks);
 }
 
 DrawStats TerrainRenderer::recordTerrain(VkCommandBuffer cmd, const Camera& camera, const glm::dvec3& origin_m,
                                          std::span<const DrawNode> nodes, const PayloadPages& payloads,
-                                         uint32_t frameIndex, const ImageryBinding* imagery, uint32_t& nextMark) {
+                                         uint32_t frameIndex, const ImageryBinding* imagery, PassMarks& marks) {
   const bool skirts = style_.skirtOutward > 0.0f || style_.skirtDrop > 0.0f;
   const std::array<uint32_t, 2> skirtEdges = skirts ? markSkirtedEdges(nodes) : std::array<uint32_t, 2>{0, 0};
   ensureCapacity(frameIndex, uint32_t(nodes.size()) + skirtEdges[0] + skirtEdges[1]);
@@ -259,7 +233,7 @@ DrawStats TerrainRenderer::recordTerrain(VkCommandBuffer cmd, const Camera& came
   orderNearFirst(nodes, camera.position_m, view);
   groupInstances(nodes, payloads, pageCount, skirts);
   const uint32_t partial = writeInstances(bytes, origin_m, nodes, payloads, pageCount, skirts, reprojection);
-  DrawStats stats = recordDraws(cmd, payloads, pageCount, frameIndex, view, reprojection != nullptr, imagery, nextMark);
+  DrawStats stats = recordDraws(cmd, payloads, pageCount, frameIndex, view, reprojection != nullptr, imagery, marks);
   stats.nodes = uint32_t(nodes.size());
   stats.partialNodes = partial;
   stats.skirtEdges = skirtEdges[0] + skirtEdges[1];
@@ -334,10 +308,12 @@ TerrainDebugView TerrainRenderer::writeFrameConstants(unsigned char* bytes, cons
 }
 
 void TerrainRenderer::writeShadowConstants(gpu::TerrainFrame& frame) const {
-  frame.shadow = {float(cascades_.count), kShadowFadeStart, 0.0f, 0.0f};
+  const ShadowCascades none{};
+  const ShadowCascades& cascades = shadows_ ? shadows_->cascades() : none;
+  frame.shadow = {float(cascades.count), kShadowFadeStart, 0.0f, 0.0f};
   float bias[kShadowCascades]{};
-  for (uint32_t c = 0; c < cascades_.count; ++c) {
-    const ShadowCascade& cascade = cascades_.cascades[c];
+  for (uint32_t c = 0; c < cascades.count; ++c) {
+    const ShadowCascade& cascade = cascades.cascades[c];
     const glm::mat4 clip(cascade.clipFromCamera);
     std::memcpy(frame.shadowFromCamera[c].m, glm::value_ptr(clip), sizeof(frame.shadowFromCamera[c].m));
     // Two texels along the sunlight, times 1 + the slope's tangent in the fragment stage
@@ -420,13 +396,13 @@ uint32_t TerrainRenderer::writeInstances(unsigned char* bytes, const glm::dvec3&
 
 DrawStats TerrainRenderer::recordDraws(VkCommandBuffer cmd, const PayloadPages& payloads, uint32_t pageCount,
                                        uint32_t frameIndex, TerrainDebugView view, bool reprojected,
-                                       const ImageryBinding* imagery, uint32_t& nextMark) const {
+                                       const ImageryBinding* imagery, PassMarks& marks) const {
   DrawStats stats;
   const bool wireframe = view == TerrainDebugView::kWireframe;
   vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
   for (const uint32_t group : kGroupOrder) {
-    const uint32_t r = group % kIndexRanges;                      // the group's index range
-    if (group == 2) writeMarks(cmd, nextMark, kMarkSkirtsBegin);  // kGroupOrder: grids, then from group 2 on skirts
+    const uint32_t r = group % kIndexRanges;             // the group's index range
+    if (group == 2) marks.write(cmd, kMarkSkirtsBegin);  // kGroupOrder: grids, then from group 2 on skirts
     for (uint32_t page = 0; page < pageCount; ++page) {
       const size_t g = size_t(group) * pageCount + page;
       if (instancesOf_[g] == 0) continue;
@@ -442,7 +418,7 @@ DrawStats TerrainRenderer::recordDraws(VkCommandBuffer cmd, const PayloadPages& 
       } else if (atmosphere_) {
         for (const VkDescriptorBufferInfo& b :
              {atmosphere_->parameters(), atmosphere_->transmittance(), atmosphere_->irradiance(),
-              atmosphere_->scattering(), view_->camera(frameIndex), view_->table(frameIndex)})
+              atmosphere_->scattering(), aerial_->view().camera(frameIndex), aerial_->view().table(frameIndex)})
           buffers[count++] = b;
       }
       if (imagery && !wireframe) buffers[count++] = imagery->cells;  // the wireframe's pipeline has no maps
@@ -480,13 +456,6 @@ TerrainRenderer::ImageSet TerrainRenderer::drawImages(const PayloadPages& payloa
   }
   if (shadows_) set.images[set.count++] = shadows_->sampled();
   return set;
-}
-
-void TerrainRenderer::writeMarks(VkCommandBuffer cmd, uint32_t& next, uint32_t mark) const {
-  for (; next <= mark; ++next) {
-    if (timestamps_.pool != VK_NULL_HANDLE)
-      vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, timestamps_.pool, timestamps_.firstQuery + next);
-  }
 }
 
 }  // namespace globe

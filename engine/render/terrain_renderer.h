@@ -14,6 +14,7 @@
 #include "engine/atmosphere/atmosphere_luts.h"
 #include "engine/atmosphere/atmosphere_view.h"
 #include "engine/generation/payload_pages.h"
+#include "engine/render/frame_pass.h"
 #include "engine/render/imagery_tiles.h"
 #include "engine/render/shadow_cascades.h"
 #include "engine/render/terrain_detail.h"
@@ -34,9 +35,11 @@
 
 namespace globe {
 
-struct GridIndexRanges;  // grid_indices.h
-class TerrainShadows;    // terrain_shadows.h
-struct TargetFormat;     // terrain_pipelines.h
+struct GridIndexRanges;       // grid_indices.h
+class TerrainShadows;         // terrain_shadows.h
+class AerialPerspectivePass;  // atmosphere_passes.h
+class SkyPass;
+struct TargetFormat;  // terrain_pipelines.h
 namespace gpu {
 struct TerrainReprojectionNode;  // shaders/include/terrain_layout.h
 struct TerrainFrame;
@@ -119,42 +122,6 @@ struct TerrainStyle {
   bool coverNear() const { return landCover() && detailRange_m > 0.0; }
 };
 
-// One node to draw; the caller builds these from the selection and the payload pool.
-struct DrawNode {
-  NodeId id;
-  uint32_t slot = 0;         // payload slot holding the node's samples
-  NodeMorph morph;           // metres from the camera (SelectedNode::morph)
-  bool partial = false;      // drawn at half resolution (the parent's LOD) over its own quadrant
-  glm::dvec3 centre_m{0.0};  // node centre the payload was generated with (PayloadJob::centre)
-  bool water = false;        // the payload has sea to draw (GpuPayloadGenerator::slotHasWater)
-  uint32_t imageryCell = 0;  // with imagery: the node's first cell in the frame's cell tables
-};
-
-// Timestamps written between the renderer's passes, at `firstQuery` + TerrainPassMark in `pool`
-// (for the benchmark's GPU split; VK_NULL_HANDLE writes none): the first two by every prepare(), the
-// other four by every record().
-enum TerrainPassMark : uint32_t {
-  kMarkShadowsBegin,
-  kMarkShadowsEnd,
-  kMarkGridsBegin,
-  kMarkSkirtsBegin,
-  kMarkSkyBegin,
-  kMarkSkyEnd,
-  kTerrainPassMarks
-};
-struct PassTimestamps {
-  VkQueryPool pool = VK_NULL_HANDLE;
-  uint32_t firstQuery = 0;
-};
-
-struct DrawStats {
-  uint64_t triangles = 0;  // submitted, including skirts and the degenerate ones of morphed cells
-  uint32_t drawCalls = 0;
-  uint32_t nodes = 0;
-  uint32_t partialNodes = 0;
-  uint32_t skirtEdges = 0;  // node edges drawn with a skirt (those next to a level change)
-};
-
 class TerrainRenderer {
  public:
   // The most triangles one drawn node submits: its full grid (2 per cell) and four skirt strips (2 per
@@ -171,17 +138,17 @@ class TerrainRenderer {
   TerrainRenderer(const TerrainRenderer&) = delete;
   TerrainRenderer& operator=(const TerrainRenderer&) = delete;
 
-  // Records what the frame's draws read and must be computed first: with an atmosphere, the aerial
-  // perspective table for `camera` (AtmosphereView); with shadows, the shadow maps of `nodes` (as
-  // record() gets them; `groundRadius_m`: the ground's radius under the camera, which the cascades
-  // are sized from). Outside the render pass, before record() with the same arguments; a record()
+  // Runs the passes' prepare() (frame_pass.h): what the frame's draws read and must be computed
+  // first: with an atmosphere, the aerial perspective table for `camera` (AtmosphereView); with
+  // shadows, the shadow maps of `nodes` (the casters; `groundRadius_m`: the ground's radius under the
+  // camera, which the cascades are sized from). Outside the render pass, before record(); a record()
   // without it draws no shadows.
   void prepare(VkCommandBuffer cmd, const Camera& camera, const glm::dvec3& origin_m, std::span<const DrawNode> nodes,
                const PayloadPages& payloads, uint32_t frameIndex, double groundRadius_m);
 
-  // Records the sky (if enabled) and the terrain into the current dynamic-rendering pass (viewport and
-  // scissor already set). `origin_m`: the floating origin (FloatingOrigin); `payloads`: the payload
-  // pages, slot s starting at vec4 localSlot(s) * GLOBE_PAYLOAD_SLOT_VEC4(gridCells) of page
+  // Runs the passes' record(): the terrain, then the sky (if enabled), into the current
+  // dynamic-rendering pass (viewport and scissor already set). `origin_m`: the floating origin (FloatingOrigin);
+  // `payloads`: the payload pages, slot s starting at vec4 localSlot(s) * GLOBE_PAYLOAD_SLOT_VEC4(gridCells) of page
   // page(s)'s window. frameIndex < vk::kFramesInFlight.
   // `imagery`: the imagery tiles' binding when the style has imagery (else nullptr).
   DrawStats record(VkCommandBuffer cmd, const Camera& camera, const glm::dvec3& origin_m,
@@ -194,7 +161,7 @@ class TerrainRenderer {
   void setPassTimestamps(PassTimestamps timestamps) { timestamps_ = timestamps; }
   bool wireframeSupported() const { return wireframe_ != nullptr; }
   // The per-frame aerial perspective tables (nullptr without an atmosphere), for tests.
-  const AtmosphereView* atmosphereView() const { return view_.get(); }
+  const AtmosphereView* atmosphereView() const;
   // The shadow maps (nullptr without shadows), for tests.
   const TerrainShadows* shadows() const { return shadows_.get(); }
   uint32_t gridCells() const { return cells_; }
@@ -216,16 +183,15 @@ class TerrainRenderer {
   // kReprojected: writes the camera into frame `frameIndex`'s reprojection buffer and returns its
   // per-instance array (the caller fills it in instance order).
   gpu::TerrainReprojectionNode* beginReprojection(uint32_t frameIndex, const Camera& camera);
-  void recordSky(VkCommandBuffer cmd, const Camera& camera) const;
   // record()'s steps for a non-empty node list: which edges get skirts, the frame constants (returns
   // the debug view drawn), the instances grouped by draw and written, the draws themselves.
   DrawStats recordTerrain(VkCommandBuffer cmd, const Camera& camera, const glm::dvec3& origin_m,
                           std::span<const DrawNode> nodes, const PayloadPages& payloads, uint32_t frameIndex,
-                          const ImageryBinding* imagery, uint32_t& nextMark);
+                          const ImageryBinding* imagery, PassMarks& marks);
   std::array<uint32_t, 2> markSkirtedEdges(std::span<const DrawNode> nodes);
   TerrainDebugView writeFrameConstants(unsigned char* bytes, const Camera& camera, const glm::dvec3& origin_m,
                                        bool skirts) const;
-  // The shadow maps' matrices and biases of cascades_ (none: no shadows).
+  // The shadow maps' matrices and biases of the cascades prepare() drew (none: no shadows).
   void writeShadowConstants(gpu::TerrainFrame& frame) const;
   // Fills order_: the indices of `nodes` by distance from the camera, nearest first; and with
   // coverNear(), detailNode_: which nodes may come within the detail range (all in the land cover view).
@@ -244,20 +210,28 @@ class TerrainRenderer {
   // The pipeline of draw group `group` (terrain_renderer.cpp, drawGroup) in debug view `view`.
   const vk::GraphicsPipeline& groupPipeline(uint32_t group, TerrainDebugView view) const;
   DrawStats recordDraws(VkCommandBuffer cmd, const PayloadPages& payloads, uint32_t pageCount, uint32_t frameIndex,
-                        TerrainDebugView view, bool reprojected, const ImageryBinding* imagery,
-                        uint32_t& nextMark) const;
+                        TerrainDebugView view, bool reprojected, const ImageryBinding* imagery, PassMarks& marks) const;
 
   vk::Device& device_;
   uint32_t cells_;
   TerrainStyle style_;
   TerrainDetailTiling detailTiling_;
   PassTimestamps timestamps_;
-  // Writes the pass marks from `next` up to and including `mark` (none without a query pool).
-  void writeMarks(VkCommandBuffer cmd, uint32_t& next, uint32_t mark) const;
-  const AtmosphereLuts* atmosphere_;         // the style's, for the terrain pipelines (nullptr: none)
-  std::unique_ptr<AtmosphereView> view_;     // with atmosphere_ only
-  std::unique_ptr<TerrainShadows> shadows_;  // with the style's shadows and surface textures only
-  ShadowCascades cascades_;                  // of the frame prepare() drew the shadow maps for
+  const AtmosphereLuts* atmosphere_;  // the style's, for the terrain pipelines (nullptr: none)
+  // The terrain's own pass: the drawn nodes' grids and skirts (recordTerrain).
+  class GridsPass final : public FramePass {
+   public:
+    explicit GridsPass(TerrainRenderer& renderer) : renderer_(renderer) {}
+    void record(VkCommandBuffer cmd, const PassFrame& frame, PassMarks& marks, DrawStats& stats) override;
+
+   private:
+    TerrainRenderer& renderer_;
+  };
+  std::unique_ptr<AerialPerspectivePass> aerial_;  // with atmosphere_ only
+  std::unique_ptr<TerrainShadows> shadows_;        // with the style's shadows and surface textures only
+  GridsPass grids_{*this};
+  std::unique_ptr<SkyPass> sky_;    // with the style's atmosphere only
+  std::vector<FramePass*> passes_;  // in frame order: aerial_, shadows_, grids_, sky_ (those that exist)
   // The water and wireframe pipelines, created on a second thread while the others are (pipeline
   // creation is most of the renderer's set-up: docs/benchmark.md, "Cold start").
   struct OptionalPipelines {
@@ -275,8 +249,6 @@ class TerrainRenderer {
   std::unique_ptr<vk::GraphicsPipeline> wireframe_;
   // coverNear(): the grids of the nodes near the camera, with the land cover's splat (water: with sea).
   std::unique_ptr<vk::GraphicsPipeline> solidDetail_, waterDetail_;
-  std::unique_ptr<vk::GraphicsPipeline> sky_;           // with an atmosphere only: the camera inside it
-  std::unique_ptr<vk::GraphicsPipeline> skyFromSpace_;  // the same, the camera outside it
   vk::Buffer indices_;
   // Index ranges: full grid, half grid, one full skirt strip, one half skirt strip.
   std::array<uint32_t, 4> first_{};

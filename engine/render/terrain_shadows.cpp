@@ -75,10 +75,12 @@ bool mayCast(const ShadowCascade& c, const glm::dvec3& perMetre, const glm::dvec
 
 }  // namespace
 
-TerrainShadows::TerrainShadows(vk::Device& device, uint32_t gridCells, double radius_m, uint32_t resolution)
+TerrainShadows::TerrainShadows(vk::Device& device, uint32_t gridCells, const TerrainStyle& style, GridRanges grids,
+                               uint32_t resolution)
     : device_(device),
       cells_(gridCells),
-      radius_m_(radius_m),
+      style_(style),
+      grids_(grids),
       resolution_(resolution),
       pipeline_(device, shadowDesc()) {
   image_ = vk::createImage(device, kShadowFormat, {resolution, resolution}, kShadowCascades, 1, VK_SAMPLE_COUNT_1_BIT,
@@ -124,7 +126,7 @@ void TerrainShadows::writeInstances(const ShadowCascades& cascades, const gpu::T
   nodeInstances_.resize(nodes.size());
   for (uint32_t k = 0; k < nodes.size(); ++k) {
     // A sphere of 1.5 node widths holds the node with its relief.
-    const double sphere_m = 1.5 * nominalNodeWidth(nodes[k].id.level, radius_m_);
+    const double sphere_m = 1.5 * nominalNodeWidth(nodes[k].id.level, style_.radius_m);
     const size_t before = members_.size();
     for (uint32_t c = 0; c < cascades.count; ++c) {
       if (!mayCast(cascades.cascades[c], perMetre[c], nodes[k].centre_m - camera_m, sphere_m)) continue;
@@ -155,21 +157,32 @@ void TerrainShadows::writeInstances(const ShadowCascades& cascades, const gpu::T
   for (size_t g = 1; g < instancesOf_.size(); ++g) firstInstance_[g] = firstInstance_[g - 1] + instancesOf_[g - 1];
 }
 
-void TerrainShadows::record(VkCommandBuffer cmd, const ShadowCascades& cascades, const gpu::TerrainFrame& frame,
-                            std::span<const DrawNode> nodes, const glm::dvec3& origin_m, const glm::dvec3& camera_m,
-                            const PayloadPages& payloads, const ShadowGrids& grids, uint32_t frameIndex) {
+void TerrainShadows::prepare(VkCommandBuffer cmd, const PassFrame& frame, PassMarks& marks) {
+  marks.write(cmd, kMarkShadowsBegin);
+  cascades_ = {};
+  if (!frame.nodes.empty() && frame.constants != nullptr) {
+    cascades_ = fitShadowCascades(
+        {&frame.camera, glm::normalize(style_.sunDirection), frame.groundRadius_m, style_.terrainRadii_m, resolution_});
+    record(cmd, frame);
+  }
+  marks.write(cmd, kMarkShadowsEnd);
+}
+
+void TerrainShadows::record(VkCommandBuffer cmd, const PassFrame& frame) {
+  const PayloadPages& payloads = frame.payloads;
   pageCount_ = std::max(payloads.pageCount(), 1u);
-  writeInstances(cascades, frame, nodes, origin_m, camera_m, payloads, frameIndex);
+  writeInstances(cascades_, *frame.constants, frame.nodes, frame.origin_m, frame.camera.position_m, payloads,
+                 frame.frameIndex);
   const VkImageSubresourceRange all{VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, kShadowCascades};
   // The previous frame's maps are not needed: every cascade in use is cleared.
   vk::transitionImage(cmd, image_, all, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
-  for (uint32_t c = 0; c < cascades.count; ++c) recordCascade(cmd, c, payloads, grids, frameIndex);
+  for (uint32_t c = 0; c < cascades_.count; ++c) recordCascade(cmd, c, payloads, frame.frameIndex);
   vk::transitionImage(cmd, image_, all, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
 }
 
 void TerrainShadows::recordCascade(VkCommandBuffer cmd, uint32_t cascade, const PayloadPages& payloads,
-                                   const ShadowGrids& grids, uint32_t frameIndex) const {
+                                   uint32_t frameIndex) const {
   VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
   depth.imageView = layerViews_[cascade];
   depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
@@ -182,7 +195,7 @@ void TerrainShadows::recordCascade(VkCommandBuffer cmd, uint32_t cascade, const 
   info.pDepthAttachment = &depth;
   vkCmdBeginRendering(cmd, &info);
   setWholeViewport(cmd, {resolution_, resolution_});
-  vkCmdBindIndexBuffer(cmd, grids.indices, 0, VK_INDEX_TYPE_UINT32);
+  vkCmdBindIndexBuffer(cmd, grids_.indices, 0, VK_INDEX_TYPE_UINT32);
   const vk::Buffer& buffer = frames_[frameIndex];
   const VkDescriptorBufferInfo instances{buffer.handle(), kHeaderBytes, buffer.size() - kHeaderBytes};
   const VkDescriptorBufferInfo constants{buffer.handle(), cascade * kCascadeFrameBytes, sizeof(gpu::TerrainFrame)};
@@ -192,7 +205,7 @@ void TerrainShadows::recordCascade(VkCommandBuffer cmd, uint32_t cascade, const 
       if (instancesOf_[g] == 0) continue;
       const gpu::TerrainDrawPush push{grid == 0 ? cells_ : cells_ / 2, 0};
       pipeline_.bind(cmd, {instances, payloads.window(page), constants}, &push, sizeof(push));
-      vkCmdDrawIndexed(cmd, grids.count[grid], instancesOf_[g], grids.first[grid], 0, firstInstance_[g]);
+      vkCmdDrawIndexed(cmd, grids_.count[grid], instancesOf_[g], grids_.first[grid], 0, firstInstance_[g]);
     }
   }
   vkCmdEndRendering(cmd);

@@ -5,6 +5,7 @@
 // _shadows fragment stages through a comparison sampler (2 x 2 percentage-closer filtering where
 // the depth format filters linearly). Casters are the drawn nodes: relief outside the view that
 // shades the view's ground casts nothing (docs/rendering.md, "Shadows").
+#include "engine/render/frame_pass.h"
 #include "engine/render/shadow_cascades.h"
 #include "engine/render/terrain_renderer.h"
 #include "engine/vk/graphics_pipeline.h"
@@ -18,25 +19,24 @@ namespace globe {
 // Texels per side of each cascade's map.
 inline constexpr uint32_t kShadowMapResolution = 2048;
 
-// The terrain's grid index ranges the shadow pass draws (TerrainRenderer's): full and half grid.
-struct ShadowGrids {
-  VkBuffer indices = VK_NULL_HANDLE;
-  std::array<uint32_t, 2> first{}, count{};
-};
-
-class TerrainShadows {
+class TerrainShadows final : public FramePass {
  public:
-  TerrainShadows(vk::Device& device, uint32_t gridCells, double radius_m, uint32_t resolution = kShadowMapResolution);
-  ~TerrainShadows();
+  // `style`: the renderer's, read each frame (the sun, the terrain's radii); `grids`: the terrain's
+  // index buffer (its full and half grids are drawn).
+  TerrainShadows(vk::Device& device, uint32_t gridCells, const TerrainStyle& style, GridRanges grids,
+                 uint32_t resolution = kShadowMapResolution);
+  ~TerrainShadows() override;
   TerrainShadows(const TerrainShadows&) = delete;
   TerrainShadows& operator=(const TerrainShadows&) = delete;
 
-  // Records every cascade's depth pass, outside any render pass; afterwards the maps are ready for
-  // the fragment stages. `frame`: the camera's frame constants (the morph and the floating origin),
-  // copied per cascade with the cascade's matrix. The caller waited for frameIndex's last use.
-  void record(VkCommandBuffer cmd, const ShadowCascades& cascades, const gpu::TerrainFrame& frame,
-              std::span<const DrawNode> nodes, const glm::dvec3& origin_m, const glm::dvec3& camera_m,
-              const PayloadPages& payloads, const ShadowGrids& grids, uint32_t frameIndex);
+  // Fits the cascades to the camera and the ground under it and records every cascade's depth pass
+  // of the frame's casters (none: no cascades), between the shadow marks; afterwards the maps are
+  // ready for the fragment stages. The frame's constants (the morph and the floating origin) are
+  // copied per cascade with the cascade's matrix.
+  void prepare(VkCommandBuffer cmd, const PassFrame& frame, PassMarks& marks) override;
+  // The cascades of the frame prepare() drew the maps for, until endFrame() (the frame is drawn).
+  const ShadowCascades& cascades() const { return cascades_; }
+  void endFrame() { cascades_ = {}; }
 
   // The maps for GLOBE_TERRAIN_SHADOW_BINDING.
   vk::ImageDescriptor sampled() const;
@@ -51,12 +51,15 @@ class TerrainShadows {
                       const glm::dvec3& origin_m, const glm::dvec3& camera_m, const PayloadPages& payloads,
                       uint32_t frameIndex);
   void ensureCapacity(uint32_t frameIndex, size_t instances);
-  void recordCascade(VkCommandBuffer cmd, uint32_t cascade, const PayloadPages& payloads, const ShadowGrids& grids,
-                     uint32_t frameIndex) const;
+  // The depth passes of cascades_ (frame.constants set).
+  void record(VkCommandBuffer cmd, const PassFrame& frame);
+  void recordCascade(VkCommandBuffer cmd, uint32_t cascade, const PayloadPages& payloads, uint32_t frameIndex) const;
 
   vk::Device& device_;
   uint32_t cells_;
-  double radius_m_;
+  const TerrainStyle& style_;
+  GridRanges grids_;
+  ShadowCascades cascades_;
   uint32_t resolution_;
   vk::UniqueMemory memory_;
   vk::UniqueImage image_;
