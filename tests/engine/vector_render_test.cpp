@@ -170,8 +170,8 @@ int lineGaps(const ImageRgba& image, const Camera& camera, const ElevationModel&
   return gaps;
 }
 
-TEST_F(VectorRenderTest, PolygonAndLineLieOnTheGroundAndTheLineHasNoGaps) {
-  TempDir dir("vector_render");
+// The scene on land: the line along 20 E across a face seam near 12 N, the square east of it.
+Scene landScene() {
   Scene s;
   s.lon = 20.0;
   s.seamLat = seamLatitude(12.0, s.lon);
@@ -179,6 +179,12 @@ TEST_F(VectorRenderTest, PolygonAndLineLieOnTheGroundAndTheLineHasNoGaps) {
   s.polyLat1 = s.seamLat - 0.01;
   s.polyLon0 = s.lon + 0.01;
   s.polyLon1 = s.lon + 0.03;
+  return s;
+}
+
+TEST_F(VectorRenderTest, PolygonAndLineLieOnTheGroundAndTheLineHasNoGaps) {
+  TempDir dir("vector_render");
+  const Scene s = landScene();
   const ElevationModel model = planetWith(writeGeoJson(dir, s), s);
   ASSERT_NE(model.overlay(), nullptr);
   const GeodeticPose poses[2] = {{s.seamLat, s.lon + 0.01, 12000.0, 0.0, -90.0, 0.0},         // straight down
@@ -202,19 +208,11 @@ TEST_F(VectorRenderTest, PolygonAndLineLieOnTheGroundAndTheLineHasNoGaps) {
   }
 }
 
-// A line across open sea, drawn over the water (the colour layer's alpha, docs/imagery.md): painted
-// along its whole length with no gap, and nowhere else.
 // Without surface textures (fast) vectors are not drawn per vertex, where a line would widen to a
 // cell and smear over the triangles: nothing is painted, and the terrain says why.
 TEST_F(VectorRenderTest, WithoutSurfaceTexturesNoVectorIsDrawnAndTheTerrainSaysSo) {
   TempDir dir("vector_render_fast");
-  Scene s;
-  s.lon = 20.0;
-  s.seamLat = seamLatitude(12.0, s.lon);
-  s.polyLat0 = s.seamLat - 0.03;
-  s.polyLat1 = s.seamLat - 0.01;
-  s.polyLon0 = s.lon + 0.01;
-  s.polyLon1 = s.lon + 0.03;
+  const Scene s = landScene();
   const ElevationModel model = planetWith(writeGeoJson(dir, s), s);
   Camera camera;
   std::vector<std::string> warnings;
@@ -225,6 +223,8 @@ TEST_F(VectorRenderTest, WithoutSurfaceTexturesNoVectorIsDrawnAndTheTerrainSaysS
   EXPECT_NE(warnings[0].find("vectors are drawn into the surface textures"), std::string::npos) << warnings[0];
 }
 
+// A line across open sea, drawn over the water (the colour layer's alpha, docs/imagery.md): painted
+// along its whole length with no gap, and nowhere else.
 TEST_F(VectorRenderTest, ALineAtSeaLiesOnTheWater) {
   TempDir dir("vector_render_sea");
   const PlanetDescription earthlike = *loadPlanetFile(std::string(GLOBE_SOURCE_DIR) + "/assets/planets/earthlike.toml");
