@@ -1,7 +1,7 @@
 # `cmake --install` lays out PREFIX/bin/globe, PREFIX/lib/libglobe_*.a, PREFIX/include/globe/...,
 # PREFIX/share/globe/{shaders,assets} and PREFIX/lib/cmake/globe, so that another project can
-# `find_package(globe [COMPONENTS ...])` and link globe::planet alone, globe::render (headless) or
-# globe::viewer (tests/consumer checks them). Each component is an export set of its own, so a consumer
+# `find_package(globe [COMPONENTS ...])` and link globe::planet alone (no GDAL), with globe::planet_gdal
+# (real data), globe::render (headless) or globe::viewer (tests/consumer checks them). Each component is an export set of its own, so a consumer
 # of `planet` finds none of the render, movie, bake or physics dependencies (globeConfig.cmake.in).
 include(CMakePackageConfigHelpers)
 get_property(globe_libraries GLOBAL PROPERTY GLOBE_LIBRARIES)
@@ -9,12 +9,15 @@ get_property(globe_test_only GLOBAL PROPERTY GLOBE_LIBRARIES_TEST_ONLY)
 if(globe_test_only)
   list(REMOVE_ITEM globe_libraries ${globe_test_only})
 endif()
-# Each installed library's component: globe_planet* are `planet`, the render stages `render`, the others
-# their own (a library not built, like the viewer in the bundle preset, is simply absent).
+# Each installed library's component: globe_planet* are `planet` (but the GDAL readers, `gdal`), the
+# render stages `render`, the others their own (a library not built, like the viewer in the bundle preset,
+# is simply absent).
 set(globe_component_render "")
 foreach(library IN LISTS globe_libraries)
   string(REGEX REPLACE "^globe_" "" name ${library})
-  if(name MATCHES "^planet")
+  if(name STREQUAL "planet_gdal")
+    set(globe_component_gdal ${library})
+  elseif(name MATCHES "^planet")
     list(APPEND globe_component_planet ${library})
   elseif(name MATCHES "^(physics|collision|movie|bake|viewer)$")
     set(globe_component_${name} ${library})
@@ -22,7 +25,7 @@ foreach(library IN LISTS globe_libraries)
     list(APPEND globe_component_render ${library})
   endif()
 endforeach()
-foreach(component planet physics render collision movie bake viewer)
+foreach(component planet gdal physics render collision movie bake viewer)
   if(globe_component_${component})
     install(TARGETS ${globe_component_${component}} EXPORT globe-${component}
             ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})

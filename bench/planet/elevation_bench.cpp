@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "planet/gdal/gdal_readers.h"
 #include "planet/model/elevation_model.h"
 #include "planet/model/planet_file.h"
 
@@ -33,6 +34,7 @@ PlanetDescription earthlike() {
           ? std::string(env)
           : (std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / globe::kDefaultPlanetFile)
                 .string();
+  globe::installGdalReaders();  // $GLOBE_PLANET may name a planet with real sources
   auto r = globe::loadPlanetFile(path);
   if (!r.ok()) {
     std::fprintf(stderr, "%s\n", r.error().format().c_str());

@@ -1,7 +1,7 @@
 #include "engine/bake/cog_tile.h"
 
 #include "planet/camera/camera.h"
-#include "planet/sources/baked_tileset.h"
+#include "planet/gdal/planet_crs.h"
 
 #include <cpl_conv.h>
 #include <cpl_string.h>

@@ -2,6 +2,7 @@
 #include "commands.h"
 #include "engine/vk/vk_check.h"
 #include "planet/core/error.h"
+#include "planet/gdal/gdal_readers.h"
 
 #include <cstdio>
 #include <exception>
@@ -56,6 +57,7 @@ void keepFreedMemory() {
 int main(int argc, char** argv) {
   using namespace globe::cli;
   keepFreedMemory();
+  globe::installGdalReaders();  // planet files' real rasters and vector layers
   CLI::App app{
       "globe: a planetary-scale globe engine (Vulkan).\n"
       "Set GLOBE_DEVICE=NAME (or --device) to force a Vulkan device by name."};

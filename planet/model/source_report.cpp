@@ -13,7 +13,7 @@ namespace globe {
 namespace {
 
 // Share of the raster's pixels that hold data (read in tile-sized blocks).
-double validFraction(const GdalRaster& raster) {
+double validFraction(const RasterFile& raster) {
   const RasterFacts& f = raster.facts();
   std::size_t valid = 0;
   for (int y = 0; y < f.height; y += kSourceTilePixels) {

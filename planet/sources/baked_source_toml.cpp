@@ -1,7 +1,7 @@
 #include "planet/sources/baked_source_toml.h"
 
 #include "planet/sources/baked_tileset.h"
-#include "planet/sources/gdal_raster.h"
+#include "planet/sources/raster_file.h"
 
 #include <fmt/format.h>
 
@@ -46,7 +46,7 @@ void checkBakedSource(PlanetTomlReader& r, const BakedSourceKeys& keys, const st
     r.fail(keys.path->source(), prefix + "path", tileset.error().format());
     return;
   }
-  if (auto opened = GdalRaster::open(source.path, 6371000.0); !opened) {
+  if (auto opened = openRaster(source.path, 6371000.0); !opened) {
     r.fail(keys.path->source(), prefix + "path", opened.error().message);
     return;
   }

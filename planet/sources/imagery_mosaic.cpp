@@ -15,7 +15,7 @@ namespace globe {
 namespace {
 
 // The file's bands imagery reads: 1..3 (colour) or 1 (grey), then its alpha band, if any.
-Result<std::vector<int>> imageryBands(const GdalRaster& first, bool& grey, bool& alpha) {
+Result<std::vector<int>> imageryBands(const RasterFile& first, bool& grey, bool& alpha) {
   const int count = first.bandCount();
   if (first.bandColour(1) == "Palette")
     return Error::inFile(first.path(), "has a colour table: expand it to RGB first (gdal_translate -expand rgb)");
@@ -44,7 +44,7 @@ void findWorldEdges(ImageryLayer& layer) {
 Result<ImageryLayer> openImageryLayer(const ImagerySource& source, double radius_m) {
   RasterOpenOptions options;
   options.extent = source.extent ? &*source.extent : nullptr;
-  Result<std::unique_ptr<GdalRaster>> first = GdalRaster::open(source.path, radius_m, options);
+  Result<std::unique_ptr<RasterFile>> first = openRaster(source.path, radius_m, options);
   if (!first) return first.error();
   ImageryLayer layer{source};
   Result<std::vector<int>> bands = imageryBands(**first, layer.grey, layer.alpha);
@@ -52,7 +52,7 @@ Result<ImageryLayer> openImageryLayer(const ImagerySource& source, double radius
   layer.bands.push_back(std::move(*first));
   for (std::size_t i = 1; i < bands->size(); ++i) {
     options.band = (*bands)[i];
-    Result<std::unique_ptr<GdalRaster>> band = GdalRaster::open(source.path, radius_m, options);
+    Result<std::unique_ptr<RasterFile>> band = openRaster(source.path, radius_m, options);
     if (!band) return band.error();
     layer.bands.push_back(std::move(*band));
   }

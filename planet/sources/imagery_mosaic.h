@@ -9,8 +9,8 @@
 // the border being only where the raster ends inside the world (a global raster has none).
 // Pixels are 8-bit sRGB, decoded to linear albedo.
 #include "planet/core/error.h"
-#include "planet/sources/gdal_raster.h"
 #include "planet/sources/imagery_source.h"
+#include "planet/sources/raster_file.h"
 #include "planet/sources/raster_pyramid.h"
 #include "planet/sources/tile_cache.h"
 
@@ -32,7 +32,7 @@ inline constexpr std::size_t kDefaultImageryRamBudget = std::size_t(256) << 20; 
 
 struct ImageryLayer {
   ImagerySource description;
-  std::vector<std::unique_ptr<GdalRaster>> bands;  // red, green, blue (or one grey), then alpha if any
+  std::vector<std::unique_ptr<RasterFile>> bands;  // red, green, blue (or one grey), then alpha if any
   std::vector<std::unique_ptr<RasterPyramid>> tiles;
   bool grey = false, alpha = false;
   double blend_m = 0.0;      // resolved (defaultImageryBlend_m when the file gives none)

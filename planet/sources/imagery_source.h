@@ -2,7 +2,7 @@
 // What a planet file's [[imagery]] table says about one colour raster draped over the terrain
 // (docs/imagery.md): where it is, where it lies when the file has no georeferencing, how it ranks
 // and how it fades into what lies beneath. Plain data; imagery_mosaic.h reads the raster.
-#include "planet/sources/gdal_raster.h"
+#include "planet/sources/raster_file.h"
 
 #include <optional>
 #include <string>

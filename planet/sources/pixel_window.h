@@ -1,7 +1,7 @@
 #pragma once
 // Bilinear reads of one level of a raster's pyramid (raster_pyramid.h) through the tile cache, shared
 // by the elevation mosaic (source_mosaic.h) and the imagery mosaic (imagery_mosaic.h). Pixel
-// coordinates follow GdalRaster::pixelAt: pixel centre (i, j) at (i, j).
+// coordinates follow RasterFile::pixelAt: pixel centre (i, j) at (i, j).
 #include "planet/sources/raster_pyramid.h"
 #include "planet/sources/tile_cache.h"
 

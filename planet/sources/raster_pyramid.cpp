@@ -133,7 +133,7 @@ int pyramidLevelFor(double pixel0_m, double spacing_m, int levelCount) {
 
 std::string sourceCacheDirectory() { return userCacheDirectory("GLOBE_SOURCE_CACHE_DIR", "sources"); }
 
-RasterPyramid::RasterPyramid(const GdalRaster& raster, std::string cacheDirectory)
+RasterPyramid::RasterPyramid(const RasterFile& raster, std::string cacheDirectory)
     : raster_(raster), cacheDirectory_(std::move(cacheDirectory)) {
   const RasterFacts& f = raster.facts();
   levels_.push_back({f.width, f.height, 0.0});

@@ -11,7 +11,7 @@
 // TileSource is what the tile cache (tile_cache.h) reads from: any format that can hand out a
 // block of pixels at a level plugs in beside RasterPyramid.
 #include "planet/core/error.h"
-#include "planet/sources/gdal_raster.h"
+#include "planet/sources/raster_file.h"
 
 #include <atomic>
 #include <cstdint>
@@ -54,7 +54,7 @@ std::string sourceCacheDirectory();
 class RasterPyramid final : public TileSource {
  public:
   // `raster` must outlive the pyramid. Nothing is read or built here.
-  RasterPyramid(const GdalRaster& raster, std::string cacheDirectory);
+  RasterPyramid(const RasterFile& raster, std::string cacheDirectory);
   ~RasterPyramid() override;
   RasterPyramid(const RasterPyramid&) = delete;
   RasterPyramid& operator=(const RasterPyramid&) = delete;
@@ -76,7 +76,7 @@ class RasterPyramid final : public TileSource {
   Status build(const std::string& file) const;
   Result<RasterBlock> readBuilt(int k, int x0, int y0, int w, int h) const;
 
-  const GdalRaster& raster_;
+  const RasterFile& raster_;
   std::string cacheDirectory_;
   mutable std::vector<PyramidLevel> levels_;  // bounds of built levels set once, under buildMutex_
   std::vector<int> overview_;                 // per level: GDAL overview index, or -1 (level 0, or built)

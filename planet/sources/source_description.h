@@ -1,7 +1,7 @@
 #pragma once
 // What a planet file's [[sources]] table says about one real elevation raster (docs/elevation-data.md):
 // where it is, how its no-data pixels are treated, whether procedural detail is added below its
-// resolution, and how it ranks in the mosaic. Plain data; reading the raster is gdal_raster.h's job.
+// resolution, and how it ranks in the mosaic. Plain data; reading the raster is raster_file.h's job.
 #include <algorithm>
 #include <string>
 #include <string_view>

@@ -103,7 +103,7 @@ SourceMosaic::SourceMosaic(const std::vector<ElevationSource>& sources, double r
   min_m_ = std::numeric_limits<double>::infinity();
   max_m_ = -std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < sources.size(); ++i) {
-    Result<std::unique_ptr<GdalRaster>> raster = GdalRaster::open(sources[i].path, radius_m);
+    Result<std::unique_ptr<RasterFile>> raster = openRaster(sources[i].path, radius_m);
     if (!raster) continue;
     Layer layer{sources[i], std::move(*raster)};
     layer.tiles = std::make_unique<RasterPyramid>(*layer.raster, sourceCacheDirectory());

@@ -11,7 +11,7 @@
 // the renderer discards fragments where it is >= 0.5, and `planet sample` says nodata there.
 // Amplification adds fBm of gradient noise below the source's pixel size, its amplitude following
 // the source's local relief per pixel (amplification.h).
-#include "planet/sources/gdal_raster.h"
+#include "planet/sources/raster_file.h"
 #include "planet/sources/raster_pyramid.h"
 #include "planet/sources/source_description.h"
 #include "planet/sources/tile_cache.h"
@@ -48,7 +48,7 @@ class SourceMosaic {
  public:
   struct Layer {
     ElevationSource description;
-    std::unique_ptr<GdalRaster> raster;
+    std::unique_ptr<RasterFile> raster;
     std::unique_ptr<TileSource> tiles;                // its overview pyramid, what the tile cache reads
     double blend_m = 0.0;                             // resolved (defaultBlend_m when the file gives none)
     double marginLat_deg = 0.0, marginLon_deg = 0.0;  // the feather beyond the lat/lon box

@@ -1,7 +1,7 @@
 #include "planet/sources/source_toml.h"
 
 #include "planet/sources/baked_source_toml.h"
-#include "planet/sources/gdal_raster.h"
+#include "planet/sources/raster_file.h"
 
 #include <fmt/format.h>
 
@@ -27,8 +27,8 @@ void readPath(PlanetTomlReader& r, const toml::node& node, const std::string& fi
     r.fail(node.source(), field, fmt::format("no such file '{}'", source.path));
     return;
   }
-  // A FIFO or device is named as such (by GdalRaster::open's input check), not "no such file".
-  Result<std::unique_ptr<GdalRaster>> raster = GdalRaster::open(source.path, 6371000.0);
+  // A FIFO or device is named as such (by the reader's input check), not "no such file".
+  Result<std::unique_ptr<RasterFile>> raster = openRaster(source.path, 6371000.0);
   if (!raster) r.fail(node.source(), field, fmt::format("'{}' {}", source.path, raster.error().message));
 }
 

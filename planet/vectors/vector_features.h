@@ -1,9 +1,9 @@
 #pragma once
-// One vector layer read through OGR (GeoJSON, GeoPackage, Shapefile, KML, anything GDAL reads),
-// every geometry reprojected to WGS84 latitude/longitude degrees and flattened into plain arrays:
-// polygon rings, line strings and points. Multi-geometries and collections are flattened, curves
-// linearised. The only files that include GDAL/OGR for vectors are this header's .cpp; the
-// overlay (vector_overlay.h) indexes the arrays.
+// One vector layer read from its file, every geometry reprojected to WGS84 latitude/longitude degrees
+// and flattened into plain arrays: polygon rings, line strings and points. Multi-geometries and
+// collections are flattened, curves linearised. The file is read by the reader a program installs
+// (installVectorReader; planet/gdal/gdal_readers.h installs OGR's), so that the domain links no
+// file-format library of its own; the overlay (vector_overlay.h) indexes the arrays.
 #include "planet/core/error.h"
 #include "planet/vectors/vector_layer.h"
 
@@ -41,7 +41,7 @@ struct VectorFeature {
 };
 
 struct VectorFeatures {
-  std::string layer_name;                // the OGR layer read, for messages
+  std::string layer_name;                // the layer read, for messages
   std::vector<double> lat_deg, lon_deg;  // every vertex; lon in [-540, 540], unwrapped along each part
   std::vector<VectorPart> parts;         // in feature order
   std::vector<VectorFeature> features;   // in the layer's order
@@ -49,7 +49,10 @@ struct VectorFeatures {
 
 // Reads `layer.path`'s layer `layer.layer` (the first when empty). An Error's file is the path and
 // its field the VectorLayer key at fault ("path", "layer" or "colour_by"); its message names the
-// layer and, for a bad feature, its FID. Never throws; a truncated or garbage file is OGR's failure.
+// layer and, for a bad feature, its FID. Never throws; a truncated or garbage file is an Error.
+using VectorReader = Result<VectorFeatures> (*)(const VectorLayer& layer, const VectorLimits& limits);
+// Installs the reader readVectorFeatures calls (thread-safe; the last one installed wins).
+void installVectorReader(VectorReader reader);
 Result<VectorFeatures> readVectorFeatures(const VectorLayer& layer, const VectorLimits& limits = {});
 
 }  // namespace globe

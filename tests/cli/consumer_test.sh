@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs this build into a temporary prefix, then configures, builds and runs tests/consumer against
 # it with find_package(globe COMPONENTS ...): the exported package works, a headless user links no GLFW or
-# ImGui, and a user of the planet component alone links no Vulkan, Bullet or FFmpeg.
+# ImGui, a user of the planet component alone links no GDAL, Vulkan, Bullet or FFmpeg, and one of the gdal
+# component reads real data.
 set -euo pipefail
 BUILD=$1 SRC=$2 WORK=$3
 rm -rf "$WORK"; mkdir -p "$WORK"
@@ -27,9 +28,15 @@ if readelf -d "$WORK/render/consumer" | grep NEEDED | grep -Ei 'libglfw|imgui|li
 build_consumer headers
 build_consumer planet
 "$WORK/planet/consumer" "$WORK/prefix/share/globe/assets/planets/earthlike.toml" || fail "the planet consumer did not run"
-if readelf -d "$WORK/planet/consumer" | grep NEEDED | grep -Ei 'libvulkan|libBullet|libav|libglfw|imgui|libX11|OpenEXR'; then
-  fail "a consumer of the planet component links Vulkan, Bullet, FFmpeg, OpenEXR or a window library"
+if readelf -d "$WORK/planet/consumer" | grep NEEDED | grep -Ei 'libgdal|libvulkan|libBullet|libav|libglfw|imgui|libX11|OpenEXR'; then
+  fail "a consumer of the planet component links GDAL, Vulkan, Bullet, FFmpeg, OpenEXR or a window library"
 fi
+# Without GDAL a planet with real sources is refused by name, and read once the gdal component installs it.
+dem="$WORK/prefix/share/globe/assets/planets/earth-dem.toml"
+if "$WORK/planet/consumer" "$dem" 2>"$WORK/planet-dem.err"; then fail "the planet consumer read a DEM planet without a reader"; fi
+grep -q "installed no reader" "$WORK/planet-dem.err" || fail "the planet consumer's refusal: $(cat "$WORK/planet-dem.err")"
+build_consumer gdal
+"$WORK/gdal/consumer" "$dem" || fail "the gdal consumer did not read $dem"
 # The installed program finds its shaders and assets beside itself (no build path compiled in).
 mv "$WORK/prefix" "$WORK/moved"
 "$WORK/moved/bin/globe" planet check >/dev/null || fail "the installed globe does not find its default planet"

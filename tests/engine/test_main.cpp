@@ -1,3 +1,4 @@
+#include "planet/gdal/gdal_readers.h"
 #include "tests/support/gpu_test.h"
 
 #include <dlfcn.h>
@@ -30,6 +31,7 @@ int main(int argc, char** argv) {
   // no suppression can name. Keeping lavapipe loaded removes those; tests/lsan.supp is for the rest.
   (void)dlopen("libvulkan_lvp.so", RTLD_NOW | RTLD_NODELETE);
 #endif
+  globe::installGdalReaders();  // the fixtures' real rasters and vector layers, as the globe program reads them
   ::testing::InitGoogleTest(&argc, argv);
   int result = RUN_ALL_TESTS();
   if (globe::testing::gDevice) {

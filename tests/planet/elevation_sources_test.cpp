@@ -253,7 +253,7 @@ TEST_F(ElevationSourcesTest, RelativePathsResolveAgainstThePlanetFile) {
 }
 
 TEST_F(ElevationSourcesTest, TheTileCacheKeepsItsBudgetAndNeverReadsOnAFrameLoop) {
-  Result<std::unique_ptr<GdalRaster>> raster = GdalRaster::open(fixture_->full, 6371000.0);
+  Result<std::unique_ptr<RasterFile>> raster = openRaster(fixture_->full, 6371000.0);
   ASSERT_TRUE(raster.ok());
   const RasterPyramid tiles(**raster, sourceCacheDirectory());
   const std::size_t tileBytes = std::size_t(kSourceTilePixels) * kSourceTilePixels * sizeof(float);

@@ -35,8 +35,8 @@ class SourcePyramidTest : public ::testing::Test {
     fixture_.reset();
     dir_.reset();
   }
-  static std::unique_ptr<GdalRaster> open(const std::string& path) {
-    Result<std::unique_ptr<GdalRaster>> raster = GdalRaster::open(path, 6371000.0);
+  static std::unique_ptr<RasterFile> open(const std::string& path) {
+    Result<std::unique_ptr<RasterFile>> raster = openRaster(path, 6371000.0);
     EXPECT_TRUE(raster.ok());
     return raster ? std::move(*raster) : nullptr;
   }
@@ -54,7 +54,7 @@ TEST_F(SourcePyramidTest, TheLevelIsTheCoarsestThatTheSpacingResolves) {
 
 TEST_F(SourcePyramidTest, CoarseLevelsAreMeansBuiltOnceIntoTheDiskCache) {
   const std::string cache = (dir_->str() / fs::path("built")).string();
-  const std::unique_ptr<GdalRaster> raster = open(fixture_->full);
+  const std::unique_ptr<RasterFile> raster = open(fixture_->full);
   RasterPyramid pyramid(*raster, cache);
   ASSERT_EQ(pyramid.levelCount(), 9);  // 403 x 344, 202 x 172, ... 4 x 3, 2 x 2
   EXPECT_EQ(pyramid.level(1).width, 202);
@@ -80,7 +80,7 @@ TEST_F(SourcePyramidTest, CoarseLevelsAreMeansBuiltOnceIntoTheDiskCache) {
   EXPECT_EQ(fs::path(file).parent_path(), fs::path(cache));
   const auto written = fs::last_write_time(file);
   // A second process (here: a second pyramid) reads the cache file back, unchanged.
-  const std::unique_ptr<GdalRaster> again = open(fixture_->full);
+  const std::unique_ptr<RasterFile> again = open(fixture_->full);
   RasterPyramid reread(*again, cache);
   Result<RasterBlock> tile = reread.readLevel(1, 10, 20, 30, 40);
   ASSERT_TRUE(tile.ok());
@@ -93,7 +93,7 @@ TEST_F(SourcePyramidTest, CoarseLevelsAreMeansBuiltOnceIntoTheDiskCache) {
 }
 
 TEST_F(SourcePyramidTest, TheFilesOwnGdalOverviewsAreReadWhereItHasThem) {
-  const std::unique_ptr<GdalRaster> raster = open(fixture_->overviews);
+  const std::unique_ptr<RasterFile> raster = open(fixture_->overviews);
   RasterPyramid pyramid(*raster, (dir_->str() / fs::path("unused")).string());
   ASSERT_EQ(pyramid.levelCount(), 9);
   for (int k = 1; k < 9; ++k) EXPECT_TRUE(pyramid.builtFromGdalOverviews(k)) << k;

@@ -1,7 +1,7 @@
-#include "planet/sources/gdal_raster.h"
+#include "planet/gdal/gdal_raster.h"
 
-#include "planet/sources/baked_tileset.h"
-#include "planet/sources/raster_inputs.h"
+#include "planet/gdal/gdal_readers.h"
+#include "planet/gdal/raster_inputs.h"
 
 #include <cpl_conv.h>
 #include <cpl_error.h>
@@ -10,7 +10,6 @@
 
 #include <fmt/format.h>
 
-#include <atomic>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -50,8 +49,6 @@ OGRCoordinateTransformation* threadTransform(std::uint64_t id, const std::string
   if (!slot) slot = makeTransform(wkt, true);
   return slot.get();
 }
-
-std::atomic<std::uint64_t> nextRasterId{1};
 
 // Whether geographic point (lon, lat) has an image inside the raster's pixel centres.
 bool inRaster(const RasterFacts& f, const double inverse[6], OGRCoordinateTransformation* toRaster, double lon,
@@ -180,30 +177,10 @@ Status scanBand(GDALRasterBand* band, RasterFacts& f) {
 
 }  // namespace
 
-void registerGdalDrivers() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    GDALAllRegister();
-    // Our own tile cache (tile_cache.h) holds what is read; GDAL's block cache stays small.
-    GDALSetCacheMax64(std::int64_t(16) << 20);
-    // GDAL's own safety options (docs/reliability.md): no directory listing beside each file opened,
-    // a bounded pool of VRT sources held open, no Python pixel functions or raw memory in VRTs.
-    CPLSetConfigOption("GDAL_DISABLE_READDIR_ON_OPEN", "EMPTY_DIR");
-    CPLSetConfigOption("GDAL_MAX_DATASET_POOL_SIZE", "64");
-    CPLSetConfigOption("GDAL_VRT_ENABLE_PYTHON", "NO");
-    CPLSetConfigOption("VRT_ALLOW_MEM_DRIVER", "NO");
-    CPLSetConfigOption("GDAL_MAX_BAND_COUNT", "1024");
-    CPLSetErrorHandler(CPLQuietErrorHandler);  // failures come back as Errors, never on stderr
-    registerBakedTilesetDriver();              // baked tileset directories (baked_tileset.h)
-  });
-}
-
-Result<std::unique_ptr<GdalRaster>> GdalRaster::open(const std::string& path, double radius_m,
+Result<std::unique_ptr<RasterFile>> GdalRaster::open(const std::string& path, double radius_m,
                                                      const RasterOpenOptions& options) {
   registerGdalDrivers();
-  std::unique_ptr<GdalRaster> r(new GdalRaster());
-  r->path_ = path;
-  r->id_ = nextRasterId++;
+  std::unique_ptr<GdalRaster> r(new GdalRaster(path, options.band));
   if (Status s = checkRasterInputs(path); !s) return s.error();
   CPLErrorReset();
   r->dataset_ = GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY);
@@ -216,7 +193,6 @@ Result<std::unique_ptr<GdalRaster>> GdalRaster::open(const std::string& path, do
   if (f.width < 2 || f.height < 2) return Error::inFile(path, "needs at least 2 x 2 pixels");
   if (options.band < 1 || options.band > ds->GetRasterCount())
     return Error::inFile(path, fmt::format("has no band {} (it has {})", options.band, ds->GetRasterCount()));
-  r->band_ = options.band;
   OGRSpatialReference srs;
   if (Status s = georeference(ds, options.extent, f, srs); !s) return Error::inFile(path, s.error().message);
   if (Status s = checkExtent(ds, f); !s) return Error::inFile(path, s.error().message);
@@ -230,9 +206,9 @@ Result<std::unique_ptr<GdalRaster>> GdalRaster::open(const std::string& path, do
   r->needs_transform_ = !(f.geographic && srs.IsSame(&geographic));
   if (r->needs_transform_ && makeTransform(r->crs_wkt_, true) == nullptr)
     return Error::inFile(path, fmt::format("PROJ cannot transform WGS 84 to its CRS '{}'", f.crs_name));
-  if (Status s = scanBand(ds->GetRasterBand(r->band_), f); !s) return Error::inFile(path, s.error().message);
+  if (Status s = scanBand(ds->GetRasterBand(r->band()), f); !s) return Error::inFile(path, s.error().message);
   findLatLonBox(f, r->crs_wkt_, r->inverse_, r->needs_transform_);
-  return r;
+  return std::unique_ptr<RasterFile>(std::move(r));
 }
 
 GdalRaster::~GdalRaster() {
@@ -242,7 +218,7 @@ GdalRaster::~GdalRaster() {
 bool GdalRaster::pixelAt(double latitude_deg, double longitude_deg, double& px, double& py, double margin_px) const {
   double x = longitude_deg, y = latitude_deg;
   if (needs_transform_) {
-    OGRCoordinateTransformation* t = threadTransform(id_, crs_wkt_);
+    OGRCoordinateTransformation* t = threadTransform(id(), crs_wkt_);
     if (t == nullptr || !t->Transform(1, &x, &y)) return false;
   }
   auto toPixel = [&](double cx, double cy) {
@@ -265,7 +241,7 @@ int GdalRaster::bandCount() const {
 
 std::string GdalRaster::bandType() const {
   std::lock_guard lock(read_mutex_);
-  return GDALGetDataTypeName(asDataset(dataset_)->GetRasterBand(band_)->GetRasterDataType());
+  return GDALGetDataTypeName(asDataset(dataset_)->GetRasterBand(band())->GetRasterDataType());
 }
 
 std::string GdalRaster::bandColour(int band) const {
@@ -277,10 +253,10 @@ std::string GdalRaster::bandColour(int band) const {
 
 std::vector<std::pair<int, int>> GdalRaster::overviewSizes() const {
   std::lock_guard lock(read_mutex_);
-  GDALRasterBand* band = asDataset(dataset_)->GetRasterBand(band_);
+  GDALRasterBand* read_band = asDataset(dataset_)->GetRasterBand(band());
   std::vector<std::pair<int, int>> sizes;
-  for (int i = 0; i < band->GetOverviewCount(); ++i) {
-    GDALRasterBand* overview = band->GetOverview(i);
+  for (int i = 0; i < read_band->GetOverviewCount(); ++i) {
+    GDALRasterBand* overview = read_band->GetOverview(i);
     if (overview != nullptr) sizes.emplace_back(overview->GetXSize(), overview->GetYSize());
   }
   return sizes;
@@ -289,11 +265,11 @@ std::vector<std::pair<int, int>> GdalRaster::overviewSizes() const {
 Result<RasterBlock> GdalRaster::read(int x0, int y0, int w, int h, int overview) const {
   RasterBlock block{x0, y0, w, h, std::vector<float>(std::size_t(w) * std::size_t(h))};
   std::lock_guard lock(read_mutex_);
-  GDALRasterBand* band = asDataset(dataset_)->GetRasterBand(band_);
-  if (overview >= 0) band = overview < band->GetOverviewCount() ? band->GetOverview(overview) : nullptr;
-  if (band == nullptr) return Error::inFile(path_, fmt::format("has no overview {}", overview));
-  if (band->RasterIO(GF_Read, x0, y0, w, h, block.values.data(), w, h, GDT_Float32, 0, 0) != CE_None)
-    return Error::inFile(path_, "read failed: " + lastGdalMessage());
+  GDALRasterBand* read_band = asDataset(dataset_)->GetRasterBand(band());
+  if (overview >= 0) read_band = overview < read_band->GetOverviewCount() ? read_band->GetOverview(overview) : nullptr;
+  if (read_band == nullptr) return Error::inFile(path(), fmt::format("has no overview {}", overview));
+  if (read_band->RasterIO(GF_Read, x0, y0, w, h, block.values.data(), w, h, GDT_Float32, 0, 0) != CE_None)
+    return Error::inFile(path(), "read failed: " + lastGdalMessage());
   // No-data, and anything no height can be (overviews are not covered by the min/max check), as NaN.
   const float nodata = facts_.has_nodata ? static_cast<float>(facts_.nodata) : std::numeric_limits<float>::quiet_NaN();
   for (float& v : block.values)

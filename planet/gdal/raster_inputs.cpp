@@ -1,7 +1,7 @@
-#include "planet/sources/raster_inputs.h"
+#include "planet/gdal/raster_inputs.h"
 
 #include "planet/core/input_file.h"
-#include "planet/sources/gdal_raster.h"
+#include "planet/gdal/gdal_raster.h"
 
 #include <cpl_vsi.h>
 #include <fmt/format.h>

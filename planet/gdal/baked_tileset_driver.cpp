@@ -1,4 +1,4 @@
-// The GDAL driver "GlobeBakedTileset" (baked_tileset.h): a directory of baked tiles opened as one
+// The GDAL driver "GlobeBakedTileset" (planet/sources/baked_tileset.h): a directory of baked tiles opened as one
 // raster, so that a baked planet is a source like any DEM (the mosaic, the RAM tile cache, the
 // source I/O thread; docs/elevation-data.md, "Baked tilesets").
 //   - COG: an in-memory VRT (GDALBuildVRT) over the finest level's .tif files, gaps no-data.
@@ -7,7 +7,10 @@
 //     triangles interpolated at that point, so a block of 256 x 256 pixels decodes one tile.
 //     Missing tiles are no-data (NaN). Every tile is decoded once when the raster opens, for its
 //     height range and so that a corrupt tile is an error naming the file before anything is drawn.
+#include "planet/gdal/baked_tileset_driver.h"
+
 #include "planet/core/input_file.h"
+#include "planet/gdal/planet_crs.h"
 #include "planet/sources/baked_tileset.h"
 #include "planet/sources/tile_cache.h"
 #include "planet/tiling/quantized_mesh_decoder.h"
