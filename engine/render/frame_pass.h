@@ -97,7 +97,8 @@ struct PassFrame {
   uint32_t frameIndex = 0;                  // < vk::kFramesInFlight; its last use waited for
   double groundRadius_m = 0.0;              // prepare(): the ground's radius under the camera (the cascades' size)
   const ImageryBinding* imagery = nullptr;  // record(): the imagery tiles' binding, with the style's imagery
-  const gpu::TerrainFrame* constants = nullptr;  // prepare(): the camera's frame constants (no shadows yet)
+  const gpu::TerrainFrame* constants = nullptr;  // prepare(): the camera's frame constants (no shadows yet),
+                                                 // when shadows are cast; else nullptr
 };
 
 class FramePass {

@@ -188,9 +188,12 @@ void TerrainRenderer::prepare(VkCommandBuffer cmd, const Camera& camera, const g
                               std::span<const DrawNode> nodes, const PayloadPages& payloads, uint32_t frameIndex,
                               double groundRadius_m) {
   if (shadows_) shadows_->endFrame();  // the constants below carry no cascades
+  // The camera's constants, for the shadow casters alone: written only when they are drawn.
   gpu::TerrainFrame constants;
-  writeFrameConstants(reinterpret_cast<unsigned char*>(&constants), camera, origin_m, false);
-  const PassFrame frame{camera, origin_m, nodes, payloads, frameIndex, groundRadius_m, nullptr, &constants};
+  const bool castsShadows = shadows_ && !nodes.empty();
+  if (castsShadows) writeFrameConstants(reinterpret_cast<unsigned char*>(&constants), camera, origin_m, false);
+  const PassFrame frame{camera,     origin_m,       nodes,   payloads,
+                        frameIndex, groundRadius_m, nullptr, castsShadows ? &constants : nullptr};
   PassMarks marks(timestamps_, kMarkShadowsBegin);
   for (FramePass* pass : passes_) pass->prepare(cmd, frame, marks);
   marks.write(cmd, kMarkShadowsEnd);

@@ -1,5 +1,6 @@
 #include "planet/atmosphere/atmosphere_parameters.h"
 
+#include "planet/core/finite_range.h"
 #include "planet/core/hash.h"
 
 #include <fmt/format.h>
@@ -10,8 +11,6 @@
 
 namespace globe {
 namespace {
-
-bool inRange(double v, double lo, double hi) { return std::isfinite(v) && v >= lo && v <= hi; }
 
 // Coefficients per metre: Earth's largest is 3.3e-5; 1e-2 is a fog 100 m deep.
 constexpr double kMaxCoefficient_per_m = 1e-2;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "planet/core/finite_range.h"
 #include "planet/core/gradient_noise.h"
 #include "planet/elevation/crater_field.h"
 
@@ -51,8 +52,6 @@ double amplitudeSum(const ElevationLayer& layer) {
   }
   return sum;
 }
-
-bool inRange(double v, double lo, double hi) { return std::isfinite(v) && v >= lo && v <= hi; }
 
 }  // namespace
 

@@ -1,5 +1,7 @@
 #include "planet/model/planet_description.h"
 
+#include "planet/core/finite_range.h"
+
 #include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
@@ -29,8 +31,6 @@ std::optional<QualityPreset> qualityPresetFromName(std::string_view name) {
 ElevationRange elevationBounds(const PlanetDescription& planet) { return layersBounds(planet.layers); }
 
 namespace {
-
-bool inRange(double v, double lo, double hi) { return std::isfinite(v) && v >= lo && v <= hi; }
 
 Error fieldError(std::string field, std::string message) {
   return Error::inField(std::move(field), std::move(message));

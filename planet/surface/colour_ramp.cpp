@@ -1,5 +1,7 @@
 #include "planet/surface/colour_ramp.h"
 
+#include "planet/core/finite_range.h"
+
 #include <fmt/format.h>
 #include <algorithm>
 #include <cassert>
@@ -24,8 +26,6 @@ std::vector<ColourRampStop> defaultColourRampStops() {
 }
 
 namespace {
-
-bool inRange(double v, double lo, double hi) { return std::isfinite(v) && v >= lo && v <= hi; }
 
 void checkColour(const glm::vec3& c, const std::string& field, std::vector<Error>& errors) {
   for (int i = 0; i < 3; ++i) {

@@ -7,13 +7,12 @@
 #include <numbers>
 #include <set>
 
+#include "planet/core/finite_range.h"
 #include "planet/core/gradient_noise.h"
 
 namespace globe {
 
 namespace {
-
-bool inRange(double v, double lo, double hi) { return std::isfinite(v) && v >= lo && v <= hi; }
 
 void checkNumber(double v, double lo, double hi, const std::string& field, std::vector<Error>& errors) {
   if (!inRange(v, lo, hi)) errors.push_back(Error::inField(field, fmt::format("must be within [{:g}, {:g}]", lo, hi)));
