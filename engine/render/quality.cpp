@@ -2,67 +2,88 @@
 
 namespace globe {
 
-TerrainSettings terrainSettingsFor(QualityPreset preset) {
+namespace {
+// Values from the frontier measured by `globe trade` (docs/tradeoffs.md, "Presets").
+
+// fast: ~75k triangles at the 1 km camera, the cheapest useful view.
+TerrainSettings fastSettings() {
   TerrainSettings s;
-  // Values from the frontier measured by `globe trade` (docs/tradeoffs.md, "Presets").
-  switch (preset) {
-    case QualityPreset::kFast:  // ~75k triangles at the 1 km camera: the cheapest useful view
-      s.gridCells = 16;
-      // Tolerance-driven ranges: 11 % fewer triangles over the seven trade cameras than the distance
-      // multiplier 0.25 it replaces, worst p95 12.0 px instead of 12.5 (docs/tradeoffs.md, "Presets").
-      s.ranges.tolerance_px = 32.0;
-      // Light per vertex: with surface textures (scale 1) its flyover took 32.6 ms, balanced's cost,
-      // against 22.5 ms without; the cheapest preset keeps the cheap path (docs/rendering.md,
-      // "Surface textures").
-      s.normalMapScale = 0;
-      s.detailTextures = DetailTextures::kOff;  // per vertex everywhere: the cheap path
-      s.atmosphere = AtmosphereDetail::kSky;
-      break;
-    case QualityPreset::kBalanced:  // ~80k triangles at 1 km: 26 ms at 1280x720 on lavapipe (goal 33)
-      s.gridCells = 16;
-      // Tolerance-driven ranges (docs/lod.md): over the seven trade cameras 11 % fewer triangles than
-      // the distance multiplier 0.5 it replaces, worst p95 screen error 5.2 px instead of 6.1, and the
-      // flyover's median frame the same (docs/tradeoffs.md, "Tolerance vs distance ranges").
-      s.ranges.tolerance_px = 16.0;
-      // The texel rule at 16 px (--texel-px): plains seen from 100 km no longer draw 32-texel
-      // surfaces magnified to 30+ px (SSIM against exact's structure 0.76 -> 0.89 there, 0.87 ->
-      // 0.88 at 10 km) for ~1 ms of the flyover's median (32.7 -> 33.5-34.0 ms); 8 px took it to
-      // 35 ms, 4 px to 39 ms (docs/lod.md, "Texel rule"; docs/rendering.md, "Colour").
-      s.ranges.texel_px = 16.0;
-      // Depth 24 instead of 20: the same nodes above ~100 m, and at the 2 m camera p95 6.1 px
-      // instead of 10.5 px for the same frame time (globe trade, 2026-11-22).
-      s.ranges.maxDepth = 24;
-      // Per-pixel light, colour and coast from the payloads' surface textures, 32 texels a node side:
-      // the flyover's median 32.9 ms on lavapipe where scale 4 (64 texels) spends 3.6 ms a frame
-      // generating them and reaches 36.5 ms (docs/rendering.md, "Surface textures").
-      s.normalMapScale = 2;
-      // The land cover's detail textures near the ground only (below ~100 m they are what the surface
-      // shows; everywhere they took the flight's median from 21 to 33 ms on lavapipe): farther away
-      // the classes' colours per vertex (docs/rendering.md, "Land cover", "Ground detail").
-      s.detailTextures = DetailTextures::kNear;
-      // The sky only: light and aerial perspective through the atmosphere cost +75-95 % of the
-      // flight's CPU on lavapipe (docs/rendering.md, "Atmosphere").
-      s.atmosphere = AtmosphereDetail::kSky;
-      break;
-    case QualityPreset::kExact:  // p95 screen error <= 0.5 px at 1280x720 at every standard camera
-      s.gridCells = 64;
-      s.ranges.distanceMultiplier = 2.0;
-      // FXAA's fixed ~16 ms of CPU a 1280x720 frame is ~1 % of this preset's frame; on fast and
-      // balanced it is +40 % (MSAA x4 +160 %) of the flyover's CPU: docs/rendering.md, "Anti-aliasing".
-      s.antialiasing = Antialiasing::kFxaa;
-      s.normalMapScale = 1;  // 64 map cells a node; scale 2 would fit only 1549 slots in 512 MiB
-      // The maps from imagery tiles of their own LOD: each texel <= 1.5 px at 1280x720 from 100 km to
-      // 1 km where the mesh's own maps reach 2.9 px, and 2.8 px instead of 45 px at 2 m
-      // (docs/rendering.md, "Imagery LOD"); --imagery off falls back to the mesh's maps above.
-      s.imagery = true;
-      // The complete atmosphere (light and aerial perspective per vertex): 2.4x the frame at 1 km,
-      // 1.65x at 2 m (docs/rendering.md, "Atmosphere"); the reference-quality preset keeps it.
-      s.atmosphere = AtmosphereDetail::kFull;
-      // Cast shadows of the relief (docs/rendering.md, "Shadows").
-      s.shadows = true;
-      break;
-  }
+  s.gridCells = 16;
+  // Tolerance-driven ranges: 11 % fewer triangles over the seven trade cameras than the distance
+  // multiplier 0.25 it replaces, worst p95 12.0 px instead of 12.5 (docs/tradeoffs.md, "Presets").
+  s.ranges.tolerance_px = 32.0;
+  // Light per vertex: with surface textures (scale 1) its flyover took 32.6 ms, balanced's cost,
+  // against 22.5 ms without; the cheapest preset keeps the cheap path (docs/rendering.md,
+  // "Surface textures").
+  s.normalMapScale = 0;
+  s.detailTextures = DetailTextures::kOff;  // per vertex everywhere: the cheap path
+  s.atmosphere = AtmosphereDetail::kSky;
   return s;
+}
+
+// balanced: ~80k triangles at 1 km, 26 ms at 1280x720 on lavapipe (goal 33).
+TerrainSettings balancedSettings() {
+  TerrainSettings s;
+  s.gridCells = 16;
+  // Tolerance-driven ranges (docs/lod.md): over the seven trade cameras 11 % fewer triangles than
+  // the distance multiplier 0.5 it replaces, worst p95 screen error 5.2 px instead of 6.1, and the
+  // flyover's median frame the same (docs/tradeoffs.md, "Tolerance vs distance ranges").
+  s.ranges.tolerance_px = 16.0;
+  // The texel rule at 16 px (--texel-px): plains seen from 100 km no longer draw 32-texel
+  // surfaces magnified to 30+ px (SSIM against exact's structure 0.76 -> 0.89 there, 0.87 ->
+  // 0.88 at 10 km) for ~1 ms of the flyover's median (32.7 -> 33.5-34.0 ms); 8 px took it to
+  // 35 ms, 4 px to 39 ms (docs/lod.md, "Texel rule"; docs/rendering.md, "Colour").
+  s.ranges.texel_px = 16.0;
+  // Depth 24 instead of 20: the same nodes above ~100 m, and at the 2 m camera p95 6.1 px
+  // instead of 10.5 px for the same frame time (globe trade, 2026-11-22).
+  s.ranges.maxDepth = 24;
+  // Per-pixel light, colour and coast from the payloads' surface textures, 32 texels a node side:
+  // the flyover's median 32.9 ms on lavapipe where scale 4 (64 texels) spends 3.6 ms a frame
+  // generating them and reaches 36.5 ms (docs/rendering.md, "Surface textures").
+  s.normalMapScale = 2;
+  // The land cover's detail textures near the ground only (below ~100 m they are what the surface
+  // shows; everywhere they took the flight's median from 21 to 33 ms on lavapipe): farther away
+  // the classes' colours per vertex (docs/rendering.md, "Land cover", "Ground detail").
+  s.detailTextures = DetailTextures::kNear;
+  // The sky only: light and aerial perspective through the atmosphere cost +75-95 % of the
+  // flight's CPU on lavapipe (docs/rendering.md, "Atmosphere").
+  s.atmosphere = AtmosphereDetail::kSky;
+  return s;
+}
+
+// exact: p95 screen error <= 0.5 px at 1280x720 at every standard camera.
+TerrainSettings exactSettings() {
+  TerrainSettings s;
+  s.gridCells = 64;
+  s.ranges.distanceMultiplier = 2.0;
+  // FXAA's fixed ~16 ms of CPU a 1280x720 frame is ~1 % of this preset's frame; on fast and
+  // balanced it is +40 % (MSAA x4 +160 %) of the flyover's CPU: docs/rendering.md, "Anti-aliasing".
+  s.antialiasing = Antialiasing::kFxaa;
+  s.normalMapScale = 1;  // 64 map cells a node; scale 2 would fit only 1549 slots in 512 MiB
+  // The maps from imagery tiles of their own LOD: each texel <= 1.5 px at 1280x720 from 100 km to
+  // 1 km where the mesh's own maps reach 2.9 px, and 2.8 px instead of 45 px at 2 m
+  // (docs/rendering.md, "Imagery LOD"); --imagery off falls back to the mesh's maps above.
+  s.imagery = true;
+  // The complete atmosphere (light and aerial perspective per vertex): 2.4x the frame at 1 km,
+  // 1.65x at 2 m (docs/rendering.md, "Atmosphere"); the reference-quality preset keeps it.
+  s.atmosphere = AtmosphereDetail::kFull;
+  // Cast shadows of the relief (docs/rendering.md, "Shadows").
+  s.shadows = true;
+  return s;
+}
+
+}  // namespace
+
+TerrainSettings terrainSettingsFor(QualityPreset preset) {
+  switch (preset) {
+    case QualityPreset::kFast:
+      return fastSettings();
+    case QualityPreset::kBalanced:
+      return balancedSettings();
+    case QualityPreset::kExact:
+      return exactSettings();
+  }
+  return balancedSettings();
 }
 
 Result<QualityPreset> parseQualityPreset(const std::string& text, const std::string& field) {
