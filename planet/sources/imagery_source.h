@@ -28,7 +28,7 @@ struct ImagerySource {
 // (or a coarser image) as a gradient, not a seam.
 inline double defaultImageryBlend_m(double pixel_m) { return 8.0 * pixel_m; }
 
-// At most this many imagery rasters in one planet (each holds up to four open GDAL datasets).
+// At most this many imagery rasters in one planet (each holds up to four open rasters).
 inline constexpr int kMaxImagerySources = 16;
 
 }  // namespace globe

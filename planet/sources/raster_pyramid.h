@@ -3,7 +3,7 @@
 // itself, level k is 2^k times coarser, each pixel the mean of the valid pixels of the 2 x 2 block
 // beneath it (no-data where fewer than two are valid, so holes keep their borders). A payload
 // request reads the coarsest level whose pixel is no larger than its node's sample spacing, so far
-// views read a few coarse tiles instead of the whole raster. Levels come from the file's own GDAL
+// views read a few coarse tiles instead of the whole raster. Levels come from the file's own
 // overviews where it has them; the others are built on first use from level 0 and kept in a disk
 // cache (the disk tier of disk -> RAM -> VRAM): one file per source, named by the hash of the
 // source's path, size and modification time, written atomically, read back a tile at a time.

@@ -34,7 +34,7 @@ struct ElevationSource {
 // metres above or below the procedural surface around it meets it as a slope, not a cliff.
 inline double defaultBlend_m(double pixel_m) { return std::max(16.0 * pixel_m, 5000.0); }
 
-// At most this many sources in one planet (each is an open GDAL dataset).
+// At most this many sources in one planet (each is an open raster).
 inline constexpr int kMaxElevationSources = 16;
 
 }  // namespace globe

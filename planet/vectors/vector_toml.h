@@ -1,7 +1,7 @@
 #pragma once
 // Reading a planet file's [[vectors]] (planet/model/planet_file.cpp calls it), key by key like
 // [[sources]]: each problem is one Error at the key's line and column. The vector file is read and
-// indexed once here (exists, OGR reads it, the layer and colour_by attribute exist, every feature
+// indexed once here (exists, the reader reads it, the layer and colour_by attribute exist, every feature
 // reprojects inside the world, within the limits), so a planet that loads has layers that open.
 #include "planet/core/planet_toml_reader.h"
 #include "planet/vectors/vector_layer.h"
