@@ -2,8 +2,8 @@
 // The planet side of vector layers draped on the terrain: the colour that a planet's [[vectors]]
 // paint at any point of the sphere, antialiased with the surface texel as the filter, for the
 // payload path to bake into each node's surface texture. Each layer is read once (the installed
-// VectorReader) and indexed
-// (indexed_vector_layer.h), so a query costs about the same whatever the layer's size.
+// VectorReader) and indexed (indexed_vector_layer.h), so a query costs about the same whatever the
+// layer's size.
 #include "planet/core/error.h"
 #include "planet/vectors/indexed_vector_layer.h"
 #include "planet/vectors/vector_layer.h"
