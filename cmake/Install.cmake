@@ -1,8 +1,9 @@
 # `cmake --install` lays out PREFIX/bin/globe, PREFIX/lib/libglobe_*.a, PREFIX/include/globe/...,
 # PREFIX/share/globe/{shaders,assets} and PREFIX/lib/cmake/globe, so that another project can
 # `find_package(globe [COMPONENTS ...])` and link globe::planet alone (no GDAL), with globe::planet_gdal
-# (real data), globe::render (headless) or globe::viewer (tests/consumer checks them). Each component is an export set of its own, so a consumer
-# of `planet` finds none of the render, movie, bake or physics dependencies (globeConfig.cmake.in).
+# (real data), globe::render (headless) or globe::viewer (tests/consumer checks them). Each component is
+# an export set of its own, so a consumer of `planet` finds none of the GDAL, render, movie, bake or
+# physics dependencies (globeConfig.cmake.in).
 include(CMakePackageConfigHelpers)
 get_property(globe_libraries GLOBAL PROPERTY GLOBE_LIBRARIES)
 get_property(globe_test_only GLOBAL PROPERTY GLOBE_LIBRARIES_TEST_ONLY)
