@@ -158,8 +158,8 @@ void addLodOptions(CLI::App& cmd, QualityOptions& options) {
 void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid) {
   if (withGrid) {
     cmd.add_option("--grid", options.gridCells,
-                   "Grid cells per node side (power of two, 16..256; default: the quality preset's)")
-        ->check(CLI::Range(16U, 256U));
+                   "Grid cells per node side (power of two, 8..256; default: the quality preset's)")
+        ->check(CLI::Range(8U, 256U));
   }
   cmd.add_option("--quality", options.quality,
                  "fast, balanced or exact (docs/tradeoffs.md; default: the planet's default_quality)")

@@ -14,6 +14,7 @@
 #include "planet/physics/physics_scenario.h"
 #include "progress_bar.h"
 #include "render_terrain.h"
+#include "shaders/include/payload_layout.h"
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
@@ -89,8 +90,7 @@ Result<PhysicsInputs> checkInputs(const PhysicsOptions& o) {
   if (o.level < 1 || o.level > 24) return Error::inField("--level", "must be within [1, 24]");
   if (!(std::isfinite(o.radius_m) && o.radius_m >= 0.0 && o.radius_m <= 10000.0))
     return Error::inField("--radius", "must be within [0, 10000] metres");
-  if (o.gridCells < 16 || o.gridCells > 256 || (o.gridCells & (o.gridCells - 1)) != 0)
-    return Error::inField("--grid", "must be a power of two in [16, 256]");
+  if (!gpu::validGridCells(o.gridCells)) return Error::inField("--grid", "must be a power of two in [8, 256]");
   if (o.seed < 0) return Error::inField("--seed", "must be >= 0");
   auto shapes = shapeMixFromName(o.shape);
   if (!shapes) return Error::inField("--shape", "must be sphere, box or mixed");

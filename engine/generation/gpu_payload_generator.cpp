@@ -64,8 +64,8 @@ GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationMode
                  "land cover"),
       faces_(device, 30 * sizeof(FaceCornersGpu), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::HostVisible,
              "face corners") {
-  if (cells < 16 || cells > 256 || (cells & (cells - 1)) != 0)
-    throw std::runtime_error("grid cells must be a power of two in [16, 256], got " + std::to_string(cells));
+  if (!gpu::validGridCells(cells))
+    throw std::runtime_error("grid cells must be a power of two in [8, 256], got " + std::to_string(cells));
   if (normalMapScale != 0 && normalMapScale != 1 && normalMapScale != 2 && normalMapScale != 4)
     throw std::runtime_error("normal map scale must be 0, 1, 2 or 4, got " + std::to_string(normalMapScale));
   std::memcpy(elevation_.mapped(), &model.params(), sizeof(gpu::ElevationParams));

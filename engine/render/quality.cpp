@@ -24,11 +24,13 @@ TerrainSettings fastSettings() {
 // balanced: ~80k triangles at 1 km, 26 ms at 1280x720 on lavapipe (goal 33).
 TerrainSettings balancedSettings() {
   TerrainSettings s;
-  s.gridCells = 16;
-  // Tolerance-driven ranges (docs/lod.md): over the seven trade cameras 11 % fewer triangles than
-  // the distance multiplier 0.5 it replaces, worst p95 screen error 5.2 px instead of 6.1, and the
-  // flyover's median frame the same (docs/tradeoffs.md, "Tolerance vs distance ranges").
-  s.ranges.tolerance_px = 16.0;
+  // 8 cells a node, 32 texels (scale 4): the detail is per pixel, so the vertices are for
+  // silhouettes and parallax only. A quarter of grid 16's triangles for the same nodes: on lavapipe
+  // the flyover's median 42.7 -> 29.6 ms, along the ground 62 -> 46 ms (docs/rendering.md,
+  // "Eight cells a node"). Tolerance-driven ranges (docs/lod.md) at 8 px: at 16 px grid 8's coarser
+  // vertices lost SSIM at 2 m (0.79 -> 0.76); at 8 px it is 0.81.
+  s.gridCells = 8;
+  s.ranges.tolerance_px = 8.0;
   // The texel rule at 16 px (--texel-px): plains seen from 100 km no longer draw 32-texel
   // surfaces magnified to 30+ px (SSIM against exact's structure 0.76 -> 0.89 there, 0.87 ->
   // 0.88 at 10 km) for ~1 ms of the flyover's median (32.7 -> 33.5-34.0 ms); 8 px took it to
@@ -37,10 +39,10 @@ TerrainSettings balancedSettings() {
   // Depth 24 instead of 20: the same nodes above ~100 m, and at the 2 m camera p95 6.1 px
   // instead of 10.5 px for the same frame time (globe trade, 2026-11-22).
   s.ranges.maxDepth = 24;
-  // Per-pixel light, colour and coast from the payloads' surface textures, 32 texels a node side:
-  // the flyover's median 32.9 ms on lavapipe where scale 4 (64 texels) spends 3.6 ms a frame
-  // generating them and reaches 36.5 ms (docs/rendering.md, "Surface textures").
-  s.normalMapScale = 2;
+  // Per-pixel light, colour and coast from the payloads' surface textures, 32 texels a node side
+  // (at grid 16, scale 4's 64 texels spent 3.6 ms a frame generating them: docs/rendering.md,
+  // "Surface textures").
+  s.normalMapScale = 4;
   // The land cover's detail textures near the ground only (below ~100 m they are what the surface
   // shows; everywhere they took the flight's median from 21 to 33 ms on lavapipe): farther away
   // the classes' colours per vertex (docs/rendering.md, "Land cover", "Ground detail").

@@ -11,6 +11,7 @@
 #include "planet/geometry/triacontahedron.h"
 #include "planet/lod/frustum.h"
 #include "planet/streaming/payload_reference.h"
+#include "shaders/include/payload_layout.h"
 
 #include <algorithm>
 #include <chrono>
@@ -62,8 +63,8 @@ const char* atmosphereDetailName(AtmosphereDetail detail) {
 }
 
 Status validateTerrainSettings(const TerrainSettings& s) {
-  if (s.gridCells < 16 || s.gridCells > 256 || (s.gridCells & (s.gridCells - 1)) != 0)
-    return Error::inField("grid_cells", "must be a power of two in [16, 256], got " + std::to_string(s.gridCells));
+  if (!gpu::validGridCells(s.gridCells))
+    return Error::inField("grid_cells", "must be a power of two in [8, 256], got " + std::to_string(s.gridCells));
   if (s.normalMapScale != 0 && s.normalMapScale != 1 && s.normalMapScale != 2 && s.normalMapScale != 4)
     return Error::inField("normal_map_scale", "must be 0, 1, 2 or 4, got " + std::to_string(s.normalMapScale));
   if (!std::isfinite(s.originThreshold_m) || s.originThreshold_m < 0)

@@ -71,7 +71,7 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
                                  surfaceShading(style, atmosphere_ != nullptr, false))),
       skirts_(device, terrainDesc({colourFormat, samples}, false, VK_CULL_MODE_NONE, positions,
                                   surfaceShading(style, atmosphere_ != nullptr, false))) {
-  assert(gridCells >= 16 && gridCells <= 256 && (gridCells & (gridCells - 1)) == 0);
+  assert(gpu::validGridCells(gridCells));
   assert(style.normalMapScale <= 4 && (style.normalMapScale & (style.normalMapScale - 1)) == 0);
   OptionalPipelines optional = pendingOptional_.get();
   water_ = std::move(optional.water);

@@ -127,7 +127,7 @@ class TerrainRenderer {
   // The most triangles one drawn node submits: its full grid (2 per cell) and four skirt strips (2 per
   // edge cell); what a frame budget's triangle limit is counted in.
   static uint64_t maxTrianglesPerNode(uint32_t gridCells) { return 2ull * gridCells * (gridCells + 4ull); }
-  // gridCells: payload grid cells per node side, a power of two in [16, 256]. initialNodes: per-frame
+  // gridCells: payload grid cells per node side, a power of two in [8, 256]. initialNodes: per-frame
   // capacity allocated up front (grows when exceeded). Pipelines target OffscreenTarget's formats
   // unless `colourFormat` says otherwise (e.g. a swapchain's); `samples`: the target's samples per pixel.
   TerrainRenderer(vk::Device& device, uint32_t gridCells, const TerrainStyle& style = {},

@@ -2,8 +2,8 @@
 // the terrain renderer) and GLSL (shaders/payload_generate.comp, shaders/terrain.vert).
 // Compiles as both: C++ sees namespace globe::gpu, GLSL plain declarations.
 //
-// A node with N grid cells per side (N a power of two, 16..256) has V = N + 1 vertices per side and
-// S = N + 3 samples per side: the vertices plus one extra ring all around, so that normals and
+// A node with N grid cells per side (N a power of two, 8..256: GLOBE_PAYLOAD_MIN_CELLS..MAX_CELLS) has V = N + 1
+// vertices per side and S = N + 3 samples per side: the vertices plus one extra ring all around, so that normals and
 // bilinear sampling at the node's border see the neighbour's samples (across face seams too: ring
 // samples beyond a face edge are evaluated on the neighbouring face, bit-identically to the
 // neighbour's own interior samples).
@@ -87,6 +87,9 @@ struct uvec4_ {
 #define GLOBE_UVEC4 uvec4
 #endif
 
+// Grid cells per node side the layout takes: a power of two in [MIN, MAX] (validGridCells).
+#define GLOBE_PAYLOAD_MIN_CELLS 8u
+#define GLOBE_PAYLOAD_MAX_CELLS 256u
 // Samples per side including the ring.
 #define GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells) ((cells) + 3u)
 // vec4 entries of a slot's mesh: positions then normals (the whole slot without a normal map).
@@ -179,6 +182,9 @@ struct PayloadResult {
 
 #ifdef __cplusplus
 static_assert(sizeof(PayloadJob) == 96);
+constexpr bool validGridCells(uint cells) {
+  return cells >= GLOBE_PAYLOAD_MIN_CELLS && cells <= GLOBE_PAYLOAD_MAX_CELLS && (cells & (cells - 1u)) == 0u;
+}
 static_assert(sizeof(PayloadResult) == 32);
 }  // namespace globe::gpu
 #endif

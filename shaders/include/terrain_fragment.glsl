@@ -181,8 +181,9 @@ vec3 mappedColour(vec3 modulation, out float coast, out float seaCover) {
   vec3 n = surfaceNormal(texel.xy);  // in the node's face frame, as inSunFace and inUp
   // YCoCg to RGB: the texel's luma, the vertices' chroma; on a planet with an overlay the colour
   // layer's texel (a specialization constant: no fetch for the others).
-  float g = texel.z + inChroma.y, rb = texel.z - inChroma.y;
-  vec3 root = max(vec3(rb + inChroma.x, g, rb - inChroma.x), vec3(0.0));
+  vec2 chroma = inChroma * texel.z;
+  float g = texel.z + chroma.y, rb = texel.z - chroma.y;
+  vec3 root = max(vec3(rb + chroma.x, g, rb - chroma.x), vec3(0.0));
   seaCover = 0.0;
 #ifndef GLOBE_TERRAIN_IMAGERY
   if (kColourLayer != 0u) {

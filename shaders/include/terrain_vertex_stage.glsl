@@ -116,7 +116,8 @@ void main() {
   outImageryCell = v.imageryCell;
   outSunFace = toFace * frame.sun.xyz;
   vec3 root = sqrt(max(v.albedo, vec3(0.0)));
-  outChroma = vec2(0.5 * (root.r - root.b), 0.25 * (2.0 * root.g - root.r - root.b));
+  float luma = max(0.25 * (root.r + 2.0 * root.g + root.b), 1.0 / 255.0);
+  outChroma = vec2(0.5 * (root.r - root.b), 0.25 * (2.0 * root.g - root.r - root.b)) / luma;
 #ifdef GLOBE_TERRAIN_COVER
   outCover0 = v.cover0;
   outCover1 = v.cover1;

@@ -67,9 +67,9 @@ for value in 0.1 -1 nan 5000 abc; do badTolerance render "$value" --texel-px; do
   --out "$WORK/tt" >"$WORK/tt.out" 2>"$WORK/tt.err" || { fail "trade --tolerance"; cat "$WORK/tt.err"; }
 lod=$(awk -F, 'NR == 2 { print $9 "," $10 }' "$WORK/tt/trade.csv")
 [[ "$lod" == "tolerance,2.000" ]] || fail "trade --tolerance 2: lod,tolerance_px = $lod"
-# balanced is a 16 px tolerance (docs/tradeoffs.md, "Presets").
+# balanced is an 8 px tolerance (docs/tradeoffs.md, "Presets").
 lod=$(awk -F, 'NR == 2 { print $9 "," $10 }' "$WORK/t/trade.csv")
-[[ "$lod" == "tolerance,16.000" ]] || fail "trade (balanced): lod,tolerance_px = $lod"
+[[ "$lod" == "tolerance,8.000" ]] || fail "trade (balanced): lod,tolerance_px = $lod"
 
 if [[ $failures -ne 0 ]]; then echo "$failures failure(s)"; exit 1; fi
 echo "trade: all checks passed"

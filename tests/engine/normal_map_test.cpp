@@ -23,11 +23,15 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <utility>
 
 namespace globe::testing {
 namespace {
 
 constexpr uint32_t kCells = 16;
+// The grids and map scales tested against the reference: every scale at grid 16, and the balanced
+// preset's grid 8 at scale 4 (quality.cpp).
+constexpr std::array<std::pair<uint32_t, uint32_t>, 4> kGridsAndScales{{{16, 1}, {16, 2}, {16, 4}, {8, 4}}};
 
 // One texel of the surface texture as stored (payload_layout.h): RGBA8, the normal octahedral in the
 // face frame, the luma of the albedo's square root, the coast field.
@@ -49,14 +53,15 @@ void readMip(vk::Device& device, VkImage image, uint32_t mip, uint32_t side, uin
   });
 }
 
-// The surface texture's texels of `nodes` generated into slots 0..n-1 at map scale `scale`, per node
+// The surface texture's texels of `nodes` generated into slots 0..n-1 at map scale `scale` (grid
+// `cells`, default kCells), per node
 // in the reference's order (mip 0 row by row, then mip 1: normalMapReference); on a planet with an
 // overlay each slot's colour layer goes to `colours`, likewise.
 std::vector<std::vector<StoredTexel>> generateMaps(vk::Device& device, const ElevationModel& model,
                                                    const std::vector<NodeId>& nodes, uint32_t scale,
-                                                   std::vector<std::vector<StoredTexel>>* colours = nullptr) {
-  GpuPayloadGenerator gen(device, model, kCells, GLOBE_PAYLOAD_MAX_BATCH, 1, GenerationPrecision::kDouble, false,
-                          scale);
+                                                   std::vector<std::vector<StoredTexel>>* colours = nullptr,
+                                                   uint32_t cells = kCells) {
+  GpuPayloadGenerator gen(device, model, cells, GLOBE_PAYLOAD_MAX_BATCH, 1, GenerationPrecision::kDouble, false, scale);
   gen.reserveSlots(uint32_t(nodes.size()));
   EXPECT_EQ(generateIntoSlots(gen, nodes).size(), nodes.size());
   const SurfaceTextures& textures = gen.surfaceTextures();
@@ -160,7 +165,7 @@ INSTANTIATE_TEST_SUITE_P(Shapes, NormalMapShapeTest, ::testing::Values(kPlanetSh
 
 // Stored GPU texels within one 8-bit step of the CPU's double reference (the normal's octahedral
 // code, the albedo's luma, the coast field), at depths 0..26, at face corners and seams, at every map
-// scale.
+// scale and at the balanced preset's grid.
 TEST_P(NormalMapShapeTest, MatchesCpuDoubleReference) {
   const ElevationModel& model = earthlikeModel(GetParam());
   std::vector<NodeId> nodes;
@@ -170,13 +175,13 @@ TEST_P(NormalMapShapeTest, MatchesCpuDoubleReference) {
   }
   nodes.push_back({0, 12, 0, 0});                // a polyhedron vertex
   nodes.push_back({13, 20, (1u << 20) - 1, 0});  // a seam
-  for (uint32_t scale : {1u, 2u, 4u}) {
-    const auto maps = generateMaps(device(), model, nodes, scale);
+  for (const auto& [cells, scale] : kGridsAndScales) {
+    const auto maps = generateMaps(device(), model, nodes, scale, nullptr, cells);
     int worstNormal = 0, worstAlbedo = 0;
     for (size_t k = 0; k < nodes.size(); ++k) {
-      SCOPED_TRACE(::testing::Message() << "scale " << scale << " face " << int(nodes[k].face) << " level "
-                                        << int(nodes[k].level));
-      const auto reference = normalMapReference(model, makePayloadJob(nodes[k], 0, model), kCells, scale);
+      SCOPED_TRACE(::testing::Message() << "grid " << cells << " scale " << scale << " face " << int(nodes[k].face)
+                                        << " level " << int(nodes[k].level));
+      const auto reference = normalMapReference(model, makePayloadJob(nodes[k], 0, model), cells, scale);
       ASSERT_EQ(reference.size(), maps[k].size());
       for (size_t t = 0; t < reference.size(); ++t) {
         const StoredTexel expected = expectedTexel(reference[t], nodes[k].face);
@@ -187,8 +192,9 @@ TEST_P(NormalMapShapeTest, MatchesCpuDoubleReference) {
         ASSERT_LE(albedo, 1) << "texel " << t;
       }
     }
-    RecordProperty("worst_normal_steps_scale" + std::to_string(scale), worstNormal);
-    RecordProperty("worst_albedo_steps_scale" + std::to_string(scale), worstAlbedo);
+    const std::string config = "_grid" + std::to_string(cells) + "_scale" + std::to_string(scale);
+    RecordProperty("worst_normal_steps" + config, worstNormal);
+    RecordProperty("worst_albedo_steps" + config, worstAlbedo);
   }
 }
 
@@ -265,6 +271,9 @@ TEST_F(NormalMapTest, ChildParentLevelEqualsParentMap) {
   }
   const auto maps = generateMaps(device(), model, nodes, scale);
   for (size_t base = 0; base < nodes.size(); base += 5) expectChildrenShowParent(maps, base, m);
+  // The balanced preset's grid 8 at scale 4: the same 32 texels a node.
+  const auto balanced = generateMaps(device(), model, nodes, 4, nullptr, 8);
+  for (size_t base = 0; base < nodes.size(); base += 5) expectChildrenShowParent(balanced, base, 8 * 4);
 }
 
 // Imagery ([[imagery]], docs/imagery.md) and a vector line over it in the surface textures: the GPU's
