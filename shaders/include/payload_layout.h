@@ -45,8 +45,9 @@
 //       (faceFrame, face_mapping.glsl: up is the face's normal, so on any but near-vertical ground
 //       the code stays inside the octahedron's upper half, where bilinear filtering is smooth);
 //   z   the luma Y = (r + 2 g + b) / 4 [Malvar 2003] of the square root of the albedo (the ramp at the texel's
-//       elevation and slope, or the land cover's blend there); the chroma (YCoCg's Co, Cg) comes from
-//       the mesh's vertices, at half the texels' resolution per axis at scale 2 (4:2:0 sampling);
+//       elevation and slope, or the land cover's blend there); the chroma (YCoCg's Co, Cg, as a ratio
+//       to the luma, scaled by the texel's) comes from the mesh's vertices, every s texels per axis
+//       (scale 4 at grid 8, balanced's);
 //   w   the coast field: the ground's height above sea level in GLOBE_SURFACE_COAST_SCALE texel widths
 //       of the texel's level (one scale per level: neighbours and parent agree), clamped to [-1, 1] and
 //       stored as x * 0.5 + 0.5: its bilinear zero crossing is the coastline. The small scale resolves

@@ -179,8 +179,9 @@ vec3 mappedColour(vec3 modulation, out float coast, out float seaCover) {
   coast = mix(mix(mix(w.w, w.z, f.x), mix(w.x, w.y, f.x), f.y) - 0.5, coast, blend);
 #endif
   vec3 n = surfaceNormal(texel.xy);  // in the node's face frame, as inSunFace and inUp
-  // YCoCg to RGB: the texel's luma, the vertices' chroma; on a planet with an overlay the colour
-  // layer's texel (a specialization constant: no fetch for the others).
+  // YCoCg to RGB: the texel's luma, the vertices' chroma (a ratio to luma, scaled by the texel's); on
+  // a planet with an overlay the colour layer's texel (a specialization constant: no fetch for the
+  // others).
   vec2 chroma = inChroma * texel.z;
   float g = texel.z + chroma.y, rb = texel.z - chroma.y;
   vec3 root = max(vec3(rb + chroma.x, g, rb - chroma.x), vec3(0.0));

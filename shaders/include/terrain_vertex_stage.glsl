@@ -35,7 +35,8 @@ layout(location = 18) flat out uint outImageryCell;
 // The surface texture (the _maps fragment stages, payload_layout.h): the sun's direction in the node's
 // face frame, which the texture's normals are coded in (the fragments light in that frame: one flat
 // input instead of the frame's three), and the albedo's chroma (YCoCg's Co, Cg of its square root) at
-// the vertex.
+// the vertex, divided by its luma: the fragment scales it by the texel's luma, so where a texel's
+// brightness differs from the vertices' (a class edge between vertices) the hue stays, no fringe.
 layout(location = 19) flat out vec3 outSunFace;
 layout(location = 21) out vec2 outChroma;
 #ifdef GLOBE_TERRAIN_COVER
