@@ -30,9 +30,10 @@ enum class GenerationPrecision { kDouble, kFloat };
 
 class GpuPayloadGenerator final : public PayloadGenerator {
  public:
-  // `cells`: grid cells per node side, a power of two in [8, 256] (gpu::validGridCells). `maxJobsPerSubmit`: most nodes
-  // one generate() call takes (the pool's dispatch budget); `maxSubmitsInFlight`: batches that may
-  // run at once (the pool's in-flight cap / budget, rounded up).
+  // `cells`: grid cells per node side, a power of two in [8, 256] (gpu::validGridCells).
+  // `maxJobsPerSubmit`: most nodes one generate() call takes (the pool's dispatch budget);
+  // `maxSubmitsInFlight`: batches that may run at once (the pool's in-flight cap / budget, rounded
+  // up).
   // `model` must outlive the generator (job centres are surface points of the CPU reference).
   // `waterSurface`: samples below sea level are placed on the sea surface (the renderer's payloads on
   // a planet with water, ElevationModel::drawsWater); otherwise the ground everywhere (collision

@@ -21,14 +21,16 @@ TerrainSettings fastSettings() {
   return s;
 }
 
-// balanced: ~80k triangles at 1 km, 26 ms at 1280x720 on lavapipe (goal 33).
+// balanced: ~48k triangles at 1 km; the flyover's median ~31 ms at 1280x720 on lavapipe (goal 33).
 TerrainSettings balancedSettings() {
   TerrainSettings s;
   // 8 cells a node, 32 texels (scale 4): the detail is per pixel, so the vertices are for
   // silhouettes and parallax only. A quarter of grid 16's triangles for the same nodes: on lavapipe
-  // the flyover's median 42.7 -> 29.6 ms, along the ground 62 -> 46 ms (docs/rendering.md,
-  // "Eight cells a node"). Tolerance-driven ranges (docs/lod.md) at 8 px: at 16 px grid 8's coarser
-  // vertices lost SSIM at 2 m (0.79 -> 0.76); at 8 px it is 0.81.
+  // the flyover's median 42.4 -> 30.8 ms, along the ground 64 -> 51 ms (docs/rendering.md,
+  // "Eight cells a node"). Tolerance-driven ranges (docs/lod.md) at 8 px keep grid 16's screen
+  // error at 16 px (p95 5.1 px at 1 km, 3.5 px at 2 m); at 16 px grid 8 lost SSIM at 2 m (0.79 ->
+  // 0.76). The price: rough relief right under the camera takes one level more (the 2 m camera
+  // 110 ms instead of 75).
   s.gridCells = 8;
   s.ranges.tolerance_px = 8.0;
   // The texel rule at 16 px (--texel-px): plains seen from 100 km no longer draw 32-texel

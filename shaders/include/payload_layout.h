@@ -2,11 +2,11 @@
 // the terrain renderer) and GLSL (shaders/payload_generate.comp, shaders/terrain.vert).
 // Compiles as both: C++ sees namespace globe::gpu, GLSL plain declarations.
 //
-// A node with N grid cells per side (N a power of two, 8..256: GLOBE_PAYLOAD_MIN_CELLS..MAX_CELLS) has V = N + 1
-// vertices per side and S = N + 3 samples per side: the vertices plus one extra ring all around, so that normals and
-// bilinear sampling at the node's border see the neighbour's samples (across face seams too: ring
-// samples beyond a face edge are evaluated on the neighbouring face, bit-identically to the
-// neighbour's own interior samples).
+// A node with N grid cells per side (N a power of two, 8..256: GLOBE_PAYLOAD_MIN/MAX_CELLS) has
+// V = N + 1 vertices per side and S = N + 3 samples per side: the vertices plus one extra ring all
+// around, so that normals and bilinear sampling at the node's border see the neighbour's samples
+// (across face seams too: ring samples beyond a face edge are evaluated on the neighbouring face,
+// bit-identically to the neighbour's own interior samples).
 //
 // Sample (i, j), i, j in [-1, N + 1] (i along the node's u axis, j along v), lives at index
 //   (j + 1) * S + (i + 1).
@@ -183,10 +183,10 @@ struct PayloadResult {
 
 #ifdef __cplusplus
 static_assert(sizeof(PayloadJob) == 96);
+static_assert(sizeof(PayloadResult) == 32);
 constexpr bool validGridCells(uint cells) {
   return cells >= GLOBE_PAYLOAD_MIN_CELLS && cells <= GLOBE_PAYLOAD_MAX_CELLS && (cells & (cells - 1u)) == 0u;
 }
-static_assert(sizeof(PayloadResult) == 32);
 }  // namespace globe::gpu
 #endif
 #undef GLOBE_DVEC4

@@ -54,9 +54,9 @@ void readMip(vk::Device& device, VkImage image, uint32_t mip, uint32_t side, uin
 }
 
 // The surface texture's texels of `nodes` generated into slots 0..n-1 at map scale `scale` (grid
-// `cells`, default kCells), per node
-// in the reference's order (mip 0 row by row, then mip 1: normalMapReference); on a planet with an
-// overlay each slot's colour layer goes to `colours`, likewise.
+// `cells`, default kCells), per node in the reference's order (mip 0 row by row, then mip 1:
+// normalMapReference); on a planet with an overlay each slot's colour layer goes to `colours`,
+// likewise.
 std::vector<std::vector<StoredTexel>> generateMaps(vk::Device& device, const ElevationModel& model,
                                                    const std::vector<NodeId>& nodes, uint32_t scale,
                                                    std::vector<std::vector<StoredTexel>>* colours = nullptr,
