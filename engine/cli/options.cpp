@@ -3,6 +3,7 @@
 #include "commands.h"
 #include "planet/core/atomic_file.h"
 #include "planet/core/data_directory.h"
+#include "shaders/include/payload_layout.h"
 
 #include <fmt/format.h>
 
@@ -159,7 +160,7 @@ void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid) {
   if (withGrid) {
     cmd.add_option("--grid", options.gridCells,
                    "Grid cells per node side (power of two, 8..256; default: the quality preset's)")
-        ->check(CLI::Range(8U, 256U));
+        ->check(CLI::Range(GLOBE_PAYLOAD_MIN_CELLS, GLOBE_PAYLOAD_MAX_CELLS));
   }
   cmd.add_option("--quality", options.quality,
                  "fast, balanced or exact (docs/tradeoffs.md; default: the planet's default_quality)")

@@ -15,7 +15,6 @@
 namespace globe::testing {
 namespace {
 
-// On earthlike's sphere, on WGS84 and on flattening 0.1 (issue #18).
 constexpr uint32_t kWidth = 128, kHeight = 96;
 
 struct PopCase {
@@ -70,6 +69,7 @@ void expectNoPop(vk::Device& device, const ElevationModel& model, const TerrainS
   EXPECT_LT(colourJumps, int(kWidth * kHeight / 100)) << label << ": more than 1 % of the pixels changed colour";
 }
 
+// On earthlike's sphere, on WGS84 and on flattening 0.1 (issue #18).
 class NoPopsTest : public GpuTest, public ::testing::WithParamInterface<PlanetShapeCase> {};
 INSTANTIATE_TEST_SUITE_P(Shapes, NoPopsTest, ::testing::ValuesIn(kPlanetShapes), planetShapeName);
 
