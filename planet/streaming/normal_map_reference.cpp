@@ -21,7 +21,7 @@ struct SurfaceGrid {
   std::vector<double> firstLayers;
 };
 
-SurfaceGrid evaluateGrid(const ElevationModel& model, const gpu::PayloadJob& job, int m, bool sea, int side, int stride,
+SurfaceGrid evaluateGrid(const ElevationModel& model, const gpu::PayloadJob& job, int m, int side, int stride,
                          int offset) {
   SurfaceGrid grid{side, stride, offset, std::vector<glm::dvec4>(size_t(side) * size_t(side)),
                    std::vector<double>(size_t(side) * size_t(side))};
@@ -30,13 +30,28 @@ SurfaceGrid evaluateGrid(const ElevationModel& model, const gpu::PayloadJob& job
     for (int a = 0; a < side; ++a) {
       const glm::dvec3 dir = payloadSampleDirection(job, uint32_t(2 * m), stride * a - offset, stride * b - offset);
       const double h = model.proceduralElevation_m(dir);
-      const double drawn = sea ? std::max(h, model.seaLevel_m()) : h;
       const size_t k = size_t(b) * size_t(side) + size_t(a);
-      grid.points[k] = glm::dvec4(model.shape().position(dir, drawn), h);
+      // The ground's position, under the sea too (= fillNormalMap).
+      grid.points[k] = glm::dvec4(model.shape().position(dir, h), h);
       grid.firstLayers[k] = cover ? model.firstLayer_m(dir) : 0.0;
     }
   }
   return grid;
+}
+
+// = colourElevation (payload_generate.glsl): under a drawn sea, the mean ground (as floats) of the
+// land among the eight neighbours of the texel at `at`; the sea surface where there is none.
+float colourElevation(const SurfaceGrid& grid, size_t at, float ground, bool sea, float seaLevel_m) {
+  if (!sea || ground >= seaLevel_m) return ground;
+  float sum = 0.0f, count = 0.0f;
+  const long row = grid.side;
+  for (long dy = -1; dy <= 1; ++dy)
+    for (long dx = -1; dx <= 1; ++dx) {
+      const float g = float(grid.points[size_t(long(at) + dy * row + dx)].w);
+      sum += g >= seaLevel_m ? g : 0.0f;
+      count += g >= seaLevel_m ? 1.0f : 0.0f;
+    }
+  return count > 0.0f ? sum / count : seaLevel_m;
 }
 
 // The texels of one mip from its grid: texel (x, y) is grid point (x + 1, y + 1); `step`: texel width
@@ -62,9 +77,9 @@ void appendTexels(const ElevationModel& model, const gpu::PayloadJob& job, int m
     LandCoverMasks masks;
     const glm::dvec3 dir =
         payloadSampleDirection(job, uint32_t(2 * m), grid.stride * gx - grid.offset, grid.stride * gy - grid.offset);
-    // The kernel keeps the ground as a float: the ramp's drawn elevation and the coast from it.
+    // The kernel keeps the ground as a float: the colour's elevation and the coast from it.
     const float ground = float(grid.points[at].w);
-    const float drawn = sea ? std::max(ground, float(model.seaLevel_m())) : ground;
+    const float drawn = colourElevation(grid, at, ground, sea, float(model.seaLevel_m()));
     // = coastField (payload_generate.glsl).
     const double texel_m = job.uv.z * e.radius_m * double(step) / double(m);
     const float coast =
@@ -86,10 +101,10 @@ std::vector<NormalMapTexel> normalMapReference(const ElevationModel& model, cons
   std::vector<NormalMapTexel> texels;
   texels.reserve(normalMapTexelCount(uint32_t(m)));
   // Mip 0 on the odd lattice points 2g - 5, mip 1 on the points 4g - 6 (payload_layout.h).
-  appendTexels(model, job, m, sea, evaluateGrid(model, job, m, sea, int(GLOBE_SURFACE_GRID0_SIDE(uint32_t(m))), 2, 5),
-               1, texels);
-  appendTexels(model, job, m, sea, evaluateGrid(model, job, m, sea, int(GLOBE_SURFACE_GRID1_SIDE(uint32_t(m))), 4, 6),
-               2, texels);
+  appendTexels(model, job, m, sea, evaluateGrid(model, job, m, int(GLOBE_SURFACE_GRID0_SIDE(uint32_t(m))), 2, 5), 1,
+               texels);
+  appendTexels(model, job, m, sea, evaluateGrid(model, job, m, int(GLOBE_SURFACE_GRID1_SIDE(uint32_t(m))), 4, 6), 2,
+               texels);
   return texels;
 }
 

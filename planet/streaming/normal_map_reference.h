@@ -28,7 +28,8 @@ struct NormalMapTexel {
 // The surface textures of `job`'s node with `cells` grid cells and map scale `scale` (1, 2, 4):
 // mip 0's texels row by row, then mip 1's (payload_layout.h). Procedural elevation only: on a planet with sources the
 // kernel also blends the mesh samples' source terms, which this reference does not.
-// `waterSurface`: as the kernel's switch (texels below sea level lie on the sea surface).
+// `waterSurface`: as the kernel's switch (texels under the sea take their colour from the land beside them,
+// colourElevation; their normals are the ground's either way).
 std::vector<NormalMapTexel> normalMapReference(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
                                                uint32_t scale, bool waterSurface = false);
 

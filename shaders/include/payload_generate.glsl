@@ -256,9 +256,29 @@ void storeSurfaceTexel(uint mip, ivec3 texel, vec4 encoded) {
     imageStore(parentSurfaceImage, texel, encoded);
 }
 
+// The elevation a texel's colour is taken at: its ground; under a drawn sea, the mean ground of the
+// land among its eight neighbours (the sea surface where there is none). The sea hides the texel,
+// but the sampler blends it into the land texels beside it: taken at the sea surface it was beach, a
+// bright band a texel wide drawn in teeth along every coast seen from afar (docs/rendering.md,
+// "Surface textures").
+float colourElevation(uint at, uint row, float ground) {
+  float sea = float(GLOBE_ELEVATION_PARAMS.sea_level_m);
+  if (kWaterSurface == 0u || ground >= sea) return ground;
+  float sum = 0.0, count = 0.0;
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      float g = scratchGround(uint(int(at) + dy * int(row) + dx));
+      sum += g >= sea ? g : 0.0;
+      count += g >= sea ? 1.0 : 0.0;
+    }
+  return count > 0.0 ? sum / count : sea;
+}
+
 // One texel of the slot's surface texture from the scratch entry `at` of its grid (`row`: entries per
-// grid row): the normal by central differences one texel apart, the coast field and the albedo at
-// the texel's elevation and slope, as pass 2 does for the mesh samples. Returns the texel's ground.
+// grid row): the normal by central differences one texel apart (of the ground, under the sea too:
+// the land's slope carries on where the sampler blends the two), the coast field and the albedo at
+// the texel's colour elevation and slope, as pass 2 does for the mesh samples. Returns the texel's
+// ground.
 float surfaceTexel(PayloadJob job, uint scratchBase, uint at, uint row, uint mip, ivec3 texel) {
   precise dvec3 du = scratch[at + 1u].xyz - scratch[at - 1u].xyz;
   precise dvec3 dv = scratch[at + row].xyz - scratch[at - row].xyz;
@@ -268,7 +288,7 @@ float surfaceTexel(PayloadJob job, uint scratchBase, uint at, uint row, uint mip
   double cosSlope = clamp(dot(normal, up), 0.0lf, 1.0lf);
   vec2 words = uintBitsToFloat(unpackDouble2x32(scratch[at].w));
   float ground = words.x;
-  float drawn = kWaterSurface != 0u ? max(ground, float(GLOBE_ELEVATION_PARAMS.sea_level_m)) : ground;
+  float drawn = colourElevation(at, row, ground);
   uvec2 masks;
   uint m = push.cells * kNormalMapScale;
   ivec2 lattice = surfaceLatticePoint(at - scratchBase, m);
@@ -281,7 +301,7 @@ float surfaceTexel(PayloadJob job, uint scratchBase, uint at, uint row, uint mip
   // With an overlay the colour layer: the albedo's square root per texel and the vectors' coverage
   // (payload_layout.h).
   if (kOverlay != 0u)
-    storeSurfaceTexel(mip, texel + ivec3(0, 0, 1), colourLayerTexel(albedo, point, ground < drawn));
+    storeSurfaceTexel(mip, texel + ivec3(0, 0, 1), colourLayerTexel(albedo, point, kWaterSurface != 0u && ground < float(GLOBE_ELEVATION_PARAMS.sea_level_m)));
   return ground;
 }
 
@@ -298,8 +318,7 @@ double fillNormalMap(PayloadJob job, uint scratchBase) {
     dvec3 dir = sampleDirection(job, 2u * m, p.x, p.y);
     double firstLayer;
     double h = normalMapElevation(job, dir, p.x, p.y, firstLayer);
-    double drawn = kWaterSurface != 0u ? max(h, GLOBE_ELEVATION_PARAMS.sea_level_m) : h;
-    scratch[scratchBase + index] = dvec4(globePosition(dir, drawn), mapScratchWord(h, firstLayer));
+    scratch[scratchBase + index] = dvec4(globePosition(dir, h), mapScratchWord(h, firstLayer));
   }
   memoryBarrierBuffer();
   barrier();

@@ -54,14 +54,15 @@ void readMip(vk::Device& device, VkImage image, uint32_t mip, uint32_t side, uin
 }
 
 // The surface texture's texels of `nodes` generated into slots 0..n-1 at map scale `scale` (grid
-// `cells`, default kCells), per node in the reference's order (mip 0 row by row, then mip 1:
-// normalMapReference); on a planet with an overlay each slot's colour layer goes to `colours`,
-// likewise.
+// `cells`, default kCells; with the sea surface drawn where `waterSurface`), per node in the
+// reference's order (mip 0 row by row, then mip 1: normalMapReference); on a planet with an overlay
+// each slot's colour layer goes to `colours`, likewise.
 std::vector<std::vector<StoredTexel>> generateMaps(vk::Device& device, const ElevationModel& model,
                                                    const std::vector<NodeId>& nodes, uint32_t scale,
                                                    std::vector<std::vector<StoredTexel>>* colours = nullptr,
-                                                   uint32_t cells = kCells) {
-  GpuPayloadGenerator gen(device, model, cells, GLOBE_PAYLOAD_MAX_BATCH, 1, GenerationPrecision::kDouble, false, scale);
+                                                   uint32_t cells = kCells, bool waterSurface = false) {
+  GpuPayloadGenerator gen(device, model, cells, GLOBE_PAYLOAD_MAX_BATCH, 1, GenerationPrecision::kDouble, waterSurface,
+                          scale);
   gen.reserveSlots(uint32_t(nodes.size()));
   EXPECT_EQ(generateIntoSlots(gen, nodes).size(), nodes.size());
   const SurfaceTextures& textures = gen.surfaceTextures();
@@ -274,6 +275,48 @@ TEST_F(NormalMapTest, ChildParentLevelEqualsParentMap) {
   // The balanced preset's grid 8 at scale 4: the same 32 texels a node.
   const auto balanced = generateMaps(device(), model, nodes, 4, nullptr, 8);
   for (size_t base = 0; base < nodes.size(); base += 5) expectChildrenShowParent(balanced, base, 8 * 4);
+}
+
+// Under a drawn sea, the texels beside the coast take the colour of the land beside them (the mean
+// ground of the land in their 3 x 3, colourElevation in payload_generate.glsl): the sea hides them,
+// but bilinear filtering blends them into the land texels, and taken at the sea surface they were
+// beach, drawn as a bright band of teeth along every coast seen from afar. At the flyover's coast
+// (17N 107W), levels 5 to 11 (its views from 800 km down): the GPU's texels within one 8-bit step of
+// the reference with the sea on, and the sea texels with land in their 3 x 3 within 12 luma steps of
+// that land's mean on average (4.5; taken at the sea surface, 23 at levels 5 to 8 alone, where the
+// land texels beside the sea are 25 steps from their land neighbours).
+TEST_F(NormalMapTest, TexelsUnderTheSeaBesideTheCoastTakeTheLandsColour) {
+  const ElevationModel& model = earthlikeModel();
+  const uint32_t cells = 8, scale = 4, m = cells * scale, side = m + 4;
+  const FacePoint coast = RhombusFaceMapping::get().locate(directionFromLatLon(17.0, -106.97));
+  std::vector<NodeId> nodes;
+  for (int level : {5, 6, 7, 8, 11}) nodes.push_back(nodeAt(coast, level));
+  const auto maps = generateMaps(device(), model, nodes, scale, nullptr, cells, /*waterSurface=*/true);
+  int coastal = 0;
+  double lumaSteps = 0.0;
+  for (size_t k = 0; k < nodes.size(); ++k) {
+    SCOPED_TRACE(::testing::Message() << "level " << int(nodes[k].level));
+    const auto reference = normalMapReference(model, makePayloadJob(nodes[k], 0, model), cells, scale, true);
+    ASSERT_EQ(reference.size(), maps[k].size());
+    for (size_t t = 0; t < reference.size(); ++t)
+      ASSERT_LE(byteStep(maps[k][t], expectedTexel(reference[t], nodes[k].face)), 1) << "texel " << t;
+    for (uint32_t y = 1; y + 1 < side; ++y)
+      for (uint32_t x = 1; x + 1 < side; ++x) {
+        const StoredTexel& sea = maps[k][y * side + x];
+        if (sea[3] >= 128) continue;  // the coast field's byte: below 128 under the sea
+        double landLuma = 0.0;
+        int land = 0;
+        for (uint32_t v = y - 1; v <= y + 1; ++v)
+          for (uint32_t u = x - 1; u <= x + 1; ++u)
+            if (maps[k][v * side + u][3] > 128) landLuma += maps[k][v * side + u][2], ++land;
+        if (land == 0) continue;
+        ++coastal;
+        lumaSteps += std::abs(double(sea[2]) - landLuma / land);
+      }
+  }
+  ASSERT_GT(coastal, 100);
+  RecordProperty("mean_luma_steps_from_land", std::to_string(lumaSteps / coastal));
+  EXPECT_LT(lumaSteps / coastal, 12.0);
 }
 
 // Imagery ([[imagery]], docs/imagery.md) and a vector line over it in the surface textures: the GPU's
