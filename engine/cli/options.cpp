@@ -186,9 +186,9 @@ void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid) {
                  "(docs/rendering.md, \"Imagery LOD\"; default: the preset's)")
       ->check(CLI::IsMember({"on", "off"}));
   cmd.add_option("--normal-map-scale", options.normalMapScale,
-                 "Surface texture texels (normal, colour, coast per pixel) per grid cell: 1, 2 or 4; 0 = none, "
+                 "Surface texture texels (normal, colour, coast per pixel) per grid cell: 1, 2, 4 or 8; 0 = none, "
                  "light per vertex (docs/rendering.md, \"Surface textures\"; default: the preset's)")
-      ->check(CLI::IsMember({0U, 1U, 2U, 4U}));
+      ->check(CLI::IsMember({0U, 1U, 2U, 4U, 8U}));
   cmd.add_option("--shadows", options.shadows,
                  "on (cast shadows of the relief from the sun, with surface textures) or off (docs/rendering.md, "
                  "\"Shadows\"; default: the preset's)")

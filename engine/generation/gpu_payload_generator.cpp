@@ -66,8 +66,8 @@ GpuPayloadGenerator::GpuPayloadGenerator(vk::Device& device, const ElevationMode
              "face corners") {
   if (!gpu::validGridCells(cells))
     throw std::runtime_error("grid cells must be a power of two in [8, 256], got " + std::to_string(cells));
-  if (normalMapScale != 0 && normalMapScale != 1 && normalMapScale != 2 && normalMapScale != 4)
-    throw std::runtime_error("normal map scale must be 0, 1, 2 or 4, got " + std::to_string(normalMapScale));
+  if (!gpu::validNormalMapScale(normalMapScale))
+    throw std::runtime_error("normal map scale must be 0, 1, 2, 4 or 8, got " + std::to_string(normalMapScale));
   std::memcpy(elevation_.mapped(), &model.params(), sizeof(gpu::ElevationParams));
   std::memcpy(colourRamp_.mapped(), &model.colourRamp(), sizeof(gpu::ColourRampParams));
   std::memcpy(landCover_.mapped(), &model.landCover(), sizeof(gpu::LandCoverParams));

@@ -65,8 +65,8 @@ const char* atmosphereDetailName(AtmosphereDetail detail) {
 Status validateTerrainSettings(const TerrainSettings& s) {
   if (!gpu::validGridCells(s.gridCells))
     return Error::inField("grid_cells", "must be a power of two in [8, 256], got " + std::to_string(s.gridCells));
-  if (s.normalMapScale != 0 && s.normalMapScale != 1 && s.normalMapScale != 2 && s.normalMapScale != 4)
-    return Error::inField("normal_map_scale", "must be 0, 1, 2 or 4, got " + std::to_string(s.normalMapScale));
+  if (!gpu::validNormalMapScale(s.normalMapScale))
+    return Error::inField("normal_map_scale", "must be 0, 1, 2, 4 or 8, got " + std::to_string(s.normalMapScale));
   if (!std::isfinite(s.originThreshold_m) || s.originThreshold_m < 0)
     return Error::inField("origin_threshold_m", "must be a finite number >= 0");
   if (!(std::isfinite(s.viewHeight_px) && s.viewHeight_px >= 1.0))

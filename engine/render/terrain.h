@@ -44,7 +44,7 @@ inline constexpr double kGroundDetailRange_m = 200.0;
 
 struct TerrainSettings {
   uint32_t gridCells = 32;  // cells per node side: power of two in [8, 256]
-  // Normal map cells per grid cell (1, 2 or 4): each payload's normal and colour map has
+  // Normal map cells per grid cell (1, 2, 4 or 8): each payload's normal and colour map has
   // normalMapScale * gridCells cells per side (docs/rendering.md, "Surface textures"). 0: no maps, the
   // light and colour per vertex (cheaper per fragment on lavapipe).
   uint32_t normalMapScale = 1;

@@ -72,7 +72,7 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
       skirts_(device, terrainDesc({colourFormat, samples}, false, VK_CULL_MODE_NONE, positions,
                                   surfaceShading(style, atmosphere_ != nullptr, false))) {
   assert(gpu::validGridCells(gridCells));
-  assert(style.normalMapScale <= 4 && (style.normalMapScale & (style.normalMapScale - 1)) == 0);
+  assert(gpu::validNormalMapScale(style.normalMapScale));
   OptionalPipelines optional = pendingOptional_.get();
   water_ = std::move(optional.water);
   waterSkirts_ = std::move(optional.waterSkirts);

@@ -91,7 +91,7 @@ struct TerrainStyle {
   // (terrain_water.frag), which colours fragments below sea level per fragment.
   Water water;
   double seaLevel_m = 0.0;
-  // Map cells per grid cell of the payloads' surface textures (1, 2 or 4; payload_layout.h): the
+  // Map cells per grid cell of the payloads' surface textures (1, 2, 4 or 8; payload_layout.h): the
   // fragment stages shade from them (PayloadPages::surfaces). 0: payloads without maps (e.g. filled
   // on the CPU), lit per vertex from the mesh's normals and albedo.
   uint32_t normalMapScale = 0;

@@ -25,7 +25,7 @@ struct NormalMapTexel {
   glm::vec4 colourLayer{0.0f};  // with an overlay: the colour layer's texel, linear (overlaidTexel)
 };
 
-// The surface textures of `job`'s node with `cells` grid cells and map scale `scale` (1, 2, 4):
+// The surface textures of `job`'s node with `cells` grid cells and map scale `scale` (1, 2, 4, 8):
 // mip 0's texels row by row, then mip 1's (payload_layout.h). Procedural elevation only: on a planet with sources the
 // kernel also blends the mesh samples' source terms, which this reference does not.
 // `waterSurface`: as the kernel's switch (texels under the sea take their colour from the land beside them,

@@ -91,6 +91,9 @@ struct uvec4_ {
 // Grid cells per node side the layout takes: a power of two in [MIN, MAX] (validGridCells).
 #define GLOBE_PAYLOAD_MIN_CELLS 8u
 #define GLOBE_PAYLOAD_MAX_CELLS 256u
+// Surface texture map cells per grid cell the layout takes: 0 (no surface textures) or a power of
+// two up to MAX (validNormalMapScale).
+#define GLOBE_PAYLOAD_MAX_NORMAL_MAP_SCALE 8u
 // Samples per side including the ring.
 #define GLOBE_PAYLOAD_SAMPLES_PER_SIDE(cells) ((cells) + 3u)
 // vec4 entries of a slot's mesh: positions then normals (the whole slot without a normal map).
@@ -186,6 +189,9 @@ static_assert(sizeof(PayloadJob) == 96);
 static_assert(sizeof(PayloadResult) == 32);
 constexpr bool validGridCells(uint cells) {
   return cells >= GLOBE_PAYLOAD_MIN_CELLS && cells <= GLOBE_PAYLOAD_MAX_CELLS && (cells & (cells - 1u)) == 0u;
+}
+constexpr bool validNormalMapScale(uint scale) {
+  return scale <= GLOBE_PAYLOAD_MAX_NORMAL_MAP_SCALE && (scale & (scale - 1u)) == 0u;
 }
 }  // namespace globe::gpu
 #endif

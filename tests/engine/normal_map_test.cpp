@@ -29,9 +29,9 @@ namespace globe::testing {
 namespace {
 
 constexpr uint32_t kCells = 16;
-// The grids and map scales tested against the reference: every scale at grid 16, and the balanced
-// preset's grid 8 at scale 4 (quality.cpp).
-constexpr std::array<std::pair<uint32_t, uint32_t>, 4> kGridsAndScales{{{16, 1}, {16, 2}, {16, 4}, {8, 4}}};
+// The grids and map scales tested against the reference: scales 1 to 4 at grid 16, and the balanced
+// preset's grid 8 at its scale 4 and at scale 8 (quality.cpp).
+constexpr std::array<std::pair<uint32_t, uint32_t>, 5> kGridsAndScales{{{16, 1}, {16, 2}, {16, 4}, {8, 4}, {8, 8}}};
 
 // One texel of the surface texture as stored (payload_layout.h): RGBA8, the normal octahedral in the
 // face frame, the luma of the albedo's square root, the coast field.
@@ -272,9 +272,11 @@ TEST_F(NormalMapTest, ChildParentLevelEqualsParentMap) {
   }
   const auto maps = generateMaps(device(), model, nodes, scale);
   for (size_t base = 0; base < nodes.size(); base += 5) expectChildrenShowParent(maps, base, m);
-  // The balanced preset's grid 8 at scale 4: the same 32 texels a node.
-  const auto balanced = generateMaps(device(), model, nodes, 4, nullptr, 8);
-  for (size_t base = 0; base < nodes.size(); base += 5) expectChildrenShowParent(balanced, base, 8 * 4);
+  // The balanced preset's grid 8 at scale 4 (32 texels a node) and at scale 8 (64).
+  for (uint32_t grid8Scale : {4u, 8u}) {
+    const auto grid8 = generateMaps(device(), model, nodes, grid8Scale, nullptr, 8);
+    for (size_t base = 0; base < nodes.size(); base += 5) expectChildrenShowParent(grid8, base, 8 * grid8Scale);
+  }
 }
 
 // Under a drawn sea, the texels beside the coast take the colour of the land beside them (the mean
@@ -283,11 +285,12 @@ TEST_F(NormalMapTest, ChildParentLevelEqualsParentMap) {
 // beach, drawn as a bright band of teeth along every coast seen from afar. At the flyover's coast
 // (17N 107W), levels 5 to 11 (its views from 800 km down): the GPU's texels within one 8-bit step of
 // the reference with the sea on, and the sea texels with land in their 3 x 3 within 12 luma steps of
-// that land's mean on average (4.5; taken at the sea surface, 23 at levels 5 to 8 alone, where the
-// land texels beside the sea are 25 steps from their land neighbours).
+// that land's mean on average (2.2 with 64 texels a node, 4.5 with 32; taken at the sea surface,
+// with 32, 23 at levels 5 to 8 alone, where the land texels beside the sea are 25 steps from their
+// land neighbours).
 TEST_F(NormalMapTest, TexelsUnderTheSeaBesideTheCoastTakeTheLandsColour) {
   const ElevationModel& model = earthlikeModel();
-  const uint32_t cells = 8, scale = 4, m = cells * scale, side = m + 4;
+  const uint32_t cells = 8, scale = 4, m = cells * scale, side = m + 4;  // the balanced preset's
   const FacePoint coast = RhombusFaceMapping::get().locate(directionFromLatLon(17.0, -106.97));
   std::vector<NodeId> nodes;
   for (int level : {5, 6, 7, 8, 11}) nodes.push_back(nodeAt(coast, level));
