@@ -84,7 +84,7 @@ std::vector<NodeId> benchNodes(size_t count) {
 
 // Warm: ms per node payload, `batch` nodes per submit (the pool's budget is 8 per frame); third
 // argument 0 on earthlike's sphere, 1 on WGS84, 2 on earthlike without land cover; fourth the normal map's scale (0:
-// none, as collision meshes; 1, 2, 4: the renderer's payloads, docs/rendering.md "Surface textures").
+// none, as collision meshes; 1, 2, 4, 8: the renderer's payloads, docs/rendering.md "Surface textures").
 void BM_GpuPayload(benchmark::State& state) {
   const uint32_t cells = uint32_t(state.range(0));
   const uint32_t batch = uint32_t(state.range(1));
@@ -119,6 +119,7 @@ void BM_GpuPayload(benchmark::State& state) {
 BENCHMARK(BM_GpuPayload)
     ->ArgsProduct({{16, 32, 64, 128}, {8, 32}, {0}, {0}})
     ->ArgsProduct({{16}, {8}, {0}, {1, 2, 4}})
+    ->ArgsProduct({{8}, {8}, {0, 2}, {0, 4, 8}})  // balanced's grid, with and without land cover
     ->ArgsProduct({{16}, {8, 32}, {2}, {0, 1}})
     ->Args({64, 32, 1, 0})
     ->Args({128, 32, 1, 0})
