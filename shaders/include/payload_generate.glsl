@@ -300,8 +300,8 @@ float surfaceTexel(PayloadJob job, uint scratchBase, uint at, uint row, uint mip
   storeSurfaceTexel(mip, texel, encodeSurfaceTexel(job, normal, albedo, coastField(at, job, mip + 1u)));
   // With an overlay the colour layer: the albedo's square root per texel and the vectors' coverage
   // (payload_layout.h).
-  if (kOverlay != 0u)
-    storeSurfaceTexel(mip, texel + ivec3(0, 0, 1), colourLayerTexel(albedo, point, kWaterSurface != 0u && ground < float(GLOBE_ELEVATION_PARAMS.sea_level_m)));
+  bool underSea = kWaterSurface != 0u && ground < float(GLOBE_ELEVATION_PARAMS.sea_level_m);
+  if (kOverlay != 0u) storeSurfaceTexel(mip, texel + ivec3(0, 0, 1), colourLayerTexel(albedo, point, underSea));
   return ground;
 }
 
