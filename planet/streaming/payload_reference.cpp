@@ -211,17 +211,20 @@ glm::vec3 payloadSampleAlbedo(const ElevationModel& model, const glm::dvec3& dir
 namespace {
 
 // The mesh samples of a job with their one-sample ring (i, j in [-1, cells + 1]): drawn positions,
-// hole masks, drawn elevations and the land cover's first layers, row-major.
+// hole masks, drawn elevations, grounds (as the slot's floats) and the land cover's first layers,
+// row-major.
 struct SampleGrid {
   int n = 0, side = 0;
   std::vector<glm::dvec3> positions;
   std::vector<double> holes, elevations, firstLayers;
+  std::vector<float> grounds;
   explicit SampleGrid(uint32_t cells) : n(int(cells)), side(int(cells) + 3) {
     const size_t count = size_t(side) * size_t(side);
     positions.resize(count);
     holes.resize(count);
     elevations.resize(count);
     firstLayers.resize(count);
+    grounds.resize(count);
   }
   size_t at(int i, int j) const { return size_t(j + 1) * size_t(side) + size_t(i + 1); }
 };
@@ -249,6 +252,7 @@ RadiusRange samplePositions(const ElevationModel& model, const gpu::PayloadJob& 
       grid.positions[index] = p;
       grid.holes[index] = term.hole;
       grid.elevations[index] = drawn;
+      grid.grounds[index] = float(h);
       grid.firstLayers[index] = cover ? model.firstLayer_m(dir) : 0.0;
       glm::dvec3 rel = p - centre;
       glm::dvec3 quantised{std::floor(rel.x / q + 0.5) * q, std::floor(rel.y / q + 0.5) * q,
@@ -264,9 +268,25 @@ RadiusRange samplePositions(const ElevationModel& model, const gpu::PayloadJob& 
   return range;
 }
 
+// = vertexColourWord (payload_generate.glsl): the elevation vertex (vi, vj)'s colour is taken at; its
+// drawn one, or under a drawn sea the mean ground of the land among its eight neighbours (the sea
+// surface where there is none), in float as the kernel.
+double vertexColourElevation(const SampleGrid& grid, int vi, int vj, bool sea, float seaLevel_m) {
+  const size_t vertex = grid.at(vi, vj);
+  if (!sea || grid.grounds[vertex] >= seaLevel_m) return grid.elevations[vertex];
+  float sum = 0.0f, count = 0.0f;
+  for (int dj = -1; dj <= 1; ++dj)
+    for (int di = -1; di <= 1; ++di) {
+      const float g = grid.grounds[grid.at(vi + di, vj + dj)];
+      sum += g >= seaLevel_m ? g : 0.0f;
+      count += g >= seaLevel_m ? 1.0f : 0.0f;
+    }
+  return double(count > 0.0f ? sum / count : seaLevel_m);
+}
+
 // The slot's normals (central differences of the grid; the ring takes its nearest vertex's) with the
 // packed albedo and hole mask, and the land cover masks where the slot has room for them.
-void sampleNormalsAndSurface(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
+void sampleNormalsAndSurface(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells, bool sea,
                              const SampleGrid& grid, std::span<glm::vec4> slot) {
   const bool writeCover = model.landCover().class_count > 0 && slot.size() >= size_t(GLOBE_PAYLOAD_SLOT_VEC4(cells));
   const size_t normals = size_t(grid.side) * size_t(grid.side);
@@ -289,8 +309,9 @@ void sampleNormalsAndSurface(const ElevationModel& model, const gpu::PayloadJob&
       const glm::dvec3 dir = payloadSampleDirection(job, cells, vi, vj);
       const glm::vec3 albedo = overlaidAlbedo(
           model.overlay(),
-          payloadSampleAlbedo(model, dir, grid.elevations[vertex], grid.firstLayers[vertex], cosSlope, masks), dir,
-          payloadSampleSpacing_m(job, cells, model.radius_m()));
+          payloadSampleAlbedo(model, dir, vertexColourElevation(grid, vi, vj, sea, float(model.seaLevel_m())),
+                              grid.firstLayers[vertex], cosSlope, masks),
+          dir, payloadSampleSpacing_m(job, cells, model.radius_m()));
       const size_t index = grid.at(i, j);
       if (writeCover) writeCoverMasks(slot, GLOBE_PAYLOAD_COVER_OFFSET(cells), index, masks);
       slot[normals + index] =
@@ -306,8 +327,9 @@ RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::Payload
   // Slots for meshes only (collision, tests) may end before the land cover masks, which are then not written.
   assert(slot.size() >= size_t(GLOBE_PAYLOAD_COVER_OFFSET(cells)));
   SampleGrid grid(cells);
-  const RadiusRange range = samplePositions(model, job, cells, waterSurface && model.drawsWater(), grid, slot);
-  sampleNormalsAndSurface(model, job, cells, grid, slot);
+  const bool sea = waterSurface && model.drawsWater();
+  const RadiusRange range = samplePositions(model, job, cells, sea, grid, slot);
+  sampleNormalsAndSurface(model, job, cells, sea, grid, slot);
   return range;
 }
 

@@ -402,6 +402,24 @@ void meshPositions(PayloadJob job, uint slotBase, uint scratchBase) {
   sharedLowest[gl_LocalInvocationID.x] = localLowest;
 }
 
+// The surface word (scratchSurfaceWord) a mesh sample's colour is taken at, `local` its index in
+// the slot: its own; under a drawn sea, as the surface textures' texels (colourElevation), the mean
+// ground of the land among its eight neighbours (the sea surface where there is none). Mirrored by
+// fillPayloadReference.
+double vertexColourWord(uint slotBase, uint at, uint local, int s) {
+  float sea = float(GLOBE_ELEVATION_PARAMS.sea_level_m);
+  if (kWaterSurface == 0u || payloads[slotBase + local].w >= sea) return scratch[at].w;
+  float sum = 0.0, count = 0.0;
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      float g = payloads[slotBase + uint(int(local) + dy * s + dx)].w;  // the ground (pass 1)
+      sum += g >= sea ? g : 0.0;
+      count += g >= sea ? 1.0 : 0.0;
+    }
+  float elevation = count > 0.0 ? sum / count : sea;
+  return scratchSurfaceWord(double(elevation), double(uintBitsToFloat(unpackDouble2x32(scratch[at].w)).y));
+}
+
 // Pass 2: every sample's normal (central differences of the double positions), albedo and surface
 // word, and with land cover its masks; returns this invocation's largest morph deviation.
 double meshNormals(PayloadJob job, uint slotBase, uint scratchBase) {
@@ -425,8 +443,9 @@ double meshNormals(PayloadJob job, uint slotBase, uint scratchBase) {
     dvec3 up = kGlobeEllipsoid != 0u ? globeEllipsoidGradient(scratch[at].xyz) : normalised(scratch[at].xyz);
     double cosSlope = clamp(dot(normal, up), 0.0lf, 1.0lf);
     uvec2 masks;
-    vec3 albedo = surfaceAlbedo(scratch[at].w, kLandCover != 0u ? sampleDirection(job, push.cells, i, j) : dvec3(0.0lf),
-                                cosSlope, masks);
+    double word = vertexColourWord(slotBase, at, at - scratchBase, s);
+    vec3 albedo = surfaceAlbedo(word, kLandCover != 0u ? sampleDirection(job, push.cells, i, j) : dvec3(0.0lf), cosSlope,
+                                masks);
     albedo = overlaid(albedo, uint((j + 1) * s + (i + 1)));
     payloads[normalBase + index] = vec4(vec3(normal), packPayloadSurface(albedo, globeSourceHole(job.sourceBase, index)));
     if (kLandCover != 0u) payloadTexels[coverBase * 2u + index] = masks;

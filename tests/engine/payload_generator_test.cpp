@@ -124,8 +124,9 @@ TEST_P(PayloadGeneratorShapeTest, MatchesCpuReferenceAtEveryDepth) {
 }
 
 // With the sea surface (the renderer's payloads on a planet with [water]): samples below sea level
-// lie on the sea, keep the ground's elevation in w and the shore's colour, the job's centre is on
-// the visible surface, and the slots with ground below sea level are the ones marked as water.
+// lie on the sea, keep the ground's elevation in w and take the colour of the land beside them
+// (vertexColourWord), the job's centre is on the visible surface, and the slots with ground below
+// sea level are the ones marked as water.
 TEST_F(PayloadGeneratorTest, WaterSurfaceMatchesCpuReferenceAndMarksTheWetSlots) {
   ASSERT_TRUE(model_->drawsWater());
   auto nodes = testNodes();
