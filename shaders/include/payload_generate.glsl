@@ -88,11 +88,17 @@ vec4 colourLayerTexel(vec3 albedo, uint point, bool underSea) {
   return vec4(underSea && v.a > 0.0 ? v.rgb : sqrt(clamp(albedo, 0.0, 1.0)), v.a);
 }
 
-// What scratch.w holds for a sample: its drawn elevation (the colour ramp's input), or with land
-// cover the drawn elevation and the first layer's value as two floats (the climate's inputs).
-double scratchSurfaceWord(double drawn, double firstLayer) {
-  if (kLandCover == 0u) return drawn;
-  return packDouble2x32(uvec2(floatBitsToUint(float(drawn)), floatBitsToUint(float(firstLayer))));
+// The surface word of a sample (surfaceAlbedo's input): an elevation (the colour ramp's input), or
+// with land cover that elevation and the first layer's value as two floats (the climate's inputs).
+// The mesh samples' scratch.w holds it with their ground (vertexColourWord).
+double scratchSurfaceWord(double elevation, double firstLayer) {
+  if (kLandCover == 0u) return elevation;
+  return packDouble2x32(uvec2(floatBitsToUint(float(elevation)), floatBitsToUint(float(firstLayer))));
+}
+
+// The elevation (a float) in a surface word.
+float surfaceWordElevation(double word) {
+  return kLandCover == 0u ? float(word) : uintBitsToFloat(unpackDouble2x32(word)).x;
 }
 
 // A sample's masks and albedo from what scratchSurfaceWord stored, its direction and slope.
@@ -339,8 +345,8 @@ double fillNormalMap(PayloadJob job, uint scratchBase) {
 
 // One sample's planet-centred position (double) for direction `dir`: the elevation with the job's
 // source terms, on the sea surface where the ground is below it (kWaterSurface). h: the ground's
-// elevation, drawn: the surface's, firstLayer: the first layer's value (the land cover's climate).
-dvec3 samplePosition(PayloadJob job, dvec3 dir, uint index, out double h, out double drawn, out double firstLayer) {
+// elevation, firstLayer: the first layer's value (the land cover's climate).
+dvec3 samplePosition(PayloadJob job, dvec3 dir, uint index, out double h, out double firstLayer) {
 #ifdef GLOBE_PAYLOAD_FLOAT
   // What an all-float pipeline computes: the direction rounded to float, the elevation and the
   // planet-centred position in float (a 0.5 m grid at Earth radius), then made relative.
@@ -356,12 +362,11 @@ dvec3 samplePosition(PayloadJob job, dvec3 dir, uint index, out double h, out do
     pFloat = scaled / sqrt(dot(scaled, dirFloat)) + dirFloat * drawnFloat;
   }
   h = double(hFloat);
-  drawn = double(drawnFloat);
   return dvec3(pFloat);
 #else
   // The geodetic surface point plus the elevation along the normal (= globe::Ellipsoid::position).
   h = globeApplySources(globeElevationWithFirstLayer(dir, firstLayer), job.sourceBase, index);
-  drawn = kWaterSurface != 0u ? max(h, GLOBE_ELEVATION_PARAMS.sea_level_m) : h;
+  double drawn = kWaterSurface != 0u ? max(h, GLOBE_ELEVATION_PARAMS.sea_level_m) : h;
   precise dvec3 p = globePosition(dir, drawn);
   return p;
 #endif
@@ -382,11 +387,10 @@ void meshPositions(PayloadJob job, uint slotBase, uint scratchBase) {
   for (uint index = gl_LocalInvocationID.x; index < samples; index += GLOBE_PAYLOAD_WORKGROUP) {
     int i = int(index % uint(s)) - 1;
     int j = int(index / uint(s)) - 1;
-    double h, drawn, firstLayer;
-    dvec3 p = samplePosition(job, sampleDirection(job, push.cells, i, j), index, h, drawn, firstLayer);
-    // w: the drawn elevation, which the sample's colour is taken at (a sea floor is coloured as the
-    // shore above it: the water's own colour is drawn over it).
-    scratch[scratchBase + index] = dvec4(p, scratchSurfaceWord(drawn, firstLayer));
+    double h, firstLayer;
+    dvec3 p = samplePosition(job, sampleDirection(job, push.cells, i, j), index, h, firstLayer);
+    // w: the ground, which the sample's colour is taken from (vertexColourWord).
+    scratch[scratchBase + index] = dvec4(p, scratchSurfaceWord(h, firstLayer));
     precise dvec3 rel = p - centre;
     precise dvec3 quantised = floor(rel / q + 0.5lf) * q;
     payloads[slotBase + index] = vec4(vec3(quantised), float(h));
@@ -402,17 +406,17 @@ void meshPositions(PayloadJob job, uint slotBase, uint scratchBase) {
   sharedLowest[gl_LocalInvocationID.x] = localLowest;
 }
 
-// The surface word (scratchSurfaceWord) a mesh sample's colour is taken at, `local` its index in
-// the slot: its own; under a drawn sea, as the surface textures' texels (colourElevation), the mean
-// ground of the land among its eight neighbours (the sea surface where there is none). Mirrored by
+// The surface word a mesh sample's colour is taken at (scratch entry `at`, `s` entries a row): its
+// ground's; under a drawn sea, as the surface textures' texels (colourElevation), the mean ground of
+// the land among its eight neighbours (the sea surface where there is none). Mirrored by
 // fillPayloadReference.
-double vertexColourWord(uint slotBase, uint at, uint local, int s) {
+double vertexColourWord(uint at, int s) {
   float sea = float(GLOBE_ELEVATION_PARAMS.sea_level_m);
-  if (kWaterSurface == 0u || payloads[slotBase + local].w >= sea) return scratch[at].w;
+  if (kWaterSurface == 0u || surfaceWordElevation(scratch[at].w) >= sea) return scratch[at].w;
   float sum = 0.0, count = 0.0;
   for (int dy = -1; dy <= 1; ++dy)
     for (int dx = -1; dx <= 1; ++dx) {
-      float g = payloads[slotBase + uint(int(local) + dy * s + dx)].w;  // the ground (pass 1)
+      float g = surfaceWordElevation(scratch[uint(int(at) + dy * s + dx)].w);
       sum += g >= sea ? g : 0.0;
       count += g >= sea ? 1.0 : 0.0;
     }
@@ -443,7 +447,7 @@ double meshNormals(PayloadJob job, uint slotBase, uint scratchBase) {
     dvec3 up = kGlobeEllipsoid != 0u ? globeEllipsoidGradient(scratch[at].xyz) : normalised(scratch[at].xyz);
     double cosSlope = clamp(dot(normal, up), 0.0lf, 1.0lf);
     uvec2 masks;
-    double word = vertexColourWord(slotBase, at, at - scratchBase, s);
+    double word = vertexColourWord(at, s);
     vec3 albedo = surfaceAlbedo(word, kLandCover != 0u ? sampleDirection(job, push.cells, i, j) : dvec3(0.0lf), cosSlope,
                                 masks);
     albedo = overlaid(albedo, uint((j + 1) * s + (i + 1)));
