@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace globe {
@@ -43,15 +44,11 @@ SurfaceGrid evaluateGrid(const ElevationModel& model, const gpu::PayloadJob& job
 // land among the eight neighbours of the texel at `at`; the sea surface where there is none.
 float colourElevation(const SurfaceGrid& grid, size_t at, float ground, bool sea, float seaLevel_m) {
   if (!sea || ground >= seaLevel_m) return ground;
-  float sum = 0.0f, count = 0.0f;
+  std::array<float, 9> grounds{};
   const long row = grid.side;
-  for (long dy = -1; dy <= 1; ++dy)
-    for (long dx = -1; dx <= 1; ++dx) {
-      const float g = float(grid.points[size_t(long(at) + dy * row + dx)].w);
-      sum += g >= seaLevel_m ? g : 0.0f;
-      count += g >= seaLevel_m ? 1.0f : 0.0f;
-    }
-  return count > 0.0f ? sum / count : seaLevel_m;
+  for (long k = 0; k < 9; ++k)
+    grounds[size_t(k)] = float(grid.points[size_t(long(at) + (k / 3 - 1) * row + k % 3 - 1)].w);
+  return shoreElevation_m(grounds, seaLevel_m);
 }
 
 // The texels of one mip from its grid: texel (x, y) is grid point (x + 1, y + 1); `step`: texel width

@@ -168,6 +168,15 @@ namespace {
 uint32_t unorm8(float c) { return uint32_t(std::lround(std::clamp(c, 0.0f, 1.0f) * 255.0f)); }
 }  // namespace
 
+float shoreElevation_m(const std::array<float, 9>& grounds, float seaLevel_m) {
+  float sum = 0.0f, count = 0.0f;
+  for (const float g : grounds) {
+    sum += g >= seaLevel_m ? g : 0.0f;
+    count += g >= seaLevel_m ? 1.0f : 0.0f;
+  }
+  return count > 0.0f ? sum / count : seaLevel_m;
+}
+
 float packPayloadSurface(const glm::vec3& albedo, double hole) {
   const uint32_t word = unorm8(std::sqrt(std::clamp(albedo.x, 0.0f, 1.0f))) |
                         (unorm8(std::sqrt(std::clamp(albedo.y, 0.0f, 1.0f))) << 8) |
@@ -274,14 +283,9 @@ RadiusRange samplePositions(const ElevationModel& model, const gpu::PayloadJob& 
 double vertexColourElevation(const SampleGrid& grid, int vi, int vj, bool sea, float seaLevel_m) {
   const size_t vertex = grid.at(vi, vj);
   if (!sea || grid.grounds[vertex] >= seaLevel_m) return grid.elevations[vertex];
-  float sum = 0.0f, count = 0.0f;
-  for (int dj = -1; dj <= 1; ++dj)
-    for (int di = -1; di <= 1; ++di) {
-      const float g = grid.grounds[grid.at(vi + di, vj + dj)];
-      sum += g >= seaLevel_m ? g : 0.0f;
-      count += g >= seaLevel_m ? 1.0f : 0.0f;
-    }
-  return double(count > 0.0f ? sum / count : seaLevel_m);
+  std::array<float, 9> grounds{};
+  for (int k = 0; k < 9; ++k) grounds[size_t(k)] = grid.grounds[grid.at(vi + k % 3 - 1, vj + k / 3 - 1)];
+  return double(shoreElevation_m(grounds, seaLevel_m));
 }
 
 // The slot's normals (central differences of the grid; the ring takes its nearest vertex's) with the

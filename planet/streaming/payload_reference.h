@@ -9,6 +9,7 @@
 #include "planet/model/elevation_model.h"
 #include "shaders/include/payload_layout.h"
 
+#include <array>
 #include <glm/vec4.hpp>
 #include <span>
 #include <vector>
@@ -61,6 +62,10 @@ RadiusRange fillPayloadReference(const ElevationModel& model, const gpu::Payload
 // layer there (only read with land cover).
 glm::vec3 payloadSampleAlbedo(const ElevationModel& model, const glm::dvec3& dir, double drawn_m, double firstLayer_m,
                               double cosSlope, LandCoverMasks& masks);
+// = shoreElevation (payload_generate.glsl): the elevation a colour under a drawn sea is taken at,
+// from the grounds (as the kernel's floats) of a sample's 3 x 3 neighbourhood: the mean of those on
+// land (at or above `seaLevel_m`), or the sea surface where there is none.
+float shoreElevation_m(const std::array<float, 9>& grounds, float seaLevel_m);
 // A payload sample's surface word (normal.w, shaders/include/payload_surface.glsl): the square root
 // of the linear albedo in bytes 0-2 and the hole mask in byte 3, as the bits of a float.
 float packPayloadSurface(const glm::vec3& albedo, double hole);

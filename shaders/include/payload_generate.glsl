@@ -262,22 +262,31 @@ void storeSurfaceTexel(uint mip, ivec3 texel, vec4 encoded) {
     imageStore(parentSurfaceImage, texel, encoded);
 }
 
+// The elevation a colour under a drawn sea is taken at: the mean ground of the land among the eight
+// neighbours of scratch entry `at` (`row` entries a row), the sea surface where there is none; the
+// entries a surface grid's (`mapGrid`: mapScratchWord) or the mesh's (scratchSurfaceWord). Mirrored
+// by globe::shoreElevation_m.
+float shoreElevation(uint at, int row, bool mapGrid) {
+  float sea = float(GLOBE_ELEVATION_PARAMS.sea_level_m);
+  float sum = 0.0, count = 0.0;
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      uint n = uint(int(at) + dy * row + dx);
+      float g = mapGrid ? scratchGround(n) : surfaceWordElevation(scratch[n].w);
+      sum += g >= sea ? g : 0.0;
+      count += g >= sea ? 1.0 : 0.0;
+    }
+  return count > 0.0 ? sum / count : sea;
+}
+
 // The elevation a texel's colour is taken at: its ground; under a drawn sea, the mean ground of the
 // land among its eight neighbours (the sea surface where there is none). The sea hides the texel,
 // but the sampler blends it into the land texels beside it: taken at the sea surface it was beach, a
 // bright band a texel wide drawn in teeth along every coast seen from afar (docs/rendering.md,
 // "Surface textures").
 float colourElevation(uint at, uint row, float ground) {
-  float sea = float(GLOBE_ELEVATION_PARAMS.sea_level_m);
-  if (kWaterSurface == 0u || ground >= sea) return ground;
-  float sum = 0.0, count = 0.0;
-  for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx) {
-      float g = scratchGround(uint(int(at) + dy * int(row) + dx));
-      sum += g >= sea ? g : 0.0;
-      count += g >= sea ? 1.0 : 0.0;
-    }
-  return count > 0.0 ? sum / count : sea;
+  if (kWaterSurface == 0u || ground >= float(GLOBE_ELEVATION_PARAMS.sea_level_m)) return ground;
+  return shoreElevation(at, int(row), true);
 }
 
 // One texel of the slot's surface texture from the scratch entry `at` of its grid (`row`: entries per
@@ -411,17 +420,10 @@ void meshPositions(PayloadJob job, uint slotBase, uint scratchBase) {
 // the land among its eight neighbours (the sea surface where there is none). Mirrored by
 // fillPayloadReference.
 double vertexColourWord(uint at, int s) {
-  float sea = float(GLOBE_ELEVATION_PARAMS.sea_level_m);
-  if (kWaterSurface == 0u || surfaceWordElevation(scratch[at].w) >= sea) return scratch[at].w;
-  float sum = 0.0, count = 0.0;
-  for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx) {
-      float g = surfaceWordElevation(scratch[uint(int(at) + dy * s + dx)].w);
-      sum += g >= sea ? g : 0.0;
-      count += g >= sea ? 1.0 : 0.0;
-    }
-  float elevation = count > 0.0 ? sum / count : sea;
-  return scratchSurfaceWord(double(elevation), double(uintBitsToFloat(unpackDouble2x32(scratch[at].w)).y));
+  if (kWaterSurface == 0u || surfaceWordElevation(scratch[at].w) >= float(GLOBE_ELEVATION_PARAMS.sea_level_m))
+    return scratch[at].w;
+  return scratchSurfaceWord(double(shoreElevation(at, s, false)),
+                            double(uintBitsToFloat(unpackDouble2x32(scratch[at].w)).y));
 }
 
 // Pass 2: every sample's normal (central differences of the double positions), albedo and surface
