@@ -90,8 +90,8 @@ Status warmUpTrade(TradeRig& rig, const TradeConfig& config, const TradeCamera& 
   settings.viewHeight_px = double(rig.renderer.extent().height);
   auto terrain = Terrain::create(rig.device, rig.model, settings);
   if (!terrain) return terrain.error();
-  rig.renderer.renderFrame(**terrain, camera.camera, true);
-  rig.renderer.renderFrame(**terrain, camera.camera, true);
+  rig.renderer.renderFrame(**terrain, camera.camera, false);
+  rig.renderer.renderFrame(**terrain, camera.camera, false);
   return Ok{};
 }
 

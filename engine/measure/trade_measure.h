@@ -40,8 +40,10 @@ std::vector<SurfaceTruth> castTradeTruths(const ElevationModel& model, const std
                                           VkExtent2D size, uint32_t stride, const TradeProgress& progress);
 
 // The device's first frames pay one-time costs (pipeline compilation in the driver, first
-// allocations): measured first, they inflated the first configuration by 1.5-2.5x. One throwaway
-// converged frame of `config` takes them.
+// allocations): measured first, they inflated the first configuration by 1.5-2.5x. Two throwaway
+// frames of `config`, not converged: each measurement converges its own view before it times
+// frames, so converging here too only cost time (an `exact` view: tens of seconds). Also checks
+// that the terrain accepts `config` before the exact references are drawn.
 Status warmUpTrade(TradeRig& rig, const TradeConfig& config, const TradeCamera& camera);
 
 // Every configuration at every camera (truths and rig.references in the cameras' order); each
