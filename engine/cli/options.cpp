@@ -194,8 +194,9 @@ void addQualityOptions(CLI::App& cmd, QualityOptions& options, bool withGrid) {
                  "\"Shadows\"; default: the preset's)")
       ->check(CLI::IsMember({"on", "off"}));
   cmd.add_option("--atmosphere", options.atmosphere,
-                 "With a planet's [atmosphere]: full (sky, light and aerial perspective), sky (the sky only, the "
-                 "terrain Lambert-lit) or off (docs/rendering.md, \"Atmosphere\"; default: the preset's)")
+                 "With a planet's [atmosphere]: full (sky, light and aerial perspective), sky (the sky, the "
+                 "terrain Lambert-lit through an analytic haze) or off (docs/rendering.md, \"Atmosphere\"; default: "
+                 "the preset's)")
       ->check(CLI::Validator(
           [](const std::string& text) -> std::string {
             auto detail = parseAtmosphereDetail(text, "--atmosphere");

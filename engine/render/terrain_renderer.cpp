@@ -2,6 +2,7 @@
 
 #include "engine/render/atmosphere_passes.h"
 #include "engine/render/grid_indices.h"
+#include "engine/render/terrain_haze.h"
 #include "engine/render/terrain_instance.h"
 #include "engine/render/terrain_pipelines.h"
 #include "engine/render/terrain_shadows.h"
@@ -27,7 +28,7 @@ namespace {
 
 // Per-frame buffer: the TerrainFrame constants, then the instances at an offset every device accepts
 // for a storage-buffer binding (minStorageBufferOffsetAlignment is at most 256).
-constexpr VkDeviceSize kFrameHeaderBytes = 512;
+constexpr VkDeviceSize kFrameHeaderBytes = 768;
 static_assert(sizeof(gpu::TerrainFrame) <= kFrameHeaderBytes);
 
 // Draw groups: the index buffer's four ranges (full grid, half grid, full skirt strip, half skirt
@@ -306,6 +307,10 @@ TerrainDebugView TerrainRenderer::writeFrameConstants(unsigned char* bytes, cons
   }
   frame.detailLevels = {float(detailTiling_.fineLevel), float(detailTiling_.coarseLevel), fade.x, fade.y};
   writeShadowConstants(frame);
+  // The pipelines with the atmosphere's light read its tables instead (terrain_atmosphere.glsl).
+  const AtmosphereLuts* air = style_.atmosphere;
+  writeHazeConstants(frame, air ? &air->packed() : nullptr, air ? air->irradianceData() : nullptr, camera.position_m,
+                     style_.sunDirection);
   std::memcpy(bytes, &frame, sizeof(frame));
   return view;
 }

@@ -17,7 +17,7 @@ namespace {
 constexpr VkFormat kShadowFormat = VK_FORMAT_D32_SFLOAT;
 // Per-frame buffer: each cascade's frame constants at a uniform-buffer offset every device accepts,
 // then the instances.
-constexpr VkDeviceSize kCascadeFrameBytes = 512;
+constexpr VkDeviceSize kCascadeFrameBytes = 768;
 constexpr VkDeviceSize kHeaderBytes = kCascadeFrameBytes * kShadowCascades;
 static_assert(sizeof(gpu::TerrainFrame) <= kCascadeFrameBytes);
 constexpr uint32_t kGrids = 2;  // full and half grid

@@ -88,13 +88,18 @@ layout(location = 12) in vec3 inSkyLight;
 layout(location = 13) in vec3 inUp;
 #endif
 #endif
-#if defined(GLOBE_TERRAIN_ATMOSPHERE) && (defined(GLOBE_TERRAIN_NORMAL_MAPS) || defined(GLOBE_TERRAIN_WATER))
+// The air between the camera and the vertices (terrain_atmosphere.glsl, or the analytic haze without
+// the atmosphere's light, terrain_haze.glsl): the sea and the mapped colours go through it (with the
+// atmosphere's light, the mapped fragments' light inputs already carry T).
+#if defined(GLOBE_TERRAIN_NORMAL_MAPS) || defined(GLOBE_TERRAIN_WATER)
 layout(location = 8) in vec3 inAerialInscatter;
+#endif
+#if defined(GLOBE_TERRAIN_WATER) || (defined(GLOBE_TERRAIN_NORMAL_MAPS) && !defined(GLOBE_TERRAIN_ATMOSPHERE))
+layout(location = 7) in vec3 inAerialTransmittance;
 #endif
 #ifdef GLOBE_TERRAIN_WATER
 layout(location = 2) in float inSeaDepth;
 #ifdef GLOBE_TERRAIN_ATMOSPHERE
-layout(location = 7) in vec3 inAerialTransmittance;
 layout(location = 9) flat in vec3 inSkyZenith;
 layout(location = 10) flat in vec3 inSkyHorizon;
 #endif
@@ -204,7 +209,7 @@ vec3 mappedColour(vec3 modulation, out float coast, out float seaCover) {
   return encodeScene(albedo * light + inAerialInscatter, 1.0).rgb;
 #else
   float light = frame.sun.w + (1.0 - frame.sun.w) * max(dot(n, inSunFace), 0.0) * sunShare;
-  return encodeScene(albedo * light, 1.0).rgb;
+  return encodeScene(albedo * light * inAerialTransmittance + inAerialInscatter, 1.0).rgb;
 #endif
 }
 #endif

@@ -14,6 +14,8 @@
 #include "terrain_level_colour.glsl"
 #ifdef GLOBE_TERRAIN_ATMOSPHERE
 #include "terrain_atmosphere.glsl"
+#else
+#include "terrain_haze.glsl"
 #endif
 
 layout(push_constant) uniform Push {
@@ -64,13 +66,15 @@ vec3 coarseDetail(TerrainVertex v) {
   return 2.0 * textureLod(detailTextures, vec3(v.detailUv.zw, float(best)), max(lod, 0.0)).rgb;
 }
 #endif
-#ifdef GLOBE_TERRAIN_ATMOSPHERE
-// Only with the atmosphere (its fragment stages, terrain_atmosphere*.frag, read them): for the
-// water, the air between the camera and the vertex (terrain_atmosphere.glsl) and the sky the sea
-// reflects; for normal-mapped fragments, the sun's and the sky's light at the vertex as they reach
-// the camera (TerrainAerial), and the local vertical.
+// The air between the camera and the vertex (terrain_atmosphere.glsl, or without the atmosphere's
+// light the analytic haze, terrain_haze.glsl): the water's fragments, and the mapped ones without
+// the atmosphere's light, put their colour through it.
 layout(location = 7) out vec3 outAerialTransmittance;
 layout(location = 8) out vec3 outAerialInscatter;
+#ifdef GLOBE_TERRAIN_ATMOSPHERE
+// Only with the atmosphere (its fragment stages, terrain_atmosphere*.frag, read them): the sky the
+// sea reflects; for normal-mapped fragments, the sun's and the sky's light at the vertex as they
+// reach the camera (TerrainAerial), and the local vertical.
 layout(location = 9) flat out vec3 outSkyZenith;
 layout(location = 10) flat out vec3 outSkyHorizon;
 layout(location = 11) out vec3 outSunLight;
@@ -105,6 +109,12 @@ void main() {
   outUp = toFace * aerial.up;
   outSkyZenith = uintBitsToFloat(atmosphereViewTable[GLOBE_VIEW_TEXELS].xyz);
   outSkyHorizon = uintBitsToFloat(atmosphereViewTable[GLOBE_VIEW_TEXELS + 1].xyz);
+#else
+  vec3 hazeTransmittance, hazeInscatter;
+  terrainHaze(v.relative, v.elevation, hazeTransmittance, hazeInscatter);
+  lit = mix(lit * hazeTransmittance + hazeInscatter, lit, bvec3(debug));
+  outAerialTransmittance = hazeTransmittance;
+  outAerialInscatter = hazeInscatter;
 #endif
   // Debug colours are shown as they are, lit colours through the display transform.
   outColour = encodeDisplay(mix(displayTone(lit), lit, bvec3(debug)), 1.0).rgb;

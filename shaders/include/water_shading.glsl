@@ -37,9 +37,8 @@ vec3 waterColour(float depth_m, vec3 relative, float sunShare) {
   sky *= clamp(sunHeight * 4.0 + 0.1, 0.0, 1.0);
   float glint = pow(max(dot(reflected, sun), 0.0), kGlintExponent) * kGlintStrength * step(0.0, sunHeight) * sunShare;
   vec3 c = mix(body, sky, fresnel) + vec3(glint);
-#ifdef GLOBE_TERRAIN_ATMOSPHERE
-  // Through the air to the camera as the land's vertices are (terrain_atmosphere.glsl).
+  // Through the air to the camera as the land's vertices are (terrain_atmosphere.glsl, or the
+  // analytic haze, terrain_haze.glsl).
   c = c * inAerialTransmittance + inAerialInscatter;
-#endif
   return encodeScene(c, 1.0).rgb;
 }

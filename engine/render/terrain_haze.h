@@ -1,0 +1,30 @@
+#pragma once
+// The analytic haze's constants of one frame (shaders/include/terrain_haze.glsl): the terrain
+// pipelines without the atmosphere's light (the `sky` detail) put the ground through the air with
+// them, per vertex, without the atmosphere's tables (docs/rendering.md, "Haze").
+#include "shaders/include/atmosphere_layout.h"
+#include "shaders/include/terrain_layout.h"
+
+#include <glm/vec3.hpp>
+
+namespace globe {
+
+// Writes frame.haze*: the media's coefficients and the light in the air for the sun along unit
+// `sun` (planet-fixed) over the ground below `cameraFromCentre_m`: the sun's irradiance at the top,
+// exposed, times its transmittance down to the bottom radius there (0 once the sun is below the
+// horizon); and the radiance of the sky above (its irradiance there / pi, from `irradiance`, the
+// atmosphere's sky irradiance table, AtmosphereLuts::irradianceData) and of the ground below (the
+// sky's and the sun's light times the ground albedo / pi), averaged over the sphere.
+// `atmosphere` nullptr (no atmosphere, or the atmosphere off): all zero, no haze.
+void writeHazeConstants(gpu::TerrainFrame& frame, const gpu::AtmosphereGpu* atmosphere, const float* irradiance,
+                        const glm::dvec3& cameraFromCentre_m, const glm::dvec3& sun);
+
+// The sky irradiance at the atmosphere's bottom for the sun at cosine `muS` to the zenith, from the
+// irradiance table (vec4 texels, atmosphere_layout.h), interpolated as the shaders do.
+glm::dvec3 hazeSkyIrradiance(const float* irradiance, double muS);
+
+// The transmittance of the atmosphere from radius `r_m` along a ray whose cosine to the zenith is
+// `mu` to the top (0 where the ray meets the planet), by a fine midpoint sum in double.
+glm::dvec3 hazeSunTransmittance(const gpu::AtmosphereGpu& atmosphere, double r_m, double mu);
+
+}  // namespace globe

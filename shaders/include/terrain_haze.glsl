@@ -1,0 +1,64 @@
+// The analytic haze of the terrain pipelines without the atmosphere's light (the `sky` detail of
+// `fast` and `balanced`; docs/rendering.md, "Haze"): the transmittance T and the in-scattered light
+// S between the camera and a vertex, so that a scene value c reaches the camera as c T + S, as
+// `full`'s aerial perspective does from the tables (terrain_atmosphere.glsl). Per vertex and without
+// a table read: `full`'s table reads and its per-frame table cost it about half its extra time each.
+//
+// T: the optical depth of the Rayleigh and Mie densities (exponential in altitude) along the ray,
+// exact for heights linear along each of kHazeSegments pieces, the heights taken on the curved ray
+// from the vertex's own elevation (no cancellation against the planet's radius, even from 1e11 m).
+// S: the sunlight of the frame (the sun's light through the air at the ground below the camera),
+// scattered once by the two media mixed as along the ray, plus the sky's and the ground's light,
+// taken as the same from every direction, scattered once (what the sky's many orders of scattering
+// add, bluest at dusk): a stretch of air sends towards the camera its scattering coefficient times
+// the phase function times the light, so the whole ray sends (phase-weighted share of scattering in
+// extinction) x light x (1 - T). Zero constants (no atmosphere, or the atmosphere off) give T = 1, S = 0.
+//
+// The includer declares the frame constants (TerrainFrameBlock, terrain_layout.h).
+#ifndef GLOBE_TERRAIN_HAZE_GLSL
+#define GLOBE_TERRAIN_HAZE_GLSL
+
+const int kHazeSegments = 4;
+const float kHazePi = 3.14159265358979;
+
+// The integral of exp(-k h) over a piece of ray `length` metres long along which the height goes
+// linearly from `a` to `b` metres.
+float hazeDepth(float a, float b, float k, float length) {
+  float x = (b - a) * k;
+  float share = abs(x) < 1e-3 ? 1.0 - 0.5 * x : (1.0 - exp(-x)) / x;
+  return length * exp(-a * k) * share;
+}
+
+// T and S (scene units) between the camera and the point `relative` metres from it (planet-fixed
+// axes) at `elevation_m` above the planet's radius.
+void terrainHaze(vec3 relative, float elevation_m, out vec3 transmittance, out vec3 inscatter) {
+  float distance = length(relative);
+  vec3 toCamera = -relative / max(distance, 1e-6);
+  vec3 up = normalize(relative - frame.centreFromCamera.xyz);
+  float r = frame.planetCentre.w + elevation_m, mu = dot(up, toCamera), top = frame.hazeSun.w;
+  // Back from the point towards the camera, up to where the ray leaves the air.
+  float exit = -r * mu + sqrt(max(r * r * mu * mu - (r - top) * (r + top), 0.0));
+  float piece = min(distance, max(exit, 0.0)) / float(kHazeSegments);
+  float kR = frame.hazeRayleigh.w, kM = frame.hazeMie.w;
+  float h0 = elevation_m, tauR = 0.0, tauM = 0.0;
+  for (int i = 1; i <= kHazeSegments; ++i) {
+    float t = piece * float(i);
+    float h1 = sqrt(r * r + t * (2.0 * r * mu + t)) - frame.planetCentre.w;
+    tauR += hazeDepth(h0, h1, kR, piece);
+    tauM += hazeDepth(h0, h1, kM, piece);
+    h0 = h1;
+  }
+  vec3 rayleigh = frame.hazeRayleigh.rgb * tauR, mie = frame.hazeMie.rgb * tauM;
+  transmittance = exp(-(rayleigh + mie));
+  // Phase functions (Rayleigh; Cornette-Shanks for Mie, as atmosphere_model.glsl).
+  float nu = -dot(toCamera, frame.sun.xyz), g = frame.hazeMieScattering.w;
+  float phaseR = 3.0 / (16.0 * kHazePi) * (1.0 + nu * nu);
+  float phaseM = 3.0 / (8.0 * kHazePi) * (1.0 - g * g) / (2.0 + g * g) * (1.0 + nu * nu) /
+                 pow(max(1.0 + g * g - 2.0 * g * nu, 1e-6), 1.5);
+  vec3 mieScattered = frame.hazeMieScattering.rgb * tauM;
+  vec3 scattered = frame.hazeSun.rgb * (rayleigh * phaseR + mieScattered * phaseM) +
+                   frame.hazeSky.rgb * (rayleigh + mieScattered);
+  inscatter = scattered / max(rayleigh + mie, vec3(1e-9)) * (1.0 - transmittance);
+}
+
+#endif  // GLOBE_TERRAIN_HAZE_GLSL
