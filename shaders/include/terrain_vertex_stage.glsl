@@ -111,7 +111,8 @@ void main() {
   outSkyHorizon = uintBitsToFloat(atmosphereViewTable[GLOBE_VIEW_TEXELS + 1].xyz);
 #else
   vec3 hazeTransmittance, hazeInscatter;
-  terrainHaze(v.relative, v.elevation, hazeTransmittance, hazeInscatter);
+  // From the drawn surface: the sea's where it covers the ground (v.elevation is then its floor).
+  terrainHaze(v.relative, max(v.elevation, frame.waterShallow.w), hazeTransmittance, hazeInscatter);
   lit = mix(lit * hazeTransmittance + hazeInscatter, lit, bvec3(debug));
   outAerialTransmittance = hazeTransmittance;
   outAerialInscatter = hazeInscatter;
