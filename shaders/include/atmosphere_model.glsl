@@ -14,8 +14,7 @@
 #define GLOBE_ATMOSPHERE_MODEL_GLSL
 
 #include "atmosphere_layout.h"
-
-const float kAtmospherePi = 3.14159265358979;
+#include "atmosphere_phase.glsl"
 
 float atmBottom() { return GLOBE_ATMOSPHERE.radii.x; }
 float atmTop() { return GLOBE_ATMOSPHERE.radii.y; }
@@ -51,13 +50,7 @@ float atmOzoneDensity(float altitude) {
   return max(1.0 - abs(altitude - GLOBE_ATMOSPHERE.ozone.w) / GLOBE_ATMOSPHERE.misc.x, 0.0);
 }
 
-float atmRayleighPhase(float nu) { return 3.0 / (16.0 * kAtmospherePi) * (1.0 + nu * nu); }
-// Cornette-Shanks.
-float atmMiePhase(float nu) {
-  float g = GLOBE_ATMOSPHERE.mieExtinction.w;
-  float k = 3.0 / (8.0 * kAtmospherePi) * (1.0 - g * g) / (2.0 + g * g);
-  return k * (1.0 + nu * nu) / pow(max(1.0 + g * g - 2.0 * g * nu, 1e-6), 1.5);
-}
+float atmMiePhase(float nu) { return atmCornetteShanksPhase(nu, GLOBE_ATMOSPHERE.mieExtinction.w); }
 
 // [0, 1] -> texel centres of an n-texel axis, and back.
 float atmToTexel(float x, float n) { return 0.5 / n + x * (1.0 - 1.0 / n); }

@@ -18,8 +18,9 @@
 #ifndef GLOBE_TERRAIN_HAZE_GLSL
 #define GLOBE_TERRAIN_HAZE_GLSL
 
+#include "atmosphere_phase.glsl"
+
 const int kHazeSegments = 4;
-const float kHazePi = 3.14159265358979;
 
 // The integral of exp(-k h) over a piece of ray `length` metres long along which the height goes
 // linearly from `a` to `b` metres.
@@ -50,11 +51,8 @@ void terrainHaze(vec3 relative, float elevation_m, out vec3 transmittance, out v
   }
   vec3 rayleigh = frame.hazeRayleigh.rgb * tauR, mie = frame.hazeMie.rgb * tauM;
   transmittance = exp(-(rayleigh + mie));
-  // Phase functions (Rayleigh; Cornette-Shanks for Mie, as atmosphere_model.glsl).
-  float nu = -dot(toCamera, frame.sun.xyz), g = frame.hazeMieScattering.w;
-  float phaseR = 3.0 / (16.0 * kHazePi) * (1.0 + nu * nu);
-  float phaseM = 3.0 / (8.0 * kHazePi) * (1.0 - g * g) / (2.0 + g * g) * (1.0 + nu * nu) /
-                 pow(max(1.0 + g * g - 2.0 * g * nu, 1e-6), 1.5);
+  float nu = -dot(toCamera, frame.sun.xyz);
+  float phaseR = atmRayleighPhase(nu), phaseM = atmCornetteShanksPhase(nu, frame.hazeMieScattering.w);
   vec3 mieScattered = frame.hazeMieScattering.rgb * tauM;
   vec3 scattered = frame.hazeSun.rgb * (rayleigh * phaseR + mieScattered * phaseM) +
                    frame.hazeSky.rgb * (rayleigh + mieScattered);
