@@ -46,16 +46,17 @@ glm::dvec3 hazeSkyIrradiance(const float* irradiance, double muS) {
 
 void writeHazeConstants(gpu::TerrainFrame& frame, const gpu::AtmosphereGpu* a, const float* irradiance,
                         const glm::dvec3& cameraFromCentre_m, const glm::dvec3& sun) {
-  frame.hazeRayleigh = frame.hazeMie = frame.hazeMieScattering = frame.hazeSun =
-      frame.hazeSky = {0.0f, 0.0f, 0.0f, 0.0f};
+  frame.hazeRayleigh = frame.hazeMie = frame.hazeMieScattering = frame.hazeSun = frame.hazeSky =
+      frame.hazeGround = {0.0f, 0.0f, 0.0f, 0.0f};
   if (!a) return;
   const double r = glm::length(cameraFromCentre_m);
   const glm::dvec3 up = r > 0.0 ? cameraFromCentre_m / r : glm::dvec3(0.0, 0.0, 1.0);
   const double muS = glm::dot(up, glm::normalize(sun)), exposure = a->misc.z;
   const glm::dvec3 direct = rgb(a->sun) * hazeSunTransmittance(*a, a->radii.x, muS);
   const glm::dvec3 sunlight = exposure * direct;
+  glm::dvec3 sky(0.0);
   if (irradiance) {
-    const glm::dvec3 sky = hazeSkyIrradiance(irradiance, muS);
+    sky = hazeSkyIrradiance(irradiance, muS);
     const glm::dvec3 ground = double(a->misc.y) * (sky + direct * std::max(muS, 0.0));
     const glm::dvec3 average = 0.5 * (sky + ground) / kPi;
     frame.hazeSky = vec4(exposure * average.x, exposure * average.y, exposure * average.z, 0.0);
@@ -64,6 +65,8 @@ void writeHazeConstants(gpu::TerrainFrame& frame, const gpu::AtmosphereGpu* a, c
   frame.hazeMie = vec4(a->mieExtinction.x, a->mieExtinction.y, a->mieExtinction.z, 1.0 / a->mieScattering.w);
   frame.hazeMieScattering = vec4(a->mieScattering.x, a->mieScattering.y, a->mieScattering.z, a->mieExtinction.w);
   frame.hazeSun = vec4(sunlight.x, sunlight.y, sunlight.z, a->radii.y);
+  const glm::dvec3 skyLight = exposure * sky / kPi;
+  frame.hazeGround = vec4(skyLight.x, skyLight.y, skyLight.z, 1.0);
 }
 
 }  // namespace globe

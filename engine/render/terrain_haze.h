@@ -14,7 +14,9 @@ namespace globe {
 // exposed, times its transmittance down to the bottom radius there (0 once the sun is below the
 // horizon); and the radiance of the sky above (its irradiance there / pi, from `irradiance`, the
 // atmosphere's sky irradiance table, AtmosphereLuts::irradianceData) and of the ground below (the
-// sky's and the sun's light times the ground albedo / pi), averaged over the sphere.
+// sky's and the sun's light times the ground albedo / pi), averaged over the sphere; and the sky's
+// light on flat ground there, which lights the ground with the sun's (hazeGroundLight in
+// terrain_haze.glsl) as the atmosphere's tables do in `full`.
 // `atmosphere` nullptr (no atmosphere, or the atmosphere off): all zero, no haze.
 void writeHazeConstants(gpu::TerrainFrame& frame, const gpu::AtmosphereGpu* atmosphere, const float* irradiance,
                         const glm::dvec3& cameraFromCentre_m, const glm::dvec3& sun);

@@ -13,7 +13,8 @@
 //   fragments times its share that the relief lets through, from the cascaded shadow maps
 //   (engine/render/terrain_shadows.h; terrain_shadows.glsl).
 // - GLOBE_TERRAIN_ATMOSPHERE (for terrain_atmosphere.vert): mapped fragments lit by the vertex
-//   stage's sun and sky light through the air instead of Lambert + ambient, water seen through it.
+//   stage's sun and sky light through the air instead of the frame's (hazeGroundLight, from the
+//   ground below the camera), water seen through it.
 // - GLOBE_TERRAIN_WATER (nodes that have sea): the fragments below sea level shaded as water
 //   (water_shading.glsl).
 // - GLOBE_TERRAIN_HOLES (planets with kept no-data holes): discard inside them, a rim at the border.
@@ -86,6 +87,9 @@ layout(location = 6) in float inMapBlend;
 layout(location = 11) in vec3 inSunLight;
 layout(location = 12) in vec3 inSkyLight;
 layout(location = 13) in vec3 inUp;
+#else
+#include "terrain_haze.glsl"
+layout(location = 13) flat in vec3 inUp;  // unit: the provoking vertex's
 #endif
 #endif
 // The air between the camera and the vertices (terrain_atmosphere.glsl, or the analytic haze without
@@ -208,7 +212,7 @@ vec3 mappedColour(vec3 modulation, out float coast, out float seaCover) {
   vec3 light = surfaceLight(n, inSunFace, normalize(inUp), inSunLight * sunShare, inSkyLight);
   return encodeScene(albedo * light + inAerialInscatter, 1.0).rgb;
 #else
-  float light = frame.sun.w + (1.0 - frame.sun.w) * max(dot(n, inSunFace), 0.0) * sunShare;
+  vec3 light = hazeGroundLight(n, inSunFace, inUp, sunShare);
   return encodeScene(albedo * light * inAerialTransmittance + inAerialInscatter, 1.0).rgb;
 #endif
 }

@@ -19,6 +19,7 @@
 #define GLOBE_TERRAIN_HAZE_GLSL
 
 #include "atmosphere_phase.glsl"
+#include "surface_light.glsl"
 
 const int kHazeSegments = 4;
 
@@ -57,6 +58,19 @@ void terrainHaze(vec3 relative, float elevation_m, out vec3 transmittance, out v
   vec3 scattered = frame.hazeSun.rgb * (rayleigh * phaseR + mieScattered * phaseM) +
                    frame.hazeSky.rgb * (rayleigh + mieScattered);
   inscatter = scattered / max(rayleigh + mie, vec3(1e-9)) * (1.0 - transmittance);
+}
+
+// The light on ground of unit normal `n` (`sun`, `up`: the sun's direction and the local vertical, in
+// the same frame), `sunShare` of the sun's reaching it: through the air, the sun's and the sky's light
+// over the ground below the camera (the frame's constants), with surfaceLight as `full` lights from
+// its tables per vertex, so that the presets' ground is lit alike (reddened and dimmed by the air at
+// dusk, blue in the shade); without air, a white sun and the frame's ambient light. Both, then a
+// select: no branch on a frame constant (docs/rendering.md, "No shader compile per frame").
+vec3 hazeGroundLight(vec3 n, vec3 sun, vec3 up, float sunShare) {
+  const float kPi = 3.14159265358979;
+  vec3 air = surfaceLight(n, sun, up, frame.hazeSun.rgb * (sunShare / kPi), frame.hazeGround.rgb);
+  float white = frame.sun.w + (1.0 - frame.sun.w) * max(dot(n, sun), 0.0) * sunShare;
+  return mix(vec3(white), air, bvec3(frame.hazeGround.w > 0.5));
 }
 
 #endif  // GLOBE_TERRAIN_HAZE_GLSL

@@ -1,9 +1,10 @@
 // Body of the terrain vertex stage (terrain.vert; terrain_reprojected.vert defines
 // GLOBE_TERRAIN_REPROJECT first). One instance per selected node, vertices pulled from the node's
 // payload slot (include/terrain_vertex.glsl does the work, shared with the readback test kernel).
-// The surface colour (the payload's albedo, or the debug colour per level) and its Lambert light
-// from the sun are computed here, per vertex, already in the scene target's display encoding: without
-// normal maps the fragment shader only writes the interpolated value. lavapipe's cost is per fragment
+// The surface colour (the payload's albedo, or the debug colour per level) and its light (the sun's
+// and the sky's: hazeGroundLight, or the atmosphere's per vertex) are computed here, per vertex,
+// already in the scene target's display encoding: without normal maps the fragment shader only
+// writes the interpolated value. lavapipe's cost is per fragment
 // (half of its rasteriser time is the JIT-compiled fragment code), and its vertex stage runs on one
 // thread before the rasterisers start: the colour ramp is evaluated once per payload sample by the
 // generation kernel, not here (docs/rendering.md, "Per-vertex light", "Albedo in the payload").
@@ -80,6 +81,10 @@ layout(location = 10) flat out vec3 outSkyHorizon;
 layout(location = 11) out vec3 outSunLight;
 layout(location = 12) out vec3 outSkyLight;
 layout(location = 13) out vec3 outUp;
+#else
+// Without: the provoking vertex's, flat (a smooth input cost the flyover ~2.5 ms of its median on
+// lavapipe; within a triangle the vertical turns by less than a degree but at the coarsest levels).
+layout(location = 13) flat out vec3 outUp;
 #endif
 
 void main() {
@@ -95,21 +100,21 @@ void main() {
   vec3 level = mix(terrainLevelColour(v.level), terrainLandCoverColour(v.cover0, v.cover1),
                    bvec3(frame.options.y == GLOBE_TERRAIN_LAND_COVER));
   vec3 albedo = mix(v.albedo, level, bvec3(debug));
-  vec4 sun = mix(frame.sun, vec4(0.0, 0.0, 0.0, 1.0), bvec4(debug));  // debug colours are unlit
-  float light = sun.w + (1.0 - sun.w) * max(dot(n, sun.xyz), 0.0);
-  vec3 lit = albedo * light;
+  // Debug colours are unlit.
 #ifdef GLOBE_TERRAIN_ATMOSPHERE
   TerrainAerial aerial;
-  lit = mix(terrainAtmosphereColour(albedo, n, v.relative, frame.sun.xyz, aerial), lit, bvec3(debug));
+  vec3 lit = mix(terrainAtmosphereColour(albedo, n, v.relative, frame.sun.xyz, aerial), albedo, bvec3(debug));
   outAerialTransmittance = aerial.transmittance;
   outAerialInscatter = aerial.inscatter;
   outSunLight = aerial.sunLight;
   outSkyLight = aerial.skyLight;
-  // In the face frame too: the mapped fragments' sky light takes it with the texture's normal.
   outUp = toFace * aerial.up;
   outSkyZenith = uintBitsToFloat(atmosphereViewTable[GLOBE_VIEW_TEXELS].xyz);
   outSkyHorizon = uintBitsToFloat(atmosphereViewTable[GLOBE_VIEW_TEXELS + 1].xyz);
 #else
+  vec3 vertical = normalize(v.relative - frame.centreFromCamera.xyz);
+  vec3 lit = albedo * mix(hazeGroundLight(n, frame.sun.xyz, vertical, 1.0), vec3(1.0), bvec3(debug));
+  outUp = toFace * vertical;
   vec3 hazeTransmittance, hazeInscatter;
   // From the drawn surface: the sea's where it covers the ground (v.elevation is then its floor).
   terrainHaze(v.relative, max(v.elevation, frame.waterShallow.w), hazeTransmittance, hazeInscatter);

@@ -224,35 +224,53 @@ TEST_F(AtmosphereRenderTest, BlueSkyByDayRedTowardsTheSettingSun) {
   EXPECT_GT(red.x, red.z);
 }
 
-// The `sky` detail of fast and balanced: the atmosphere's sky behind a terrain lit as with the
-// atmosphere off (no per-frame table, the terrain pipelines without the air's light), seen through
-// the analytic haze (terrain_haze.glsl): within 100 m the same colours; from 10 km up, bluer.
+// The `sky` detail of fast and balanced: the atmosphere's sky behind a terrain lit without the
+// per-frame table (the terrain pipelines without the air's light), by the sun's and the sky's light
+// over the ground below the camera (hazeGroundLight) and seen through the analytic haze
+// (terrain_haze.glsl): within 100 m the colours of `full` (whose aerial perspective starts at 300 m),
+// at noon and at dusk, where the air reddens the sun; from 10 km up, bluer than without the air.
 TEST_F(AtmosphereRenderTest, SkyDetailDrawsTheSkyBehindTheTerrainOfNoAtmosphereThroughTheHaze) {
   const ElevationModel& model = earthlikeModel();
   const GeodeticPose pose{0.0, 0.0, 2.0, 90.0, 3.0, 0.0};
   const Frame off = render(model, pose, {270.0, 45.0}, {}, AtmosphereDetail::kOff);
-  const Frame sky = render(
-      model, pose, {270.0, 45.0},
-      [](Terrain& terrain, const Frame&) {
-        EXPECT_NE(terrain.atmosphere(), nullptr);
-        EXPECT_EQ(terrain.renderer().atmosphereView(), nullptr);
-      },
-      AtmosphereDetail::kSky);
-  int terrainPixels = 0, skyPixels = 0, nearPixels = 0;
+  Frame sky;
+  for (const double sunElevation : {6.0, 45.0}) {
+    const Frame full = render(model, pose, {270.0, sunElevation}, {}, AtmosphereDetail::kFull);
+    sky = render(
+        model, pose, {270.0, sunElevation},
+        [](Terrain& terrain, const Frame&) {
+          EXPECT_NE(terrain.atmosphere(), nullptr);
+          EXPECT_EQ(terrain.renderer().atmosphereView(), nullptr);
+        },
+        AtmosphereDetail::kSky);
+    int nearPixels = 0;
+    double largest = 0.0;
+    glm::dvec3 mean(0.0);
+    for (size_t i = 0; i < size_t(kWidth) * kHeight; ++i) {
+      ASSERT_EQ(std::isfinite(full.image.z[i]), std::isfinite(sky.image.z[i])) << i;
+      if (!(full.image.z[i] < 100.0)) continue;
+      ++nearPixels;
+      for (int c = 0; c < 3; ++c)
+        largest = std::max(largest, double(std::abs(full.image.rgba[4 * i + c] - sky.image.rgba[4 * i + c])));
+      mean += glm::dvec3(sky.image.rgba[4 * i], sky.image.rgba[4 * i + 1], sky.image.rgba[4 * i + 2]);
+    }
+    mean /= double(std::max(nearPixels, 1));
+    std::printf(
+        "[ info ] sun %.0f degrees: near ground sky vs full, largest difference %.4f, sky's mean %.3f %.3f %.3f\n",
+        sunElevation, largest, mean.x, mean.y, mean.z);
+    EXPECT_GT(nearPixels, 100);
+    EXPECT_LT(largest, 2.0 / 255.0);  // measured 0.0022 at 6 degrees, 0.0032 at 45 (2026-12-07)
+  }
+  int terrainPixels = 0, skyPixels = 0;
   for (size_t i = 0; i < size_t(kWidth) * kHeight; ++i) {
-    ASSERT_EQ(std::isfinite(off.image.z[i]), std::isfinite(sky.image.z[i])) << i;
     if (std::isfinite(off.image.z[i])) {
       ++terrainPixels;
-      if (off.image.z[i] >= 100.0) continue;
-      ++nearPixels;
-      for (int c = 0; c < 3; ++c) ASSERT_NEAR(off.image.rgba[4 * i + c], sky.image.rgba[4 * i + c], 2.0 / 255.0) << i;
     } else {
       ++skyPixels;
       EXPECT_EQ(off.image.rgba[4 * i + 2], 0.0f) << i;  // black space without the atmosphere
     }
   }
   EXPECT_GT(terrainPixels, 1000);
-  EXPECT_GT(nearPixels, 100);
   EXPECT_GT(skyPixels, 1000);
   const uint32_t horizon = kHeight / 2 + 4;
   const glm::dvec3 blue = meanSky(sky, 0, kWidth, horizon - 20, horizon);

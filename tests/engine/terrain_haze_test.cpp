@@ -60,6 +60,21 @@ TEST(TerrainHaze, ConstantsCarryTheMediaAndTheSunlightOrNothing) {
   EXPECT_EQ(frame.hazeRayleigh.x, 0.0f);
   EXPECT_EQ(frame.hazeRayleigh.w, 0.0f);
   EXPECT_EQ(frame.hazeSun.x, 0.0f);
+  EXPECT_EQ(frame.hazeGround.w, 0.0f);  // the white sun and ambient light without air
+}
+
+TEST(TerrainHaze, GroundIsLitByTheSkysIrradianceBelowTheCamera) {
+  const gpu::AtmosphereGpu a = earth();
+  std::vector<float> table(4 * GLOBE_IRRADIANCE_W * GLOBE_IRRADIANCE_H, 0.0f);
+  for (int i = 0; i < GLOBE_IRRADIANCE_W; ++i)
+    for (int c = 0; c < 3; ++c) table[size_t(4 * i + c)] = float(i * (c + 1));
+  gpu::TerrainFrame frame{};
+  const glm::dvec3 camera(0.0, 0.0, 6361000.0), sun(1.0, 0.0, 1.0);  // the sun 45 degrees up
+  writeHazeConstants(frame, &a, table.data(), camera, sun);
+  const glm::dvec3 sky = hazeSkyIrradiance(table.data(), std::sqrt(0.5));
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR((&frame.hazeGround.x)[c], 2.0 * sky[c] / 3.14159265358979, 1e-4 * sky[c]) << c;  // exposure 2
+  EXPECT_EQ(frame.hazeGround.w, 1.0f);
 }
 
 TEST(TerrainHaze, SkyIrradianceIsReadAlongTheTablesBottomRow) {
