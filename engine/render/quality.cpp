@@ -50,9 +50,9 @@ TerrainSettings balancedSettings() {
   // shows; everywhere they took the flight's median from 21 to 33 ms on lavapipe): farther away
   // the classes' colours per vertex (docs/rendering.md, "Land cover", "Ground detail").
   s.detailTextures = DetailTextures::kNear;
-  // The sky only: light and aerial perspective through the atmosphere (what separates the colour from
-  // exact's at 100 km) cost +20-30 % of the flyover's frame on lavapipe, over the goal
-  // (docs/rendering.md, "Atmosphere").
+  // The sky, the ground lit and seen through the air by the analytic haze's per-frame constants:
+  // `full`'s per-vertex tables cost +20-30 % of the flyover's frame on lavapipe, over the goal
+  // (docs/rendering.md, "Atmosphere", "Haze").
   s.atmosphere = AtmosphereDetail::kSky;
   return s;
 }

@@ -82,8 +82,8 @@ layout(location = 11) out vec3 outSunLight;
 layout(location = 12) out vec3 outSkyLight;
 layout(location = 13) out vec3 outUp;
 #else
-// Without: the provoking vertex's, flat (a smooth input cost the flyover ~2.5 ms of its median on
-// lavapipe; within a triangle the vertical turns by less than a degree but at the coarsest levels).
+// Without: the provoking vertex's, flat (smooth, it cost lavapipe ~2.5 ms a frame: docs/rendering.md,
+// "Haze"); within a triangle the vertical turns by less than a degree except at the coarsest levels.
 layout(location = 13) flat out vec3 outUp;
 #endif
 
