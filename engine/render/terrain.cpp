@@ -144,6 +144,7 @@ void Terrain::attachPool(std::unique_ptr<PayloadPool> pool) {
   generator_->reserveSlots(pool_->slotCapacity(), settings_.payloadSlotsPerPage);
   TerrainStyle style = settings_.style;
   style.radius_m = model_.radius_m();
+  style.shape = model_.shape();
   style.holes = model_.sources() != nullptr && model_.sources()->hasHoles();
   style.water = model_.water();
   style.seaLevel_m = model_.seaLevel_m();
@@ -161,6 +162,7 @@ void Terrain::attachPool(std::unique_ptr<PayloadPool> pool) {
   style.shadows = settings_.shadows;
   const ElevationRange bounds = model_.bounds();
   style.terrainRadii_m = {model_.shape().polarRadius_m() + bounds.min_m, model_.radius_m() + bounds.max_m};
+  style.airTerrainRadii_m = {model_.radius_m() + bounds.min_m, model_.radius_m() + bounds.max_m};
   renderer_ = std::make_unique<TerrainRenderer>(device_, settings_.gridCells, style, settings_.vertexPositions, 1024,
                                                 vk::kSceneColourFormat, sampleCount(settings_.antialiasing));
   drawNodes_.reserve(4096);

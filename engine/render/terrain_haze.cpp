@@ -16,6 +16,12 @@ glm::dvec3 rgb(const gpu::AtmosphereVec4& v) { return {v.x, v.y, v.z}; }
 
 }  // namespace
 
+glm::dvec3 atmosphereCamera(const Ellipsoid& shape, double radius_m, const glm::dvec3& camera_m) {
+  if (shape.isSphere()) return camera_m;
+  const GeodeticPoint above = shape.geodeticAbove(camera_m, radius_m);
+  return Ellipsoid::normalAt(above) * (radius_m + above.height_m);
+}
+
 glm::dvec3 hazeSunTransmittance(const gpu::AtmosphereGpu& a, double r_m, double mu) {
   const double bottom = a.radii.x, top = a.radii.y;
   // The ray meets the planet: below the horizon.

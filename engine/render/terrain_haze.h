@@ -2,12 +2,22 @@
 // The analytic haze's constants of one frame (shaders/include/terrain_haze.glsl): the terrain
 // pipelines without the atmosphere's light (the `sky` detail) put the ground through the air with
 // them, per vertex, without the atmosphere's tables (docs/rendering.md, "Haze").
+#include "planet/geometry/ellipsoid.h"
 #include "shaders/include/atmosphere_layout.h"
 #include "shaders/include/terrain_layout.h"
 
 #include <glm/vec3.hpp>
 
 namespace globe {
+
+// Where the atmosphere's model (a sphere of `radius_m`, the planet's radius) sees the camera at
+// `camera_m` (planet-fixed): on a sphere the camera itself; on an ellipsoid the point at the camera's
+// height above the planet's reference surface along its geodetic vertical, so that the sky, the
+// aerial perspective table and the haze's sunlight are those of the camera's own height (the
+// geocentric radius put the ground 10.7 km under the model's bottom at 45 degrees on WGS84). The
+// terrain's camera-relative vectors are added to it unchanged: within the air's reach of the camera
+// the ellipsoid and that sphere part by metres.
+glm::dvec3 atmosphereCamera(const Ellipsoid& shape, double radius_m, const glm::dvec3& camera_m);
 
 // Writes frame.haze*: the media's coefficients and the light in the air for the sun along unit
 // `sun` (planet-fixed) over the ground below `cameraFromCentre_m`: the sun's irradiance at the top,

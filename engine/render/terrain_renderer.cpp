@@ -309,8 +309,8 @@ TerrainDebugView TerrainRenderer::writeFrameConstants(unsigned char* bytes, cons
   writeShadowConstants(frame);
   // The pipelines with the atmosphere's light read its tables instead (terrain_atmosphere.glsl).
   const AtmosphereLuts* air = style_.atmosphere;
-  writeHazeConstants(frame, air ? &air->packed() : nullptr, air ? air->irradianceData() : nullptr, camera.position_m,
-                     style_.sunDirection);
+  writeHazeConstants(frame, air ? &air->packed() : nullptr, air ? air->irradianceData() : nullptr,
+                     atmosphereCamera(style_.shape, style_.radius_m, camera.position_m), style_.sunDirection);
   std::memcpy(bytes, &frame, sizeof(frame));
   return view;
 }

@@ -21,6 +21,7 @@
 #include "engine/vk/frame_ring.h"
 #include "engine/vk/graphics_pipeline.h"
 #include "planet/camera/camera.h"
+#include "planet/geometry/ellipsoid.h"
 #include "planet/geometry/node_id.h"
 #include "planet/lod/lod_ranges.h"
 #include "planet/surface/colour_ramp.h"
@@ -59,7 +60,8 @@ enum class TerrainDebugView {
 enum class VertexPositions { kStored, kReprojected };
 
 struct TerrainStyle {
-  double radius_m = 6371000.0;             // planet radius (metres)
+  double radius_m = 6371000.0;  // planet radius (metres)
+  Ellipsoid shape;              // the planet's reference surface (ElevationModel::shape); a sphere by default
   glm::dvec3 sunDirection{1.0, 0.4, 0.6};  // towards the sun, planet-fixed (normalised here)
   float ambient = 0.08f;                   // without an atmosphere: light on faces turned away from the sun, [0, 1]
   bool sky = true;                         // draw the atmosphere's sky behind the terrain (when there is one)
@@ -76,9 +78,13 @@ struct TerrainStyle {
   // as without one (AtmosphereDetail::kSky: the per-vertex light and aerial perspective cost most of
   // the atmosphere on lavapipe, docs/rendering.md "Atmosphere").
   bool aerialPerspective = true;
-  // Radii (metres) of the lowest and the highest terrain: where the aerial perspective table's rays
-  // can meet the ground (AtmosphereView).
+  // Radii (metres) of the lowest and the highest terrain: where the shadow cascades' boxes must
+  // reach (ShadowView).
   glm::dvec2 terrainRadii_m{6371000.0 - 11000.0, 6371000.0 + 9000.0};
+  // The same in the atmosphere's model, a sphere of radius_m under the camera (atmosphereCamera):
+  // where the aerial perspective table's rays can meet the ground (AtmosphereView) and the sky's
+  // lowest terrain. On a sphere the same as terrainRadii_m.
+  glm::dvec2 airTerrainRadii_m{6371000.0 - 11000.0, 6371000.0 + 9000.0};
   TerrainDebugView debug = TerrainDebugView::kShaded;
   // Skirt flare, in drawn cells: outward under the neighbour and down. 0 = no skirts (cracks of a
   // fraction of a pixel may then show between nodes of different levels).

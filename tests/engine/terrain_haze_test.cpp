@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/geometric.hpp>
+
 #include <cmath>
 #include <vector>
 
@@ -75,6 +77,20 @@ TEST(TerrainHaze, GroundIsLitByTheSkysIrradianceBelowTheCamera) {
   for (int c = 0; c < 3; ++c)
     EXPECT_NEAR((&frame.hazeGround.x)[c], 2.0 * sky[c] / 3.14159265358979, 1e-4 * sky[c]) << c;  // exposure 2
   EXPECT_EQ(frame.hazeGround.w, 1.0f);
+}
+
+TEST(TerrainHaze, AtmosphereSeesTheCameraAtItsHeightAboveTheEllipsoid) {
+  const glm::dvec3 camera(1.0e6, 2.0e6, 6.0e6);
+  EXPECT_EQ(atmosphereCamera(Ellipsoid::sphere(6371000.0), 6371000.0, camera), camera);  // bit for bit
+  // WGS84 at 45 N, 3 km up: the geocentric radius is ~10.7 km short of the equatorial one.
+  const Ellipsoid wgs84 = Ellipsoid::wgs84();
+  const double a = wgs84.equatorialRadius_m();
+  glm::dvec3 enu[3];
+  const glm::dvec3 at = wgs84.pointAbove(45.0, 20.0, a, 3000.0, &enu);
+  EXPECT_LT(glm::length(at), a - 7000.0);
+  const glm::dvec3 air = atmosphereCamera(wgs84, a, at);
+  EXPECT_NEAR(glm::length(air), a + 3000.0, 1e-6);
+  EXPECT_NEAR(glm::dot(glm::normalize(air), enu[2]), 1.0, 1e-12);  // along the geodetic vertical
 }
 
 TEST(TerrainHaze, SkyIrradianceIsReadAlongTheTablesBottomRow) {
