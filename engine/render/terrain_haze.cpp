@@ -13,6 +13,59 @@ constexpr double kPi = 3.14159265358979323846;
 
 gpu::TerrainVec4 vec4(double x, double y, double z, double w) { return {float(x), float(y), float(z), float(w)}; }
 glm::dvec3 rgb(const gpu::AtmosphereVec4& v) { return {v.x, v.y, v.z}; }
+glm::dvec3 rgb(const gpu::TerrainVec4& v) { return {v.x, v.y, v.z}; }
+
+// The phase functions of shaders/include/atmosphere_phase.glsl (per steradian), mirrored.
+double rayleighPhase(double nu) { return 3.0 / (16.0 * kPi) * (1.0 + nu * nu); }
+double cornetteShanksPhase(double nu, double g) {
+  const double k = 3.0 / (8.0 * kPi) * (1.0 - g * g) / (2.0 + g * g);
+  return k * (1.0 + nu * nu) / std::pow(std::max(1.0 + g * g - 2.0 * g * nu, 1e-6), 1.5);
+}
+
+// What the haze (terrain_haze.glsl's formula) sends down a ray from the top of the air to the ground
+// at `bottom_m` along unit `v` (against the local vertical `up`): the sky the sea reflects there.
+// The Rayleigh and Mie optical depths by a midpoint sum in double, `frame`'s haze constants set.
+glm::dvec3 hazeSkyRadiance(const gpu::TerrainFrame& frame, double bottom_m, const glm::dvec3& up, const glm::dvec3& v,
+                           const glm::dvec3& sun) {
+  const double mu = glm::dot(up, v), top = frame.hazeSun.w;
+  const double length = -bottom_m * mu + std::sqrt(std::max(bottom_m * bottom_m * (mu * mu - 1.0) + top * top, 0.0));
+  const double step = length / kSunSteps;
+  double depthR = 0.0, depthM = 0.0;
+  for (int i = 0; i < kSunSteps; ++i) {
+    const double t = (i + 0.5) * step;
+    const double h = std::sqrt(bottom_m * bottom_m + t * (2.0 * bottom_m * mu + t)) - bottom_m;
+    depthR += step * std::exp(-h * frame.hazeRayleigh.w);
+    depthM += step * std::exp(-h * frame.hazeMie.w);
+  }
+  const glm::dvec3 rayleigh = rgb(frame.hazeRayleigh) * depthR, mie = rgb(frame.hazeMie) * depthM;
+  const glm::dvec3 mieScattered = rgb(frame.hazeMieScattering) * depthM;
+  const double nu = glm::dot(v, sun);
+  const glm::dvec3 scattered =
+      rgb(frame.hazeSun) *
+          (rayleigh * rayleighPhase(nu) + mieScattered * cornetteShanksPhase(nu, frame.hazeMieScattering.w)) +
+      rgb(frame.hazeSky) * (rayleigh + mieScattered);
+  return scattered / glm::max(rayleigh + mie, glm::dvec3(1e-30)) * (1.0 - glm::exp(-(rayleigh + mie)));
+}
+
+// The sky straight up and just above the horizon (mu 0.02, averaged over four azimuths, as
+// atmosphere_view.comp's for `full`) over the ground below the camera, into frame.skyZenith and
+// skyHorizon: the sea of the pipelines without the atmosphere's light reflects them.
+void writeHazeSky(gpu::TerrainFrame& frame, double bottom_m, const glm::dvec3& up, const glm::dvec3& sun) {
+  const glm::dvec3 east = glm::normalize(std::abs(up.z) < 0.9 ? glm::cross(glm::dvec3(0.0, 0.0, 1.0), up)
+                                                              : glm::cross(glm::dvec3(1.0, 0.0, 0.0), up));
+  const glm::dvec3 north = glm::cross(up, east);
+  const double mu = 0.02;
+  glm::dvec3 horizon(0.0);
+  for (int k = 0; k < 4; ++k) {
+    const double a = k * 0.5 * kPi;
+    horizon +=
+        0.25 * hazeSkyRadiance(frame, bottom_m, up,
+                               mu * up + std::sqrt(1.0 - mu * mu) * (std::cos(a) * east + std::sin(a) * north), sun);
+  }
+  const glm::dvec3 zenith = hazeSkyRadiance(frame, bottom_m, up, up, sun);
+  frame.skyZenith = vec4(zenith.x, zenith.y, zenith.z, 0.0);
+  frame.skyHorizon = vec4(horizon.x, horizon.y, horizon.z, 0.0);
+}
 
 }  // namespace
 
@@ -73,6 +126,7 @@ void writeHazeConstants(gpu::TerrainFrame& frame, const gpu::AtmosphereGpu* a, c
   frame.hazeSun = vec4(sunlight.x, sunlight.y, sunlight.z, a->radii.y);
   const glm::dvec3 skyLight = exposure * sky / kPi;
   frame.hazeGround = vec4(skyLight.x, skyLight.y, skyLight.z, 1.0);
+  writeHazeSky(frame, a->radii.x, up, glm::normalize(sun));
 }
 
 }  // namespace globe

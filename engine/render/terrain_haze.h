@@ -26,7 +26,9 @@ glm::dvec3 atmosphereCamera(const Ellipsoid& shape, double radius_m, const glm::
 // atmosphere's sky irradiance table, AtmosphereLuts::irradianceData) and of the ground below (the
 // sky's and the sun's light times the ground albedo / pi), averaged over the sphere; and the sky's
 // light on flat ground there, which lights the ground with the sun's (hazeGroundLight in
-// terrain_haze.glsl) as the atmosphere's tables do in `full`.
+// terrain_haze.glsl) as the atmosphere's tables do in `full`; and frame.skyZenith, skyHorizon: the
+// haze's own sky straight up and at the horizon there, which the sea reflects (without air they
+// keep the renderer's fixed colours).
 // `atmosphere` nullptr (no atmosphere, or the atmosphere off): all zero, no haze.
 void writeHazeConstants(gpu::TerrainFrame& frame, const gpu::AtmosphereGpu* atmosphere, const float* irradiance,
                         const glm::dvec3& cameraFromCentre_m, const glm::dvec3& sun);

@@ -83,8 +83,9 @@ struct TerrainFrame {
   GLOBE_VEC4 skirt;           // 144: x = outward offset, y = drop, both in drawn cells
   GLOBE_VEC4 waterShallow;    // 160: rgb = the sea's colour at the shore (linear); w = sea level (m), -FLT_MAX: no sea
   GLOBE_VEC4 waterDeep;       // 176: rgb = the sea's colour over deep ground (linear); w = 1 / depth scale (per m)
-  GLOBE_VEC4 skyZenith;       // 192: rgb = the sky overhead (linear), reflected by the sea
-  GLOBE_VEC4 skyHorizon;      // 208: rgb = the sky at the horizon (linear)
+  GLOBE_VEC4 skyZenith;       // 192: rgb = the sky overhead (linear), reflected by the sea: a fixed colour
+                              //      without air, the haze's sky with it (writeHazeConstants)
+  GLOBE_VEC4 skyHorizon;      // 208: rgb = the sky at the horizon (linear), the same way
   GLOBE_VEC4 centreFromCamera;  // 224: xyz = float(planet centre - camera), metres (a direction for the sea's normal)
   GLOBE_VEC4 detailLevels;      // 240: x, y = quadtree levels whose node is one tile of the fine, coarse detail
                                 //      texture (TerrainDetailTiling); z, w = the splat's fade with distance:

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 namespace globe::testing {
@@ -91,6 +92,21 @@ TEST(TerrainHaze, AtmosphereSeesTheCameraAtItsHeightAboveTheEllipsoid) {
   const glm::dvec3 air = atmosphereCamera(wgs84, a, at);
   EXPECT_NEAR(glm::length(air), a + 3000.0, 1e-6);
   EXPECT_NEAR(glm::dot(glm::normalize(air), enu[2]), 1.0, 1e-12);  // along the geodetic vertical
+}
+
+TEST(TerrainHaze, SeaReflectsTheHazesSkyWithAirAndTheFixedColoursWithout) {
+  const gpu::AtmosphereGpu a = earth();
+  gpu::TerrainFrame frame{};
+  frame.skyZenith = frame.skyHorizon = {0.5f, 0.5f, 0.5f, 0.0f};
+  const glm::dvec3 camera(0.0, 0.0, 6361000.0), sun(0.0, 0.0, 1.0);
+  writeHazeConstants(frame, nullptr, nullptr, camera, sun);
+  EXPECT_EQ(frame.skyZenith.x, 0.5f);                   // no air: the renderer's colours stay
+  writeHazeConstants(frame, &a, nullptr, camera, sun);  // the sun overhead, single scattering only
+  std::printf("[ info ] zenith %.4f %.4f %.4f, horizon %.4f %.4f %.4f\n", frame.skyZenith.x, frame.skyZenith.y,
+              frame.skyZenith.z, frame.skyHorizon.x, frame.skyHorizon.y, frame.skyHorizon.z);
+  EXPECT_GT(frame.skyZenith.z, 1.5f * frame.skyZenith.x);  // Rayleigh: blue overhead (0.068, 0.098, 0.130)
+  EXPECT_GT(frame.skyHorizon.x, frame.skyZenith.x);        // the longer path: paler at the horizon
+  EXPECT_LT(frame.skyHorizon.z, frame.hazeSun.z);
 }
 
 TEST(TerrainHaze, SkyIrradianceIsReadAlongTheTablesBottomRow) {
