@@ -25,8 +25,8 @@ double cornetteShanksPhase(double nu, double g) {
 // What the haze (terrain_haze.glsl's formula) sends down a ray from the top of the air to the ground
 // at `bottom_m` along unit `v` (against the local vertical `up`): the sky the sea reflects there.
 // The Rayleigh and Mie optical depths by a midpoint sum in double, `frame`'s haze constants set.
-glm::dvec3 hazeSkyRadiance(const gpu::TerrainFrame& frame, double bottom_m, const glm::dvec3& up, const glm::dvec3& v,
-                           const glm::dvec3& sun) {
+glm::dvec3 hazeSkyRadiance(const gpu::TerrainFrame& frame, const glm::dvec3& sunAloft, double bottom_m,
+                           const glm::dvec3& up, const glm::dvec3& v, const glm::dvec3& sun) {
   const double mu = glm::dot(up, v), top = frame.hazeSun.w;
   const double length = -bottom_m * mu + std::sqrt(std::max(bottom_m * bottom_m * (mu * mu - 1.0) + top * top, 0.0));
   const double step = length / kSunSteps;
@@ -40,17 +40,17 @@ glm::dvec3 hazeSkyRadiance(const gpu::TerrainFrame& frame, double bottom_m, cons
   const glm::dvec3 rayleigh = rgb(frame.hazeRayleigh) * depthR, mie = rgb(frame.hazeMie) * depthM;
   const glm::dvec3 mieScattered = rgb(frame.hazeMieScattering) * depthM;
   const double nu = glm::dot(v, sun);
-  const glm::dvec3 scattered =
-      rgb(frame.hazeSun) *
-          (rayleigh * rayleighPhase(nu) + mieScattered * cornetteShanksPhase(nu, frame.hazeMieScattering.w)) +
-      rgb(frame.hazeSky) * (rayleigh + mieScattered);
+  const glm::dvec3 scattered = sunAloft * rayleigh * rayleighPhase(nu) +
+                               rgb(frame.hazeSun) * mieScattered * cornetteShanksPhase(nu, frame.hazeMieScattering.w) +
+                               rgb(frame.hazeSky) * (rayleigh + mieScattered);
   return scattered / glm::max(rayleigh + mie, glm::dvec3(1e-30)) * (1.0 - glm::exp(-(rayleigh + mie)));
 }
 
 // The sky straight up and just above the horizon (mu 0.02, averaged over four azimuths, as
 // atmosphere_view.comp's for `full`) over the ground below the camera, into frame.skyZenith and
 // skyHorizon: the sea of the pipelines without the atmosphere's light reflects them.
-void writeHazeSky(gpu::TerrainFrame& frame, double bottom_m, const glm::dvec3& up, const glm::dvec3& sun) {
+void writeHazeSky(gpu::TerrainFrame& frame, const glm::dvec3& sunAloft, double bottom_m, const glm::dvec3& up,
+                  const glm::dvec3& sun) {
   const glm::dvec3 east = glm::normalize(std::abs(up.z) < 0.9 ? glm::cross(glm::dvec3(0.0, 0.0, 1.0), up)
                                                               : glm::cross(glm::dvec3(1.0, 0.0, 0.0), up));
   const glm::dvec3 north = glm::cross(up, east);
@@ -59,10 +59,10 @@ void writeHazeSky(gpu::TerrainFrame& frame, double bottom_m, const glm::dvec3& u
   for (int k = 0; k < 4; ++k) {
     const double a = k * 0.5 * kPi;
     horizon +=
-        0.25 * hazeSkyRadiance(frame, bottom_m, up,
+        0.25 * hazeSkyRadiance(frame, sunAloft, bottom_m, up,
                                mu * up + std::sqrt(1.0 - mu * mu) * (std::cos(a) * east + std::sin(a) * north), sun);
   }
-  const glm::dvec3 zenith = hazeSkyRadiance(frame, bottom_m, up, up, sun);
+  const glm::dvec3 zenith = hazeSkyRadiance(frame, sunAloft, bottom_m, up, up, sun);
   frame.skyZenith = vec4(zenith.x, zenith.y, zenith.z, 0.0);
   frame.skyHorizon = vec4(horizon.x, horizon.y, horizon.z, 0.0);
 }
@@ -105,8 +105,8 @@ glm::dvec3 hazeSkyIrradiance(const float* irradiance, double muS) {
 
 void writeHazeConstants(gpu::TerrainFrame& frame, const gpu::AtmosphereGpu* a, const float* irradiance,
                         const glm::dvec3& cameraFromCentre_m, const glm::dvec3& sun) {
-  frame.hazeRayleigh = frame.hazeMie = frame.hazeMieScattering = frame.hazeSun = frame.hazeSky =
-      frame.hazeGround = {0.0f, 0.0f, 0.0f, 0.0f};
+  frame.hazeRayleigh = frame.hazeMie = frame.hazeMieScattering = frame.hazeSun = frame.hazeSky = frame.hazeGround =
+      frame.hazeSunAloft = {0.0f, 0.0f, 0.0f, 0.0f};
   if (!a) return;
   const double r = glm::length(cameraFromCentre_m);
   const glm::dvec3 up = r > 0.0 ? cameraFromCentre_m / r : glm::dvec3(0.0, 0.0, 1.0);
@@ -126,7 +126,15 @@ void writeHazeConstants(gpu::TerrainFrame& frame, const gpu::AtmosphereGpu* a, c
   frame.hazeSun = vec4(sunlight.x, sunlight.y, sunlight.z, a->radii.y);
   const glm::dvec3 skyLight = exposure * sky / kPi;
   frame.hazeGround = vec4(skyLight.x, skyLight.y, skyLight.z, 1.0);
-  writeHazeSky(frame, a->radii.x, up, glm::normalize(sun));
+  // The Rayleigh part scatters the sunlight of its own heights, whiter than the ground's at a low sun:
+  // its mean height over the column between the ground and the camera, at most the scale height
+  // (the sky's rays, to the top, take the scale height).
+  const double scale = a->rayleigh.w, column = std::max(r - a->radii.x, 1.0);
+  const double mean = scale - column * std::exp(-column / scale) / -std::expm1(-column / scale);
+  const glm::dvec3 aloft = exposure * rgb(a->sun) * hazeSunTransmittance(*a, a->radii.x + mean, muS);
+  frame.hazeSunAloft = vec4(aloft.x, aloft.y, aloft.z, 0.0);
+  const glm::dvec3 skySun = exposure * rgb(a->sun) * hazeSunTransmittance(*a, a->radii.x + scale, muS);
+  writeHazeSky(frame, skySun, a->radii.x, up, glm::normalize(sun));
 }
 
 }  // namespace globe

@@ -55,7 +55,7 @@ void terrainHaze(vec3 relative, float elevation_m, out vec3 transmittance, out v
   float nu = -dot(toCamera, frame.sun.xyz);
   float phaseR = atmRayleighPhase(nu), phaseM = atmCornetteShanksPhase(nu, frame.hazeMieScattering.w);
   vec3 mieScattered = frame.hazeMieScattering.rgb * tauM;
-  vec3 scattered = frame.hazeSun.rgb * (rayleigh * phaseR + mieScattered * phaseM) +
+  vec3 scattered = frame.hazeSunAloft.rgb * rayleigh * phaseR + frame.hazeSun.rgb * mieScattered * phaseM +
                    frame.hazeSky.rgb * (rayleigh + mieScattered);
   inscatter = scattered / max(rayleigh + mie, vec3(1e-9)) * (1.0 - transmittance);
 }

@@ -71,7 +71,7 @@ struct TerrainDvec4 {
 // Texels per side of a detail texture's level 0 (planet/surface/detail_texture.h, kDetailTextureSize).
 #define GLOBE_DETAIL_TEXTURE_SIZE 256
 
-// Constants of one frame (std140, 576 bytes).
+// Constants of one frame (std140, 592 bytes).
 struct TerrainFrame {
   GLOBE_MAT4 clipFromCamera;  //   0: projection * view rotation: camera-centred planet-fixed axes -> clip
   GLOBE_VEC4 cameraHigh;      //  64: xyz = float(camera - origin), metres
@@ -100,13 +100,15 @@ struct TerrainFrame {
   GLOBE_VEC4 hazeRayleigh;       // 480: rgb = Rayleigh scattering per metre at the bottom, w = 1 / scale height (per m)
   GLOBE_VEC4 hazeMie;            // 496: rgb = Mie extinction per metre at the bottom, w = 1 / scale height (per m)
   GLOBE_VEC4 hazeMieScattering;  // 512: rgb = Mie scattering per metre at the bottom, w = g (phase asymmetry)
-  GLOBE_VEC4 hazeSun;     // 528: rgb = the sunlight in the air (scene units: exposure x irradiance x transmittance),
-                          //      w = radius of the atmosphere's top (m)
-  GLOBE_VEC4 hazeSky;     // 544: rgb = the sky's and the ground's light in the air, averaged over directions
-                          //      (scene units, radiance); w unused
-  GLOBE_VEC4 hazeGround;  // 560: rgb = the sky's light on flat ground below the camera (scene units:
-                          //      exposure x sky irradiance / pi); w = 1: the ground is lit through the air
-                          //      (hazeGroundLight), 0: by a white sun and sun.w of ambient light
+  GLOBE_VEC4 hazeSun;       // 528: rgb = the sunlight in the air (scene units: exposure x irradiance x transmittance),
+                            //      w = radius of the atmosphere's top (m)
+  GLOBE_VEC4 hazeSky;       // 544: rgb = the sky's and the ground's light in the air, averaged over directions
+                            //      (scene units, radiance); w unused
+  GLOBE_VEC4 hazeGround;    // 560: rgb = the sky's light on flat ground below the camera (scene units:
+                            //      exposure x sky irradiance / pi); w = 1: the ground is lit through the air
+                            //      (hazeGroundLight), 0: by a white sun and sun.w of ambient light
+  GLOBE_VEC4 hazeSunAloft;  // 576: rgb = the sunlight the haze's Rayleigh part scatters: at the mean height of that
+                            //      scattering between the ground and the camera (scene units); w unused
 };
 
 // One cell of a drawn node's imagery table (std430, 32 bytes; the node's cells in rows along v).
@@ -153,7 +155,7 @@ struct TerrainDrawPush {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(TerrainFrame) == 576);
+static_assert(sizeof(TerrainFrame) == 592);
 static_assert(sizeof(TerrainInstance) == 128);
 static_assert(sizeof(TerrainImageryCell) == 32);
 static_assert(GLOBE_IMAGERY_TILE_CELLS == GLOBE_IMAGERY_TILE_GRID * GLOBE_IMAGERY_TILE_MAP_SCALE);

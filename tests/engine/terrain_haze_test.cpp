@@ -109,6 +109,21 @@ TEST(TerrainHaze, SeaReflectsTheHazesSkyWithAirAndTheFixedColoursWithout) {
   EXPECT_LT(frame.skyHorizon.z, frame.hazeSun.z);
 }
 
+TEST(TerrainHaze, RayleighScattersTheWhiterSunlightOfItsOwnHeights) {
+  const gpu::AtmosphereGpu a = earth();
+  gpu::TerrainFrame frame{};
+  const glm::dvec3 sun(std::sqrt(1.0 - 0.1 * 0.1), 0.0, 0.1);  // about 6 degrees up
+  writeHazeConstants(frame, &a, nullptr, glm::dvec3(0.0, 0.0, 6360000.0 + 20000.0), sun);
+  // The column's mean height under a camera 20 km up: 8000 - 20000 e^-2.5 / (1 - e^-2.5) = 6211.5 m.
+  const glm::dvec3 aloft = 2.0 * glm::dvec3(1.474, 1.8504, 1.91198) * hazeSunTransmittance(a, 6360000.0 + 6211.49, 0.1);
+  EXPECT_NEAR(frame.hazeSunAloft.z, aloft.z, 1e-4 * aloft.z);
+  EXPECT_GT(frame.hazeSunAloft.z, 1.5f * frame.hazeSun.z);  // the low sun reddens the ground's light most
+  EXPECT_GT(frame.hazeSunAloft.z / frame.hazeSunAloft.x, frame.hazeSun.z / frame.hazeSun.x);
+  // From 2 m the column is the ground's: the same light.
+  writeHazeConstants(frame, &a, nullptr, glm::dvec3(0.0, 0.0, 6360002.0), sun);
+  EXPECT_NEAR(frame.hazeSunAloft.z, frame.hazeSun.z, 1e-3 * frame.hazeSun.z);
+}
+
 TEST(TerrainHaze, SkyIrradianceIsReadAlongTheTablesBottomRow) {
   // Texel i of row 0 holds i in every channel; rows above hold garbage that must not be read.
   std::vector<float> table(4 * GLOBE_IRRADIANCE_W * GLOBE_IRRADIANCE_H, -1.0f);
