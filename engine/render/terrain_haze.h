@@ -22,7 +22,8 @@ glm::dvec3 atmosphereCamera(const Ellipsoid& shape, double radius_m, const glm::
 // Writes frame.haze*: the media's coefficients and the light in the air for the sun along unit
 // `sun` (planet-fixed) over the ground below `cameraFromCentre_m`: the sun's irradiance at the top,
 // exposed, times its transmittance down to the bottom radius there (0 once the sun is below the
-// horizon); and the radiance of the sky above (its irradiance there / pi, from `irradiance`, the
+// horizon), and down to the mean height of the Rayleigh scattering between that ground and the
+// camera (hazeSunAloft); and the radiance of the sky above (its irradiance there / pi, from `irradiance`, the
 // atmosphere's sky irradiance table, AtmosphereLuts::irradianceData) and of the ground below (the
 // sky's and the sun's light times the ground albedo / pi), averaged over the sphere; and the sky's
 // light on flat ground there, which lights the ground with the sun's (hazeGroundLight in

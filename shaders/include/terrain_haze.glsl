@@ -7,8 +7,9 @@
 // T: the optical depth of the Rayleigh and Mie densities (exponential in altitude) along the ray,
 // exact for heights linear along each of kHazeSegments pieces, the heights taken on the curved ray
 // from the vertex's own elevation (no cancellation against the planet's radius, even from 1e11 m).
-// S: the sunlight of the frame (the sun's light through the air at the ground below the camera),
-// scattered once by the two media mixed as along the ray, plus the sky's and the ground's light,
+// S: the sunlight of the frame (the sun's light through the air over the ground below the camera:
+// for Mie at the ground, for Rayleigh at the mean height of its scattering between the ground and
+// the camera, whiter at a low sun), scattered once by the two media mixed as along the ray, plus the sky's and the ground's light,
 // taken as the same from every direction, scattered once (what the sky's many orders of scattering
 // add, bluest at dusk): a stretch of air sends towards the camera its scattering coefficient times
 // the phase function times the light, so the whole ray sends (phase-weighted share of scattering in
