@@ -15,6 +15,21 @@ gpu::TerrainVec4 vec4(double x, double y, double z, double w) { return {float(x)
 glm::dvec3 rgb(const gpu::AtmosphereVec4& v) { return {v.x, v.y, v.z}; }
 glm::dvec3 rgb(const gpu::TerrainVec4& v) { return {v.x, v.y, v.z}; }
 
+// Calls `atAltitude(altitude_m, step_m)` at the midpoints of kSunSteps equal steps along the ray
+// (r_m from the centre, mu the cosine to the zenith) up to the top of the air (radius top_m), the
+// altitudes above the ground of radius bottom_m: the haze's optical depths in double. (The
+// AtmosphereReference's 2000 trapezoid steps over the double parameters are the tests' reference;
+// these follow the packed parameters the tables were computed from, eight rays a frame.)
+template <class F>
+void alongRayToTop(double r_m, double mu, double bottom_m, double top_m, F&& atAltitude) {
+  const double length = -r_m * mu + std::sqrt(std::max(r_m * r_m * (mu * mu - 1.0) + top_m * top_m, 0.0));
+  const double step = length / kSunSteps;
+  for (int i = 0; i < kSunSteps; ++i) {
+    const double t = (i + 0.5) * step;
+    atAltitude(std::sqrt(r_m * r_m + t * (2.0 * r_m * mu + t)) - bottom_m, step);
+  }
+}
+
 // The phase functions of shaders/include/atmosphere_phase.glsl (per steradian), mirrored.
 double rayleighPhase(double nu) { return 3.0 / (16.0 * kPi) * (1.0 + nu * nu); }
 double cornetteShanksPhase(double nu, double g) {
@@ -27,16 +42,11 @@ double cornetteShanksPhase(double nu, double g) {
 // The Rayleigh and Mie optical depths by a midpoint sum in double, `frame`'s haze constants set.
 glm::dvec3 hazeSkyRadiance(const gpu::TerrainFrame& frame, const glm::dvec3& sunAloft, double bottom_m,
                            const glm::dvec3& up, const glm::dvec3& v, const glm::dvec3& sun) {
-  const double mu = glm::dot(up, v), top = frame.hazeSun.w;
-  const double length = -bottom_m * mu + std::sqrt(std::max(bottom_m * bottom_m * (mu * mu - 1.0) + top * top, 0.0));
-  const double step = length / kSunSteps;
   double depthR = 0.0, depthM = 0.0;
-  for (int i = 0; i < kSunSteps; ++i) {
-    const double t = (i + 0.5) * step;
-    const double h = std::sqrt(bottom_m * bottom_m + t * (2.0 * bottom_m * mu + t)) - bottom_m;
+  alongRayToTop(bottom_m, glm::dot(up, v), bottom_m, frame.hazeSun.w, [&](double h, double step) {
     depthR += step * std::exp(-h * frame.hazeRayleigh.w);
     depthM += step * std::exp(-h * frame.hazeMie.w);
-  }
+  });
   const glm::dvec3 rayleigh = rgb(frame.hazeRayleigh) * depthR, mie = rgb(frame.hazeMie) * depthM;
   const glm::dvec3 mieScattered = rgb(frame.hazeMieScattering) * depthM;
   const double nu = glm::dot(v, sun);
@@ -79,17 +89,13 @@ glm::dvec3 hazeSunTransmittance(const gpu::AtmosphereGpu& a, double r_m, double 
   const double bottom = a.radii.x, top = a.radii.y;
   // The ray meets the planet: below the horizon.
   if (mu < 0.0 && r_m * r_m * (mu * mu - 1.0) + bottom * bottom >= 0.0) return glm::dvec3(0.0);
-  const double length = -r_m * mu + std::sqrt(std::max(r_m * r_m * (mu * mu - 1.0) + top * top, 0.0));
-  const double step = length / kSunSteps;
   const glm::dvec3 rayleigh = rgb(a.rayleigh), mie = rgb(a.mieExtinction), ozone = rgb(a.ozone);
   glm::dvec3 depth(0.0);
-  for (int i = 0; i < kSunSteps; ++i) {
-    const double t = (i + 0.5) * step;
-    const double altitude = std::sqrt(r_m * r_m + t * (2.0 * r_m * mu + t)) - bottom;
+  alongRayToTop(r_m, mu, bottom, top, [&](double altitude, double step) {
     const double ozoneDensity = std::max(1.0 - std::abs(altitude - a.ozone.w) / a.misc.x, 0.0);
     depth += step * (rayleigh * std::exp(-altitude / a.rayleigh.w) + mie * std::exp(-altitude / a.mieScattering.w) +
                      ozone * ozoneDensity);
-  }
+  });
   return glm::exp(-depth);
 }
 

@@ -78,7 +78,7 @@ vec4 sampleSurface(vec3 at, float lod) { return textureLod(surfaceTexture, at, l
 #include "terrain_shadows.glsl"
 #endif
 layout(location = 19) flat in vec3 inSunFace;
-layout(location = 21) in vec2 inChroma;
+layout(location = 21) in vec3 inChroma;
 layout(location = 4) in vec2 inMapUv;
 layout(location = 5) flat in uint inMapBase;
 layout(location = 6) in float inMapBlend;
@@ -190,8 +190,12 @@ vec3 mappedColour(vec3 modulation, out float coast, out float seaCover) {
   vec3 n = surfaceNormal(texel.xy);  // in the node's face frame, as inSunFace and inUp
   // YCoCg to RGB: the texel's luma, the vertices' chroma (a ratio to luma, scaled by the texel's); on
   // a planet with an overlay the colour layer's texel (a specialization constant: no fetch for the
-  // others).
-  vec2 chroma = inChroma * texel.z;
+  // others). A texel much brighter than its vertices is a class between them (a beach a texel wide
+  // between vegetation vertices): their ratio at its luma would be a hue no class has (bright green
+  // sand), so it fades to grey; a darker texel keeps it (small at its luma). Measured at the coast:
+  // balanced against exact's mean colour from orbit ΔE 0.10 -> 0.06 (docs/rendering.md, "Colour").
+  float disagreement = max(texel.z - inChroma.z, 0.0) / max(texel.z, 1.0 / 255.0);
+  vec2 chroma = inChroma.xy * (texel.z * (1.0 - smoothstep(0.15, 0.4, disagreement)));
   float g = texel.z + chroma.y, rb = texel.z - chroma.y;
   vec3 root = max(vec3(rb + chroma.x, g, rb - chroma.x), vec3(0.0));
   seaCover = 0.0;

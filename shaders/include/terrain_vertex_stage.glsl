@@ -38,10 +38,10 @@ layout(location = 18) flat out uint outImageryCell;
 // The surface texture (the _maps fragment stages, payload_layout.h): the sun's direction in the node's
 // face frame, which the texture's normals are coded in (the fragments light in that frame: one flat
 // input instead of the frame's three), and the albedo's chroma (YCoCg's Co, Cg of its square root) at
-// the vertex, divided by its luma: the fragment scales it by the texel's luma, so where a texel's
-// brightness differs from the vertices' (a class edge between vertices) the hue stays, no fringe.
+// the vertex, divided by its luma, with that luma in z: the fragment scales the chroma by the texel's
+// luma, and fades it where the two lumas disagree (a class edge between vertices: terrain_fragment.glsl).
 layout(location = 19) flat out vec3 outSunFace;
-layout(location = 21) out vec2 outChroma;
+layout(location = 21) out vec3 outChroma;
 #ifdef GLOBE_TERRAIN_COVER
 // Land cover (terrain_cover*.vert, for the _cover fragment stages): the masks, the fine detail
 // texture's coordinates, and the coarse detail texture's modulation, sampled here per vertex (the
@@ -134,7 +134,7 @@ void main() {
   outSunFace = toFace * frame.sun.xyz;
   vec3 root = sqrt(max(v.albedo, vec3(0.0)));
   float luma = max(0.25 * (root.r + 2.0 * root.g + root.b), 1.0 / 255.0);
-  outChroma = vec2(0.5 * (root.r - root.b), 0.25 * (2.0 * root.g - root.r - root.b)) / luma;
+  outChroma = vec3(vec2(0.5 * (root.r - root.b), 0.25 * (2.0 * root.g - root.r - root.b)) / luma, luma);
 #ifdef GLOBE_TERRAIN_COVER
   outCover0 = v.cover0;
   outCover1 = v.cover1;

@@ -1,6 +1,8 @@
 // The sea of a planet with [water]: a surface at sea level over lower ground, shaded per fragment
 // (terrain_water.frag), with cameras placed above it.
+#include "engine/io/image_io.h"
 #include "engine/render/headless_renderer.h"
+#include "engine/render/quality.h"
 #include "engine/render/render_output.h"
 #include "planet/geometry/triacontahedron.h"
 #include "tests/support/gpu_test.h"
@@ -13,9 +15,12 @@ namespace {
 class WaterRenderTest : public GpuTest {
  protected:
   ImageRgba render(const GeodeticPose& pose, uint32_t width, uint32_t height) {
-    const ElevationModel& model = earthlikeModel();
     TerrainSettings settings;
     settings.gridCells = 16;
+    return render(pose, width, height, settings);
+  }
+  ImageRgba render(const GeodeticPose& pose, uint32_t width, uint32_t height, const TerrainSettings& settings) {
+    const ElevationModel& model = earthlikeModel();
     auto terrain = Terrain::create(device(), model, settings);
     EXPECT_TRUE(terrain.ok()) << terrain.error().format();
     HeadlessRenderer renderer(device(), {width, height});
@@ -70,6 +75,36 @@ TEST_F(WaterRenderTest, CoastFromFortyKilometres) {
   std::printf("[ info ] coast: %d sea and %d land pixels of %u\n", sea, land, image.width * image.height);
   EXPECT_GT(sea, int(image.width * image.height) / 20);
   EXPECT_GT(land, int(image.width * image.height) / 5);
+}
+
+// The default preset's beach seen from 20 km (the coast camera of docs/rendering.md's gallery, its
+// ground alone): its surface texels carry the luma, its vertices (every 4 texels) the hue as a ratio
+// to luma. A band of sand a texel or two wide between vegetation vertices took the vegetation's ratio
+// at the sand's luma, a bright green no class has, in teeth along the coast; where a texel is much
+// brighter than its vertices the fragment now drops their hue (terrain_fragment.glsl). Bright pixels
+// (display luma over 120/255) greener than (r + b) / 2 by 30/255: 635 before, 0 after, 0 under
+// `exact` (its vertices are its texels), 320 x 180, 2026-12-08.
+TEST_F(WaterRenderTest, BalancedBeachTakesNoHueOfTheVegetationBesideIt) {
+  TerrainSettings settings = terrainSettingsFor(QualityPreset::kBalanced);
+  settings.atmosphere = AtmosphereDetail::kOff;
+  settings.viewHeight_px = 180;
+  const GeodeticPose pose{16.9, -107.3, 20000.0, 60.0, -25.0, 0.0};
+  // globe render's sun for the camera.
+  settings.style.sunDirection = defaultSunDirection(directionFromLatLon(pose.latitude_deg, pose.longitude_deg));
+  const ImageRgba image = render(pose, 320, 180, settings);
+  int bright = 0, green = 0;
+  for (size_t i = 0; i < size_t(image.width) * image.height; ++i) {
+    if (!std::isfinite(image.z[i])) continue;
+    // The PNG's bytes.
+    const float r = linearToSrgb8(image.rgba[4 * i]), g = linearToSrgb8(image.rgba[4 * i + 1]),
+                b = linearToSrgb8(image.rgba[4 * i + 2]);
+    if (0.2126f * r + 0.7152f * g + 0.0722f * b <= 120.0f) continue;
+    ++bright;
+    green += g - 0.5f * (r + b) > 30.0f;
+  }
+  std::printf("[ info ] beach: %d of %d bright ground pixels bright green\n", green, bright);
+  EXPECT_GT(bright, 200);
+  EXPECT_LE(green, 10);
 }
 
 }  // namespace
