@@ -37,6 +37,33 @@ std::vector<glm::dvec4> sourceTermsForJob(const ElevationModel& model, const gpu
   return sourceTermsAt(model, samples, 1, payloadSampleSpacing_m(job, cells, model.radius_m()));
 }
 
+namespace {
+
+// Lattice points a side of the blocks whose vector queries are skipped together (a line a texel or two
+// wide crosses few of a node's blocks).
+constexpr int kOverlayBlock = 8;
+
+// Per block of kOverlayBlock x kOverlayBlock points of a `side` x `side` lattice (row by row), whether
+// some vector feature may reach its texels of `texel_m` metres (`direction(a, b)`: point (a, b)'s unit
+// direction): the box of its four corners, with vectorsMayTouch's margin of the antialiasing filter and
+// three texels, holds the block at these sizes, so a block ruled out would have drawn no vector.
+template <class Direction>
+std::vector<bool> blocksVectorsMayTouch(const SurfaceOverlay& overlay, int side, double texel_m,
+                                        Direction&& direction) {
+  const int perSide = (side + kOverlayBlock - 1) / kOverlayBlock;
+  std::vector<bool> touched(std::size_t(perSide) * perSide);
+  for (int bb = 0; bb < perSide; ++bb)
+    for (int ba = 0; ba < perSide; ++ba) {
+      const int a0 = ba * kOverlayBlock, b0 = bb * kOverlayBlock;
+      const int a1 = std::min(a0 + kOverlayBlock - 1, side - 1), b1 = std::min(b0 + kOverlayBlock - 1, side - 1);
+      const glm::dvec3 corners[4] = {direction(a0, b0), direction(a1, b0), direction(a0, b1), direction(a1, b1)};
+      touched[std::size_t(bb) * perSide + ba] = overlay.vectorsMayTouch(corners, texel_m);
+    }
+  return touched;
+}
+
+}  // namespace
+
 std::vector<std::uint32_t> overlayColoursForJob(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
                                                 uint32_t mapScale, std::span<const glm::dvec3> samples) {
   const SurfaceOverlay* overlay = model.overlay();
@@ -66,10 +93,17 @@ std::vector<std::uint32_t> overlayColoursForJob(const ElevationModel& model, con
       double texel_m;
     } grids[2] = {{int(GLOBE_SURFACE_GRID0_SIDE(m)), 2, 5, texel_m},
                   {int(GLOBE_SURFACE_GRID1_SIDE(m)), 4, 6, 2.0 * texel_m}};
-    for (const auto& g : grids)
+    for (const auto& g : grids) {
+      auto direction = [&](int a, int b) {
+        return payloadSampleDirection(job, 2 * m, g.stride * a - g.offset, g.stride * b - g.offset);
+      };
+      const std::vector<bool> blocks =
+          vectors ? blocksVectorsMayTouch(*overlay, g.side, g.texel_m, direction) : std::vector<bool>();
+      const int perSide = (g.side + kOverlayBlock - 1) / kOverlayBlock;
       for (int b = 0; b < g.side; ++b)
         for (int a = 0; a < g.side; ++a)
-          add(payloadSampleDirection(job, 2 * m, g.stride * a - g.offset, g.stride * b - g.offset), g.texel_m, true);
+          add(direction(a, b), g.texel_m, vectors && blocks[(b / kOverlayBlock) * perSide + a / kOverlayBlock]);
+    }
   }
   if (!any) return {};
   words.insert(words.end(), vectorWords.begin(), vectorWords.end());
