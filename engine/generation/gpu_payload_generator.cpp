@@ -145,6 +145,7 @@ void GpuPayloadGenerator::reserveSlots(uint32_t slots, uint32_t maxSlotsPerPage)
             normalMapScale_ > 0 ? &textures_ : nullptr};
   slotCentres_.assign(slots, glm::dvec3(0.0));
   slotWater_.assign(slots, 0);
+  slotColourLayer_.assign(slots, 0);
 }
 
 GpuPayloadGenerator::Batch& GpuPayloadGenerator::freeBatch() {
@@ -224,6 +225,7 @@ void GpuPayloadGenerator::record(Batch& batch, std::span<PreparedRequest> reques
   batch.submitted.clear();
   batch.sourceQueued.clear();
   batch.sourcePad_m.clear();
+  batch.colourLayer.clear();
   for (size_t k = 0; k < count; ++k) {
     const PreparedRequest& r = requests[k];
     batch.submitted.push_back(r.request);
@@ -236,6 +238,7 @@ void GpuPayloadGenerator::record(Batch& batch, std::span<PreparedRequest> reques
     const bool prepared = hasTerms || !r.overlay.empty();
     batch.sourceQueued.push_back(prepared ? r.queued : std::chrono::steady_clock::time_point::max());
     batch.sourcePad_m.push_back(sourceDetailPad_m(r.terms));
+    batch.colourLayer.push_back(r.colourLayer ? 1 : 0);
     slotCentres_[r.request.slot] = {gpuJobs[k].centre.x, gpuJobs[k].centre.y, gpuJobs[k].centre.z};
   }
 
@@ -319,6 +322,7 @@ void GpuPayloadGenerator::finish(Batch& batch, std::vector<GenerationResult>& fi
     padded.min_m = std::max(0.0, padded.min_m - batch.sourcePad_m[k]);
     padded.max_m += batch.sourcePad_m[k];
     slotWater_[job.slot] = waterSurface_ && results[k].lowestElevation_m < model_.seaLevel_m() ? 1 : 0;
+    slotColourLayer_[job.slot] = batch.colourLayer[k];
     finished.push_back({job.node, job.slot, padded, false, error_m});
   }
   uint64_t stamps[2] = {0, 0};

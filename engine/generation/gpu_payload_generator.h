@@ -79,6 +79,9 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   // The payload in `slot` has ground below sea level, i.e. water to draw (always false without
   // waterSurface).
   bool slotHasWater(uint32_t slot) const { return slotWater_[slot] != 0; }
+  // The slot's fragments read its colour layer: the overlay's hue varies within its cells
+  // (overlayNeedsColourLayer, request_preparer.h); false on planets without an overlay.
+  bool slotHasColourLayer(uint32_t slot) const { return slotColourLayer_[slot] != 0; }
   // The whole payload buffer (copies, tests) and its binding windows (shaders).
   const vk::Buffer& payloads() const { return payloads_; }
   const PayloadPages& pages() const { return pages_; }
@@ -104,7 +107,8 @@ class GpuPayloadGenerator final : public PayloadGenerator {
     std::vector<GenerationJob> submitted;
     // Per job: when its request was queued for the source I/O thread; max() = not read from sources.
     std::vector<std::chrono::steady_clock::time_point> sourceQueued;
-    std::vector<double> sourcePad_m;  // per job: sourceDetailPad_m of its terms
+    std::vector<double> sourcePad_m;   // per job: sourceDetailPad_m of its terms
+    std::vector<uint8_t> colourLayer;  // per job: PreparedRequest::colourLayer
     bool busy = false;
     uint32_t index = 0;  // query slots 2*index, 2*index+1
   };
@@ -143,7 +147,8 @@ class GpuPayloadGenerator final : public PayloadGenerator {
   double timestampPeriod_ns_ = 1.0;
   std::vector<Batch> batches_;
   std::vector<glm::dvec3> slotCentres_;
-  std::vector<uint8_t> slotWater_;  // per slot: slotHasWater
+  std::vector<uint8_t> slotWater_;        // per slot: slotHasWater
+  std::vector<uint8_t> slotColourLayer_;  // per slot: slotHasColourLayer
   bool waterSurface_ = false;
   std::deque<uint32_t> order_;                   // busy batches, oldest first
   std::vector<GenerationResult> waitedResults_;  // of batches freeBatch() waited for, until collect()

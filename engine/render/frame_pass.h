@@ -39,6 +39,7 @@ struct DrawNode {
   glm::dvec3 centre_m{0.0};  // node centre the payload was generated with (PayloadJob::centre)
   bool water = false;        // the payload has sea to draw (GpuPayloadGenerator::slotHasWater)
   uint32_t imageryCell = 0;  // with imagery: the node's first cell in the frame's cell tables
+  bool colourLayer = false;  // its fragments read the colour layer (GpuPayloadGenerator::slotHasColourLayer)
 };
 
 struct DrawStats {

@@ -259,8 +259,8 @@ void Terrain::updateAt(uint64_t poolFrame, const Camera& camera, uint64_t poolCo
 void Terrain::addDrawNode(const SelectedNode& n, uint32_t imageryCell, std::vector<DrawNode>& out) const {
   auto slot = pool_->slotOf(n.id);
   if (!slot) return;  // the selection only draws resident nodes; guard anyway
-  out.push_back(
-      {n.id, *slot, n.morph, n.partial, generator_->slotCentre(*slot), generator_->slotHasWater(*slot), imageryCell});
+  out.push_back({n.id, *slot, n.morph, n.partial, generator_->slotCentre(*slot), generator_->slotHasWater(*slot),
+                 imageryCell, generator_->slotHasColourLayer(*slot)});
 }
 
 void Terrain::gatherShadowCasters(const Camera& camera, const Frustum& view, double groundRadius_m) {

@@ -3,11 +3,13 @@
 #include "shaders/include/terrain_layout.h"
 
 #include <cassert>
+#include <future>
 #include <string_view>
 
 namespace globe {
 
-TerrainShading surfaceShading(const TerrainStyle& style, bool atmosphere, bool water, bool nearCamera) {
+TerrainShading surfaceShading(const TerrainStyle& style, bool atmosphere, bool water, bool nearCamera,
+                              bool colourLayer) {
   const bool maps = style.normalMapScale > 0 || style.imagery;
   return {maps,
           atmosphere,
@@ -16,7 +18,7 @@ TerrainShading surfaceShading(const TerrainStyle& style, bool atmosphere, bool w
           style.coverEverywhere() || (nearCamera && style.coverNear()),
           style.imagery,
           maps && style.shadows,
-          style.surfaceLayersPerSlot == 2 && !style.imagery};
+          colourLayer && style.surfaceLayersPerSlot == 2 && !style.imagery};
 }
 
 VkCullModeFlags gridCullMode(const TerrainStyle& style) {
@@ -62,6 +64,32 @@ vk::GraphicsPipelineDesc terrainDesc(TargetFormat target, bool wireframe, VkCull
   static_assert(GLOBE_TERRAIN_SPEC_COLOUR_LAYER == 0);
   if (shading.normalMaps) d.fragmentSpecialization = {shading.colourLayer ? 1u : 0u};
   return d;
+}
+
+SurfacePipelines makeSurfacePipelines(vk::Device& device, const TerrainStyle& style, VertexPositions positions,
+                                      TargetFormat target, bool atmosphere, bool colourLayer) {
+  auto make = [&](VkCullModeFlags cull, bool water, bool nearCamera) {
+    return std::make_unique<vk::GraphicsPipeline>(
+        device,
+        terrainDesc(target, false, cull, positions, surfaceShading(style, atmosphere, water, nearCamera, colourLayer)));
+  };
+  // The surface is seen from above only (the camera never goes under it): its back faces are always
+  // hidden behind front faces, and culling them halves the rasteriser's work. Skirts fill gaps seen
+  // from either side. A planet with kept holes draws both faces (gridCullMode), so that the surface
+  // and the hole's rim are seen from below through the hole too.
+  SurfacePipelines p;
+  std::future<void> sea;
+  if (style.water.enabled)
+    sea = std::async(std::launch::async, [&] {
+      p.water = make(gridCullMode(style), true, false);
+      p.waterSkirts = make(VK_CULL_MODE_NONE, true, false);
+      if (style.coverNear()) p.waterDetail = make(gridCullMode(style), true, true);
+    });
+  p.solid = make(gridCullMode(style), false, false);
+  p.skirts = make(VK_CULL_MODE_NONE, false, false);
+  if (style.coverNear()) p.solidDetail = make(gridCullMode(style), false, true);
+  if (sea.valid()) sea.get();  // rethrows what creation threw
+  return p;
 }
 
 vk::GraphicsPipelineDesc skyDesc(TargetFormat target, uint32_t pushConstantBytes, bool fromSpace) {

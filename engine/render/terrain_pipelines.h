@@ -33,8 +33,15 @@ struct TerrainShading {
 
 // The surface pipelines' shading (the wireframe's has neither water nor holes nor land cover). The
 // land cover's splat where the style splats everywhere, or for `nearCamera` (the pipelines of the
-// nodes near the camera when it splats there only, TerrainStyle::coverNear).
-TerrainShading surfaceShading(const TerrainStyle& style, bool atmosphere, bool water, bool nearCamera = false);
+// nodes near the camera when it splats there only, TerrainStyle::coverNear). The colour layer where
+// the slots have one and `colourLayer` (the nodes whose overlay varies within their cells).
+TerrainShading surfaceShading(const TerrainStyle& style, bool atmosphere, bool water, bool nearCamera = false,
+                              bool colourLayer = true);
+
+// Creates the surface pipelines of one colour-layer choice (SurfacePipelines, terrain_renderer.h), the sea's on a
+// second thread (pipeline creation is most of the renderer's set-up: docs/benchmark.md, "Cold start").
+SurfacePipelines makeSurfacePipelines(vk::Device& device, const TerrainStyle& style, VertexPositions positions,
+                                      TargetFormat target, bool atmosphere, bool colourLayer);
 
 // Grids are drawn with back faces culled, except on a planet with kept holes (seen through them).
 VkCullModeFlags gridCullMode(const TerrainStyle& style);

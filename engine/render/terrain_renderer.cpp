@@ -35,17 +35,21 @@ static_assert(sizeof(gpu::TerrainFrame) <= kFrameHeaderBytes);
 // strip) for nodes without sea, then the same four for nodes with sea, drawn with the water shader
 // (their skirts too: a skirt shows through sub-pixel gaps, and below the sea it must be sea); then
 // the same eight for the nodes near the camera drawn with the land cover's splat
-// (TerrainStyle::detailRange_m; their skirts are drawn with the others').
+// (TerrainStyle::detailRange_m; their skirts are drawn with the others'); then all sixteen again for
+// the nodes whose fragments read the colour layer (DrawNode::colourLayer).
 constexpr uint32_t kIndexRanges = 4;
-constexpr uint32_t kWaterGroups = kIndexRanges;       // groups 4..7: nodes with sea
-constexpr uint32_t kDetailGroups = 2 * kIndexRanges;  // groups 8..15: the same near the camera
-constexpr uint32_t kDrawGroups = 2 * kDetailGroups;
+constexpr uint32_t kWaterGroups = kIndexRanges;        // groups 4..7: nodes with sea
+constexpr uint32_t kDetailGroups = 2 * kIndexRanges;   // groups 8..15: the same near the camera
+constexpr uint32_t kColourGroups = 2 * kDetailGroups;  // groups 16..31: the same with the colour layer
+constexpr uint32_t kDrawGroups = 2 * kColourGroups;
 // Grids before skirts, so that the pass marks split them.
-constexpr std::array<uint32_t, 12> kGroupOrder{0, 1, 4, 5, 8, 9, 12, 13, 2, 3, 6, 7};
+constexpr std::array<uint32_t, 24> kGroupOrder{0,  1,  16, 17, 4, 5, 20, 21, 8, 9, 24, 25,
+                                               12, 13, 28, 29, 2, 3, 18, 19, 6, 7, 22, 23};
 
 // The group of a node's grid (range 0) or skirts (range 2); `detail`: drawn with the splat.
 uint32_t drawGroup(const DrawNode& n, uint32_t range, bool detail) {
-  return range + (n.partial ? 1u : 0u) + (n.water ? kWaterGroups : 0u) + (detail && range < 2 ? kDetailGroups : 0u);
+  return range + (n.partial ? 1u : 0u) + (n.water ? kWaterGroups : 0u) + (detail && range < 2 ? kDetailGroups : 0u) +
+         (n.colourLayer ? kColourGroups : 0u);
 }
 
 // Sort key of a drawn node for the skirt test below.
@@ -60,30 +64,22 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
       cells_(gridCells),
       style_(style),
       detailTiling_(detailTilingFor(style.radius_m)),
-      // The surface is seen from above only (the camera never goes under it): its back faces are
-      // always hidden behind front faces, and culling them halves the rasteriser's work. Skirts
-      // fill gaps seen from either side. A planet with kept holes draws both faces, so that the
-      // surface and the hole's rim are seen from below through the hole too.
       // The reprojected positions (a measurement only) are drawn without the atmosphere.
       atmosphere_(positions == VertexPositions::kStored && style.aerialPerspective ? style.atmosphere : nullptr),
-      pendingOptional_(std::async(std::launch::async, makeOptionalPipelines, std::ref(device), style, positions,
-                                  TargetFormat{colourFormat, samples}, atmosphere_ != nullptr)),
-      solid_(device, terrainDesc({colourFormat, samples}, false, gridCullMode(style), positions,
-                                 surfaceShading(style, atmosphere_ != nullptr, false))),
-      skirts_(device, terrainDesc({colourFormat, samples}, false, VK_CULL_MODE_NONE, positions,
-                                  surfaceShading(style, atmosphere_ != nullptr, false))) {
+      wireframe_(std::async(std::launch::async, makeWireframe, std::ref(device), positions,
+                            TargetFormat{colourFormat, samples}, atmosphere_ != nullptr)) {
   assert(gpu::validGridCells(gridCells));
   assert(gpu::validNormalMapScale(style.normalMapScale));
-  OptionalPipelines optional = pendingOptional_.get();
-  water_ = std::move(optional.water);
-  waterSkirts_ = std::move(optional.waterSkirts);
-  wireframe_ = std::move(optional.wireframe);
-  waterDetail_ = std::move(optional.waterDetail);
-  if (style.coverNear()) {
-    solidDetail_ = std::make_unique<vk::GraphicsPipeline>(
-        device, terrainDesc({colourFormat, samples}, false, gridCullMode(style), positions,
-                            surfaceShading(style, atmosphere_ != nullptr, false, true)));
-  }
+  // A planet with an overlay draws the nodes whose overlay varies within their cells with the colour
+  // layer, the others without its fetch: two sets, created side by side.
+  const TargetFormat target{colourFormat, samples};
+  std::future<SurfacePipelines> coloured;
+  if (surfaceShading(style, false, false).colourLayer)
+    coloured = std::async(std::launch::async, makeSurfacePipelines, std::ref(device), std::cref(style_), positions,
+                          target, atmosphere_ != nullptr, true);
+  plain_ = makeSurfacePipelines(device, style_, positions, target, atmosphere_ != nullptr, false);
+  if (coloured.valid()) coloured_ = coloured.get();
+  wireframe_.wait();
   uploadIndices(gridIndexRanges(gridCells));
   const GridRanges grid{indices_.handle(), first_, count_};
   // The passes, in frame order (frame_pass.h).
@@ -106,27 +102,13 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
   for (uint32_t f = 0; f < vk::kFramesInFlight; ++f) ensureCapacity(f, std::max(initialNodes, 1u));
 }
 
-TerrainRenderer::OptionalPipelines TerrainRenderer::makeOptionalPipelines(vk::Device& device, TerrainStyle style,
-                                                                          VertexPositions positions,
-                                                                          TargetFormat target, bool atmosphere) {
-  OptionalPipelines made;
-  if (style.water.enabled) {
-    const TerrainShading water = surfaceShading(style, atmosphere, true);
-    made.water = std::make_unique<vk::GraphicsPipeline>(
-        device, terrainDesc(target, false, gridCullMode(style), positions, water));
-    made.waterSkirts =
-        std::make_unique<vk::GraphicsPipeline>(device, terrainDesc(target, false, VK_CULL_MODE_NONE, positions, water));
-    if (style.coverNear())
-      made.waterDetail = std::make_unique<vk::GraphicsPipeline>(
-          device,
-          terrainDesc(target, false, gridCullMode(style), positions, surfaceShading(style, atmosphere, true, true)));
-  }
+std::unique_ptr<vk::GraphicsPipeline> TerrainRenderer::makeWireframe(vk::Device& device, VertexPositions positions,
+                                                                     TargetFormat target, bool atmosphere) {
   VkPhysicalDeviceFeatures features{};
   vkGetPhysicalDeviceFeatures(device.physical(), &features);
-  if (features.fillModeNonSolid)
-    made.wireframe = std::make_unique<vk::GraphicsPipeline>(
-        device, terrainDesc(target, true, VK_CULL_MODE_NONE, positions, {false, atmosphere}));
-  return made;
+  if (!features.fillModeNonSolid) return nullptr;
+  return std::make_unique<vk::GraphicsPipeline>(
+      device, terrainDesc(target, true, VK_CULL_MODE_NONE, positions, {false, atmosphere}));
 }
 
 void TerrainRenderer::uploadIndices(const GridIndexRanges& ranges) {
@@ -281,7 +263,7 @@ TerrainDebugView TerrainRenderer::writeFrameConstants(unsigned char* bytes, cons
   frame.planetCentre = toGpu(glm::vec3(-origin_m), float(style_.radius_m));
   frame.sun = toGpu(glm::vec3(glm::normalize(style_.sunDirection)), style_.ambient);
   TerrainDebugView view = style_.debug;
-  if (view == TerrainDebugView::kWireframe && !wireframe_) view = TerrainDebugView::kLodColours;
+  if (view == TerrainDebugView::kWireframe && !wireframe()) view = TerrainDebugView::kLodColours;
   if (view == TerrainDebugView::kLandCover && !style_.landCover()) view = TerrainDebugView::kShaded;
   frame.options = {cells_,
                    view == TerrainDebugView::kShaded       ? GLOBE_TERRAIN_SHADED
@@ -415,7 +397,7 @@ DrawStats TerrainRenderer::recordDraws(VkCommandBuffer cmd, const PayloadPages& 
       const size_t g = size_t(group) * pageCount + page;
       if (instancesOf_[g] == 0) continue;
       const vk::GraphicsPipeline& pipeline = groupPipeline(group, view);
-      const bool cover = style_.coverEverywhere() || (group >= kDetailGroups && !wireframe);
+      const bool cover = style_.coverEverywhere() || (group % kColourGroups >= kDetailGroups && !wireframe);
       const gpu::TerrainDrawPush push{r % 2 == 0 ? cells_ : cells_ / 2, 0};
       std::array<VkDescriptorBufferInfo, 9 + 1> buffers{instanceDescriptor(frameIndex), payloads.window(page),
                                                         constantsDescriptor(frameIndex)};
@@ -444,12 +426,14 @@ DrawStats TerrainRenderer::recordDraws(VkCommandBuffer cmd, const PayloadPages& 
 const vk::GraphicsPipeline& TerrainRenderer::groupPipeline(uint32_t group, TerrainDebugView view) const {
   // Grids are drawn with back faces culled, skirts from both sides; the wireframe view shows both.
   // Nodes with sea use the water shader unless a debug view colours them by level.
-  if (view == TerrainDebugView::kWireframe) return *wireframe_;
+  if (view == TerrainDebugView::kWireframe) return *wireframe();
+  const SurfacePipelines& set = group >= kColourGroups && coloured_.solid ? coloured_ : plain_;
+  group %= kColourGroups;
   const uint32_t r = group % kIndexRanges;
   const bool detail = group >= kDetailGroups;
-  if (group % kDetailGroups >= kWaterGroups && water_ && view == TerrainDebugView::kShaded)
-    return r >= 2 ? *waterSkirts_ : detail ? *waterDetail_ : *water_;
-  return r >= 2 ? skirts_ : detail ? *solidDetail_ : solid_;
+  if (group % kDetailGroups >= kWaterGroups && set.water && view == TerrainDebugView::kShaded)
+    return r >= 2 ? *set.waterSkirts : detail ? *set.waterDetail : *set.water;
+  return r >= 2 ? *set.skirts : detail ? *set.solidDetail : *set.solid;
 }
 
 TerrainRenderer::ImageSet TerrainRenderer::drawImages(const PayloadPages& payloads, uint32_t page,

@@ -41,6 +41,14 @@ class TerrainShadows;         // terrain_shadows.h
 class AerialPerspectivePass;  // atmosphere_passes.h
 class SkyPass;
 struct TargetFormat;  // terrain_pipelines.h
+
+// The surface pipelines of one colour-layer choice (surfaceShading's, terrain_pipelines.h): grids
+// with back faces culled, skirt strips from both sides, the same for nodes with sea (planets with
+// water only), and the grids near the camera with the land cover's splat (coverNear() only). Absent
+// ones are null.
+struct SurfacePipelines {
+  std::unique_ptr<vk::GraphicsPipeline> solid, skirts, solidDetail, water, waterSkirts, waterDetail;
+};
 namespace gpu {
 struct TerrainReprojectionNode;  // shaders/include/terrain_layout.h
 struct TerrainFrame;
@@ -165,7 +173,7 @@ class TerrainRenderer {
   void setStyle(const TerrainStyle& style) { style_ = style; }
   void setDebugView(TerrainDebugView view) { style_.debug = view; }
   void setPassTimestamps(PassTimestamps timestamps) { timestamps_ = timestamps; }
-  bool wireframeSupported() const { return wireframe_ != nullptr; }
+  bool wireframeSupported() const { return wireframe() != nullptr; }
   // The per-frame aerial perspective tables (nullptr without an atmosphere), for tests.
   const AtmosphereView* atmosphereView() const;
   // The shadow maps (nullptr without shadows), for tests.
@@ -238,23 +246,16 @@ class TerrainRenderer {
   GridsPass grids_{*this};
   std::unique_ptr<SkyPass> sky_;    // with the style's atmosphere only
   std::vector<FramePass*> passes_;  // in frame order: aerial_, shadows_, grids_, sky_ (those that exist)
-  // The water and wireframe pipelines, created on a second thread while the others are (pipeline
-  // creation is most of the renderer's set-up: docs/benchmark.md, "Cold start").
-  struct OptionalPipelines {
-    std::unique_ptr<vk::GraphicsPipeline> water, waterSkirts, wireframe, waterDetail;
-  };
-  static OptionalPipelines makeOptionalPipelines(vk::Device& device, TerrainStyle style, VertexPositions positions,
-                                                 TargetFormat target, bool atmosphere);
+  // The wireframe's pipeline (null where the device draws no lines), created on a second thread while
+  // the others are (pipeline creation is most of the renderer's set-up: docs/benchmark.md, "Cold start").
+  static std::unique_ptr<vk::GraphicsPipeline> makeWireframe(vk::Device& device, VertexPositions positions,
+                                                             TargetFormat target, bool atmosphere);
+  const std::unique_ptr<vk::GraphicsPipeline>& wireframe() const { return wireframe_.get(); }
   // The index buffer's ranges uploaded to the device (first_, count_, indices_).
   void uploadIndices(const GridIndexRanges& ranges);
-  std::future<OptionalPipelines> pendingOptional_;
-  vk::GraphicsPipeline solid_;                         // grids, back faces culled
-  vk::GraphicsPipeline skirts_;                        // skirt strips, both sides
-  std::unique_ptr<vk::GraphicsPipeline> water_;        // grids of nodes with sea (planets with water only)
-  std::unique_ptr<vk::GraphicsPipeline> waterSkirts_;  // their skirts, both sides
-  std::unique_ptr<vk::GraphicsPipeline> wireframe_;
-  // coverNear(): the grids of the nodes near the camera, with the land cover's splat (water: with sea).
-  std::unique_ptr<vk::GraphicsPipeline> solidDetail_, waterDetail_;
+  std::shared_future<std::unique_ptr<vk::GraphicsPipeline>> wireframe_;
+  SurfacePipelines plain_;     // without the colour layer: every node of a planet without an overlay
+  SurfacePipelines coloured_;  // with an overlay: the nodes whose fragments read the colour layer
   vk::Buffer indices_;
   // Index ranges: full grid, half grid, one full skirt strip, one half skirt strip.
   std::array<uint32_t, 4> first_{};

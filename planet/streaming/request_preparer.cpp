@@ -110,6 +110,19 @@ std::vector<std::uint32_t> overlayColoursForJob(const ElevationModel& model, con
   return words;
 }
 
+bool overlayNeedsColourLayer(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
+                             std::span<const std::uint32_t> words) {
+  const SurfaceOverlay* overlay = model.overlay();
+  if (overlay == nullptr || words.empty()) return false;
+  // The vectors' own words, the second half (their coverage in the top byte).
+  const auto vectorWords = words.subspan(words.size() / 2);
+  if (std::any_of(vectorWords.begin(), vectorWords.end(), [](std::uint32_t w) { return (w >> 24) != 0; })) return true;
+  const double cell_m = payloadSampleSpacing_m(job, cells, model.radius_m());
+  const auto& layers = overlay->imagery().layers();
+  return std::any_of(layers.begin(), layers.end(),
+                     [&](const ImageryLayer& l) { return l.facts().pixel_size_m < 2.0 * cell_m; });
+}
+
 double sourceDetailPad_m(const std::vector<glm::dvec4>& terms) {
   double pad = 0.0;
   for (const glm::dvec4& t : terms) pad = std::max(pad, t.w);
@@ -182,6 +195,7 @@ void SourceRequestPreparer::run() {
     const std::vector<glm::dvec3> samples = payloadSampleDirections(r.job, cells_);
     r.terms = sourceTermsForJob(model_, r.job, cells_, samples);
     r.overlay = overlayColoursForJob(model_, r.job, cells_, mapScale_, samples);
+    r.colourLayer = overlayNeedsColourLayer(model_, r.job, cells_, r.overlay);
     lock.lock();
     --working_;
     ++prepared_;

@@ -32,6 +32,9 @@ struct PreparedRequest {
   // GLOBE_PAYLOAD_OVERLAY_POINTS packed overlay colours (payload_layout.h), or empty: no imagery here.
   std::vector<std::uint32_t> overlay;
   std::chrono::steady_clock::time_point queued;
+  // The overlay's hue varies within the node's cells (overlayNeedsColourLayer): its fragments read the
+  // colour layer; elsewhere the vertices' hue does.
+  bool colourLayer = false;
 };
 
 // The packed source terms dvec4(height_m, weight, hole, detail bound) at `directions` (the one way
@@ -53,6 +56,13 @@ std::vector<glm::dvec4> sourceTermsForJob(const ElevationModel& model, const gpu
 // no overlay or nothing of it covers the node.
 std::vector<std::uint32_t> overlayColoursForJob(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
                                                 uint32_t mapScale, std::span<const glm::dvec3> samples);
+
+// Whether the overlay `words` of `job` (overlayColoursForJob) vary in hue within a cell of its mesh
+// of `cells` cells: some vector covers a texel, or an imagery layer's pixels are smaller than two
+// cells. Otherwise the vertices' colours carry the overlay's hue as well as the texels would, and the
+// node is drawn without the colour layer's fetch (a fragment stage of its own: docs/imagery.md, "Cost").
+bool overlayNeedsColourLayer(const ElevationModel& model, const gpu::PayloadJob& job, uint32_t cells,
+                             std::span<const std::uint32_t> words);
 
 // How far a node's finer descendants may reach beyond its payload's radius range because of the
 // amplification detail its samples do not resolve: the largest detail bound of its terms (metres;

@@ -3,11 +3,14 @@
 // world, alpha bands and opacity, and the planet file's [[imagery]] errors.
 #include "planet/camera/camera.h"
 #include "planet/core/srgb.h"
+#include "planet/geometry/face_mapping.h"
 #include "planet/model/elevation_model.h"
 #include "planet/model/planet_file.h"
 #include "planet/model/planet_file_writer.h"
 #include "planet/model/source_report.h"
 #include "planet/sources/imagery_mosaic.h"
+#include "planet/streaming/payload_reference.h"
+#include "planet/streaming/request_preparer.h"
 #include "planet/surface/surface_overlay.h"
 #include "tests/support/dem_fixture.h"
 #include "tests/support/imagery_fixture.h"
@@ -194,19 +197,24 @@ TEST_F(ImageryTest, PlanetFileLoadsImageryAndWritesItBack) {
 
 // [[vectors]] beside [[imagery]]: the planet file writes both back, and the overlay lays the
 // vectors over the imagery ("over": a half-opaque fill mixes with the image beneath).
-TEST_F(ImageryTest, VectorsLieOverTheImageryAndRoundTrip) {
+// A planet file in `dir`: the checkerboard (~111 m pixels) over 30-31 E, 4-5 S, and over it a square
+// 30.2-30.4 E, 4.6-4.8 S, filled half-opaque blue with a yellow outline 40 m wide.
+std::string squareOverBoardPlanet(const testing::TempDir& dir) {
   testing::Checkerboard board;
-  testing::writeCheckerboard(path("board.tif"), board);
-  std::ofstream(path("square.geojson"))
+  testing::writeCheckerboard((dir / "board.tif").string(), board);
+  std::ofstream((dir / "square.geojson").string())
       << R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {"kind": "park"},)"
       << R"( "geometry": {"type": "Polygon", "coordinates": [[[30.2, -4.8], [30.4, -4.8], [30.4, -4.6], [30.2, -4.6],)"
       << R"( [30.2, -4.8]]]}}]})";
-  const std::string file =
-      imageryPlanet(dir_->str(),
-                    "[[imagery]]\npath = \"board.tif\"\nextent = [30.0, -5.0, 31.0, -4.0]\n"
-                    "blend_m = 0.0\n\n[[vectors]]\npath = \"square.geojson\"\n"
-                    "fill = \"#0000ff\"\nfill_opacity = 0.5\nline = [1.0, 1.0, 0.0]\nwidth_m = 40.0\n"
-                    "colour_by = \"kind\"\ncolours = { lake = \"#00ffff\" }\n");
+  return imageryPlanet(dir.str(),
+                       "[[imagery]]\npath = \"board.tif\"\nextent = [30.0, -5.0, 31.0, -4.0]\n"
+                       "blend_m = 0.0\n\n[[vectors]]\npath = \"square.geojson\"\n"
+                       "fill = \"#0000ff\"\nfill_opacity = 0.5\nline = [1.0, 1.0, 0.0]\nwidth_m = 40.0\n"
+                       "colour_by = \"kind\"\ncolours = { lake = \"#00ffff\" }\n");
+}
+
+TEST_F(ImageryTest, VectorsLieOverTheImageryAndRoundTrip) {
+  const std::string file = squareOverBoardPlanet(*dir_);
   Result<PlanetDescription> planet = loadPlanetFile(file);
   ASSERT_TRUE(planet.ok()) << planet.error().format();
   ASSERT_EQ(planet->vectors.size(), 1u);
@@ -235,6 +243,32 @@ TEST_F(ImageryTest, VectorsLieOverTheImageryAndRoundTrip) {
   const SurfaceColour away = model.overlay()->colourAt(outside, 10.0);
   EXPECT_EQ(away.land.albedo, model.overlay()->imagery().colourAt(outside, 10.0).albedo);
   EXPECT_EQ(away.vectors.alpha, 0.0);
+}
+
+// A node's fragments read the colour layer only where the overlay's hue varies within its cells
+// (overlayNeedsColourLayer; the others take it from their vertices, without the second fetch): a
+// vector's outline or fill over it, or imagery pixels smaller than two of its cells; the I/O
+// thread's vector queries skipped per block (overlayColoursForJob) still find the outline.
+TEST_F(ImageryTest, OnlyNodesWhoseOverlayVariesWithinACellReadTheColourLayer) {
+  Result<PlanetDescription> planet = loadPlanetFile(squareOverBoardPlanet(*dir_));
+  ASSERT_TRUE(planet.ok()) << planet.error().format();
+  const ElevationModel model(*planet);
+  const uint32_t cells = 8, scale = 4;  // the balanced preset's
+  auto job = [&](double lat, double lon, int level) {
+    return makePayloadJob(nodeAt(RhombusFaceMapping::get().locate(directionFromLatLon(lat, lon)), level), 0, model);
+  };
+  auto needs = [&](const gpu::PayloadJob& j) {
+    return overlayNeedsColourLayer(model, j, cells,
+                                   overlayColoursForJob(model, j, cells, scale, payloadSampleDirections(j, cells)));
+  };
+  const int fine = 15, coarse = 8;
+  ASSERT_LT(2.0 * payloadSampleSpacing_m(job(-4.3, 30.8, fine), cells, kRadius_m), 111.0);
+  ASSERT_GT(payloadSampleSpacing_m(job(-4.3, 30.8, coarse), cells, kRadius_m), 111.0);
+  EXPECT_FALSE(needs(job(-4.3, 30.8, fine)));   // the board alone, its pixels over two cells wide
+  EXPECT_TRUE(needs(job(-4.8, 30.3, fine)));    // the square's outline
+  EXPECT_TRUE(needs(job(-4.7, 30.3, fine)));    // inside its fill
+  EXPECT_TRUE(needs(job(-4.3, 30.8, coarse)));  // the board's pixels smaller than the cells
+  EXPECT_FALSE(needs(job(-10.0, 20.0, fine)));  // no overlay there
 }
 
 // The example a user copies (assets/planets/earth-imagery.toml): it loads, and Blue Marble lies the
