@@ -137,9 +137,12 @@ void writeHazeConstants(gpu::TerrainFrame& frame, const gpu::AtmosphereGpu* a, c
   // (the sky's rays, to the top, take the scale height).
   const double scale = a->rayleigh.w, column = std::max(r - a->radii.x, 1.0);
   const double mean = scale - column * std::exp(-column / scale) / -std::expm1(-column / scale);
-  const glm::dvec3 aloft = exposure * rgb(a->sun) * hazeSunTransmittance(*a, a->radii.x + mean, muS);
+  auto sunlightAt = [&](double height_m) {
+    return exposure * rgb(a->sun) * hazeSunTransmittance(*a, a->radii.x + height_m, muS);
+  };
+  const glm::dvec3 aloft = sunlightAt(mean);
   frame.hazeSunAloft = vec4(aloft.x, aloft.y, aloft.z, 0.0);
-  const glm::dvec3 skySun = exposure * rgb(a->sun) * hazeSunTransmittance(*a, a->radii.x + scale, muS);
+  const glm::dvec3 skySun = sunlightAt(scale);
   writeHazeSky(frame, skySun, a->radii.x, up, glm::normalize(sun));
 }
 

@@ -65,21 +65,21 @@ TerrainRenderer::TerrainRenderer(vk::Device& device, uint32_t gridCells, const T
       style_(style),
       detailTiling_(detailTilingFor(style.radius_m)),
       // The reprojected positions (a measurement only) are drawn without the atmosphere.
-      atmosphere_(positions == VertexPositions::kStored && style.aerialPerspective ? style.atmosphere : nullptr),
-      wireframe_(std::async(std::launch::async, makeWireframe, std::ref(device), positions,
-                            TargetFormat{colourFormat, samples}, atmosphere_ != nullptr)) {
+      atmosphere_(positions == VertexPositions::kStored && style.aerialPerspective ? style.atmosphere : nullptr) {
   assert(gpu::validGridCells(gridCells));
   assert(gpu::validNormalMapScale(style.normalMapScale));
+  const TargetFormat target{colourFormat, samples};
+  auto wireframe =
+      std::async(std::launch::async, makeWireframe, std::ref(device), positions, target, atmosphere_ != nullptr);
   // A planet with an overlay draws the nodes whose overlay varies within their cells with the colour
   // layer, the others without its fetch: two sets, created side by side.
-  const TargetFormat target{colourFormat, samples};
   std::future<SurfacePipelines> coloured;
   if (surfaceShading(style, false, false).colourLayer)
     coloured = std::async(std::launch::async, makeSurfacePipelines, std::ref(device), std::cref(style_), positions,
                           target, atmosphere_ != nullptr, true);
   plain_ = makeSurfacePipelines(device, style_, positions, target, atmosphere_ != nullptr, false);
   if (coloured.valid()) coloured_ = coloured.get();
-  wireframe_.wait();
+  wireframe_ = wireframe.get();
   uploadIndices(gridIndexRanges(gridCells));
   const GridRanges grid{indices_.handle(), first_, count_};
   // The passes, in frame order (frame_pass.h).
@@ -263,7 +263,7 @@ TerrainDebugView TerrainRenderer::writeFrameConstants(unsigned char* bytes, cons
   frame.planetCentre = toGpu(glm::vec3(-origin_m), float(style_.radius_m));
   frame.sun = toGpu(glm::vec3(glm::normalize(style_.sunDirection)), style_.ambient);
   TerrainDebugView view = style_.debug;
-  if (view == TerrainDebugView::kWireframe && !wireframe()) view = TerrainDebugView::kLodColours;
+  if (view == TerrainDebugView::kWireframe && !wireframe_) view = TerrainDebugView::kLodColours;
   if (view == TerrainDebugView::kLandCover && !style_.landCover()) view = TerrainDebugView::kShaded;
   frame.options = {cells_,
                    view == TerrainDebugView::kShaded       ? GLOBE_TERRAIN_SHADED
@@ -426,7 +426,7 @@ DrawStats TerrainRenderer::recordDraws(VkCommandBuffer cmd, const PayloadPages& 
 const vk::GraphicsPipeline& TerrainRenderer::groupPipeline(uint32_t group, TerrainDebugView view) const {
   // Grids are drawn with back faces culled, skirts from both sides; the wireframe view shows both.
   // Nodes with sea use the water shader unless a debug view colours them by level.
-  if (view == TerrainDebugView::kWireframe) return *wireframe();
+  if (view == TerrainDebugView::kWireframe) return *wireframe_;
   const SurfacePipelines& set = group >= kColourGroups && coloured_.solid ? coloured_ : plain_;
   group %= kColourGroups;
   const uint32_t r = group % kIndexRanges;

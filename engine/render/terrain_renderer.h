@@ -173,7 +173,7 @@ class TerrainRenderer {
   void setStyle(const TerrainStyle& style) { style_ = style; }
   void setDebugView(TerrainDebugView view) { style_.debug = view; }
   void setPassTimestamps(PassTimestamps timestamps) { timestamps_ = timestamps; }
-  bool wireframeSupported() const { return wireframe() != nullptr; }
+  bool wireframeSupported() const { return wireframe_ != nullptr; }
   // The per-frame aerial perspective tables (nullptr without an atmosphere), for tests.
   const AtmosphereView* atmosphereView() const;
   // The shadow maps (nullptr without shadows), for tests.
@@ -250,10 +250,9 @@ class TerrainRenderer {
   // the others are (pipeline creation is most of the renderer's set-up: docs/benchmark.md, "Cold start").
   static std::unique_ptr<vk::GraphicsPipeline> makeWireframe(vk::Device& device, VertexPositions positions,
                                                              TargetFormat target, bool atmosphere);
-  const std::unique_ptr<vk::GraphicsPipeline>& wireframe() const { return wireframe_.get(); }
   // The index buffer's ranges uploaded to the device (first_, count_, indices_).
   void uploadIndices(const GridIndexRanges& ranges);
-  std::shared_future<std::unique_ptr<vk::GraphicsPipeline>> wireframe_;
+  std::unique_ptr<vk::GraphicsPipeline> wireframe_;
   SurfacePipelines plain_;     // without the colour layer: every node of a planet without an overlay
   SurfacePipelines coloured_;  // with an overlay: the nodes whose fragments read the colour layer
   vk::Buffer indices_;
